@@ -1,0 +1,337 @@
+package io.concord.core.acl;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * A FIPA ACL message (SC00061): a performative and the FIPA parameters, plus user-defined
+ * parameters. Mutable, like JADE's {@code ACLMessage}, so that code written for JADE reads the same.
+ *
+ * <p>The content is either text or a byte sequence; {@link #getContent()} and
+ * {@link #getByteSequenceContent()} convert between the two with UTF-8 when asked for the other.
+ *
+ * <p>User-defined parameter names are kept without the {@code X-} prefix that the string
+ * representation adds: {@code addUserDefinedParameter("X-foo", v)} and
+ * {@code addUserDefinedParameter("foo", v)} name the same parameter.
+ */
+public final class AclMessage {
+    /** No {@code :reply-by} set. */
+    public static final long NO_REPLY_BY = Long.MIN_VALUE;
+
+    private static final AtomicLong REPLY_WITH_FALLBACK = new AtomicLong();
+
+    private Performative performative;
+    private AID sender;
+    private final List<AID> receivers = new ArrayList<>(1);
+    private final List<AID> replyTo = new ArrayList<>(0);
+    private String content;
+    private byte[] byteContent;
+    private String language;
+    private String encoding;
+    private String ontology;
+    private String protocol;
+    private String conversationId;
+    private String replyWith;
+    private String inReplyTo;
+    private long replyByEpochMs = NO_REPLY_BY;
+    private Map<String, String> userParameters;
+    private long receivedAtEpochMs = Long.MIN_VALUE;
+
+    /** A message with the given performative and no other parameter. */
+    public AclMessage(Performative performative) {
+        this.performative = Objects.requireNonNull(performative, "performative");
+    }
+
+    public Performative getPerformative() {
+        return performative;
+    }
+
+    public AclMessage setPerformative(Performative p) {
+        this.performative = Objects.requireNonNull(p, "performative");
+        return this;
+    }
+
+    public AID getSender() {
+        return sender;
+    }
+
+    public AclMessage setSender(AID sender) {
+        this.sender = sender;
+        return this;
+    }
+
+    /** The receivers, in order; a live, modifiable list. */
+    public List<AID> getReceivers() {
+        return receivers;
+    }
+
+    public AclMessage addReceiver(AID receiver) {
+        receivers.add(Objects.requireNonNull(receiver, "receiver"));
+        return this;
+    }
+
+    public AclMessage clearAllReceiver() {
+        receivers.clear();
+        return this;
+    }
+
+    /** The reply-to agents, in order; a live, modifiable list. */
+    public List<AID> getReplyTo() {
+        return replyTo;
+    }
+
+    public AclMessage addReplyTo(AID aid) {
+        replyTo.add(Objects.requireNonNull(aid, "reply-to"));
+        return this;
+    }
+
+    /** The content as text (byte content is decoded as UTF-8), or {@code null} if there is none. */
+    public String getContent() {
+        if (content == null && byteContent != null) {
+            return new String(byteContent, StandardCharsets.UTF_8);
+        }
+        return content;
+    }
+
+    /** Sets text content, replacing any byte content. */
+    public AclMessage setContent(String content) {
+        this.content = content;
+        this.byteContent = null;
+        return this;
+    }
+
+    /** The content as bytes (text content is encoded as UTF-8), or {@code null} if there is none. */
+    public byte[] getByteSequenceContent() {
+        if (byteContent == null && content != null) {
+            return content.getBytes(StandardCharsets.UTF_8);
+        }
+        return byteContent == null ? null : byteContent.clone();
+    }
+
+    /** Sets byte content, replacing any text content. */
+    public AclMessage setByteSequenceContent(byte[] bytes) {
+        this.byteContent = bytes == null ? null : bytes.clone();
+        this.content = null;
+        return this;
+    }
+
+    /** True if the content was given as a byte sequence rather than as text. */
+    public boolean hasByteSequenceContent() {
+        return byteContent != null;
+    }
+
+    public String getLanguage() {
+        return language;
+    }
+
+    public AclMessage setLanguage(String language) {
+        this.language = language;
+        return this;
+    }
+
+    public String getEncoding() {
+        return encoding;
+    }
+
+    public AclMessage setEncoding(String encoding) {
+        this.encoding = encoding;
+        return this;
+    }
+
+    public String getOntology() {
+        return ontology;
+    }
+
+    public AclMessage setOntology(String ontology) {
+        this.ontology = ontology;
+        return this;
+    }
+
+    public String getProtocol() {
+        return protocol;
+    }
+
+    public AclMessage setProtocol(String protocol) {
+        this.protocol = protocol;
+        return this;
+    }
+
+    public String getConversationId() {
+        return conversationId;
+    }
+
+    public AclMessage setConversationId(String conversationId) {
+        this.conversationId = conversationId;
+        return this;
+    }
+
+    public String getReplyWith() {
+        return replyWith;
+    }
+
+    public AclMessage setReplyWith(String replyWith) {
+        this.replyWith = replyWith;
+        return this;
+    }
+
+    public String getInReplyTo() {
+        return inReplyTo;
+    }
+
+    public AclMessage setInReplyTo(String inReplyTo) {
+        this.inReplyTo = inReplyTo;
+        return this;
+    }
+
+    /** The {@code :reply-by} deadline in epoch milliseconds, or {@link #NO_REPLY_BY}. */
+    public long getReplyByEpochMs() {
+        return replyByEpochMs;
+    }
+
+    public AclMessage setReplyByEpochMs(long epochMs) {
+        this.replyByEpochMs = epochMs;
+        return this;
+    }
+
+    public boolean hasReplyBy() {
+        return replyByEpochMs != NO_REPLY_BY;
+    }
+
+    /** User-defined parameters, without their {@code X-} prefix, in insertion order (read-only view). */
+    public Map<String, String> getUserDefinedParameters() {
+        return userParameters == null ? Map.of() : Collections.unmodifiableMap(userParameters);
+    }
+
+    /** The value of a user-defined parameter (with or without the {@code X-} prefix), or {@code null}. */
+    public String getUserDefinedParameter(String key) {
+        return userParameters == null ? null : userParameters.get(stripX(key));
+    }
+
+    /** Adds or replaces a user-defined parameter; a leading {@code X-} in the key is dropped. */
+    public AclMessage addUserDefinedParameter(String key, String value) {
+        Objects.requireNonNull(value, "value");
+        String k = stripX(Objects.requireNonNull(key, "key"));
+        if (k.isEmpty()) {
+            throw new IllegalArgumentException("a user-defined parameter needs a name");
+        }
+        if (userParameters == null) {
+            userParameters = new LinkedHashMap<>(4);
+        }
+        userParameters.put(k, value);
+        return this;
+    }
+
+    public AclMessage removeUserDefinedParameter(String key) {
+        if (userParameters != null) {
+            userParameters.remove(stripX(key));
+        }
+        return this;
+    }
+
+    private static String stripX(String key) {
+        return key.length() > 2 && (key.charAt(0) == 'X' || key.charAt(0) == 'x') && key.charAt(1) == '-'
+                ? key.substring(2) : key;
+    }
+
+    /**
+     * When the runtime handed this message to the receiving agent, in the platform's epoch
+     * milliseconds; {@code Long.MIN_VALUE} for a message that was not received.
+     */
+    public long getReceivedAtEpochMs() {
+        return receivedAtEpochMs;
+    }
+
+    /** Set by the runtime on delivery. */
+    public void setReceivedAtEpochMs(long epochMs) {
+        this.receivedAtEpochMs = epochMs;
+    }
+
+    /**
+     * A reply with JADE's semantics: same performative (set the one you mean), receivers from
+     * {@code :reply-to} if present, else the sender; the same conversation-id, protocol, language,
+     * ontology and encoding; {@code :in-reply-to} set to this message's {@code :reply-with}; and a
+     * new {@code :reply-with} made of the original sender's name and the time the message was
+     * received (the platform's clock, so a simulation stays deterministic).
+     */
+    public AclMessage createReply() {
+        AclMessage reply = new AclMessage(performative);
+        if (!replyTo.isEmpty()) {
+            reply.receivers.addAll(replyTo);
+        } else if (sender != null) {
+            reply.receivers.add(sender);
+        }
+        reply.language = language;
+        reply.ontology = ontology;
+        reply.protocol = protocol;
+        reply.encoding = encoding;
+        reply.conversationId = conversationId;
+        reply.inReplyTo = replyWith;
+        long stamp = receivedAtEpochMs != Long.MIN_VALUE ? receivedAtEpochMs : REPLY_WITH_FALLBACK.incrementAndGet();
+        reply.replyWith = (sender != null ? sender.name() : "reply") + stamp;
+        return reply;
+    }
+
+    /** A deep copy. */
+    public AclMessage copy() {
+        AclMessage m = new AclMessage(performative);
+        m.sender = sender;
+        m.receivers.addAll(receivers);
+        m.replyTo.addAll(replyTo);
+        m.content = content;
+        m.byteContent = byteContent == null ? null : byteContent.clone();
+        m.language = language;
+        m.encoding = encoding;
+        m.ontology = ontology;
+        m.protocol = protocol;
+        m.conversationId = conversationId;
+        m.replyWith = replyWith;
+        m.inReplyTo = inReplyTo;
+        m.replyByEpochMs = replyByEpochMs;
+        m.userParameters = userParameters == null ? null : new LinkedHashMap<>(userParameters);
+        m.receivedAtEpochMs = receivedAtEpochMs;
+        return m;
+    }
+
+    /**
+     * True if every parameter is equal, AIDs compared slot by slot and the content compared as the
+     * kind it was given in. The receive time is not compared.
+     */
+    public boolean sameAs(AclMessage o) {
+        return o != null && performative == o.performative && aidEq(sender, o.sender)
+                && aidsEq(receivers, o.receivers) && aidsEq(replyTo, o.replyTo)
+                && Objects.equals(content, o.content) && Arrays.equals(byteContent, o.byteContent)
+                && Objects.equals(language, o.language) && Objects.equals(encoding, o.encoding)
+                && Objects.equals(ontology, o.ontology) && Objects.equals(protocol, o.protocol)
+                && Objects.equals(conversationId, o.conversationId) && Objects.equals(replyWith, o.replyWith)
+                && Objects.equals(inReplyTo, o.inReplyTo) && replyByEpochMs == o.replyByEpochMs
+                && getUserDefinedParameters().equals(o.getUserDefinedParameters());
+    }
+
+    private static boolean aidEq(AID a, AID b) {
+        return a == null ? b == null : a.fullyEquals(b);
+    }
+
+    private static boolean aidsEq(List<AID> a, List<AID> b) {
+        if (a.size() != b.size()) {
+            return false;
+        }
+        for (int i = 0; i < a.size(); i++) {
+            if (!a.get(i).fullyEquals(b.get(i))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    @Override
+    public String toString() {
+        return io.concord.core.codec.StringAclCodec.INSTANCE.encodeToString(this);
+    }
+}

@@ -1,0 +1,171 @@
+package io.concord.core.agent;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.layer.DropCounters;
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.LayerStack;
+import io.concord.core.layer.StackHost;
+import io.concord.core.layer.Tracer;
+import io.concord.core.net.Address;
+import io.concord.core.net.Endpoint;
+import io.concord.core.net.UdpNetwork;
+import io.concord.core.time.Clock;
+
+/**
+ * What the runtime keeps per agent: its endpoint, its stack, its counters. The stack's top
+ * delivers into the agent's mailbox; its bottom transmits through the endpoint.
+ */
+final class AgentNode implements StackHost {
+    final AgentRuntime runtime;
+    final Agent agent;
+    final AID aid;
+    final Endpoint endpoint;
+    final DropCounters drops = new DropCounters();
+    LayerStack stack;
+    boolean queued;
+
+    AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint) {
+        this.runtime = runtime;
+        this.agent = agent;
+        this.aid = aid;
+        this.endpoint = endpoint;
+    }
+
+    void send(AclMessage msg) {
+        if (msg.getSender() == null) {
+            msg.setSender(aid);
+        }
+        if (msg.getReceivers().isEmpty()) {
+            dropOutgoing(msg, "no-receiver", "the message lists no receiver");
+            return;
+        }
+        Tracer tracer = runtime.tracer();
+        for (AID receiver : msg.getReceivers()) {
+            Address dst = runtime.resolve(receiver);
+            if (dst == null) {
+                dropOutgoing(msg, "unknown-receiver", "no address known for " + receiver.name());
+                returnFailure(msg, receiver);
+                continue;
+            }
+            if (tracer.enabled()) {
+                tracer.trace(runtime.nowNs(), aid.name(), "send", describe(msg) + " to " + receiver.name());
+            }
+            stack.sendDown(Envelope.outgoing(msg, receiver, dst));
+        }
+    }
+
+    private void dropOutgoing(AclMessage msg, String reason, String detail) {
+        drops.increment(reason);
+        Tracer t = runtime.tracer();
+        if (t.enabled()) {
+            t.trace(runtime.nowNs(), aid.name(), "drop", reason + ": " + detail + " " + describe(msg));
+        }
+    }
+
+    /**
+     * Tells the sender that a receiver is unknown, with the FAILURE JADE's AMS sends, so that
+     * protocols end instead of waiting.
+     */
+    private void returnFailure(AclMessage original, AID receiver) {
+        AclMessage failure = new AclMessage(Performative.FAILURE);
+        failure.setSender(AID.local("ams", runtime.platformName()));
+        failure.addReceiver(aid);
+        failure.setConversationId(original.getConversationId());
+        failure.setInReplyTo(original.getReplyWith());
+        failure.setProtocol(original.getProtocol());
+        failure.setLanguage("fipa-sl");
+        failure.setContent("( (action ( agent-identifier :name " + aid.name() + " ) (ACLMessage) ) (MTS-error "
+                + "( agent-identifier :name " + receiver.name() + " ) (internal-error \"Agent not found: "
+                + receiver.name() + "\")) )");
+        deliverMessage(failure);
+    }
+
+    /** The bottom of the stack: to the network. */
+    void transmit(Envelope env) {
+        if (env.length() > UdpNetwork.MAX_DATAGRAM) {
+            stackDrop(env, "too-large", env.length() + " bytes exceed the datagram limit of "
+                    + UdpNetwork.MAX_DATAGRAM);
+            return;
+        }
+        if (!endpoint.send(env.destination(), env.data(), env.offset(), env.length())) {
+            stackDrop(env, "send-failed", "the network refused the datagram to " + env.destination());
+        }
+    }
+
+    private void stackDrop(Envelope env, String reason, String detail) {
+        drops.increment(reason);
+        Tracer t = runtime.tracer();
+        if (t.enabled()) {
+            t.trace(runtime.nowNs(), aid.name(), "drop", reason + ": " + detail + " " + env);
+        }
+    }
+
+    /** From the network. */
+    void onDatagram(Address from, byte[] data, int offset, int length, long nowNs) {
+        if (agent.getState() == Agent.State.DELETED) {
+            return;
+        }
+        stack.receiveUp(Envelope.incoming(from, data, offset, length, nowNs));
+    }
+
+    /** The top of the stack: into the mailbox. */
+    void deliver(Envelope env) {
+        deliverMessage(env.message());
+    }
+
+    private void deliverMessage(AclMessage msg) {
+        msg.setReceivedAtEpochMs(runtime.clock().epochMillis());
+        Tracer t = runtime.tracer();
+        if (!agent.postMessage(msg, runtime.mailboxCapacity())) {
+            dropOutgoing(msg, "mailbox-full", "the mailbox holds " + runtime.mailboxCapacity() + " messages");
+            return;
+        }
+        if (t.enabled()) {
+            t.trace(runtime.nowNs(), aid.name(), "deliver", describe(msg));
+        }
+    }
+
+    static String describe(AclMessage m) {
+        String c = m.getContent();
+        return m.getPerformative().wireName() + " from " + (m.getSender() == null ? "?" : m.getSender().name())
+                + " conv=" + m.getConversationId() + " content=" + (c == null ? 0 : c.length()) + "/"
+                + (c == null ? 0 : c.hashCode());
+    }
+
+    @Override
+    public String nodeName() {
+        return aid.name();
+    }
+
+    @Override
+    public Clock clock() {
+        return runtime.clock();
+    }
+
+    @Override
+    public long nowNs() {
+        return runtime.nowNs();
+    }
+
+    @Override
+    public long schedule(long deadlineNs, Runnable task) {
+        return runtime.schedule(deadlineNs, task);
+    }
+
+    @Override
+    public boolean cancel(long timerId) {
+        return runtime.cancel(timerId);
+    }
+
+    @Override
+    public Tracer tracer() {
+        return runtime.tracer();
+    }
+
+    @Override
+    public DropCounters drops() {
+        return drops;
+    }
+}

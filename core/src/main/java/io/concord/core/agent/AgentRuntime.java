@@ -1,0 +1,606 @@
+package io.concord.core.agent;
+
+import io.concord.core.acl.AID;
+import io.concord.core.layer.CodecLayer;
+import io.concord.core.layer.Layer;
+import io.concord.core.layer.LayerStack;
+import io.concord.core.layer.Tracer;
+import io.concord.core.net.Address;
+import io.concord.core.net.Endpoint;
+import io.concord.core.net.Network;
+import io.concord.core.net.UdpNetwork;
+import io.concord.core.time.Clock;
+import io.concord.core.time.DeadlineTimerWheel;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.SplittableRandom;
+import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Supplier;
+import java.util.random.RandomGenerator;
+
+/**
+ * The agents of one JVM (or of one simulated host) and the single loop that serves them all: one
+ * network poll over every agent's socket, one timer wheel, one clock, one seeded random source.
+ * A message from one agent of the runtime to another costs a datagram and no thread switch: the
+ * loop that sends it also receives it and runs the receiver's behaviours.
+ *
+ * <p>Two ways to drive it: {@link #start()} gives it a thread of its own (real platforms); or the
+ * caller invokes {@link #doWork()} repeatedly, as the deterministic simulation does.
+ */
+public final class AgentRuntime implements AutoCloseable {
+    private static final Logger LOG = LoggerFactory.getLogger(AgentRuntime.class);
+
+    private final Clock clock;
+    private final Network network;
+    private final boolean ownsNetwork;
+    private final String platformName;
+    private final String host;
+    private final RandomGenerator random;
+    private final Tracer tracer;
+    private final Supplier<List<Layer>> stackFactory;
+    private final int mailboxCapacity;
+    private final int idleSpinIterations;
+    private final DeadlineTimerWheel wheel;
+    private final Map<Long, Timer> timersById = new HashMap<>();
+    private final Map<Long, Timer> timersByWheelId = new HashMap<>();
+    private final ArrayDeque<AgentNode> ready = new ArrayDeque<>();
+    private final Map<AID, AgentNode> directory = new LinkedHashMap<>();
+    private final Map<String, Address> addressCache = new HashMap<>();
+    private final ConcurrentLinkedQueue<Runnable> tasks = new ConcurrentLinkedQueue<>();
+    private final Thread ownerThread;
+    private volatile Thread loopThread;
+    private volatile boolean running;
+    private volatile boolean parked;
+    private long nextTimerId;
+    private long nowNs;
+    private boolean closed;
+
+    private record Timer(long id, long wheelId, Runnable task) {
+    }
+
+    private AgentRuntime(Builder b) {
+        this.clock = b.clock;
+        this.network = b.network != null ? b.network : new UdpNetwork();
+        this.ownsNetwork = b.network == null;
+        this.platformName = b.platformName;
+        this.host = b.host;
+        this.random = b.random != null ? b.random : new SplittableRandom();
+        this.tracer = b.tracer;
+        this.stackFactory = b.stackFactory;
+        this.mailboxCapacity = b.mailboxCapacity;
+        this.idleSpinIterations = b.idleSpinIterations;
+        this.nowNs = clock.nanoTime();
+        this.wheel = DeadlineTimerWheel.forAgents(nowNs);
+        this.ownerThread = Thread.currentThread();
+    }
+
+    /** A builder with the defaults: system clock, real UDP on 127.0.0.1, platform "concord". */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /** Builds a runtime; every setting is checked at {@link #build()}. */
+    public static final class Builder {
+        private Clock clock = Clock.system();
+        private Network network;
+        private String platformName = "concord";
+        private String host = "127.0.0.1";
+        private RandomGenerator random;
+        private Tracer tracer = Tracer.NONE;
+        private Supplier<List<Layer>> stackFactory = () -> List.of(new CodecLayer());
+        private int mailboxCapacity = 100_000;
+        private int idleSpinIterations = 2_000;
+
+        private Builder() {
+        }
+
+        public Builder clock(Clock clock) {
+            this.clock = Objects.requireNonNull(clock, "clock");
+            return this;
+        }
+
+        /**
+         * The network; by default the runtime makes real UDP sockets of its own and closes them on
+         * {@link AgentRuntime#close()}. A network given here belongs to the caller, who closes it.
+         */
+        public Builder network(Network network) {
+            this.network = Objects.requireNonNull(network, "network");
+            return this;
+        }
+
+        /** The platform name, the part after {@code @} in agent names. */
+        public Builder platformName(String name) {
+            this.platformName = Objects.requireNonNull(name, "platformName");
+            return this;
+        }
+
+        /** The local host agents bind to (an IP literal, or a virtual host name). */
+        public Builder host(String host) {
+            this.host = Objects.requireNonNull(host, "host");
+            return this;
+        }
+
+        /** The random source; seed it for a deterministic run. */
+        public Builder random(RandomGenerator random) {
+            this.random = Objects.requireNonNull(random, "random");
+            return this;
+        }
+
+        public Builder seed(long seed) {
+            this.random = new SplittableRandom(seed);
+            return this;
+        }
+
+        public Builder tracer(Tracer tracer) {
+            this.tracer = Objects.requireNonNull(tracer, "tracer");
+            return this;
+        }
+
+        /** Makes each agent's layers, top first. Default: the binary codec alone. */
+        public Builder stack(Supplier<List<Layer>> topFirstLayers) {
+            this.stackFactory = Objects.requireNonNull(topFirstLayers, "stack");
+            return this;
+        }
+
+        /** Messages an agent's mailbox may hold before new ones are dropped (and counted). */
+        public Builder mailboxCapacity(int capacity) {
+            this.mailboxCapacity = capacity;
+            return this;
+        }
+
+        /** How many empty work cycles the loop spins before it parks on the network. */
+        public Builder idleSpinIterations(int iterations) {
+            this.idleSpinIterations = iterations;
+            return this;
+        }
+
+        /**
+         * @throws IllegalArgumentException naming the first bad setting
+         */
+        public AgentRuntime build() {
+            if (platformName.isEmpty() || platformName.contains("@") || platformName.chars().anyMatch(c -> c <= ' ')) {
+                throw new IllegalArgumentException("platformName must be a non-empty word without '@' or spaces, got '"
+                        + platformName + "'");
+            }
+            if (host.isEmpty()) {
+                throw new IllegalArgumentException("host must not be empty; use 127.0.0.1 for this machine only");
+            }
+            if (mailboxCapacity < 1) {
+                throw new IllegalArgumentException("mailboxCapacity must be >= 1, got " + mailboxCapacity);
+            }
+            if (idleSpinIterations < 0) {
+                throw new IllegalArgumentException("idleSpinIterations must be >= 0, got " + idleSpinIterations);
+            }
+            return new AgentRuntime(this);
+        }
+    }
+
+    // ---- agents -----------------------------------------------------------------------------------
+
+    /** Starts an agent on any free port. See {@link #startAgent(String, Agent, int, Object...)}. */
+    public AID startAgent(String localName, Agent agent, Object... args) {
+        return startAgent(localName, agent, 0, args);
+    }
+
+    /**
+     * Starts an agent: binds its port, builds its stack, runs its {@code setup()}. Thread-safe;
+     * returns when the agent is running.
+     *
+     * @param localName the name without the platform; unique in this runtime
+     * @param port      its reception port, or 0 for any free one
+     * @return its AID, with its transport address
+     * @throws IllegalArgumentException if the name is bad or taken
+     * @throws IllegalStateException    if the port is taken, or setup() failed
+     */
+    public AID startAgent(String localName, Agent agent, int port, Object... args) {
+        Objects.requireNonNull(agent, "agent");
+        if (!inLoop()) {
+            return callInLoop(() -> startAgentInLoop(localName, agent, port, args));
+        }
+        return startAgentInLoop(localName, agent, port, args);
+    }
+
+    private AID startAgentInLoop(String localName, Agent agent, int port, Object[] args) {
+        if (closed) {
+            throw new IllegalStateException("the runtime is closed");
+        }
+        if (localName == null || localName.isEmpty() || localName.contains("@")
+                || localName.chars().anyMatch(c -> c <= ' ' || c == '(' || c == ')' || c == '"')) {
+            throw new IllegalArgumentException("an agent name must be a non-empty word without '@', spaces, "
+                    + "quotes or parentheses, got '" + localName + "'");
+        }
+        AID nameOnly = AID.local(localName, platformName);
+        if (directory.containsKey(nameOnly)) {
+            throw new IllegalArgumentException("an agent named " + nameOnly.name() + " already runs here");
+        }
+        if (agent.getState() != Agent.State.INITIATED || agent.runtime() != null) {
+            throw new IllegalArgumentException("this Agent object has already been started; create a new one");
+        }
+        AgentNode[] holder = new AgentNode[1];
+        Endpoint ep = network.tryBind(host, port, (from, data, off, len, now) -> holder[0].onDatagram(from, data, off, len, now));
+        if (ep == null) {
+            throw new IllegalStateException("port " + port + " on " + host + " is already in use; "
+                    + "choose another port or 0 for any free one");
+        }
+        AID aid = new AID(nameOnly.name(), ep.localAddress().toUri());
+        AgentNode node = new AgentNode(this, agent, aid, ep);
+        holder[0] = node;
+        node.stack = new LayerStack(stackFactory.get(), node, node::deliver, node::transmit, ev -> { });
+        node.stack.start();
+        directory.put(aid, node);
+        agent.bind(this, node, aid, args);
+        if (tracer.enabled()) {
+            tracer.trace(nowNs, aid.name(), "start", ep.localAddress().toString());
+        }
+        try {
+            agent.activate();
+        } catch (RuntimeException e) {
+            removeAgent(node, false);
+            throw new IllegalStateException("setup() of " + aid.name() + " failed: " + e, e);
+        }
+        makeReady(node);
+        return aid;
+    }
+
+    /** The agents running here, in start order. */
+    public List<AID> agents() {
+        if (!inLoop()) {
+            return callInLoop(this::agents);
+        }
+        return new ArrayList<>(directory.keySet());
+    }
+
+    /** The agent with this name here, or {@code null}. */
+    public Agent agent(AID aid) {
+        AgentNode n = directory.get(aid);
+        return n == null ? null : n.agent;
+    }
+
+    /** Drops counted by one agent's stack, by reason. */
+    public Map<String, Long> drops(AID aid) {
+        AgentNode n = directory.get(aid);
+        return n == null ? Map.of() : n.drops.snapshot();
+    }
+
+    /** Drops counted by all agents here, by reason. */
+    public Map<String, Long> drops() {
+        Map<String, Long> sum = new TreeMap<>();
+        for (AgentNode n : directory.values()) {
+            n.drops.snapshot().forEach((k, v) -> sum.merge(k, v, Long::sum));
+        }
+        return sum;
+    }
+
+    /** The layers of an agent's stack, top first (for tests and tools). */
+    public List<Layer> layers(AID aid) {
+        AgentNode n = directory.get(aid);
+        return n == null ? List.of() : n.stack.layers();
+    }
+
+    /**
+     * Kills an agent without its takeDown, as a crash would: its port closes, its timers die. For
+     * simulations and failure tests.
+     */
+    public void crashAgent(AID aid) {
+        AgentNode n = directory.get(aid);
+        if (n != null) {
+            removeAgent(n, false);
+        }
+    }
+
+    /**
+     * Where to send to an agent: an agent of this runtime by name, else the first {@code udp://}
+     * address of its AID. {@code null} if neither is known.
+     */
+    Address resolve(AID aid) {
+        AgentNode local = directory.get(aid);
+        if (local != null) {
+            return local.endpoint.localAddress();
+        }
+        String uri = aid.firstAddress(Address.UDP_SCHEME);
+        if (uri == null) {
+            return null;
+        }
+        Address a = addressCache.get(uri);
+        if (a == null) {
+            a = Address.parse(uri);
+            if (a != null) {
+                if (addressCache.size() > 100_000) {
+                    addressCache.clear();
+                }
+                addressCache.put(uri, a);
+            }
+        }
+        return a;
+    }
+
+    private void removeAgent(AgentNode node, boolean takeDown) {
+        directory.remove(node.aid);
+        node.agent.terminate(takeDown);
+        node.stack.stop();
+        node.endpoint.close();
+        if (tracer.enabled()) {
+            tracer.trace(nowNs, node.aid.name(), takeDown ? "stop" : "crash", "");
+        }
+    }
+
+    // ---- the loop -------------------------------------------------------------------------------
+
+    /**
+     * One work cycle: tasks handed in by other threads, arrived datagrams, due timers, then one
+     * round of every agent that has a runnable behaviour.
+     *
+     * @return the amount of work done; 0 means idle
+     */
+    public int doWork() {
+        nowNs = clock.nanoTime();
+        int work = 0;
+        Runnable t;
+        while ((t = tasks.poll()) != null) {
+            try {
+                t.run();
+            } catch (RuntimeException e) {
+                LOG.error("task failed on the loop", e);
+            }
+            work++;
+        }
+        work += network.poll(nowNs);
+        work += wheel.poll(nowNs, this::onTimer);
+        work += runReady();
+        return work;
+    }
+
+    private int runReady() {
+        int n = ready.size();
+        for (int i = 0; i < n; i++) {
+            AgentNode node = ready.poll();
+            node.queued = false;
+            Agent agent = node.agent;
+            if (agent.getState() == Agent.State.DELETED) {
+                continue;
+            }
+            boolean more = !agent.deleteRequested() && agent.runRound();
+            if (agent.deleteRequested()) {
+                removeAgent(node, true);
+            } else if (more) {
+                makeReady(node);
+            }
+        }
+        return n;
+    }
+
+    void makeReady(AgentNode node) {
+        if (!node.queued && node.agent.getState() != Agent.State.DELETED) {
+            node.queued = true;
+            ready.add(node);
+        }
+    }
+
+    private void onTimer(long now, long wheelId) {
+        Timer t = timersByWheelId.remove(wheelId);
+        if (t == null) {
+            return;
+        }
+        timersById.remove(t.id);
+        try {
+            t.task.run();
+        } catch (RuntimeException e) {
+            LOG.error("timer task failed", e);
+        }
+    }
+
+    /** Runs a task on the loop at or after a deadline (loop time, ns); returns an id for {@link #cancel}. */
+    public long schedule(long deadlineNs, Runnable task) {
+        long id = ++nextTimerId;
+        long wheelId = wheel.schedule(deadlineNs);
+        Timer t = new Timer(id, wheelId, task);
+        timersById.put(id, t);
+        timersByWheelId.put(wheelId, t);
+        return id;
+    }
+
+    /** Cancels a scheduled task; false if it already ran or was cancelled. */
+    public boolean cancel(long timerId) {
+        Timer t = timersById.remove(timerId);
+        if (t == null) {
+            return false;
+        }
+        wheel.cancel(t.wheelId);
+        timersByWheelId.remove(t.wheelId);
+        return true;
+    }
+
+    /** The earliest time at which this runtime has work, for a simulation to advance its clock to. */
+    public long nextDeadlineNs() {
+        if (!ready.isEmpty() || !tasks.isEmpty()) {
+            return nowNs;
+        }
+        return Math.min(wheel.earliestDeadline(), network.nextEventNs());
+    }
+
+    /** Runs a task on the loop. Thread-safe. */
+    public void execute(Runnable task) {
+        tasks.add(task);
+        if (parked) {
+            network.wakeup();
+        }
+    }
+
+    /** True on the thread that drives this runtime. */
+    public boolean inLoop() {
+        Thread loop = loopThread;
+        return Thread.currentThread() == (loop != null ? loop : ownerThread);
+    }
+
+    private <T> T callInLoop(Supplier<T> body) {
+        if (!running) {
+            throw new IllegalStateException("call from the thread that drives this runtime, or start() it first");
+        }
+        CompletableFuture<T> f = new CompletableFuture<>();
+        execute(() -> {
+            try {
+                f.complete(body.get());
+            } catch (RuntimeException e) {
+                f.completeExceptionally(e);
+            }
+        });
+        try {
+            return f.get(30, TimeUnit.SECONDS);
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof RuntimeException re) {
+                throw re;
+            }
+            throw new CompletionException(e.getCause());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while waiting for the loop", e);
+        } catch (TimeoutException e) {
+            throw new IllegalStateException("the loop did not answer within 30 s; is a behaviour blocking it?", e);
+        }
+    }
+
+    /** Gives the runtime a thread of its own that runs the loop until {@link #close()}. */
+    public AgentRuntime start() {
+        if (running) {
+            return this;
+        }
+        running = true;
+        Thread t = new Thread(this::loop, "concord-loop-" + platformName);
+        loopThread = t;
+        t.start();
+        return this;
+    }
+
+    private void loop() {
+        int idle = 0;
+        while (running) {
+            int work;
+            try {
+                work = doWork();
+            } catch (RuntimeException | Error e) {
+                LOG.error("loop cycle failed; going on", e);
+                work = 1;
+            }
+            if (work > 0) {
+                idle = 0;
+                continue;
+            }
+            if (idle < idleSpinIterations) {
+                idle++;
+                Thread.onSpinWait();
+                continue;
+            }
+            parked = true;
+            if (tasks.isEmpty() && running) {
+                long next = wheel.earliestDeadline();
+                long timeout = next == Long.MAX_VALUE ? TimeUnit.SECONDS.toNanos(1) : next - clock.nanoTime();
+                if (timeout > 0) {
+                    network.await(timeout);
+                }
+            }
+            parked = false;
+            idle = 0;
+        }
+    }
+
+    /** Stops every agent (running their takeDown), the loop, and the network if it made it. Idempotent. */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        if (running && !inLoop()) {
+            try {
+                callInLoop(() -> {
+                    shutdownAgents();
+                    return null;
+                });
+            } catch (RuntimeException e) {
+                LOG.warn("agents did not stop cleanly: {}", e.toString());
+            }
+            running = false;
+            network.wakeup();
+            try {
+                loopThread.join(10_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        } else {
+            running = false;
+            shutdownAgents();
+        }
+        closed = true;
+        if (ownsNetwork) {
+            network.close();
+        }
+    }
+
+    /** Crashes every agent at once (no takeDown), as a killed process would. */
+    public void crash() {
+        for (AgentNode n : new ArrayList<>(directory.values())) {
+            removeAgent(n, false);
+        }
+        ready.clear();
+    }
+
+    private void shutdownAgents() {
+        for (AgentNode n : new ArrayList<>(directory.values())) {
+            removeAgent(n, true);
+        }
+        ready.clear();
+    }
+
+    // ---- services ---------------------------------------------------------------------------------
+
+    public Clock clock() {
+        return clock;
+    }
+
+    /** The loop's time, read once at the start of each work cycle. */
+    public long nowNs() {
+        return nowNs;
+    }
+
+    public RandomGenerator random() {
+        return random;
+    }
+
+    public Tracer tracer() {
+        return tracer;
+    }
+
+    public String platformName() {
+        return platformName;
+    }
+
+    public String host() {
+        return host;
+    }
+
+    public Network network() {
+        return network;
+    }
+
+    int mailboxCapacity() {
+        return mailboxCapacity;
+    }
+
+    /** Timers pending (for tests and tools). */
+    public int pendingTimers() {
+        return timersById.size();
+    }
+}

@@ -1,0 +1,590 @@
+package io.concord.core.codec;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.time.Clock;
+
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Base64;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The FIPA string representation of ACL (SC00070, {@code fipa.acl.rep.string.std}) as JADE 4.3
+ * writes and reads it.
+ *
+ * <p><b>Writing</b> follows JADE's layout (upper-case performative, one slot group per line,
+ * content always quoted with only {@code "} escaped, {@code :reply-by} in UTC, user parameters as
+ * {@code :X-name}) but quotes every value that is not a plain ASCII word, so that JADE reads back
+ * exactly what was meant. Content is not trimmed. Text content that ends in a backslash, which
+ * JADE's escaping cannot express, is written as a byte string {@code #n"...}; byte content is
+ * written as Base64 with {@code :X-JADE-Encoding Base64}, as JADE does.
+ *
+ * <p><b>Reading</b> is lenient where JADE is: any case and whitespace, quoted or bare values,
+ * byte strings, nested expressions (kept as their text), {@code :reply-by} with or without
+ * {@code Z} or relative ({@code +...}). It rejects, as JADE does, unknown parameters that are
+ * neither FIPA nor {@code :X-}, and receivers or addresses not written as {@code (set ...)} or
+ * {@code (sequence ...)}. Every error is an {@link AclParseException} naming the offset.
+ */
+public final class StringAclCodec implements AclCodec {
+    /** The codec with the system clock (used only for relative {@code :reply-by}) and UTF-8. */
+    public static final StringAclCodec INSTANCE = new StringAclCodec(Clock.system(), StandardCharsets.UTF_8);
+
+    /** FIPA's name of this representation. */
+    public static final String NAME = "fipa.acl.rep.string.std";
+
+    static final int MAX_NESTING = 64;
+
+    private final Clock clock;
+    private final Charset charset;
+
+    /**
+     * @param clock   used only to resolve relative {@code :reply-by} times
+     * @param charset of the byte form ({@code encode}/{@code decode}); JADE's default is US-ASCII
+     */
+    public StringAclCodec(Clock clock, Charset charset) {
+        this.clock = clock;
+        this.charset = charset;
+    }
+
+    @Override
+    public String name() {
+        return NAME;
+    }
+
+    @Override
+    public byte[] encode(AclMessage msg) {
+        return encodeToString(msg).getBytes(charset);
+    }
+
+    @Override
+    public AclMessage decode(byte[] data, int offset, int length) throws AclParseException {
+        if (offset < 0 || length < 0 || offset + length > data.length) {
+            throw new AclParseException(0, "a valid byte range", "offset " + offset + " length " + length);
+        }
+        return decode(new String(data, offset, length, charset));
+    }
+
+    /** Writes a message in JADE's layout. */
+    public String encodeToString(AclMessage m) {
+        StringBuilder sb = new StringBuilder(256);
+        sb.append('(').append(m.getPerformative().wireName()).append('\n');
+        if (m.getSender() != null) {
+            sb.append(" :sender  ");
+            writeAid(sb, m.getSender());
+            sb.append('\n');
+        }
+        if (!m.getReceivers().isEmpty()) {
+            sb.append(" :receiver  ");
+            writeAidSet(sb, m.getReceivers());
+            sb.append('\n');
+        }
+        if (!m.getReplyTo().isEmpty()) {
+            sb.append(" :reply-to  ");
+            writeAidSet(sb, m.getReplyTo());
+            sb.append('\n');
+        }
+        boolean base64 = false;
+        if (m.hasByteSequenceContent()) {
+            sb.append(" :content  ");
+            writeQuoted(sb, Base64.getEncoder().encodeToString(m.getByteSequenceContent()));
+            sb.append('\n');
+            base64 = true;
+        } else if (m.getContent() != null) {
+            sb.append(" :content  ");
+            writeContent(sb, m.getContent());
+            sb.append('\n');
+        }
+        slot(sb, "reply-with", m.getReplyWith());
+        slot(sb, "in-reply-to", m.getInReplyTo());
+        slot(sb, "encoding", m.getEncoding());
+        slot(sb, "language", m.getLanguage());
+        slot(sb, "ontology", m.getOntology());
+        if (m.hasReplyBy()) {
+            sb.append(" :reply-by  ").append(FipaDates.format(m.getReplyByEpochMs()));
+        }
+        if (m.getProtocol() != null) {
+            sb.append("\n :protocol  ");
+            writeValue(sb, m.getProtocol());
+        }
+        if (m.getConversationId() != null) {
+            sb.append("\n :conversation-id  ");
+            writeValue(sb, m.getConversationId());
+        }
+        if (base64) {
+            sb.append(" :X-JADE-Encoding Base64");
+        }
+        for (Map.Entry<String, String> e : m.getUserDefinedParameters().entrySet()) {
+            sb.append(" :X-");
+            sb.append(e.getKey());
+            sb.append(' ');
+            writeValue(sb, e.getValue());
+        }
+        sb.append(" )");
+        return sb.toString();
+    }
+
+    private static void slot(StringBuilder sb, String name, String value) {
+        if (value != null) {
+            sb.append(" :").append(name).append("  ");
+            writeValue(sb, value);
+            sb.append(' ');
+        }
+    }
+
+    private static void writeAidSet(StringBuilder sb, List<AID> aids) {
+        sb.append("(set ");
+        for (AID a : aids) {
+            writeAid(sb, a);
+            sb.append(' ');
+        }
+        sb.append(')');
+    }
+
+    private static void writeAid(StringBuilder sb, AID aid) {
+        sb.append("( agent-identifier :name ");
+        writeValue(sb, aid.name());
+        sb.append(' ');
+        if (!aid.addresses().isEmpty()) {
+            sb.append(" :addresses (sequence ");
+            for (String a : aid.addresses()) {
+                writeValue(sb, a);
+                sb.append(' ');
+            }
+            sb.append(')');
+        }
+        if (!aid.resolvers().isEmpty()) {
+            sb.append(" :resolvers (sequence ");
+            for (AID r : aid.resolvers()) {
+                writeAid(sb, r);
+                sb.append(' ');
+            }
+            sb.append(')');
+        }
+        for (Map.Entry<String, String> e : aid.userDefined().entrySet()) {
+            sb.append(" :X-").append(e.getKey()).append(' ');
+            writeValue(sb, e.getValue());
+        }
+        sb.append(')');
+    }
+
+    private static void writeContent(StringBuilder sb, String content) {
+        if (content.endsWith("\\")) {
+            // JADE escapes only the quote, so a trailing backslash would escape the closing quote.
+            byte[] bytes = content.getBytes(StandardCharsets.UTF_8);
+            sb.append('#').append(bytes.length).append('"').append(content);
+        } else {
+            writeQuoted(sb, content);
+        }
+    }
+
+    private static void writeValue(StringBuilder sb, String v) {
+        if (isPlainWord(v)) {
+            sb.append(v);
+        } else {
+            writeQuoted(sb, v);
+        }
+    }
+
+    private static void writeQuoted(StringBuilder sb, String v) {
+        sb.append('"');
+        for (int i = 0; i < v.length(); i++) {
+            char c = v.charAt(i);
+            if (c == '"') {
+                sb.append('\\');
+            }
+            sb.append(c);
+        }
+        sb.append('"');
+    }
+
+    /**
+     * A value JADE reads back unchanged when written bare: printable ASCII, no quote, parenthesis
+     * or whitespace, and not starting like a number, a byte string or a parameter name.
+     */
+    static boolean isPlainWord(String v) {
+        if (v.isEmpty() || "#0123456789-:".indexOf(v.charAt(0)) >= 0 || v.endsWith("\\")) {
+            return false;
+        }
+        for (int i = 0; i < v.length(); i++) {
+            char c = v.charAt(i);
+            if (c <= 0x20 || c >= 0x7f || c == '"' || c == '(' || c == ')') {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Reads one message; the whole input must be that message (trailing whitespace allowed). */
+    public AclMessage decode(String text) throws AclParseException {
+        return new Reader(text, clock).message();
+    }
+
+    /** A recursive-descent reader over the string, with a bounded nesting depth. */
+    private static final class Reader {
+        private final String s;
+        private final Clock clock;
+        private int pos;
+
+        Reader(String s, Clock clock) {
+            this.s = s;
+            this.clock = clock;
+        }
+
+        AclMessage message() throws AclParseException {
+            skipWs();
+            expectChar('(', "'(' opening the message");
+            int perfAt = pos;
+            String perfName = word("a performative such as INFORM");
+            Performative perf = Performative.fromWireName(perfName);
+            if (perf == null) {
+                throw new AclParseException(perfAt, "one of the 22 FIPA performatives", quote(perfName));
+            }
+            AclMessage m = new AclMessage(perf);
+            boolean base64 = false;
+            while (true) {
+                skipWs();
+                if (peek() == ')') {
+                    pos++;
+                    break;
+                }
+                int paramAt = pos;
+                String param = word("a parameter such as :content, or ')'");
+                if (param.length() < 2 || param.charAt(0) != ':') {
+                    throw new AclParseException(paramAt, "a parameter name starting with ':'", quote(param));
+                }
+                String key = param.substring(1).toLowerCase(Locale.ROOT);
+                switch (key) {
+                    case "sender" -> m.setSender(aid(0));
+                    case "receiver" -> {
+                        m.clearAllReceiver();
+                        m.getReceivers().addAll(aidCollection("receiver"));
+                    }
+                    case "reply-to" -> {
+                        m.getReplyTo().clear();
+                        m.getReplyTo().addAll(aidCollection("reply-to"));
+                    }
+                    case "content" -> content(m);
+                    case "reply-with" -> m.setReplyWith(value());
+                    case "in-reply-to" -> m.setInReplyTo(value());
+                    case "encoding" -> m.setEncoding(value());
+                    case "language" -> m.setLanguage(value());
+                    case "ontology" -> m.setOntology(value());
+                    case "protocol" -> m.setProtocol(value());
+                    case "conversation-id" -> m.setConversationId(value());
+                    case "reply-by" -> {
+                        skipWs();
+                        int at = pos;
+                        String v = value();
+                        m.setReplyByEpochMs(FipaDates.parse(v, at, clock));
+                    }
+                    default -> {
+                        if (key.startsWith("x-") && key.length() > 2) {
+                            String name = param.substring(3);
+                            String v = value();
+                            if (name.equalsIgnoreCase("JADE-Encoding") && v.equalsIgnoreCase("Base64")) {
+                                base64 = true;
+                            } else {
+                                m.addUserDefinedParameter(name, v);
+                            }
+                        } else {
+                            throw new AclParseException(paramAt,
+                                    "a FIPA message parameter or a user-defined :X-name", quote(param));
+                        }
+                    }
+                }
+            }
+            skipWs();
+            if (pos != s.length()) {
+                throw new AclParseException(pos, "the end of the message", found());
+            }
+            if (base64 && m.getContent() != null && !m.hasByteSequenceContent()) {
+                try {
+                    m.setByteSequenceContent(Base64.getMimeDecoder().decode(m.getContent()));
+                } catch (IllegalArgumentException e) {
+                    throw new AclParseException(0, "Base64 content as :X-JADE-Encoding says",
+                            "content that is not Base64 (" + e.getMessage() + ")");
+                }
+            }
+            return m;
+        }
+
+        private void content(AclMessage m) throws AclParseException {
+            skipWs();
+            char c = peek();
+            if (c == '#' && isByteStringAhead()) {
+                m.setByteSequenceContent(byteString());
+            } else {
+                m.setContent(value());
+            }
+        }
+
+        private List<AID> aidCollection(String slot) throws AclParseException {
+            skipWs();
+            expectChar('(', "'(set' holding the " + slot + " AIDs");
+            int kwAt = pos;
+            String kw = word("'set' or 'sequence'");
+            if (!kw.equalsIgnoreCase("set") && !kw.equalsIgnoreCase("sequence")) {
+                throw new AclParseException(kwAt, "'set' or 'sequence'", quote(kw));
+            }
+            List<AID> out = new ArrayList<>();
+            while (true) {
+                skipWs();
+                if (peek() == ')') {
+                    pos++;
+                    return out;
+                }
+                out.add(aid(0));
+            }
+        }
+
+        private AID aid(int depth) throws AclParseException {
+            if (depth > 8) {
+                throw new AclParseException(pos, "AIDs nested at most 8 deep in :resolvers", "deeper nesting");
+            }
+            skipWs();
+            int start = pos;
+            expectChar('(', "'(agent-identifier'");
+            int kwAt = pos;
+            String kw = word("'agent-identifier'");
+            if (!kw.equalsIgnoreCase("agent-identifier")) {
+                throw new AclParseException(kwAt, "'agent-identifier'", quote(kw));
+            }
+            String name = null;
+            List<String> addresses = List.of();
+            List<AID> resolvers = List.of();
+            Map<String, String> user = new LinkedHashMap<>();
+            while (true) {
+                skipWs();
+                if (peek() == ')') {
+                    pos++;
+                    break;
+                }
+                int slotAt = pos;
+                String slot = word("an AID slot (:name, :addresses, :resolvers, :X-...) or ')'");
+                String k = slot.toLowerCase(Locale.ROOT);
+                switch (k) {
+                    case ":name" -> name = value();
+                    case ":addresses" -> addresses = sequenceOfWords();
+                    case ":resolvers" -> {
+                        skipWs();
+                        expectChar('(', "'(sequence' of resolver AIDs");
+                        int sAt = pos;
+                        String sk = word("'sequence'");
+                        if (!sk.equalsIgnoreCase("sequence") && !sk.equalsIgnoreCase("set")) {
+                            throw new AclParseException(sAt, "'sequence'", quote(sk));
+                        }
+                        List<AID> rs = new ArrayList<>();
+                        while (true) {
+                            skipWs();
+                            if (peek() == ')') {
+                                pos++;
+                                break;
+                            }
+                            rs.add(aid(depth + 1));
+                        }
+                        resolvers = rs;
+                    }
+                    default -> {
+                        if (k.startsWith(":x-") && k.length() > 3) {
+                            user.put(slot.substring(3), value());
+                        } else {
+                            throw new AclParseException(slotAt, "an AID slot (:name, :addresses, :resolvers, :X-...)",
+                                    quote(slot));
+                        }
+                    }
+                }
+            }
+            if (name == null || name.isEmpty()) {
+                throw new AclParseException(start, "an agent-identifier with a :name", "none");
+            }
+            return new AID(name, addresses, resolvers, user);
+        }
+
+        private List<String> sequenceOfWords() throws AclParseException {
+            skipWs();
+            expectChar('(', "'(sequence' of addresses");
+            int kwAt = pos;
+            String kw = word("'sequence'");
+            if (!kw.equalsIgnoreCase("sequence") && !kw.equalsIgnoreCase("set")) {
+                throw new AclParseException(kwAt, "'sequence'", quote(kw));
+            }
+            List<String> out = new ArrayList<>();
+            while (true) {
+                skipWs();
+                if (peek() == ')') {
+                    pos++;
+                    return out;
+                }
+                out.add(value());
+            }
+        }
+
+        /** A word, a quoted string, a byte string (as UTF-8 text) or a nested expression's text. */
+        private String value() throws AclParseException {
+            skipWs();
+            char c = peek();
+            if (c == '"') {
+                return quoted();
+            }
+            if (c == '(') {
+                return expression();
+            }
+            if (c == '#' && isByteStringAhead()) {
+                return new String(byteString(), StandardCharsets.UTF_8);
+            }
+            return word("a value (a word, a \"string\" or an expression)");
+        }
+
+        private String quoted() throws AclParseException {
+            int start = pos;
+            pos++;
+            StringBuilder sb = null;
+            int runStart = pos;
+            while (pos < s.length()) {
+                char c = s.charAt(pos);
+                if (c == '\\' && pos + 1 < s.length() && s.charAt(pos + 1) == '"') {
+                    if (sb == null) {
+                        sb = new StringBuilder();
+                    }
+                    sb.append(s, runStart, pos).append('"');
+                    pos += 2;
+                    runStart = pos;
+                } else if (c == '"') {
+                    String out = sb == null ? s.substring(runStart, pos) : sb.append(s, runStart, pos).toString();
+                    pos++;
+                    return out;
+                } else {
+                    pos++;
+                }
+            }
+            throw new AclParseException(start, "a closing '\"' for the string opened here", "the end of the input");
+        }
+
+        private boolean isByteStringAhead() {
+            int p = pos + 1;
+            int digits = 0;
+            while (p < s.length() && Character.isDigit(s.charAt(p)) && s.charAt(p) < 0x80) {
+                p++;
+                digits++;
+            }
+            return digits > 0 && p < s.length() && s.charAt(p) == '"';
+        }
+
+        /** {@code #n"} followed by exactly n bytes (counted in UTF-8). */
+        private byte[] byteString() throws AclParseException {
+            int start = pos;
+            pos++;
+            int digitsAt = pos;
+            while (Character.isDigit(s.charAt(pos))) {
+                pos++;
+            }
+            String digits = s.substring(digitsAt, pos);
+            if (digits.length() > 9) {
+                throw new AclParseException(digitsAt, "a byte-string length below 10^9", digits);
+            }
+            int n = Integer.parseInt(digits);
+            pos++; // the quote
+            int bytes = 0;
+            int from = pos;
+            while (bytes < n) {
+                if (pos >= s.length()) {
+                    throw new AclParseException(start, "a byte string of " + n + " bytes",
+                            "only " + bytes + " bytes before the end of the input");
+                }
+                char c = s.charAt(pos);
+                if (Character.isHighSurrogate(c) && pos + 1 < s.length() && Character.isLowSurrogate(s.charAt(pos + 1))) {
+                    bytes += 4;
+                    pos += 2;
+                } else {
+                    bytes += c < 0x80 ? 1 : c < 0x800 ? 2 : 3;
+                    pos++;
+                }
+            }
+            if (bytes != n) {
+                throw new AclParseException(start, "a byte string of exactly " + n + " bytes",
+                        "a character straddling its end");
+            }
+            return s.substring(from, pos).getBytes(StandardCharsets.UTF_8);
+        }
+
+        /** A balanced parenthesised expression, returned as its text; strings inside are skipped whole. */
+        private String expression() throws AclParseException {
+            int start = pos;
+            int depth = 0;
+            while (pos < s.length()) {
+                char c = s.charAt(pos);
+                if (c == '(') {
+                    if (++depth > MAX_NESTING) {
+                        throw new AclParseException(pos, "expressions nested at most " + MAX_NESTING + " deep",
+                                "deeper nesting");
+                    }
+                    pos++;
+                } else if (c == ')') {
+                    pos++;
+                    if (--depth == 0) {
+                        return s.substring(start, pos);
+                    }
+                } else if (c == '"') {
+                    quoted();
+                } else if (c == '#' && isByteStringAhead()) {
+                    byteString();
+                } else {
+                    pos++;
+                }
+            }
+            throw new AclParseException(start, "a ')' closing the expression opened here", "the end of the input");
+        }
+
+        private String word(String expected) throws AclParseException {
+            skipWs();
+            int start = pos;
+            while (pos < s.length()) {
+                char c = s.charAt(pos);
+                if (c <= ' ' || c == '(' || c == ')' || c == '"') {
+                    break;
+                }
+                pos++;
+            }
+            if (pos == start) {
+                throw new AclParseException(start, expected, found());
+            }
+            return s.substring(start, pos);
+        }
+
+        private void expectChar(char c, String expected) throws AclParseException {
+            skipWs();
+            if (peek() != c) {
+                throw new AclParseException(pos, expected, found());
+            }
+            pos++;
+        }
+
+        private char peek() {
+            return pos < s.length() ? s.charAt(pos) : '\0';
+        }
+
+        private void skipWs() {
+            while (pos < s.length() && s.charAt(pos) <= ' ' && s.charAt(pos) != '\0') {
+                pos++;
+            }
+        }
+
+        private String found() {
+            if (pos >= s.length()) {
+                return "the end of the input";
+            }
+            int end = Math.min(s.length(), pos + 20);
+            return quote(s.substring(pos, end) + (end < s.length() ? "..." : ""));
+        }
+
+        private static String quote(String v) {
+            return "'" + v + "'";
+        }
+    }
+}

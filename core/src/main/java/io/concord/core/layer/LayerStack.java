@@ -1,0 +1,195 @@
+package io.concord.core.layer;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.function.Consumer;
+
+/**
+ * An agent's stack of layers, top (next to the agent) first, frozen when built. Envelopes enter
+ * at the top with {@link #sendDown} and leave at the bottom into the transmit sink; they enter at
+ * the bottom with {@link #receiveUp} and leave at the top into the deliver sink.
+ */
+public final class LayerStack {
+    private static final Logger LOG = LoggerFactory.getLogger(LayerStack.class);
+
+    private final List<Layer> layers;
+    private final Ctx[] contexts;
+    private final StackHost host;
+    private final Consumer<Envelope> deliver;
+    private final Consumer<Envelope> transmit;
+    private final Consumer<StackEvent> eventSink;
+    private boolean started;
+
+    /**
+     * @param layers    top first
+     * @param host      the owning node's services
+     * @param deliver   receives envelopes leaving the top (to the agent)
+     * @param transmit  receives envelopes leaving the bottom (to the network)
+     * @param eventSink receives events leaving either end
+     */
+    public LayerStack(List<Layer> layers, StackHost host, Consumer<Envelope> deliver,
+                      Consumer<Envelope> transmit, Consumer<StackEvent> eventSink) {
+        this.layers = List.copyOf(layers);
+        this.host = Objects.requireNonNull(host, "host");
+        this.deliver = Objects.requireNonNull(deliver, "deliver");
+        this.transmit = Objects.requireNonNull(transmit, "transmit");
+        this.eventSink = Objects.requireNonNull(eventSink, "eventSink");
+        this.contexts = new Ctx[this.layers.size()];
+        for (int i = 0; i < contexts.length; i++) {
+            contexts[i] = new Ctx(i, this.layers.get(i));
+        }
+        for (int i = contexts.length - 1; i >= 0; i--) {
+            contexts[i].layer.init(contexts[i]);
+        }
+    }
+
+    /** The layers, top first. */
+    public List<Layer> layers() {
+        return layers;
+    }
+
+    /** Starts the layers, bottom first. */
+    public void start() {
+        if (started) {
+            return;
+        }
+        for (int i = contexts.length - 1; i >= 0; i--) {
+            contexts[i].layer.start(contexts[i]);
+        }
+        started = true;
+    }
+
+    /** Stops the layers, top first. */
+    public void stop() {
+        if (!started) {
+            return;
+        }
+        started = false;
+        for (Ctx c : contexts) {
+            try {
+                c.layer.stop(c);
+            } catch (RuntimeException e) {
+                LOG.warn("layer {} failed to stop: {}", c.layer.name(), e.toString());
+            }
+        }
+    }
+
+    /** Sends an envelope down from the top. */
+    public void sendDown(Envelope env) {
+        down(0, env);
+    }
+
+    /** Passes received bytes up from the bottom. */
+    public void receiveUp(Envelope env) {
+        up(contexts.length - 1, env);
+    }
+
+    /** Fires an event from the top going down, or from the bottom going up. */
+    public void fireEvent(StackEvent event) {
+        event(event.up() ? contexts.length - 1 : 0, event);
+    }
+
+    private void down(int index, Envelope env) {
+        if (index >= contexts.length) {
+            transmit.accept(env);
+            return;
+        }
+        Ctx c = contexts[index];
+        try {
+            c.layer.onDown(c, env);
+        } catch (RuntimeException e) {
+            c.failed(env, e);
+        }
+    }
+
+    private void up(int index, Envelope env) {
+        if (index < 0) {
+            deliver.accept(env);
+            return;
+        }
+        Ctx c = contexts[index];
+        try {
+            c.layer.onUp(c, env);
+        } catch (RuntimeException e) {
+            c.failed(env, e);
+        }
+    }
+
+    private void event(int index, StackEvent ev) {
+        if (index < 0 || index >= contexts.length) {
+            eventSink.accept(ev);
+            return;
+        }
+        Ctx c = contexts[index];
+        try {
+            c.layer.onEvent(c, ev);
+        } catch (RuntimeException e) {
+            LOG.warn("layer {} failed on event {}: {}", c.layer.name(), ev.type(), e.toString());
+        }
+    }
+
+    /** Counts and traces a drop on behalf of a layer. */
+    void drop(String layer, Envelope env, String reason, String detail) {
+        host.drops().increment(reason);
+        Tracer t = host.tracer();
+        if (t.enabled()) {
+            t.trace(host.nowNs(), host.nodeName(), "drop", layer + " " + reason + ": " + detail + " " + env);
+        }
+    }
+
+    private final class Ctx implements LayerContext {
+        private final int index;
+        private final Layer layer;
+        private final String name;
+
+        Ctx(int index, Layer layer) {
+            this.index = index;
+            this.layer = layer;
+            this.name = layer.name();
+        }
+
+        @Override
+        public String layerName() {
+            return name;
+        }
+
+        @Override
+        public void passDown(Envelope env) {
+            down(index + 1, env);
+        }
+
+        @Override
+        public void passUp(Envelope env) {
+            up(index - 1, env);
+        }
+
+        @Override
+        public void fireEvent(StackEvent event) {
+            event(event.up() ? index - 1 : index + 1, event);
+        }
+
+        @Override
+        public void drop(Envelope env, String reason, String detail) {
+            LayerStack.this.drop(name, env, reason, detail);
+        }
+
+        @Override
+        public StackHost host() {
+            return host;
+        }
+
+        void failed(Envelope env, RuntimeException e) {
+            LOG.warn("layer {} of {} threw on {}", name, host.nodeName(), env, e);
+            drop(env, "layer-error", e.toString());
+        }
+    }
+
+    /** Builds a stack from layers listed top first; the list is frozen. */
+    public static List<Layer> list(Layer... topFirst) {
+        return new ArrayList<>(List.of(topFirst));
+    }
+}

@@ -1,0 +1,25 @@
+package io.concord.core.layer;
+
+import io.concord.core.time.Clock;
+
+/** What the node that owns a stack gives its layers: time, timers, tracing, drop counting. */
+public interface StackHost {
+
+    /** The node's name (its agent's name), for traces. */
+    String nodeName();
+
+    Clock clock();
+
+    /** The loop's current time (read once per work cycle). */
+    long nowNs();
+
+    /** Runs a task on the loop at or after the deadline; returns an id to cancel it. */
+    long schedule(long deadlineNs, Runnable task);
+
+    /** Cancels a scheduled task; false if it already ran or was cancelled. */
+    boolean cancel(long timerId);
+
+    Tracer tracer();
+
+    DropCounters drops();
+}

@@ -1,0 +1,42 @@
+package io.concord.core.net;
+
+/**
+ * A datagram network with its port space: real UDP sockets ({@link UdpNetwork}) or the
+ * deterministic virtual network of the test kit. One loop polls it; {@link #wakeup()} is the only
+ * method other threads may call.
+ */
+public interface Network {
+
+    /**
+     * Binds a port.
+     *
+     * @param host the local host (an IP literal, or a virtual host name)
+     * @param port the port, or 0 for any free one
+     * @return the endpoint, or {@code null} if the port is already bound (the expected outcome that
+     *         port-binding discovery relies on)
+     * @throws java.io.UncheckedIOException for any other failure to bind, with its cause
+     */
+    Endpoint tryBind(String host, int port, Receiver receiver);
+
+    /**
+     * Delivers the datagrams that have arrived by {@code nowNs} to their receivers.
+     *
+     * @return how many were delivered
+     */
+    int poll(long nowNs);
+
+    /** The time of the next scheduled delivery, or {@link Long#MAX_VALUE} if none is known. */
+    long nextEventNs();
+
+    /**
+     * Waits up to {@code timeoutNs} for datagrams or a {@link #wakeup()}; returns at once on a
+     * virtual network.
+     */
+    void await(long timeoutNs);
+
+    /** Makes a pending or the next {@link #await} return. Thread-safe. */
+    void wakeup();
+
+    /** Closes every endpoint and the network itself. */
+    void close();
+}

@@ -1,0 +1,232 @@
+package io.concord.core.net;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.BindException;
+import java.net.InetSocketAddress;
+import java.net.SocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.ClosedChannelException;
+import java.nio.channels.DatagramChannel;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.util.HashMap;
+import java.util.Iterator;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Real UDP sockets, non-blocking, all registered with one {@link Selector} so that a single loop
+ * serves every agent of a JVM.
+ */
+public final class UdpNetwork implements Network {
+    /** Largest UDP payload over IPv4. */
+    public static final int MAX_DATAGRAM = 65507;
+    private static final Logger LOG = LoggerFactory.getLogger(UdpNetwork.class);
+
+    private final Selector selector;
+    private final ByteBuffer receiveBuffer = ByteBuffer.allocateDirect(MAX_DATAGRAM + 1);
+    private final byte[] receiveArray = new byte[MAX_DATAGRAM + 1];
+    private final Map<InetSocketAddress, Address> addressCache = new HashMap<>();
+    private final Map<Address, InetSocketAddress> socketAddressCache = new HashMap<>();
+    private final int socketBufferBytes;
+
+    /** A network with 1 MiB socket buffers. */
+    public UdpNetwork() {
+        this(1 << 20);
+    }
+
+    /** A network whose sockets ask the kernel for the given send and receive buffer size. */
+    public UdpNetwork(int socketBufferBytes) {
+        this.socketBufferBytes = socketBufferBytes;
+        try {
+            selector = Selector.open();
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot open a selector for UDP sockets", e);
+        }
+    }
+
+    @Override
+    public Endpoint tryBind(String host, int port, Receiver receiver) {
+        DatagramChannel ch = null;
+        try {
+            ch = DatagramChannel.open();
+            ch.setOption(StandardSocketOptions.SO_RCVBUF, socketBufferBytes);
+            ch.setOption(StandardSocketOptions.SO_SNDBUF, socketBufferBytes);
+            ch.bind(new InetSocketAddress(host, port));
+            ch.configureBlocking(false);
+            UdpEndpoint ep = new UdpEndpoint(ch, receiver);
+            ch.register(selector, SelectionKey.OP_READ, ep);
+            return ep;
+        } catch (BindException e) {
+            closeQuietly(ch);
+            return null;
+        } catch (IOException e) {
+            closeQuietly(ch);
+            throw new UncheckedIOException("cannot bind UDP " + host + ":" + port + ": " + e.getMessage(), e);
+        }
+    }
+
+    private static void closeQuietly(DatagramChannel ch) {
+        if (ch != null) {
+            try {
+                ch.close();
+            } catch (IOException ignored) {
+                // nothing more to release
+            }
+        }
+    }
+
+    @Override
+    public int poll(long nowNs) {
+        try {
+            if (selector.selectNow() == 0) {
+                return 0;
+            }
+        } catch (IOException e) {
+            LOG.warn("selector failed: {}", e.toString());
+            return 0;
+        }
+        return drainSelected(nowNs);
+    }
+
+    private int drainSelected(long nowNs) {
+        int delivered = 0;
+        Iterator<SelectionKey> it = selector.selectedKeys().iterator();
+        while (it.hasNext()) {
+            SelectionKey key = it.next();
+            it.remove();
+            if (key.isValid() && key.isReadable()) {
+                delivered += ((UdpEndpoint) key.attachment()).drain(nowNs);
+            }
+        }
+        return delivered;
+    }
+
+    @Override
+    public long nextEventNs() {
+        return Long.MAX_VALUE;
+    }
+
+    @Override
+    public void await(long timeoutNs) {
+        try {
+            if (timeoutNs <= 0) {
+                selector.selectNow();
+            } else {
+                long ms = Math.max(1, TimeUnit.NANOSECONDS.toMillis(timeoutNs));
+                selector.select(ms);
+            }
+            // Selected keys are drained by the next poll.
+        } catch (IOException e) {
+            LOG.warn("selector failed: {}", e.toString());
+        }
+    }
+
+    @Override
+    public void wakeup() {
+        selector.wakeup();
+    }
+
+    @Override
+    public void close() {
+        for (SelectionKey k : selector.keys()) {
+            ((UdpEndpoint) k.attachment()).close();
+        }
+        try {
+            selector.close();
+        } catch (IOException ignored) {
+            // closing anyway
+        }
+    }
+
+    private Address toAddress(SocketAddress sa) {
+        InetSocketAddress isa = (InetSocketAddress) sa;
+        Address a = addressCache.get(isa);
+        if (a == null) {
+            a = new Address(isa.getAddress().getHostAddress(), isa.getPort());
+            if (addressCache.size() > 100_000) {
+                addressCache.clear();
+            }
+            addressCache.put(isa, a);
+        }
+        return a;
+    }
+
+    private InetSocketAddress toSocketAddress(Address a) {
+        InetSocketAddress isa = socketAddressCache.get(a);
+        if (isa == null) {
+            isa = new InetSocketAddress(a.host(), a.port());
+            if (socketAddressCache.size() > 100_000) {
+                socketAddressCache.clear();
+            }
+            socketAddressCache.put(a, isa);
+        }
+        return isa;
+    }
+
+    private final class UdpEndpoint implements Endpoint {
+        private final DatagramChannel channel;
+        private final Receiver receiver;
+        private final Address local;
+
+        UdpEndpoint(DatagramChannel channel, Receiver receiver) throws IOException {
+            this.channel = channel;
+            this.receiver = receiver;
+            InetSocketAddress la = (InetSocketAddress) channel.getLocalAddress();
+            this.local = new Address(la.getAddress().getHostAddress(), la.getPort());
+        }
+
+        int drain(long nowNs) {
+            int n = 0;
+            try {
+                while (true) {
+                    receiveBuffer.clear();
+                    SocketAddress from = channel.receive(receiveBuffer);
+                    if (from == null) {
+                        return n;
+                    }
+                    receiveBuffer.flip();
+                    int len = receiveBuffer.remaining();
+                    receiveBuffer.get(receiveArray, 0, len);
+                    n++;
+                    receiver.onDatagram(toAddress(from), receiveArray, 0, len, nowNs);
+                }
+            } catch (ClosedChannelException e) {
+                return n;
+            } catch (IOException e) {
+                LOG.debug("receive on {} failed: {}", local, e.toString());
+                return n;
+            }
+        }
+
+        @Override
+        public Address localAddress() {
+            return local;
+        }
+
+        @Override
+        public boolean send(Address to, byte[] data, int offset, int length) {
+            try {
+                return channel.send(ByteBuffer.wrap(data, offset, length), toSocketAddress(to)) > 0;
+            } catch (IOException e) {
+                LOG.debug("send from {} to {} failed: {}", local, to, e.toString());
+                return false;
+            }
+        }
+
+        @Override
+        public void close() {
+            closeQuietly(channel);
+        }
+
+        @Override
+        public boolean isOpen() {
+            return channel.isOpen();
+        }
+    }
+}

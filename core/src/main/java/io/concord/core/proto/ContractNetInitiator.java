@@ -1,0 +1,188 @@
+package io.concord.core.proto;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The initiator of FIPA Contract Net (JADE's {@code ContractNetInitiator}): sends the CFP to every
+ * receiver, collects PROPOSE / REFUSE / NOT-UNDERSTOOD until all have answered or the CFP's
+ * {@code :reply-by} passes, lets {@link #handleAllResponses} choose (by adding ACCEPT-PROPOSAL and
+ * REJECT-PROPOSAL replies to the acceptances), sends those, and collects the winners' INFORM or
+ * FAILURE. Proposers that get no acceptance are simply not waited for.
+ */
+public class ContractNetInitiator extends Initiator {
+    private static final int PROPOSED = 3;
+
+    private final List<AclMessage> responses = new ArrayList<>();
+    private final List<AclMessage> results = new ArrayList<>();
+    private final List<AclMessage> earlyAcceptances = new ArrayList<>();
+    private boolean responsesReported;
+
+    public ContractNetInitiator(Agent agent, AclMessage cfp) {
+        super(agent, cfp);
+    }
+
+    @Override
+    List<AclMessage> prepareInitiations(AclMessage initiation) {
+        return prepareCfps(initiation);
+    }
+
+    /** The CFPs to send; a copy of the given one by default. */
+    protected List<AclMessage> prepareCfps(AclMessage cfp) {
+        List<AclMessage> l = new ArrayList<>(1);
+        l.add(cfp.copy());
+        return l;
+    }
+
+    @Override
+    String defaultProtocol() {
+        return FipaProtocols.CONTRACT_NET;
+    }
+
+    @Override
+    void onReply(Session s, AclMessage m) {
+        Performative p = m.getPerformative();
+        if (s.state == WAITING_RESPONSE) {
+            switch (p) {
+                case PROPOSE -> {
+                    s.state = PROPOSED;
+                    responses.add(m);
+                    handlePropose(m, earlyAcceptances);
+                }
+                case REFUSE -> {
+                    s.state = ENDED;
+                    responses.add(m);
+                    handleRefuse(m);
+                }
+                case NOT_UNDERSTOOD -> {
+                    s.state = ENDED;
+                    responses.add(m);
+                    handleNotUnderstood(m);
+                }
+                case FAILURE -> {
+                    s.state = ENDED;
+                    responses.add(m);
+                    handleFailure(m);
+                }
+                default -> handleOutOfSequence(m);
+            }
+        } else if (s.state == WAITING_RESULT) {
+            switch (p) {
+                case INFORM -> {
+                    s.state = ENDED;
+                    results.add(m);
+                    handleInform(m);
+                }
+                case FAILURE -> {
+                    s.state = ENDED;
+                    results.add(m);
+                    handleFailure(m);
+                }
+                default -> handleOutOfSequence(m);
+            }
+        } else {
+            handleOutOfSequence(m);
+        }
+    }
+
+    @Override
+    void onTimeout() {
+        int from = responsesReported ? WAITING_RESULT : WAITING_RESPONSE;
+        for (Session s : sessions.values()) {
+            if (s.state == from) {
+                s.state = ENDED;
+            }
+        }
+    }
+
+    @Override
+    void progress() {
+        if (!responsesReported && none(WAITING_RESPONSE)) {
+            responsesReported = true;
+            List<AclMessage> acceptances = new ArrayList<>(earlyAcceptances);
+            handleAllResponses(new ArrayList<>(responses), acceptances);
+            sendAcceptances(acceptances);
+        }
+        if (responsesReported && all(ENDED)) {
+            handleAllResultNotifications(new ArrayList<>(results));
+            onAllEnded();
+        }
+    }
+
+    private void sendAcceptances(List<AclMessage> acceptances) {
+        AclMessage withDeadline = null;
+        for (AclMessage a : acceptances) {
+            for (AID r : a.getReceivers()) {
+                Session s = sessions.get(r);
+                if (s != null && s.state == PROPOSED) {
+                    s.state = a.getPerformative() == Performative.ACCEPT_PROPOSAL ? WAITING_RESULT : ENDED;
+                }
+            }
+            if (a.getPerformative() == Performative.ACCEPT_PROPOSAL && a.hasReplyBy()) {
+                withDeadline = a;
+            }
+            sendToEach(a, false);
+        }
+        for (Session s : sessions.values()) {
+            if (s.state == PROPOSED) {
+                s.state = ENDED;
+            }
+        }
+        if (withDeadline != null) {
+            deadlineFrom(withDeadline);
+        } else {
+            clearDeadline();
+        }
+    }
+
+    @Override
+    void onAllEnded() {
+        if (sessions.isEmpty() && !responsesReported) {
+            responsesReported = true;
+            handleAllResponses(List.of(), new ArrayList<>());
+            handleAllResultNotifications(List.of());
+        }
+        super.onAllEnded();
+    }
+
+    /** A proposal; an acceptance or rejection may be added to {@code acceptances} at once. */
+    protected void handlePropose(AclMessage propose, List<AclMessage> acceptances) {
+    }
+
+    protected void handleRefuse(AclMessage refuse) {
+    }
+
+    protected void handleNotUnderstood(AclMessage notUnderstood) {
+    }
+
+    protected void handleFailure(AclMessage failure) {
+    }
+
+    protected void handleInform(AclMessage inform) {
+    }
+
+    /**
+     * Every responder answered or the deadline passed: add an ACCEPT-PROPOSAL or REJECT-PROPOSAL
+     * (usually {@code propose.createReply()}) to {@code acceptances} for the proposals you choose.
+     */
+    protected void handleAllResponses(List<AclMessage> responses, List<AclMessage> acceptances) {
+    }
+
+    /** Every accepted proposer reported its result; the conversation is over. */
+    protected void handleAllResultNotifications(List<AclMessage> resultNotifications) {
+    }
+
+    @Override
+    public void reset() {
+        super.reset();
+        responses.clear();
+        results.clear();
+        earlyAcceptances.clear();
+        responsesReported = false;
+    }
+}

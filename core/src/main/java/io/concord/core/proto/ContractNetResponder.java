@@ -1,0 +1,112 @@
+package io.concord.core.proto;
+
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * The responder of FIPA Contract Net (JADE's {@code ContractNetResponder}), serving any number of
+ * CFP sessions at once: {@link #handleCfp} answers PROPOSE or REFUSE; then
+ * {@link #handleAcceptProposal} gives the INFORM (or throws {@link FailureException}), or
+ * {@link #handleRejectProposal} is told. Open sessions are bounded; the oldest are forgotten first.
+ */
+public class ContractNetResponder extends CyclicBehaviour {
+    /** Open proposals kept at most. */
+    public static final int MAX_OPEN_SESSIONS = 10_000;
+
+    private record Session(AclMessage cfp, AclMessage propose) {
+    }
+
+    private final MessageTemplate cfpTemplate;
+    private final Map<String, Session> open = new LinkedHashMap<>(16, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, Session> eldest) {
+            return size() > MAX_OPEN_SESSIONS;
+        }
+    };
+    private final MessageTemplate template;
+
+    public ContractNetResponder(Agent agent, MessageTemplate cfpTemplate) {
+        super(agent);
+        this.cfpTemplate = cfpTemplate;
+        this.template = m -> cfpTemplate.match(m) || ((m.getPerformative() == Performative.ACCEPT_PROPOSAL
+                || m.getPerformative() == Performative.REJECT_PROPOSAL) && open.containsKey(key(m)));
+    }
+
+    /** CFPs of the given protocol. */
+    public static MessageTemplate createMessageTemplate(String protocol) {
+        return MessageTemplate.matchProtocol(protocol).and(MessageTemplate.matchPerformative(Performative.CFP));
+    }
+
+    private static String key(AclMessage m) {
+        return m.getConversationId() + "|" + (m.getSender() == null ? "" : m.getSender().name().toLowerCase());
+    }
+
+    @Override
+    public void action() {
+        AclMessage m = myAgent.receive(template);
+        if (m == null) {
+            block();
+            return;
+        }
+        if (m.getPerformative() == Performative.CFP && cfpTemplate.match(m)) {
+            AclMessage reply;
+            try {
+                reply = handleCfp(m);
+            } catch (FipaException e) {
+                reply = e.toReply(m);
+            }
+            if (reply != null) {
+                Replies.complete(reply, m);
+                if (reply.getPerformative() == Performative.PROPOSE) {
+                    open.put(key(m), new Session(m, reply));
+                }
+                myAgent.send(reply);
+            }
+            return;
+        }
+        Session s = open.remove(key(m));
+        if (s == null) {
+            return;
+        }
+        if (m.getPerformative() == Performative.ACCEPT_PROPOSAL) {
+            AclMessage result;
+            try {
+                result = handleAcceptProposal(s.cfp(), s.propose(), m);
+            } catch (FailureException e) {
+                result = e.toReply(m);
+            }
+            if (result != null) {
+                Replies.complete(result, m);
+                myAgent.send(result);
+            }
+        } else {
+            handleRejectProposal(s.cfp(), s.propose(), m);
+        }
+    }
+
+    /** Answers a CFP with PROPOSE, or throws {@link RefuseException}; {@code null} sends nothing. */
+    protected AclMessage handleCfp(AclMessage cfp) throws RefuseException, FailureException, NotUnderstoodException {
+        throw new RefuseException("not implemented");
+    }
+
+    /** The proposal was accepted: do the work and return INFORM, or throw {@link FailureException}. */
+    protected AclMessage handleAcceptProposal(AclMessage cfp, AclMessage propose, AclMessage accept)
+            throws FailureException {
+        return null;
+    }
+
+    /** The proposal was rejected. */
+    protected void handleRejectProposal(AclMessage cfp, AclMessage propose, AclMessage reject) {
+    }
+
+    /** Proposals waiting for an answer. */
+    public int openSessions() {
+        return open.size();
+    }
+}

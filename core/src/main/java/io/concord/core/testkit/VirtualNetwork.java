@@ -1,0 +1,254 @@
+package io.concord.core.testkit;
+
+import io.concord.core.net.Address;
+import io.concord.core.net.Endpoint;
+import io.concord.core.net.Network;
+import io.concord.core.net.Receiver;
+import io.concord.core.time.Clock;
+
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.Set;
+import java.util.random.RandomGenerator;
+
+/**
+ * A deterministic datagram network with a port space per virtual host. Sending schedules a
+ * delivery at a virtual time chosen by the {@link FaultPlan} and the seeded random source;
+ * {@link #poll} delivers what is due, in time order, ties broken by send order. Same seed, same
+ * sends: same deliveries.
+ *
+ * <p>Single-threaded: the simulation's thread sends and polls.
+ */
+public final class VirtualNetwork implements Network {
+    /** First port handed out for a bind to port 0. */
+    public static final int EPHEMERAL_BASE = 40_000;
+
+    private final RandomGenerator random;
+    private final Clock clock;
+    private FaultPlan plan;
+    private final Map<Address, VirtualEndpoint> bound = new HashMap<>();
+    private final Map<String, Integer> nextEphemeral = new HashMap<>();
+    private final PriorityQueue<Delivery> pending = new PriorityQueue<>();
+    private final Set<String> partitions = new HashSet<>();
+    private final Set<String> downHosts = new HashSet<>();
+    private long sequence;
+    private long sent;
+    private long delivered;
+    private long dropped;
+
+    /**
+     * @param random the seeded source every fault is drawn from
+     * @param plan   what the network does to datagrams
+     * @param clock  the virtual clock deliveries are scheduled on
+     */
+    public VirtualNetwork(RandomGenerator random, FaultPlan plan, Clock clock) {
+        this.random = random;
+        this.plan = plan;
+        this.clock = clock;
+    }
+
+    /** Changes the fault plan from now on. */
+    public void setFaultPlan(FaultPlan plan) {
+        this.plan = plan;
+    }
+
+    public FaultPlan faultPlan() {
+        return plan;
+    }
+
+    /** Cuts every datagram between two hosts, both ways, until {@link #heal}. */
+    public void partition(String hostA, String hostB) {
+        partitions.add(key(hostA, hostB));
+    }
+
+    /** Restores the link between two hosts. */
+    public void heal(String hostA, String hostB) {
+        partitions.remove(key(hostA, hostB));
+    }
+
+    /** Restores every link. */
+    public void healAll() {
+        partitions.clear();
+    }
+
+    /** Takes a host's link down (its datagrams in and out are lost) or up again. */
+    public void setHostDown(String host, boolean down) {
+        if (down) {
+            downHosts.add(host);
+        } else {
+            downHosts.remove(host);
+        }
+    }
+
+    private static String key(String a, String b) {
+        return a.compareTo(b) <= 0 ? a + "|" + b : b + "|" + a;
+    }
+
+    /** Datagrams sent, delivered, and lost (dropped by the plan, a partition or a closed port). */
+    public long sentCount() {
+        return sent;
+    }
+
+    public long deliveredCount() {
+        return delivered;
+    }
+
+    public long droppedCount() {
+        return dropped;
+    }
+
+    /** True if a port is bound on the host. */
+    public boolean isBound(String host, int port) {
+        return bound.containsKey(new Address(host, port));
+    }
+
+    @Override
+    public Endpoint tryBind(String host, int port, Receiver receiver) {
+        if (port == 0) {
+            int p = nextEphemeral.getOrDefault(host, EPHEMERAL_BASE);
+            while (bound.containsKey(new Address(host, p))) {
+                p++;
+            }
+            nextEphemeral.put(host, p + 1);
+            port = p;
+        }
+        Address a = new Address(host, port);
+        if (bound.containsKey(a)) {
+            return null;
+        }
+        VirtualEndpoint ep = new VirtualEndpoint(a, receiver);
+        bound.put(a, ep);
+        return ep;
+    }
+
+    /** Closes every endpoint bound on a host, as a crash of its processes would. */
+    public void closeHost(String host) {
+        for (VirtualEndpoint ep : bound.values().toArray(new VirtualEndpoint[0])) {
+            if (ep.local.host().equals(host)) {
+                ep.close();
+            }
+        }
+    }
+
+    private void send(Address from, Address to, byte[] data, int offset, int length) {
+        sent++;
+        if (blocked(from.host(), to.host()) || random.nextDouble() < plan.dropRate()) {
+            dropped++;
+            return;
+        }
+        int copies = random.nextDouble() < plan.duplicateRate() ? 2 : 1;
+        for (int c = 0; c < copies; c++) {
+            byte[] bytes = Arrays.copyOfRange(data, offset, offset + length);
+            if (bytes.length > 0 && random.nextDouble() < plan.corruptRate()) {
+                int bit = random.nextInt(bytes.length * 8);
+                bytes[bit >>> 3] ^= (byte) (1 << (bit & 7));
+            }
+            long delay = plan.latencyNs() + (plan.jitterNs() > 0 ? random.nextLong(plan.jitterNs()) : 0);
+            if (plan.reorderDelayNs() > 0 && random.nextDouble() < plan.reorderRate()) {
+                delay += 1 + random.nextLong(plan.reorderDelayNs());
+            }
+            pending.add(new Delivery(clock.nanoTime() + delay, sequence++, from, to, bytes));
+        }
+    }
+
+    private boolean blocked(String a, String b) {
+        return downHosts.contains(a) || downHosts.contains(b) || (!partitions.isEmpty() && partitions.contains(key(a, b)));
+    }
+
+    @Override
+    public int poll(long nowNs) {
+        int n = 0;
+        Delivery d;
+        while ((d = pending.peek()) != null && d.timeNs <= nowNs) {
+            pending.poll();
+            VirtualEndpoint ep = bound.get(d.to);
+            if (ep == null || blocked(d.from.host(), d.to.host())) {
+                dropped++;
+                continue;
+            }
+            delivered++;
+            n++;
+            ep.receiver.onDatagram(d.from, d.data, 0, d.data.length, nowNs);
+        }
+        return n;
+    }
+
+    @Override
+    public long nextEventNs() {
+        Delivery d = pending.peek();
+        return d == null ? Long.MAX_VALUE : d.timeNs;
+    }
+
+    /** Datagrams in flight. */
+    public int inFlight() {
+        return pending.size();
+    }
+
+    @Override
+    public void await(long timeoutNs) {
+        // Virtual time does not pass by waiting; the simulation advances it.
+    }
+
+    @Override
+    public void wakeup() {
+        // Single-threaded: nothing to wake.
+    }
+
+    @Override
+    public void close() {
+        for (VirtualEndpoint ep : bound.values().toArray(new VirtualEndpoint[0])) {
+            ep.close();
+        }
+        pending.clear();
+    }
+
+    private record Delivery(long timeNs, long seq, Address from, Address to, byte[] data)
+            implements Comparable<Delivery> {
+        @Override
+        public int compareTo(Delivery o) {
+            int c = Long.compare(timeNs, o.timeNs);
+            return c != 0 ? c : Long.compare(seq, o.seq);
+        }
+    }
+
+    private final class VirtualEndpoint implements Endpoint {
+        private final Address local;
+        private final Receiver receiver;
+        private boolean open = true;
+
+        VirtualEndpoint(Address local, Receiver receiver) {
+            this.local = local;
+            this.receiver = receiver;
+        }
+
+        @Override
+        public Address localAddress() {
+            return local;
+        }
+
+        @Override
+        public boolean send(Address to, byte[] data, int offset, int length) {
+            if (!open) {
+                return false;
+            }
+            VirtualNetwork.this.send(local, to, data, offset, length);
+            return true;
+        }
+
+        @Override
+        public void close() {
+            if (open) {
+                open = false;
+                bound.remove(local);
+            }
+        }
+
+        @Override
+        public boolean isOpen() {
+            return open;
+        }
+    }
+}
