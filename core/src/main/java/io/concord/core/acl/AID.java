@@ -42,6 +42,12 @@ public final class AID {
         this.addresses = List.copyOf(addresses);
         this.resolvers = List.copyOf(resolvers);
         this.userDefined = Collections.unmodifiableMap(new LinkedHashMap<>(userDefined));
+        for (String k : this.userDefined.keySet()) {
+            if (!AclMessage.isParameterName(k)) {
+                throw new IllegalArgumentException("an AID slot name must be a word of letters, digits, '-', '_' "
+                        + "or '.', starting with a letter; got '" + k + "'");
+            }
+        }
     }
 
     /** An AID named {@code local@platform}. */

@@ -218,8 +218,9 @@ public final class AclMessage {
     public AclMessage addUserDefinedParameter(String key, String value) {
         Objects.requireNonNull(value, "value");
         String k = stripX(Objects.requireNonNull(key, "key"));
-        if (k.isEmpty()) {
-            throw new IllegalArgumentException("a user-defined parameter needs a name");
+        if (!isParameterName(k)) {
+            throw new IllegalArgumentException("a user-defined parameter name must be a word of letters, digits, "
+                    + "'-', '_' or '.', starting with a letter; got '" + key + "'");
         }
         if (userParameters == null) {
             userParameters = new LinkedHashMap<>(4);
@@ -235,9 +236,26 @@ public final class AclMessage {
         return this;
     }
 
+    /** True if the name can stand after {@code :X-} in the string representation. */
+    public static boolean isParameterName(String k) {
+        if (k.isEmpty() || !Character.isLetter(k.charAt(0)) || k.charAt(0) >= 0x80) {
+            return false;
+        }
+        for (int i = 1; i < k.length(); i++) {
+            char c = k.charAt(i);
+            if (!(c < 0x80 && (Character.isLetterOrDigit(c) || c == '-' || c == '_' || c == '.'))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private static String stripX(String key) {
-        return key.length() > 2 && (key.charAt(0) == 'X' || key.charAt(0) == 'x') && key.charAt(1) == '-'
-                ? key.substring(2) : key;
+        String k = key;
+        while (k.length() > 2 && (k.charAt(0) == 'X' || k.charAt(0) == 'x') && k.charAt(1) == '-') {
+            k = k.substring(2);
+        }
+        return k;
     }
 
     /**

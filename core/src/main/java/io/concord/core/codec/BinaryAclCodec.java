@@ -209,9 +209,6 @@ public final class BinaryAclCodec implements AclCodec {
         if ((flags & F_USER) != 0) {
             Map<String, String> user = readMap(r);
             for (Map.Entry<String, String> e : user.entrySet()) {
-                if (e.getKey().isEmpty()) {
-                    throw new AclParseException(r.pos - offset, "a non-empty parameter name", "an empty one");
-                }
                 m.addUserDefinedParameter(e.getKey(), e.getValue());
             }
         }
@@ -253,7 +250,13 @@ public final class BinaryAclCodec implements AclCodec {
         int n = r.count("a parameter count");
         Map<String, String> map = new LinkedHashMap<>();
         for (int i = 0; i < n; i++) {
-            map.put(r.string("a parameter name"), r.string("a parameter value"));
+            int at = r.pos - r.start;
+            String key = r.string("a parameter name");
+            if (!AclMessage.isParameterName(key) || key.regionMatches(true, 0, "X-", 0, 2)) {
+                throw new AclParseException(at, "a parameter name of letters, digits, '-', '_', '.' not starting X-",
+                        "'" + key + "'");
+            }
+            map.put(key, r.string("a parameter value"));
         }
         return map;
     }

@@ -175,17 +175,25 @@ public final class StringAclCodec implements AclCodec {
 
     private static void writeContent(StringBuilder sb, String content) {
         if (content.endsWith("\\")) {
-            // JADE escapes only the quote, so a trailing backslash would escape the closing quote.
-            byte[] bytes = content.getBytes(StandardCharsets.UTF_8);
-            sb.append('#').append(bytes.length).append('"').append(content);
+            writeByteString(sb, content);
         } else {
             writeQuoted(sb, content);
         }
     }
 
+    /**
+     * JADE escapes only the quote, so a value ending in a backslash would escape its closing quote:
+     * such a value is written as a byte string, which needs no escaping at all.
+     */
+    private static void writeByteString(StringBuilder sb, String v) {
+        sb.append('#').append(v.getBytes(StandardCharsets.UTF_8).length).append('"').append(v);
+    }
+
     private static void writeValue(StringBuilder sb, String v) {
         if (isPlainWord(v)) {
             sb.append(v);
+        } else if (v.endsWith("\\")) {
+            writeByteString(sb, v);
         } else {
             writeQuoted(sb, v);
         }
@@ -286,6 +294,10 @@ public final class StringAclCodec implements AclCodec {
                     default -> {
                         if (key.startsWith("x-") && key.length() > 2) {
                             String name = param.substring(3);
+                            if (!AclMessage.isParameterName(name)) {
+                                throw new AclParseException(paramAt,
+                                        "a user-defined parameter name of letters, digits, '-', '_', '.'", quote(param));
+                            }
                             String v = value();
                             if (name.equalsIgnoreCase("JADE-Encoding") && v.equalsIgnoreCase("Base64")) {
                                 base64 = true;
@@ -392,7 +404,12 @@ public final class StringAclCodec implements AclCodec {
                     }
                     default -> {
                         if (k.startsWith(":x-") && k.length() > 3) {
-                            user.put(slot.substring(3), value());
+                            String slotName = slot.substring(3);
+                            if (!AclMessage.isParameterName(slotName)) {
+                                throw new AclParseException(slotAt, "an AID slot name of letters, digits, '-', '_', '.'",
+                                        quote(slot));
+                            }
+                            user.put(slotName, value());
                         } else {
                             throw new AclParseException(slotAt, "an AID slot (:name, :addresses, :resolvers, :X-...)",
                                     quote(slot));
