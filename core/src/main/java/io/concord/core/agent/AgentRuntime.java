@@ -191,9 +191,9 @@ public final class AgentRuntime implements AutoCloseable {
 
     // ---- agents -----------------------------------------------------------------------------------
 
-    /** Starts an agent on any free port. See {@link #startAgent(String, Agent, int, Object...)}. */
+    /** Starts an agent on any free port. See {@link #startAgentOnPort(String, Agent, int, Object...)}. */
     public AID startAgent(String localName, Agent agent, Object... args) {
-        return startAgent(localName, agent, 0, args);
+        return startAgentOnPort(localName, agent, 0, args);
     }
 
     /**
@@ -206,7 +206,7 @@ public final class AgentRuntime implements AutoCloseable {
      * @throws IllegalArgumentException if the name is bad or taken
      * @throws IllegalStateException    if the port is taken, or setup() failed
      */
-    public AID startAgent(String localName, Agent agent, int port, Object... args) {
+    public AID startAgentOnPort(String localName, Agent agent, int port, Object... args) {
         Objects.requireNonNull(agent, "agent");
         if (!inLoop()) {
             return callInLoop(() -> startAgentInLoop(localName, agent, port, args));

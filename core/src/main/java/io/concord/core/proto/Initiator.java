@@ -7,14 +7,17 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.Behaviour;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
 /**
  * What the initiator side of every FIPA protocol shares: one conversation, one session per
- * responder (keyed by the responder's AID), a {@code :reply-by} deadline for the first answers,
- * and a single behaviour that takes the conversation's replies from the mailbox.
+ * responder, a {@code :reply-by} deadline for the first answers, and a single behaviour that takes
+ * the conversation's replies from the mailbox. A reply is matched to its session by
+ * {@code :in-reply-to} (so the AMS's FAILURE for an unknown receiver finds it, as in JADE), else
+ * by its sender.
  */
 abstract class Initiator extends Behaviour {
     /** A responder's progress in the conversation. */
@@ -33,6 +36,7 @@ abstract class Initiator extends Behaviour {
     }
 
     final Map<AID, Session> sessions = new LinkedHashMap<>();
+    private final Map<String, Session> byReplyWith = new HashMap<>();
     private final AclMessage initiation;
     private String conversationId;
     private MessageTemplate template;
@@ -66,6 +70,7 @@ abstract class Initiator extends Behaviour {
                 : myAgent.newConversationId();
         template = MessageTemplate.matchConversationId(conversationId);
         sessions.clear();
+        byReplyWith.clear();
         finished = false;
         deadlineNs = -1;
         for (AclMessage m : prepareInitiations(initiation)) {
@@ -91,8 +96,12 @@ abstract class Initiator extends Behaviour {
             copy.clearAllReceiver();
             copy.addReceiver(r);
             copy.setReplyWith(myAgent.newReplyWith());
+            Session s = openSessions ? new Session(r) : sessions.get(r);
             if (openSessions) {
-                sessions.put(r, new Session(r));
+                sessions.put(r, s);
+            }
+            if (s != null) {
+                byReplyWith.put(copy.getReplyWith(), s);
             }
             myAgent.send(copy);
         }
@@ -115,7 +124,10 @@ abstract class Initiator extends Behaviour {
         }
         AclMessage m = myAgent.receive(template);
         if (m != null) {
-            Session s = m.getSender() == null ? null : sessions.get(m.getSender());
+            Session s = m.getInReplyTo() == null ? null : byReplyWith.get(m.getInReplyTo());
+            if (s == null && m.getSender() != null) {
+                s = sessions.get(m.getSender());
+            }
             if (s == null || s.state == ENDED) {
                 handleOutOfSequence(m);
             } else {
@@ -183,6 +195,7 @@ abstract class Initiator extends Behaviour {
     public void reset() {
         super.reset();
         sessions.clear();
+        byReplyWith.clear();
         finished = false;
     }
 }

@@ -1,0 +1,143 @@
+package io.concord.core.testkit;
+
+import io.concord.core.layer.DropCounters;
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.Layer;
+import io.concord.core.layer.LayerStack;
+import io.concord.core.layer.StackEvent;
+import io.concord.core.layer.StackHost;
+import io.concord.core.layer.Tracer;
+import io.concord.core.time.Clock;
+import io.concord.core.time.DeadlineTimerWheel;
+import io.concord.core.time.ManualClock;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Drives one layer (or a few) from a test, on the test's thread, with time frozen and advanced by
+ * hand: Netty's {@code EmbeddedChannel} for Concord layers. What leaves the bottom is queued in
+ * {@link #pollDown()}, what leaves the top in {@link #pollUp()}.
+ */
+public final class LayerHarness implements StackHost {
+    private final ManualClock clock;
+    private final DeadlineTimerWheel wheel;
+    private final Map<Long, Runnable> tasksByWheelId = new HashMap<>();
+    private final ArrayDeque<Envelope> down = new ArrayDeque<>();
+    private final ArrayDeque<Envelope> up = new ArrayDeque<>();
+    private final List<StackEvent> events = new ArrayList<>();
+    private final DropCounters drops = new DropCounters();
+    private final TraceRecorder trace = new TraceRecorder();
+    private final LayerStack stack;
+    private final String name;
+
+    /** A started stack of the given layers, top first, named {@code "harness"}. */
+    public LayerHarness(Layer... topFirst) {
+        this("harness", new ManualClock(), topFirst);
+    }
+
+    public LayerHarness(String name, ManualClock clock, Layer... topFirst) {
+        this.name = name;
+        this.clock = clock;
+        this.wheel = DeadlineTimerWheel.forAgents(clock.nanoTime());
+        this.stack = new LayerStack(List.of(topFirst), this, up::add, down::add, events::add);
+        stack.start();
+    }
+
+    /** Sends an envelope into the top of the stack. */
+    public void sendDown(Envelope env) {
+        stack.sendDown(env);
+    }
+
+    /** Passes an envelope into the bottom of the stack. */
+    public void receiveUp(Envelope env) {
+        stack.receiveUp(env);
+    }
+
+    /** The next envelope that left the bottom, or {@code null}. */
+    public Envelope pollDown() {
+        return down.poll();
+    }
+
+    /** The next envelope that left the top, or {@code null}. */
+    public Envelope pollUp() {
+        return up.poll();
+    }
+
+    public int downCount() {
+        return down.size();
+    }
+
+    public int upCount() {
+        return up.size();
+    }
+
+    /** Events that left either end. */
+    public List<StackEvent> events() {
+        return events;
+    }
+
+    /** Moves time forward and runs the layers' timers that fall due, in order. */
+    public void advanceMs(long ms) {
+        clock.advanceMs(ms);
+        wheel.poll(clock.nanoTime(), (now, id) -> {
+            Runnable r = tasksByWheelId.remove(id);
+            if (r != null) {
+                r.run();
+            }
+        });
+    }
+
+    public void stop() {
+        stack.stop();
+    }
+
+    public ManualClock manualClock() {
+        return clock;
+    }
+
+    public TraceRecorder trace() {
+        return trace;
+    }
+
+    @Override
+    public String nodeName() {
+        return name;
+    }
+
+    @Override
+    public Clock clock() {
+        return clock;
+    }
+
+    @Override
+    public long nowNs() {
+        return clock.nanoTime();
+    }
+
+    @Override
+    public long schedule(long deadlineNs, Runnable task) {
+        long id = wheel.schedule(deadlineNs);
+        tasksByWheelId.put(id, task);
+        return id;
+    }
+
+    @Override
+    public boolean cancel(long timerId) {
+        tasksByWheelId.remove(timerId);
+        return wheel.cancel(timerId);
+    }
+
+    @Override
+    public Tracer tracer() {
+        return trace;
+    }
+
+    @Override
+    public DropCounters drops() {
+        return drops;
+    }
+}
