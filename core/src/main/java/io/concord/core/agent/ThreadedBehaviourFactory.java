@@ -112,14 +112,18 @@ public final class ThreadedBehaviourFactory {
             Behaviour b = wrapper.inner;
             Agent agent = wrapper.myAgent;
             try {
-                while (!stopRequested && !b.done()) {
+                // Step first, then ask done(): a one-shot behaviour is "done" before it has run.
+                while (!stopRequested) {
                     long seen;
                     synchronized (lock) {
                         seen = signals;
                         wakeDeadlineNs = Long.MAX_VALUE;
                     }
                     b.step();
-                    if (b.done() || b.isRunnable()) {
+                    if (b.done()) {
+                        break;
+                    }
+                    if (b.isRunnable()) {
                         continue;
                     }
                     synchronized (lock) {

@@ -84,14 +84,14 @@ public final class UdpNetwork implements Network {
     @Override
     public int poll(long nowNs) {
         try {
-            if (selector.selectNow() == 0) {
-                return 0;
-            }
+            // selectNow() counts only keys newly selected; keys that a blocking await() already put
+            // in the selected set must be drained too, so look at the set, not at the count.
+            selector.selectNow();
         } catch (IOException e) {
             LOG.warn("selector failed: {}", e.toString());
             return 0;
         }
-        return drainSelected(nowNs);
+        return selector.selectedKeys().isEmpty() ? 0 : drainSelected(nowNs);
     }
 
     private int drainSelected(long nowNs) {
