@@ -57,7 +57,7 @@ final class AgentNode implements StackHost {
     }
 
     private void dropOutgoing(AclMessage msg, String reason, String detail) {
-        drops.increment(reason);
+        drops.record(aid.name(), reason, detail);
         Tracer t = runtime.tracer();
         if (t.enabled()) {
             t.trace(runtime.nowNs(), aid.name(), "drop", reason + ": " + detail + " " + describe(msg));
@@ -95,7 +95,7 @@ final class AgentNode implements StackHost {
     }
 
     private void stackDrop(Envelope env, String reason, String detail) {
-        drops.increment(reason);
+        drops.record(aid.name(), reason, detail);
         Tracer t = runtime.tracer();
         if (t.enabled()) {
             t.trace(runtime.nowNs(), aid.name(), "drop", reason + ": " + detail + " " + env);

@@ -1,5 +1,8 @@
 package io.concord.core.layer;
 
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
@@ -7,14 +10,28 @@ import java.util.concurrent.atomic.LongAdder;
 
 /**
  * Counts dropped messages by reason ({@code "malformed"}, {@code "too-large"}, ...). Every drop is
- * counted here and traced; nothing is dropped silently. Readable from any thread.
+ * counted here and traced; nothing is dropped silently. The first drop of each reason is also
+ * logged as a warning with its detail, so an operator sees it without enabling traces; later ones
+ * are only counted, so that a flood of bad input cannot flood the log. Readable from any thread.
  */
 public final class DropCounters {
+    private static final Logger LOG = LoggerFactory.getLogger(DropCounters.class);
     private final Map<String, LongAdder> counts = new ConcurrentHashMap<>();
 
     /** Counts one drop. */
     public void increment(String reason) {
         counts.computeIfAbsent(reason, r -> new LongAdder()).increment();
+    }
+
+    /** Counts one drop, and logs it if it is the first of its reason for this node. */
+    public void record(String node, String reason, String detail) {
+        LongAdder a = counts.get(reason);
+        if (a == null) {
+            a = counts.computeIfAbsent(reason, r -> new LongAdder());
+            LOG.warn("{} dropped a message ({}): {}. Further drops for this reason are only counted; "
+                    + "see AgentRuntime.drops()", node, reason, detail);
+        }
+        a.increment();
     }
 
     /** Drops counted for a reason. */
