@@ -42,51 +42,31 @@ public class AchieveREInitiator extends Initiator {
 
     @Override
     void onReply(Session s, AclMessage m) {
-        Performative p = m.getPerformative();
-        if (s.state == WAITING_RESPONSE) {
-            switch (p) {
-                case AGREE -> {
-                    s.state = WAITING_RESULT;
-                    responses.add(m);
-                    handleAgree(m);
-                }
-                case REFUSE -> {
-                    s.state = ENDED;
-                    responses.add(m);
-                    handleRefuse(m);
-                }
-                case NOT_UNDERSTOOD -> {
-                    s.state = ENDED;
-                    responses.add(m);
-                    handleNotUnderstood(m);
-                }
-                case INFORM -> {
-                    s.state = ENDED;
-                    results.add(m);
-                    handleInform(m);
-                }
-                case FAILURE -> {
-                    s.state = ENDED;
-                    results.add(m);
-                    handleFailure(m);
-                }
-                default -> handleOutOfSequence(m);
-            }
-        } else {
-            switch (p) {
-                case INFORM -> {
-                    s.state = ENDED;
-                    results.add(m);
-                    handleInform(m);
-                }
-                case FAILURE -> {
-                    s.state = ENDED;
-                    results.add(m);
-                    handleFailure(m);
-                }
-                default -> handleOutOfSequence(m);
-            }
+        switch (m.getPerformative()) {
+            // A result ends the session whether or not an AGREE came first.
+            case INFORM -> endWithResult(s, m, this::handleInform);
+            case FAILURE -> endWithResult(s, m, this::handleFailure);
+            case AGREE -> firstAnswer(s, m, WAITING_RESULT, this::handleAgree);
+            case REFUSE -> firstAnswer(s, m, ENDED, this::handleRefuse);
+            case NOT_UNDERSTOOD -> firstAnswer(s, m, ENDED, this::handleNotUnderstood);
+            default -> handleOutOfSequence(m);
         }
+    }
+
+    private void endWithResult(Session s, AclMessage m, java.util.function.Consumer<AclMessage> handler) {
+        s.state = ENDED;
+        results.add(m);
+        handler.accept(m);
+    }
+
+    private void firstAnswer(Session s, AclMessage m, int next, java.util.function.Consumer<AclMessage> handler) {
+        if (s.state != WAITING_RESPONSE) {
+            handleOutOfSequence(m);
+            return;
+        }
+        s.state = next;
+        responses.add(m);
+        handler.accept(m);
     }
 
     @Override

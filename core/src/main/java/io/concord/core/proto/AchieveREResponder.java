@@ -67,9 +67,10 @@ public class AchieveREResponder extends CyclicBehaviour {
 
     /**
      * The first answer to a request: AGREE, an INFORM that is already the result, or {@code null}
-     * to go straight to the result.
+     * to go straight to the result. Throw {@link RefuseException} or {@link NotUnderstoodException}
+     * to answer so; a {@link FailureException} here becomes an immediate FAILURE.
      */
-    protected AclMessage handleRequest(AclMessage request) throws RefuseException, NotUnderstoodException {
+    protected AclMessage handleRequest(AclMessage request) throws FipaException {
         return null;
     }
 

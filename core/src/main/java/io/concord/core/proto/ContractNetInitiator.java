@@ -47,47 +47,32 @@ public class ContractNetInitiator extends Initiator {
     @Override
     void onReply(Session s, AclMessage m) {
         Performative p = m.getPerformative();
-        if (s.state == WAITING_RESPONSE) {
+        if (s.state == WAITING_RESPONSE && p != Performative.INFORM) {
+            responses.add(m);
             switch (p) {
                 case PROPOSE -> {
                     s.state = PROPOSED;
-                    responses.add(m);
                     handlePropose(m, earlyAcceptances);
                 }
-                case REFUSE -> {
-                    s.state = ENDED;
-                    responses.add(m);
-                    handleRefuse(m);
+                case REFUSE -> endWith(s, m, this::handleRefuse);
+                case NOT_UNDERSTOOD -> endWith(s, m, this::handleNotUnderstood);
+                case FAILURE -> endWith(s, m, this::handleFailure);
+                default -> {
+                    responses.remove(responses.size() - 1);
+                    handleOutOfSequence(m);
                 }
-                case NOT_UNDERSTOOD -> {
-                    s.state = ENDED;
-                    responses.add(m);
-                    handleNotUnderstood(m);
-                }
-                case FAILURE -> {
-                    s.state = ENDED;
-                    responses.add(m);
-                    handleFailure(m);
-                }
-                default -> handleOutOfSequence(m);
             }
-        } else if (s.state == WAITING_RESULT) {
-            switch (p) {
-                case INFORM -> {
-                    s.state = ENDED;
-                    results.add(m);
-                    handleInform(m);
-                }
-                case FAILURE -> {
-                    s.state = ENDED;
-                    results.add(m);
-                    handleFailure(m);
-                }
-                default -> handleOutOfSequence(m);
-            }
+        } else if (s.state == WAITING_RESULT && (p == Performative.INFORM || p == Performative.FAILURE)) {
+            results.add(m);
+            endWith(s, m, p == Performative.INFORM ? this::handleInform : this::handleFailure);
         } else {
             handleOutOfSequence(m);
         }
+    }
+
+    private static void endWith(Session s, AclMessage m, java.util.function.Consumer<AclMessage> handler) {
+        s.state = ENDED;
+        handler.accept(m);
     }
 
     @Override

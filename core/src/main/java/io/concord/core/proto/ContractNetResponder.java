@@ -35,7 +35,7 @@ public class ContractNetResponder extends CyclicBehaviour {
         super(agent);
         this.cfpTemplate = cfpTemplate;
         this.template = m -> cfpTemplate.match(m) || ((m.getPerformative() == Performative.ACCEPT_PROPOSAL
-                || m.getPerformative() == Performative.REJECT_PROPOSAL) && open.containsKey(key(m)));
+                || m.getPerformative() == Performative.REJECT_PROPOSAL) && open.containsKey(Replies.sessionKey(m)));
     }
 
     /** CFPs of the given protocol. */
@@ -43,9 +43,6 @@ public class ContractNetResponder extends CyclicBehaviour {
         return MessageTemplate.matchProtocol(protocol).and(MessageTemplate.matchPerformative(Performative.CFP));
     }
 
-    private static String key(AclMessage m) {
-        return m.getConversationId() + "|" + (m.getSender() == null ? "" : m.getSender().name().toLowerCase());
-    }
 
     @Override
     public void action() {
@@ -64,13 +61,13 @@ public class ContractNetResponder extends CyclicBehaviour {
             if (reply != null) {
                 Replies.complete(reply, m);
                 if (reply.getPerformative() == Performative.PROPOSE) {
-                    open.put(key(m), new Session(m, reply));
+                    open.put(Replies.sessionKey(m), new Session(m, reply));
                 }
                 myAgent.send(reply);
             }
             return;
         }
-        Session s = open.remove(key(m));
+        Session s = open.remove(Replies.sessionKey(m));
         if (s == null) {
             return;
         }

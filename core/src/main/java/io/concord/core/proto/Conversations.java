@@ -5,7 +5,6 @@ import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.Behaviour;
-import io.concord.core.agent.CyclicBehaviour;
 
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -101,24 +100,10 @@ public final class Conversations {
      * @return the behaviour, already added to the agent
      */
     public static Behaviour serve(Agent agent, MessageTemplate template, RequestHandler handler) {
-        Behaviour b = new CyclicBehaviour(agent) {
+        Behaviour b = new AchieveREResponder(agent, template) {
             @Override
-            public void action() {
-                AclMessage request = myAgent.receive(template);
-                if (request == null) {
-                    block();
-                    return;
-                }
-                AclMessage reply;
-                try {
-                    reply = handler.handle(request);
-                } catch (FipaException e) {
-                    reply = e.toReply(request);
-                }
-                if (reply != null) {
-                    Replies.complete(reply, request);
-                    myAgent.send(reply);
-                }
+            protected AclMessage handleRequest(AclMessage request) throws FipaException {
+                return handler.handle(request);
             }
         };
         agent.addBehaviour(b);

@@ -29,6 +29,11 @@ final class Replies {
         }
     }
 
+    /** Identifies a responder-side session: the conversation and who started it. */
+    static String sessionKey(AclMessage m) {
+        return m.getConversationId() + "|" + (m.getSender() == null ? "" : m.getSender().name().toLowerCase(java.util.Locale.ROOT));
+    }
+
     /** Milliseconds from now until the message's {@code :reply-by}, or -1 if it has none. */
     static long replyByDeadlineNs(io.concord.core.agent.Agent agent, AclMessage msg) {
         if (!msg.hasReplyBy()) {

@@ -50,7 +50,7 @@ public class SubscriptionResponder extends CyclicBehaviour {
         /** Ends the subscription from this side. */
         public void close() {
             closed = true;
-            subscriptions.remove(key(subscribe));
+            subscriptions.remove(Replies.sessionKey(subscribe));
         }
 
         public boolean isClosed() {
@@ -73,9 +73,6 @@ public class SubscriptionResponder extends CyclicBehaviour {
                         .or(MessageTemplate.matchPerformative(Performative.CANCEL)));
     }
 
-    private static String key(AclMessage m) {
-        return m.getConversationId() + "|" + (m.getSender() == null ? "" : m.getSender().name().toLowerCase());
-    }
 
     @Override
     public void action() {
@@ -85,7 +82,7 @@ public class SubscriptionResponder extends CyclicBehaviour {
             return;
         }
         if (m.getPerformative() == Performative.CANCEL) {
-            Subscription s = subscriptions.remove(key(m));
+            Subscription s = subscriptions.remove(Replies.sessionKey(m));
             if (s != null) {
                 s.closed = true;
                 handleCancel(m);
@@ -102,7 +99,7 @@ public class SubscriptionResponder extends CyclicBehaviour {
             response = e.toReply(m);
         }
         if (response == null || response.getPerformative() == Performative.AGREE) {
-            subscriptions.put(key(m), new Subscription(m));
+            subscriptions.put(Replies.sessionKey(m), new Subscription(m));
         }
         if (response != null) {
             Replies.complete(response, m);
