@@ -140,6 +140,11 @@ final class AgentNode implements StackHost {
     }
 
     @Override
+    public Address localAddress() {
+        return endpoint.localAddress();
+    }
+
+    @Override
     public Clock clock() {
         return runtime.clock();
     }

@@ -207,14 +207,25 @@ public final class AgentRuntime implements AutoCloseable {
      * @throws IllegalStateException    if the port is taken, or setup() failed
      */
     public AID startAgentOnPort(String localName, Agent agent, int port, Object... args) {
-        Objects.requireNonNull(agent, "agent");
-        if (!inLoop()) {
-            return callInLoop(() -> startAgentInLoop(localName, agent, port, args));
-        }
-        return startAgentInLoop(localName, agent, port, args);
+        return startAgentWith(localName, agent, AgentOptions.defaults().withPort(port), args);
     }
 
-    private AID startAgentInLoop(String localName, Agent agent, int port, Object[] args) {
+    /**
+     * Starts an agent with options of its own: its port and its stack of layers.
+     *
+     * @see #startAgentOnPort(String, Agent, int, Object...)
+     */
+    public AID startAgentWith(String localName, Agent agent, AgentOptions options, Object... args) {
+        Objects.requireNonNull(agent, "agent");
+        Objects.requireNonNull(options, "options");
+        if (!inLoop()) {
+            return callInLoop(() -> startAgentInLoop(localName, agent, options, args));
+        }
+        return startAgentInLoop(localName, agent, options, args);
+    }
+
+    private AID startAgentInLoop(String localName, Agent agent, AgentOptions options, Object[] args) {
+        int port = options.port();
         if (closed) {
             throw new IllegalStateException("the runtime is closed");
         }
@@ -239,8 +250,14 @@ public final class AgentRuntime implements AutoCloseable {
         AID aid = new AID(nameOnly.name(), ep.localAddress().toUri());
         AgentNode node = new AgentNode(this, agent, aid, ep);
         holder[0] = node;
-        node.stack = new LayerStack(stackFactory.get(), node, node::deliver, node::transmit, ev -> { });
-        node.stack.start();
+        try {
+            List<Layer> layers = (options.stack() != null ? options.stack() : stackFactory).get();
+            node.stack = new LayerStack(layers, node, node::deliver, node::transmit, ev -> { });
+            node.stack.start();
+        } catch (RuntimeException e) {
+            ep.close();
+            throw new IllegalStateException("the stack of " + aid.name() + " could not start: " + e.getMessage(), e);
+        }
         directory.put(aid, node);
         agent.bind(this, node, aid, args);
         if (tracer.enabled()) {

@@ -274,6 +274,12 @@ public final class BinaryAclCodec implements AclCodec {
             size = 0;
         }
 
+        /** Leaves {@code n} bytes unwritten at the current position (headroom for a header). */
+        public void skip(int n) {
+            ensure(n);
+            size += n;
+        }
+
         public int size() {
             return size;
         }

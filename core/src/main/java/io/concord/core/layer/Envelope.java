@@ -21,6 +21,7 @@ public final class Envelope {
     private Address source;
     private Address destination;
     private long arrivalNs;
+    private long peerId;
     private Object[] headers;
 
     /** An envelope going down: a message for one of its receivers. */
@@ -103,6 +104,73 @@ public final class Envelope {
 
     public void setDestination(Address destination) {
         this.destination = destination;
+    }
+
+    /**
+     * The peer's frame id: going down, the destination's; going up, the authenticated source's
+     * (set by the security layer). 0 until someone sets it.
+     */
+    public long peerId() {
+        return peerId;
+    }
+
+    public void setPeerId(long peerId) {
+        this.peerId = peerId;
+    }
+
+    /** An envelope for a control frame of a layer (no ACL message), to a peer's id and address. */
+    public static Envelope control(long peerId, Address destination, byte[] data, int offset, int length) {
+        Envelope e = new Envelope();
+        e.peerId = peerId;
+        e.destination = destination;
+        e.setData(data, offset, length);
+        return e;
+    }
+
+    /**
+     * Makes room for {@code n} bytes before the current data (a lower layer's header) and returns
+     * where they start. Uses the headroom left by the layer that made the bytes, else reallocates.
+     */
+    public int prepend(int n) {
+        if (offset < n) {
+            int headroom = Math.max(n, 64);
+            byte[] grown = new byte[headroom + length + 32];
+            System.arraycopy(data, offset, grown, headroom, length);
+            data = grown;
+            offset = headroom;
+        }
+        offset -= n;
+        length += n;
+        return offset;
+    }
+
+    /** Makes room for {@code n} bytes after the current data (a trailer) and returns where they start. */
+    public int append(int n) {
+        int end = offset + length;
+        if (end + n > data.length) {
+            byte[] grown = new byte[offset + length + n + 32];
+            System.arraycopy(data, offset, grown, offset, length);
+            data = grown;
+        }
+        length += n;
+        return end;
+    }
+
+    /** Drops {@code n} bytes from the front (a header that has been read). */
+    public void skip(int n) {
+        if (n > length) {
+            throw new IllegalArgumentException("cannot skip " + n + " of " + length + " bytes");
+        }
+        offset += n;
+        length -= n;
+    }
+
+    /** Drops {@code n} bytes from the end (a trailer that has been read). */
+    public void trim(int n) {
+        if (n > length) {
+            throw new IllegalArgumentException("cannot trim " + n + " of " + length + " bytes");
+        }
+        length -= n;
     }
 
     /** The loop time at which the bytes arrived (going up). */

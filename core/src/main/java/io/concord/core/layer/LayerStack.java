@@ -101,6 +101,9 @@ public final class LayerStack {
         Ctx c = contexts[index];
         try {
             c.layer.onDown(c, env);
+        } catch (SendRejectedException e) {
+            drop(c.name, env, e.reason(), e.getMessage());
+            throw e;
         } catch (RuntimeException e) {
             c.failed(env, e);
         }

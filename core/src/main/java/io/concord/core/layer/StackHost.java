@@ -5,8 +5,13 @@ import io.concord.core.time.Clock;
 /** What the node that owns a stack gives its layers: time, timers, tracing, drop counting. */
 public interface StackHost {
 
-    /** The node's name (its agent's name), for traces. */
+    /** The node's name (its agent's full name, {@code local@platform}), for traces and frame ids. */
     String nodeName();
+
+    /** The node's own transport address. */
+    default io.concord.core.net.Address localAddress() {
+        return null;
+    }
 
     Clock clock();
 

@@ -1,0 +1,36 @@
+package io.concord.core.agent;
+
+import io.concord.core.layer.Layer;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.function.Supplier;
+
+/**
+ * How one agent is started, where it differs from its runtime's defaults: its reception port and
+ * its own stack of layers (each agent may choose its layers).
+ *
+ * @param port  the reception port, or 0 for any free one
+ * @param stack the agent's layers, top first, or {@code null} for the runtime's
+ */
+public record AgentOptions(int port, Supplier<List<Layer>> stack) {
+
+    public AgentOptions {
+        if (port < 0 || port > 65535) {
+            throw new IllegalArgumentException("port must be 0..65535, got " + port);
+        }
+    }
+
+    /** Any free port, the runtime's stack. */
+    public static AgentOptions defaults() {
+        return new AgentOptions(0, null);
+    }
+
+    public AgentOptions withPort(int p) {
+        return new AgentOptions(p, stack);
+    }
+
+    public AgentOptions withStack(Supplier<List<Layer>> topFirstLayers) {
+        return new AgentOptions(port, Objects.requireNonNull(topFirstLayers, "stack"));
+    }
+}

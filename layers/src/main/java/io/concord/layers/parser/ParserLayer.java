@@ -1,0 +1,121 @@
+package io.concord.layers.parser;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.codec.AclParseException;
+import io.concord.core.codec.BinaryAclCodec;
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.Layer;
+import io.concord.core.layer.LayerContext;
+import io.concord.core.layer.StackEvent;
+import io.concord.layers.frame.Frames;
+import io.concord.layers.sequence.SequenceLayer;
+import io.concord.layers.temporal.PlatformClock;
+
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * The parser layer: ACL to bytes and back (Concord's binary codec), and the checks that need the
+ * message itself. Receiving, it drops and counts: what does not decode ({@code malformed}); a
+ * sender whose name does not belong to the authenticated frame source, or that speaks from an
+ * address other than the one the agent lists know ({@code identification}); a sender that is not a
+ * member ({@code not-member}; if it is joining, the sender is asked to send again); and a message
+ * whose {@code :reply-by} has passed on the platform clock ({@code expired}).
+ */
+public final class ParserLayer extends Layer {
+    private final Membership membership;
+    private final PlatformClock clock;
+    private final boolean identification;
+    private final Map<String, Long> ids = new HashMap<>();
+
+    /**
+     * @param membership     who belongs to the platform
+     * @param clock          the platform clock, for {@code :reply-by}; {@code null} to skip that check
+     * @param identification true to require the sender to match the authenticated frame source
+     */
+    public ParserLayer(Membership membership, PlatformClock clock, boolean identification) {
+        this.membership = membership;
+        this.clock = clock;
+        this.identification = identification;
+    }
+
+    @Override
+    public String name() {
+        return "parser";
+    }
+
+    private long idOf(AID aid) {
+        Long id = ids.get(aid.name());
+        if (id == null) {
+            if (ids.size() > 10_000) {
+                ids.clear();
+            }
+            id = Frames.id(aid.name());
+            ids.put(aid.name(), id);
+        }
+        return id;
+    }
+
+    @Override
+    public void init(LayerContext ctx) {
+        if (clock != null) {
+            clock.bind(ctx.host().clock());
+        }
+    }
+
+    @Override
+    public void onDown(LayerContext ctx, Envelope env) {
+        BinaryAclCodec.Writer w = new BinaryAclCodec.Writer(Frames.HEADROOM + 256);
+        w.skip(Frames.HEADROOM);
+        BinaryAclCodec.INSTANCE.encode(env.message(), w);
+        env.setData(w.array(), Frames.HEADROOM, w.size() - Frames.HEADROOM);
+        env.setPeerId(idOf(env.receiver()));
+        ctx.passDown(env);
+    }
+
+    @Override
+    public void onUp(LayerContext ctx, Envelope env) {
+        AclMessage m;
+        try {
+            m = BinaryAclCodec.INSTANCE.decode(env.data(), env.offset(), env.length());
+        } catch (AclParseException e) {
+            ctx.drop(env, "malformed", e.getMessage());
+            return;
+        }
+        AID sender = m.getSender();
+        if (sender == null) {
+            ctx.drop(env, "identification", "the message names no sender");
+            return;
+        }
+        if (identification && idOf(sender) != env.peerId()) {
+            ctx.drop(env, "identification", "the message claims to be from " + sender.name()
+                    + " but the frame is authenticated as another agent's");
+            return;
+        }
+        switch (membership.check(m, sender, env.source())) {
+            case MEMBER, EXEMPT -> { }
+            case WRONG_SOURCE -> {
+                ctx.drop(env, "identification", sender.name() + " spoke from " + env.source()
+                        + ", not from the address the agent lists know for it");
+                return;
+            }
+            case PENDING -> {
+                ctx.drop(env, "not-member", sender.name() + " is joining but not yet a member; asked to send again");
+                ctx.fireEvent(new StackEvent(SequenceLayer.RESEND_REQUEST, env, false));
+                return;
+            }
+            case UNKNOWN -> {
+                ctx.drop(env, "not-member", sender.name() + " is not a member of this platform");
+                return;
+            }
+        }
+        if (clock != null && m.hasReplyBy() && m.getReplyByEpochMs() < clock.nowMs()) {
+            ctx.drop(env, "expired", "its :reply-by passed " + (clock.nowMs() - m.getReplyByEpochMs())
+                    + " ms ago on the platform clock");
+            return;
+        }
+        env.setMessage(m);
+        ctx.passUp(env);
+    }
+}
