@@ -29,6 +29,8 @@ public final class VirtualNetwork implements Network {
     private final RandomGenerator random;
     private final Clock clock;
     private FaultPlan plan;
+    private Medium medium;
+    private String mediumFromHost;
     private final Map<Address, VirtualEndpoint> bound = new HashMap<>();
     private final Map<String, Integer> nextEphemeral = new HashMap<>();
     private final PriorityQueue<Delivery> pending = new PriorityQueue<>();
@@ -57,6 +59,15 @@ public final class VirtualNetwork implements Network {
 
     public FaultPlan faultPlan() {
         return plan;
+    }
+
+    /**
+     * Puts a medium on the datagrams that a host sends (after the fault plan has let them through),
+     * or removes it with {@code null}.
+     */
+    public void setMedium(String fromHost, Medium m) {
+        this.mediumFromHost = fromHost;
+        this.medium = m;
     }
 
     /** Cuts every datagram between two hosts, both ways, until {@link #heal}. */
@@ -150,7 +161,13 @@ public final class VirtualNetwork implements Network {
             if (plan.reorderDelayNs() > 0 && random.nextDouble() < plan.reorderRate()) {
                 delay += 1 + random.nextLong(plan.reorderDelayNs());
             }
-            pending.add(new Delivery(clock.nanoTime() + delay, sequence++, from, to, bytes));
+            long at = clock.nanoTime() + delay;
+            if (medium != null && from.host().equals(mediumFromHost)) {
+                medium.carry(from, to, bytes, (extraNs, b) -> pending.add(new Delivery(at + Math.max(0, extraNs),
+                        sequence++, from, to, b.clone())));
+            } else {
+                pending.add(new Delivery(at, sequence++, from, to, bytes));
+            }
         }
     }
 
