@@ -168,10 +168,15 @@ public final class SafetyStack {
             SequenceLayer.Config seq = sequence;
             EnumSet<LayerKind> out = EnumSet.copyOf(without.isEmpty() ? EnumSet.of(LayerKind.PARSER) : without);
             out.retainAll(without);
+            int overhead = Frames.HEADER_BYTES + Frames.CRC_BYTES
+                    + (profile == Profile.CLOSED ? 0 : Frames.TAG_BYTES)
+                    + (out.contains(LayerKind.SEQUENCE) ? 0 : SequenceLayer.HEADER_BYTES)
+                    + (out.contains(LayerKind.TEMPORAL) ? 0 : TemporalLayer.HEADER_BYTES);
+            int limit = maxFrameBytes;
             return () -> {
                 PlatformClock clock = new PlatformClock();
                 List<Layer> layers = new ArrayList<>(5);
-                layers.add(new ParserLayer(members, out.contains(LayerKind.TEMPORAL) ? null : clock, true));
+                layers.add(new ParserLayer(members, out.contains(LayerKind.TEMPORAL) ? null : clock, true, limit, overhead));
                 if (!out.contains(LayerKind.SEQUENCE)) {
                     layers.add(new SequenceLayer(seq));
                 }

@@ -57,6 +57,11 @@ public final class LayerHarness implements StackHost {
         stack.receiveUp(env);
     }
 
+    /** Fires a control event into the stack (from the top if it goes down, from the bottom if up). */
+    public void fireEvent(StackEvent event) {
+        stack.fireEvent(event);
+    }
+
     /** The next envelope that left the bottom, or {@code null}. */
     public Envelope pollDown() {
         return down.poll();

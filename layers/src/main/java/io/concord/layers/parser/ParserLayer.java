@@ -27,17 +27,30 @@ public final class ParserLayer extends Layer {
     private final Membership membership;
     private final PlatformClock clock;
     private final boolean identification;
+    private final int maxFrameBytes;
+    private final int overheadBytes;
     private final Map<String, Long> ids = new HashMap<>();
+
+    /** A parser with no frame limit of its own (the communication layer still enforces one). */
+    public ParserLayer(Membership membership, PlatformClock clock, boolean identification) {
+        this(membership, clock, identification, Integer.MAX_VALUE, 0);
+    }
 
     /**
      * @param membership     who belongs to the platform
      * @param clock          the platform clock, for {@code :reply-by}; {@code null} to skip that check
      * @param identification true to require the sender to match the authenticated frame source
+     * @param maxFrameBytes  the frame limit of the stack, checked here before any layer queues the
+     *                       message (a handshake may hold it), so that the caller hears of it
+     * @param overheadBytes  the bytes the layers below add to a message
      */
-    public ParserLayer(Membership membership, PlatformClock clock, boolean identification) {
+    public ParserLayer(Membership membership, PlatformClock clock, boolean identification, int maxFrameBytes,
+                       int overheadBytes) {
         this.membership = membership;
         this.clock = clock;
         this.identification = identification;
+        this.maxFrameBytes = maxFrameBytes;
+        this.overheadBytes = overheadBytes;
     }
 
     @Override
@@ -69,7 +82,14 @@ public final class ParserLayer extends Layer {
         BinaryAclCodec.Writer w = new BinaryAclCodec.Writer(Frames.HEADROOM + 256);
         w.skip(Frames.HEADROOM);
         BinaryAclCodec.INSTANCE.encode(env.message(), w);
-        env.setData(w.array(), Frames.HEADROOM, w.size() - Frames.HEADROOM);
+        int aclBytes = w.size() - Frames.HEADROOM;
+        if ((long) aclBytes + overheadBytes > maxFrameBytes) {
+            throw new io.concord.core.layer.SendRejectedException("too-large", "the message to "
+                    + env.receiver().name() + " encodes to " + aclBytes + " bytes; with the stack's " + overheadBytes
+                    + " bytes of headers its frame would be " + (aclBytes + overheadBytes) + " bytes, over the limit of "
+                    + maxFrameBytes + "; shorten its content, or raise maxFrameBytes (up to 65507 on UDP)");
+        }
+        env.setData(w.array(), Frames.HEADROOM, aclBytes);
         env.setPeerId(idOf(env.receiver()));
         ctx.passDown(env);
     }

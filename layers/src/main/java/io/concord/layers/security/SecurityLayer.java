@@ -147,6 +147,14 @@ public final class SecurityLayer extends Layer {
         }
     }
 
+    /**
+     * Sets the counter of the next frame. Frames start from a random counter; only test vectors
+     * need a known one. Never reuse a counter under one key.
+     */
+    public void setNextCounter(long next) {
+        counter = next;
+    }
+
     /** This agent's identity (class 7), to sign membership changes with; {@code null} otherwise. */
     public Identity identity() {
         return identity;

@@ -1,0 +1,199 @@
+package io.concord.layers.sequence;
+
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.StackEvent;
+import io.concord.core.net.Address;
+import io.concord.core.testkit.LayerHarness;
+import io.concord.layers.frame.Frames;
+import org.junit.jupiter.api.Test;
+
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The sequence layer alone: a sender harness and a receiver harness, frames carried by hand. */
+class SequenceLayerTest {
+    private static final Address A = new Address("h", 1);
+    private static final Address B = new Address("h", 2);
+    private static final long A_ID = 11;
+    private static final long B_ID = 22;
+
+    private final LayerHarness sender = new LayerHarness(new SequenceLayer(SequenceLayer.Config.defaults()));
+    private final LayerHarness receiver = new LayerHarness(new SequenceLayer(SequenceLayer.Config.defaults()));
+
+    private static Envelope payload(String text) {
+        byte[] b = text.getBytes(StandardCharsets.UTF_8);
+        byte[] buf = new byte[Frames.HEADROOM + b.length];
+        System.arraycopy(b, 0, buf, Frames.HEADROOM, b.length);
+        return Envelope.control(B_ID, B, buf, Frames.HEADROOM, b.length);
+    }
+
+    private static Envelope arriving(Envelope sent, Address from, long fromId) {
+        byte[] wire = sent.dataCopy();
+        Envelope e = Envelope.incoming(from, wire, 0, wire.length, 0);
+        e.setPeerId(fromId);
+        return e;
+    }
+
+    private List<Envelope> sendAll(String... texts) {
+        List<Envelope> frames = new ArrayList<>();
+        for (String t : texts) {
+            sender.sendDown(payload(t));
+            frames.add(sender.pollDown());
+        }
+        return frames;
+    }
+
+    private List<String> delivered() {
+        List<String> out = new ArrayList<>();
+        Envelope e;
+        while ((e = receiver.pollUp()) != null) {
+            out.add(new String(e.data(), e.offset(), e.length(), StandardCharsets.UTF_8));
+        }
+        return out;
+    }
+
+    private static int kind(Envelope e) {
+        return e.data()[e.offset()];
+    }
+
+    @Test
+    void deliversInOrderWhateverOrderFramesArriveIn() {
+        List<Envelope> f = sendAll("one", "two", "three", "four");
+        receiver.receiveUp(arriving(f.get(2), A, A_ID));
+        receiver.receiveUp(arriving(f.get(3), A, A_ID));
+        assertEquals(List.of(), delivered(), "held until the gap is filled");
+        receiver.receiveUp(arriving(f.get(0), A, A_ID));
+        receiver.receiveUp(arriving(f.get(1), A, A_ID));
+        assertEquals(List.of("one", "two", "three", "four"), delivered());
+    }
+
+    @Test
+    void dropsRepetitionsBothDeliveredAndWaiting() {
+        List<Envelope> f = sendAll("one", "two", "three");
+        receiver.receiveUp(arriving(f.get(0), A, A_ID));
+        receiver.receiveUp(arriving(f.get(0), A, A_ID));
+        receiver.receiveUp(arriving(f.get(2), A, A_ID));
+        receiver.receiveUp(arriving(f.get(2), A, A_ID));
+        assertEquals(2, receiver.drops().get("repeated"));
+        receiver.receiveUp(arriving(f.get(1), A, A_ID));
+        assertEquals(List.of("one", "two", "three"), delivered());
+    }
+
+    @Test
+    void asksAtOnceForWhatIsMissingAndTheSenderSendsItAgain() {
+        List<Envelope> f = sendAll("one", "two", "three");
+        receiver.receiveUp(arriving(f.get(2), A, A_ID));
+        Envelope nak = receiver.pollDown();
+        assertEquals(2, kind(nak), "a NAK");
+        assertEquals(2, Frames.getShort(nak.data(), nak.offset() + 13), "for 1 and 2");
+        sender.receiveUp(arriving(nak, B, B_ID));
+        receiver.receiveUp(arriving(sender.pollDown(), A, A_ID));
+        receiver.receiveUp(arriving(sender.pollDown(), A, A_ID));
+        assertEquals(List.of("one", "two", "three"), delivered());
+    }
+
+    @Test
+    void aSenderWithoutAcknowledgementProbesAndALostLastFrameIsRecovered() {
+        List<Envelope> f = sendAll("one", "two");
+        receiver.receiveUp(arriving(f.get(0), A, A_ID)); // "two" is lost
+        while (receiver.pollDown() != null) {
+            // no acknowledgement reaches the sender
+        }
+        sender.advanceMs(20);
+        Envelope probe = sender.pollDown();
+        assertEquals(3, kind(probe), "a probe");
+        receiver.receiveUp(arriving(probe, A, A_ID));
+        Envelope nak = null;
+        Envelope e;
+        while ((e = receiver.pollDown()) != null) {
+            if (kind(e) == 2) {
+                nak = e;
+            }
+        }
+        sender.receiveUp(arriving(nak, B, B_ID));
+        receiver.receiveUp(arriving(sender.pollDown(), A, A_ID));
+        assertEquals(List.of("one", "two"), delivered());
+    }
+
+    @Test
+    void anAcknowledgementStopsTheProbes() {
+        List<Envelope> f = sendAll("one");
+        receiver.receiveUp(arriving(f.get(0), A, A_ID));
+        receiver.advanceMs(5);
+        Envelope ack = receiver.pollDown();
+        assertEquals(1, kind(ack), "an ACK after the ack delay");
+        sender.receiveUp(arriving(ack, B, B_ID));
+        sender.advanceMs(1_000);
+        assertNull(sender.pollDown(), "nothing to probe for");
+    }
+
+    @Test
+    void whatTheSenderNoLongerHasIsSkippedAndCountedAsLost() {
+        SequenceLayer.Config small = new SequenceLayer.Config(4, 4, 5, 32, 20, 30, 10, 40, 16);
+        LayerHarness s = new LayerHarness(new SequenceLayer(small));
+        LayerHarness r = new LayerHarness(new SequenceLayer(small));
+        List<Envelope> frames = new ArrayList<>();
+        for (int i = 0; i < 10; i++) {
+            s.sendDown(payload("m" + i));
+            frames.add(s.pollDown());
+        }
+        r.receiveUp(arriving(frames.get(9), A, A_ID)); // beyond the window of 4
+        assertEquals(1, r.drops().get("reorder-overflow"));
+        Envelope nak = r.pollDown();
+        s.receiveUp(arriving(nak, B, B_ID));
+        Envelope skip = s.pollDown();
+        assertEquals(4, kind(skip), "the first frames are gone: SKIP");
+        r.receiveUp(arriving(skip, B, A_ID));
+        assertEquals(1, r.drops().get("lost"));
+        for (int i = 6; i < 10; i++) {
+            r.receiveUp(arriving(frames.get(i), A, A_ID));
+        }
+        assertEquals(4, countUp(r));
+    }
+
+    private static int countUp(LayerHarness h) {
+        int n = 0;
+        while (h.pollUp() != null) {
+            n++;
+        }
+        return n;
+    }
+
+    @Test
+    void aRestartedPeerStartsANewStreamAndOldFramesStayRefused() {
+        List<Envelope> old = sendAll("before restart");
+        receiver.receiveUp(arriving(old.get(0), A, A_ID));
+        io.concord.core.time.ManualClock later = new io.concord.core.time.ManualClock();
+        later.advanceMs(1); // the peer starts again a moment later: another stream
+        LayerHarness restarted = new LayerHarness("harness", later, new SequenceLayer(SequenceLayer.Config.defaults()));
+        restarted.sendDown(payload("after restart"));
+        receiver.receiveUp(arriving(restarted.pollDown(), A, A_ID));
+        assertEquals(List.of("before restart", "after restart"), delivered());
+        receiver.receiveUp(arriving(old.get(0), A, A_ID));
+        assertTrue(delivered().isEmpty(), "a replay from the earlier session is refused");
+        assertEquals(1, receiver.drops().get("repeated"));
+    }
+
+    @Test
+    void aResendRequestFromAboveLetsTheSameFrameThroughOnce() {
+        List<Envelope> f = sendAll("joining");
+        receiver.receiveUp(arriving(f.get(0), A, A_ID));
+        Envelope refused = receiver.pollUp();
+        while (receiver.pollDown() != null) {
+            // drain acks
+        }
+        receiver.fireEvent(new StackEvent(SequenceLayer.RESEND_REQUEST, refused, false));
+        Envelope nak = receiver.pollDown();
+        assertEquals(2, kind(nak));
+        sender.receiveUp(arriving(nak, B, B_ID));
+        receiver.receiveUp(arriving(sender.pollDown(), A, A_ID));
+        assertEquals(List.of("joining"), delivered(), "passed up once more");
+        receiver.receiveUp(arriving(f.get(0), A, A_ID));
+        assertTrue(delivered().isEmpty(), "but only once");
+    }
+}
