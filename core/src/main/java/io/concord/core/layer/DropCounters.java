@@ -23,13 +23,20 @@ public final class DropCounters {
         counts.computeIfAbsent(reason, r -> new LongAdder()).increment();
     }
 
+    /** Reasons that are part of normal operation (a copy sent on purpose against loss): never warned about. */
+    private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy");
+
     /** Counts one drop, and logs it if it is the first of its reason for this node. */
     public void record(String node, String reason, String detail) {
         LongAdder a = counts.get(reason);
         if (a == null) {
             a = counts.computeIfAbsent(reason, r -> new LongAdder());
-            LOG.warn("{} dropped a message ({}): {}. Further drops for this reason are only counted; "
+            if (EXPECTED.contains(reason)) {
+                LOG.debug("{} dropped a message ({}): {}", node, reason, detail);
+            } else {
+                LOG.warn("{} dropped a message ({}): {}. Further drops for this reason are only counted; "
                     + "see AgentRuntime.drops()", node, reason, detail);
+            }
         }
         a.increment();
     }
