@@ -2,6 +2,7 @@ package io.concord.layers;
 
 import io.concord.core.layer.Layer;
 import io.concord.core.net.Address;
+import io.concord.core.net.Transport;
 import io.concord.layers.communication.CommunicationLayer;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.parser.Membership;
@@ -53,8 +54,9 @@ public final class SafetyStack {
         private PlatformKey platformKey;
         private IdentityStore identities;
         private Membership membership = Membership.open();
-        private int maxFrameBytes = CommunicationLayer.DEFAULT_MAX_UDP_BYTES;
-        private int copies = 2;
+        private Transport transport = Transport.UDP;
+        private Integer maxFrameBytes;
+        private Integer copies;
         private long acceptanceWindowMs = 2_000;
         private long handshakeWindowMs = 30_000;
         private SequenceLayer.Config sequence = SequenceLayer.Config.defaults();
@@ -88,13 +90,19 @@ public final class SafetyStack {
             return this;
         }
 
-        /** The largest frame sent or accepted; 8 KiB by default. */
+        /** The transport agents with this stack run on: UDP (default) or TCP. */
+        public Builder transport(Transport t) {
+            this.transport = Objects.requireNonNull(t, "transport");
+            return this;
+        }
+
+        /** The largest frame sent or accepted; 8 KiB by default on UDP, 16 KiB on TCP. */
         public Builder maxFrameBytes(int bytes) {
             this.maxFrameBytes = bytes;
             return this;
         }
 
-        /** How many times each frame is sent; 2 by default. */
+        /** How many times each frame is sent; 2 by default on UDP, 1 (and only 1) on TCP. */
         public Builder copies(int n) {
             this.copies = n;
             return this;
@@ -156,7 +164,10 @@ public final class SafetyStack {
             if (handshakeWindowMs <= 0) {
                 throw new IllegalArgumentException("handshakeWindowMs must be > 0, got " + handshakeWindowMs);
             }
-            CommunicationLayer.Config comm = new CommunicationLayer.Config(maxFrameBytes, copies);
+            int frameLimit = maxFrameBytes != null ? maxFrameBytes
+                    : transport == Transport.UDP ? CommunicationLayer.DEFAULT_MAX_UDP_BYTES : CommunicationLayer.DEFAULT_MAX_TCP_BYTES;
+            int copiesSent = copies != null ? copies : transport == Transport.UDP ? 2 : 1;
+            CommunicationLayer.Config comm = new CommunicationLayer.Config(transport, frameLimit, copiesSent);
             TemporalLayer.Config temporal = timeSourceName == null ? TemporalLayer.Config.window(acceptanceWindowMs)
                     : new TemporalLayer.Config(acceptanceWindowMs, Frames.id(timeSourceName), timeSourceAddress, syncIntervalMs);
             PlatformKey key = profile == Profile.CLOSED ? null
@@ -172,7 +183,7 @@ public final class SafetyStack {
                     + (profile == Profile.CLOSED ? 0 : Frames.TAG_BYTES)
                     + (out.contains(LayerKind.SEQUENCE) ? 0 : SequenceLayer.HEADER_BYTES)
                     + (out.contains(LayerKind.TEMPORAL) ? 0 : TemporalLayer.HEADER_BYTES);
-            int limit = maxFrameBytes;
+            int limit = frameLimit;
             return () -> {
                 PlatformClock clock = new PlatformClock();
                 List<Layer> layers = new ArrayList<>(5);

@@ -10,7 +10,8 @@ import io.concord.core.layer.StackHost;
 import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
-import io.concord.core.net.UdpNetwork;
+import io.concord.core.net.SocketNetwork;
+import io.concord.core.net.Transport;
 import io.concord.core.time.Clock;
 
 /**
@@ -22,15 +23,17 @@ final class AgentNode implements StackHost {
     final Agent agent;
     final AID aid;
     final Endpoint endpoint;
+    final Transport transport;
     final DropCounters drops = new DropCounters();
     LayerStack stack;
     boolean queued;
 
-    AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint) {
+    AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint, Transport transport) {
         this.runtime = runtime;
         this.agent = agent;
         this.aid = aid;
         this.endpoint = endpoint;
+        this.transport = transport;
     }
 
     void send(AclMessage msg) {
@@ -43,9 +46,9 @@ final class AgentNode implements StackHost {
         }
         Tracer tracer = runtime.tracer();
         for (AID receiver : msg.getReceivers()) {
-            Address dst = runtime.resolve(receiver);
+            Address dst = runtime.resolve(receiver, transport);
             if (dst == null) {
-                dropOutgoing(msg, "unknown-receiver", "no address known for " + receiver.name());
+                dropOutgoing(msg, "unknown-receiver", "no " + transport + " address known for " + receiver.name());
                 returnFailure(msg, receiver);
                 continue;
             }
@@ -84,9 +87,9 @@ final class AgentNode implements StackHost {
 
     /** The bottom of the stack: to the network. */
     void transmit(Envelope env) {
-        if (env.length() > UdpNetwork.MAX_DATAGRAM) {
+        if (transport == Transport.UDP && env.length() > SocketNetwork.MAX_DATAGRAM) {
             stackDrop(env, "too-large", env.length() + " bytes exceed the datagram limit of "
-                    + UdpNetwork.MAX_DATAGRAM);
+                    + SocketNetwork.MAX_DATAGRAM);
             return;
         }
         if (!endpoint.send(env.destination(), env.data(), env.offset(), env.length())) {
@@ -142,6 +145,11 @@ final class AgentNode implements StackHost {
     @Override
     public Address localAddress() {
         return endpoint.localAddress();
+    }
+
+    @Override
+    public Transport transport() {
+        return transport;
     }
 
     @Override

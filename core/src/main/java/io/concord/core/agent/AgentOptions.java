@@ -1,19 +1,21 @@
 package io.concord.core.agent;
 
 import io.concord.core.layer.Layer;
+import io.concord.core.net.Transport;
 
 import java.util.List;
 import java.util.Objects;
 import java.util.function.Supplier;
 
 /**
- * How one agent is started, where it differs from its runtime's defaults: its reception port and
- * its own stack of layers (each agent may choose its layers).
+ * How one agent is started, where it differs from its runtime's defaults: its reception port, its
+ * transport and its own stack of layers (each agent may choose them).
  *
- * @param port  the reception port, or 0 for any free one
- * @param stack the agent's layers, top first, or {@code null} for the runtime's
+ * @param port      the reception port, or 0 for any free one
+ * @param stack     the agent's layers, top first, or {@code null} for the runtime's
+ * @param transport UDP or TCP, or {@code null} for the runtime's
  */
-public record AgentOptions(int port, Supplier<List<Layer>> stack) {
+public record AgentOptions(int port, Supplier<List<Layer>> stack, Transport transport) {
 
     public AgentOptions {
         if (port < 0 || port > 65535) {
@@ -23,14 +25,18 @@ public record AgentOptions(int port, Supplier<List<Layer>> stack) {
 
     /** Any free port, the runtime's stack. */
     public static AgentOptions defaults() {
-        return new AgentOptions(0, null);
+        return new AgentOptions(0, null, null);
     }
 
     public AgentOptions withPort(int p) {
-        return new AgentOptions(p, stack);
+        return new AgentOptions(p, stack, transport);
     }
 
     public AgentOptions withStack(Supplier<List<Layer>> topFirstLayers) {
-        return new AgentOptions(port, Objects.requireNonNull(topFirstLayers, "stack"));
+        return new AgentOptions(port, Objects.requireNonNull(topFirstLayers, "stack"), transport);
+    }
+
+    public AgentOptions withTransport(Transport t) {
+        return new AgentOptions(port, stack, Objects.requireNonNull(t, "transport"));
     }
 }

@@ -8,7 +8,8 @@ import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
 import io.concord.core.net.Network;
-import io.concord.core.net.UdpNetwork;
+import io.concord.core.net.SocketNetwork;
+import io.concord.core.net.Transport;
 import io.concord.core.time.Clock;
 import io.concord.core.time.DeadlineTimerWheel;
 import org.slf4j.Logger;
@@ -54,6 +55,7 @@ public final class AgentRuntime implements AutoCloseable {
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
     private final int idleSpinIterations;
+    private final Transport transport;
     private final DeadlineTimerWheel wheel;
     private final Map<Long, Timer> timersById = new HashMap<>();
     private final Map<Long, Timer> timersByWheelId = new HashMap<>();
@@ -74,7 +76,7 @@ public final class AgentRuntime implements AutoCloseable {
 
     private AgentRuntime(Builder b) {
         this.clock = b.clock;
-        this.network = b.network != null ? b.network : new UdpNetwork();
+        this.network = b.network != null ? b.network : new SocketNetwork();
         this.ownsNetwork = b.network == null;
         this.platformName = b.platformName;
         this.host = b.host;
@@ -83,6 +85,7 @@ public final class AgentRuntime implements AutoCloseable {
         this.stackFactory = b.stackFactory;
         this.mailboxCapacity = b.mailboxCapacity;
         this.idleSpinIterations = b.idleSpinIterations;
+        this.transport = b.transport;
         this.nowNs = clock.nanoTime();
         this.wheel = DeadlineTimerWheel.forAgents(nowNs);
         this.ownerThread = Thread.currentThread();
@@ -104,8 +107,15 @@ public final class AgentRuntime implements AutoCloseable {
         private Supplier<List<Layer>> stackFactory = () -> List.of(new CodecLayer());
         private int mailboxCapacity = 100_000;
         private int idleSpinIterations = 2_000;
+        private Transport transport = Transport.UDP;
 
         private Builder() {
+        }
+
+        /** The transport of agents that do not choose one; UDP by default. */
+        public Builder transport(Transport t) {
+            this.transport = Objects.requireNonNull(t, "transport");
+            return this;
         }
 
         public Builder clock(Clock clock) {
@@ -242,13 +252,14 @@ public final class AgentRuntime implements AutoCloseable {
             throw new IllegalArgumentException("this Agent object has already been started; create a new one");
         }
         AgentNode[] holder = new AgentNode[1];
-        Endpoint ep = network.tryBind(host, port, (from, data, off, len, now) -> holder[0].onDatagram(from, data, off, len, now));
+        Transport t = options.transport() != null ? options.transport() : transport;
+        Endpoint ep = network.tryBind(t, host, port, (from, data, off, len, now) -> holder[0].onDatagram(from, data, off, len, now));
         if (ep == null) {
-            throw new IllegalStateException("port " + port + " on " + host + " is already in use; "
+            throw new IllegalStateException(t + " port " + port + " on " + host + " is already in use; "
                     + "choose another port or 0 for any free one");
         }
-        AID aid = new AID(nameOnly.name(), ep.localAddress().toUri());
-        AgentNode node = new AgentNode(this, agent, aid, ep);
+        AID aid = new AID(nameOnly.name(), ep.localAddress().toUri(t));
+        AgentNode node = new AgentNode(this, agent, aid, ep, t);
         holder[0] = node;
         try {
             List<Layer> layers = (options.stack() != null ? options.stack() : stackFactory).get();
@@ -320,15 +331,15 @@ public final class AgentRuntime implements AutoCloseable {
     }
 
     /**
-     * Where to send to an agent: an agent of this runtime by name, else the first {@code udp://}
-     * address of its AID. {@code null} if neither is known.
+     * Where to send to an agent over the given transport: an agent of this runtime by name, else
+     * the first address of that transport in its AID. {@code null} if neither is known.
      */
-    Address resolve(AID aid) {
+    Address resolve(AID aid, Transport t) {
         AgentNode local = directory.get(aid);
-        if (local != null) {
+        if (local != null && local.transport == t) {
             return local.endpoint.localAddress();
         }
-        String uri = aid.firstAddress(Address.UDP_SCHEME);
+        String uri = aid.firstAddress(t.scheme());
         if (uri == null) {
             return null;
         }

@@ -13,6 +13,11 @@ public interface StackHost {
         return null;
     }
 
+    /** The node's transport. */
+    default io.concord.core.net.Transport transport() {
+        return io.concord.core.net.Transport.UDP;
+    }
+
     Clock clock();
 
     /** The loop's current time (read once per work cycle). */

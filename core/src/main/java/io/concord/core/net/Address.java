@@ -19,11 +19,16 @@ public record Address(String host, int port) {
 
     /** This address as an AID transport address, {@code udp://host:port}. */
     public String toUri() {
-        return UDP_SCHEME + host + ":" + port;
+        return toUri(Transport.UDP);
+    }
+
+    /** This address as an AID transport address of the given transport. */
+    public String toUri(Transport transport) {
+        return transport.scheme() + host + ":" + port;
     }
 
     /**
-     * Parses {@code udp://host:port} (or {@code host:port}).
+     * Parses {@code udp://host:port}, {@code tcp://host:port} or {@code host:port}.
      *
      * @return the address, or {@code null} if the text is not one
      */
@@ -31,6 +36,8 @@ public record Address(String host, int port) {
         String s = uri;
         if (s.regionMatches(true, 0, UDP_SCHEME, 0, UDP_SCHEME.length())) {
             s = s.substring(UDP_SCHEME.length());
+        } else if (s.regionMatches(true, 0, "tcp://", 0, 6)) {
+            s = s.substring(6);
         } else if (s.contains("://")) {
             return null;
         }

@@ -1,7 +1,7 @@
 package io.concord.core.net;
 
 /**
- * A datagram network with its port space: real UDP sockets ({@link UdpNetwork}) or the
+ * A datagram network with its port space: real UDP sockets ({@link SocketNetwork}) or the
  * deterministic virtual network of the test kit. One loop polls it; {@link #wakeup()} is the only
  * method other threads may call.
  */
@@ -17,6 +17,18 @@ public interface Network {
      * @throws java.io.UncheckedIOException for any other failure to bind, with its cause
      */
     Endpoint tryBind(String host, int port, Receiver receiver);
+
+    /**
+     * Binds a port of the given transport. UDP and TCP ports are separate spaces.
+     *
+     * @see #tryBind(String, int, Receiver)
+     */
+    default Endpoint tryBind(Transport transport, String host, int port, Receiver receiver) {
+        if (transport == Transport.UDP) {
+            return tryBind(host, port, receiver);
+        }
+        throw new UnsupportedOperationException(getClass().getSimpleName() + " has no " + transport);
+    }
 
     /**
      * Delivers the datagrams that have arrived by {@code nowNs} to their receivers.

@@ -32,6 +32,8 @@ public final class VirtualNetwork implements Network {
     private Medium medium;
     private String mediumFromHost;
     private final Map<Address, VirtualEndpoint> bound = new HashMap<>();
+    private final Map<Address, VirtualEndpoint> boundTcp = new HashMap<>();
+    private final Map<String, Long> lastTcpDelivery = new HashMap<>();
     private final Map<String, Integer> nextEphemeral = new HashMap<>();
     private final PriorityQueue<Delivery> pending = new PriorityQueue<>();
     private final Set<String> partitions = new HashSet<>();
@@ -117,6 +119,43 @@ public final class VirtualNetwork implements Network {
     }
 
     @Override
+    public Endpoint tryBind(io.concord.core.net.Transport transport, String host, int port, Receiver receiver) {
+        if (transport == io.concord.core.net.Transport.UDP) {
+            return tryBind(host, port, receiver);
+        }
+        int p = port;
+        if (p == 0) {
+            p = EPHEMERAL_BASE;
+            while (boundTcp.containsKey(new Address(host, p))) {
+                p++;
+            }
+        }
+        Address a = new Address(host, p);
+        if (boundTcp.containsKey(a)) {
+            return null;
+        }
+        VirtualEndpoint ep = new VirtualEndpoint(a, receiver, true);
+        boundTcp.put(a, ep);
+        return ep;
+    }
+
+    /**
+     * A TCP frame: reliable and in order, so the fault plan and the medium do not touch it; a
+     * partition or a link down still loses it, as a broken connection would.
+     */
+    private void sendTcp(Address from, Address to, byte[] data, int offset, int length) {
+        sent++;
+        if (blocked(from.host(), to.host())) {
+            dropped++;
+            return;
+        }
+        String link = from + ">" + to;
+        long at = Math.max(clock.nanoTime() + plan.latencyNs(), lastTcpDelivery.getOrDefault(link, 0L));
+        lastTcpDelivery.put(link, at);
+        pending.add(new Delivery(at, sequence++, from, to, Arrays.copyOfRange(data, offset, offset + length), true));
+    }
+
+    @Override
     public Endpoint tryBind(String host, int port, Receiver receiver) {
         if (port == 0) {
             int p = nextEphemeral.getOrDefault(host, EPHEMERAL_BASE);
@@ -130,7 +169,7 @@ public final class VirtualNetwork implements Network {
         if (bound.containsKey(a)) {
             return null;
         }
-        VirtualEndpoint ep = new VirtualEndpoint(a, receiver);
+        VirtualEndpoint ep = new VirtualEndpoint(a, receiver, false);
         bound.put(a, ep);
         return ep;
     }
@@ -138,6 +177,11 @@ public final class VirtualNetwork implements Network {
     /** Closes every endpoint bound on a host, as a crash of its processes would. */
     public void closeHost(String host) {
         for (VirtualEndpoint ep : bound.values().toArray(new VirtualEndpoint[0])) {
+            if (ep.local.host().equals(host)) {
+                ep.close();
+            }
+        }
+        for (VirtualEndpoint ep : boundTcp.values().toArray(new VirtualEndpoint[0])) {
             if (ep.local.host().equals(host)) {
                 ep.close();
             }
@@ -164,9 +208,9 @@ public final class VirtualNetwork implements Network {
             long at = clock.nanoTime() + delay;
             if (medium != null && from.host().equals(mediumFromHost)) {
                 medium.carry(from, to, bytes, (extraNs, b) -> pending.add(new Delivery(at + Math.max(0, extraNs),
-                        sequence++, from, to, b.clone())));
+                        sequence++, from, to, b.clone(), false)));
             } else {
-                pending.add(new Delivery(at, sequence++, from, to, bytes));
+                pending.add(new Delivery(at, sequence++, from, to, bytes, false));
             }
         }
     }
@@ -181,7 +225,7 @@ public final class VirtualNetwork implements Network {
         Delivery d;
         while ((d = pending.peek()) != null && d.timeNs <= nowNs) {
             pending.poll();
-            VirtualEndpoint ep = bound.get(d.to);
+            VirtualEndpoint ep = (d.tcp ? boundTcp : bound).get(d.to);
             if (ep == null || blocked(d.from.host(), d.to.host())) {
                 dropped++;
                 continue;
@@ -219,10 +263,13 @@ public final class VirtualNetwork implements Network {
         for (VirtualEndpoint ep : bound.values().toArray(new VirtualEndpoint[0])) {
             ep.close();
         }
+        for (VirtualEndpoint ep : boundTcp.values().toArray(new VirtualEndpoint[0])) {
+            ep.close();
+        }
         pending.clear();
     }
 
-    private record Delivery(long timeNs, long seq, Address from, Address to, byte[] data)
+    private record Delivery(long timeNs, long seq, Address from, Address to, byte[] data, boolean tcp)
             implements Comparable<Delivery> {
         @Override
         public int compareTo(Delivery o) {
@@ -234,11 +281,13 @@ public final class VirtualNetwork implements Network {
     private final class VirtualEndpoint implements Endpoint {
         private final Address local;
         private final Receiver receiver;
+        private final boolean tcp;
         private boolean open = true;
 
-        VirtualEndpoint(Address local, Receiver receiver) {
+        VirtualEndpoint(Address local, Receiver receiver, boolean tcp) {
             this.local = local;
             this.receiver = receiver;
+            this.tcp = tcp;
         }
 
         @Override
@@ -251,7 +300,11 @@ public final class VirtualNetwork implements Network {
             if (!open) {
                 return false;
             }
-            VirtualNetwork.this.send(local, to, data, offset, length);
+            if (tcp) {
+                sendTcp(local, to, data, offset, length);
+            } else {
+                VirtualNetwork.this.send(local, to, data, offset, length);
+            }
             return true;
         }
 
@@ -259,7 +312,7 @@ public final class VirtualNetwork implements Network {
         public void close() {
             if (open) {
                 open = false;
-                bound.remove(local);
+                (tcp ? boundTcp : bound).remove(local);
             }
         }
 

@@ -20,13 +20,13 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 /**
- * Real UDP sockets, non-blocking, all registered with one {@link Selector} so that a single loop
- * serves every agent of a JVM.
+ * Real sockets, UDP and TCP, non-blocking, all registered with one {@link Selector} so that a
+ * single loop serves every agent of a JVM. TCP is described in {@link TcpEndpoint}.
  */
-public final class UdpNetwork implements Network {
+public final class SocketNetwork implements Network {
     /** Largest UDP payload over IPv4. */
     public static final int MAX_DATAGRAM = 65507;
-    private static final Logger LOG = LoggerFactory.getLogger(UdpNetwork.class);
+    private static final Logger LOG = LoggerFactory.getLogger(SocketNetwork.class);
 
     private final Selector selector;
     private final ByteBuffer receiveBuffer = ByteBuffer.allocateDirect(MAX_DATAGRAM + 1);
@@ -36,18 +36,34 @@ public final class UdpNetwork implements Network {
     private final int socketBufferBytes;
 
     /** A network with 1 MiB socket buffers. */
-    public UdpNetwork() {
+    public SocketNetwork() {
         this(1 << 20);
     }
 
     /** A network whose sockets ask the kernel for the given send and receive buffer size. */
-    public UdpNetwork(int socketBufferBytes) {
+    public SocketNetwork(int socketBufferBytes) {
         this.socketBufferBytes = socketBufferBytes;
         try {
             selector = Selector.open();
         } catch (IOException e) {
             throw new UncheckedIOException("cannot open a selector for UDP sockets", e);
         }
+    }
+
+    /** Something registered with the selector. */
+    interface Handler {
+        /** The key is ready; returns the frames delivered. */
+        int onReady(SelectionKey key, long nowNs);
+
+        void close();
+    }
+
+    @Override
+    public Endpoint tryBind(Transport transport, String host, int port, Receiver receiver) {
+        if (transport == Transport.UDP) {
+            return tryBind(host, port, receiver);
+        }
+        return TcpEndpoint.bind(selector, host, port, receiver);
     }
 
     @Override
@@ -100,8 +116,8 @@ public final class UdpNetwork implements Network {
         while (it.hasNext()) {
             SelectionKey key = it.next();
             it.remove();
-            if (key.isValid() && key.isReadable()) {
-                delivered += ((UdpEndpoint) key.attachment()).drain(nowNs);
+            if (key.isValid()) {
+                delivered += ((Handler) key.attachment()).onReady(key, nowNs);
             }
         }
         return delivered;
@@ -135,7 +151,7 @@ public final class UdpNetwork implements Network {
     @Override
     public void close() {
         for (SelectionKey k : selector.keys()) {
-            ((UdpEndpoint) k.attachment()).close();
+            ((Handler) k.attachment()).close();
         }
         try {
             selector.close();
@@ -169,7 +185,7 @@ public final class UdpNetwork implements Network {
         return isa;
     }
 
-    private final class UdpEndpoint implements Endpoint {
+    private final class UdpEndpoint implements Endpoint, Handler {
         private final DatagramChannel channel;
         private final Receiver receiver;
         private final Address local;
@@ -179,6 +195,11 @@ public final class UdpNetwork implements Network {
             this.receiver = receiver;
             InetSocketAddress la = (InetSocketAddress) channel.getLocalAddress();
             this.local = new Address(la.getAddress().getHostAddress(), la.getPort());
+        }
+
+        @Override
+        public int onReady(SelectionKey key, long nowNs) {
+            return key.isReadable() ? drain(nowNs) : 0;
         }
 
         int drain(long nowNs) {

@@ -1,0 +1,70 @@
+package io.concord.layers;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.AgentOptions;
+import io.concord.core.agent.AgentRuntime;
+import io.concord.core.agent.LambdaAgent;
+import io.concord.core.agent.OneShotBehaviour;
+import io.concord.core.net.Transport;
+import io.concord.core.testkit.FaultPlan;
+import io.concord.core.testkit.Simulation;
+import org.junit.jupiter.api.Test;
+
+import java.util.concurrent.atomic.AtomicReference;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The class-7 stack on agents that chose TCP. */
+class TcpStackTest {
+
+    @Test
+    void classSevenOverRealTcpCarriesMessagesUpToSixteenKilobytes() throws Exception {
+        var stack = Stacks.builder(Profile.CLASS_7).transport(Transport.TCP).build();
+        try (AgentRuntime a = AgentRuntime.builder().transport(Transport.TCP).stack(stack).build().start();
+             AgentRuntime b = AgentRuntime.builder().transport(Transport.TCP).stack(stack).build().start()) {
+            ThreatWorld.Receiver receiver = new ThreatWorld.Receiver();
+            AID to = b.startAgent("b", receiver);
+            AtomicReference<RuntimeException> refused = new AtomicReference<>();
+            a.startAgent("a", new LambdaAgent(ag -> ag.addBehaviour(new OneShotBehaviour() {
+                @Override
+                public void action() {
+                    myAgent.send(new AclMessage(Performative.INFORM).addReceiver(to).setContent("small"));
+                    myAgent.send(new AclMessage(Performative.INFORM).addReceiver(to).setContent("y".repeat(12_000)));
+                    try {
+                        myAgent.send(new AclMessage(Performative.INFORM).addReceiver(to).setContent("z".repeat(17_000)));
+                    } catch (RuntimeException e) {
+                        refused.set(e);
+                    }
+                }
+            })));
+            assertTrue(receiver.awaitCount(2, 30_000), "received " + receiver.got.size());
+            assertEquals("small", receiver.got.poll().getContent());
+            assertEquals(12_000, receiver.got.poll().getContent().length(), "over the UDP limit, under TCP's");
+            assertNotNull(refused.get(), "17 000 bytes is over TCP's 16 KiB");
+            assertTrue(refused.get().getMessage().contains("16384"), refused.get().getMessage());
+        }
+    }
+
+    @Test
+    void repetitionOnTcpIsRefusedAtBuildTime() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Stacks.builder(Profile.CLASS_7).transport(Transport.TCP).copies(2).build());
+        assertTrue(e.getMessage().contains("TCP already retransmits"), e.getMessage());
+    }
+
+    @Test
+    void aStackBuiltForTcpRefusesToStartOnAUdpAgent() {
+        try (Simulation sim = new Simulation(4, FaultPlan.NONE)) {
+            AgentRuntime rt = sim.newRuntime("h");
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> rt.startAgentWith("a",
+                    new LambdaAgent(ag -> { }), AgentOptions.defaults()
+                            .withStack(Stacks.builder(Profile.CLASS_7).transport(Transport.TCP).build())));
+            assertTrue(e.getMessage().contains("built for TCP"), e.getMessage());
+        }
+    }
+}
