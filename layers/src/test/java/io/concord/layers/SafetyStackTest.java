@@ -76,4 +76,23 @@ class SafetyStackTest {
             assertEquals(1L, rt.drops().get("too-large"));
         }
     }
+
+    @Test
+    void aRuntimeWithoutAChosenStackGivesItsAgentsTheClassSevenStack(@org.junit.jupiter.api.io.TempDir java.nio.file.Path home) {
+        String old = System.getProperty(io.concord.layers.security.PlatformKey.HOME_PROPERTY);
+        System.setProperty(io.concord.layers.security.PlatformKey.HOME_PROPERTY, home.toString());
+        try (Simulation sim = new Simulation(6, FaultPlan.NONE)) {
+            AgentRuntime rt = sim.newRuntime("h");
+            AID a = rt.startAgent("a", new io.concord.core.agent.LambdaAgent(ag -> { }));
+            assertEquals(List.of("parser", "sequence", "temporal", "security", "communication"),
+                    rt.layers(a).stream().map(Layer::name).toList());
+            assertTrue(java.nio.file.Files.exists(home.resolve("platform.key")), "a platform key was made for the user");
+        } finally {
+            if (old == null) {
+                System.clearProperty(io.concord.layers.security.PlatformKey.HOME_PROPERTY);
+            } else {
+                System.setProperty(io.concord.layers.security.PlatformKey.HOME_PROPERTY, old);
+            }
+        }
+    }
 }

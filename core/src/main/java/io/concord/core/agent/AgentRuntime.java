@@ -82,13 +82,22 @@ public final class AgentRuntime implements AutoCloseable {
         this.host = b.host;
         this.random = b.random != null ? b.random : new SplittableRandom();
         this.tracer = b.tracer;
-        this.stackFactory = b.stackFactory;
+        this.stackFactory = b.stackFactory != null ? b.stackFactory : defaultStack();
         this.mailboxCapacity = b.mailboxCapacity;
         this.idleSpinIterations = b.idleSpinIterations;
         this.transport = b.transport;
         this.nowNs = clock.nanoTime();
         this.wheel = DeadlineTimerWheel.forAgents(nowNs);
         this.ownerThread = Thread.currentThread();
+    }
+
+    private static Supplier<List<Layer>> defaultStack() {
+        for (io.concord.core.layer.StackProvider p : java.util.ServiceLoader.load(io.concord.core.layer.StackProvider.class)) {
+            return p.defaultStack();
+        }
+        LOG.warn("no safety layers on the class path: agents of this runtime talk without the EN 50159 defences; "
+                + "add the concord-layers module, or choose a stack with AgentRuntime.builder().stack(...)");
+        return () -> List.of(new CodecLayer());
     }
 
     /** A builder with the defaults: system clock, real UDP on 127.0.0.1, platform "concord". */
@@ -104,7 +113,7 @@ public final class AgentRuntime implements AutoCloseable {
         private String host = "127.0.0.1";
         private RandomGenerator random;
         private Tracer tracer = Tracer.NONE;
-        private Supplier<List<Layer>> stackFactory = () -> List.of(new CodecLayer());
+        private Supplier<List<Layer>> stackFactory;
         private int mailboxCapacity = 100_000;
         private int idleSpinIterations = 2_000;
         private Transport transport = Transport.UDP;
@@ -160,7 +169,11 @@ public final class AgentRuntime implements AutoCloseable {
             return this;
         }
 
-        /** Makes each agent's layers, top first. Default: the binary codec alone. */
+        /**
+         * Makes each agent's layers, top first. Default: the stack a {@link io.concord.core.layer.StackProvider}
+         * on the class path supplies (the class-7 safety stack of {@code concord-layers}), else the
+         * binary codec alone, with a warning.
+         */
         public Builder stack(Supplier<List<Layer>> topFirstLayers) {
             this.stackFactory = Objects.requireNonNull(topFirstLayers, "stack");
             return this;
