@@ -13,67 +13,189 @@ import java.nio.file.Path;
 import java.time.LocalDate;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 
 /**
- * {@code bench/run quick|full [name ...]}: runs the named benchmarks, prints one RESULT line per
- * measured point and writes the report under {@code bench/report/}. Names available now:
- * {@code stack}. The others of the benchmarks issue come with their issues.
+ * {@code bench/run quick|full [name ...]}: runs the named benchmarks (all by default), prints one
+ * RESULT line per measured point, and writes a page per benchmark under {@code bench/report/} with
+ * tables, PNG charts and the machine's description. Names: {@code stack}, {@code chain},
+ * {@code books}, {@code udp}.
  */
 public final class BenchMain {
-    private BenchMain() {
+    static final List<String> NAMES = List.of("udp", "stack", "chain", "books");
+    private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
+            Platforms.CONCORD_CLOSED, Platforms.JADE);
+
+    private final boolean full;
+    private final Path reportDir;
+    private final Map<String, Double> udpHopUs = new TreeMap<>();
+
+    private BenchMain(boolean full, Path reportDir) {
+        this.full = full;
+        this.reportDir = reportDir;
     }
 
     public static void main(String[] args) throws RunnerException, IOException {
-        boolean full = args.length > 0 && args[0].equals("full");
+        int i = 0;
+        boolean full = false;
+        if (args.length > 0 && (args[0].equals("quick") || args[0].equals("full"))) {
+            full = args[0].equals("full");
+            i = 1;
+        }
         List<String> names = new ArrayList<>();
-        for (int i = args.length > 0 && (args[0].equals("quick") || args[0].equals("full")) ? 1 : 0; i < args.length; i++) {
+        for (; i < args.length; i++) {
+            if (!NAMES.contains(args[i])) {
+                System.err.println("unknown benchmark '" + args[i] + "'; available: " + String.join(", ", NAMES)
+                        + " (bootstrap, failover, network and stress come with their issues)");
+                System.exit(2);
+            }
             names.add(args[i]);
         }
         if (names.isEmpty()) {
-            names.add("stack");
+            names.addAll(NAMES);
         }
         Path reportDir = Path.of(System.getProperty("concord.report", "bench/report"));
         Files.createDirectories(reportDir);
-        for (String name : names) {
-            switch (name) {
-                case "stack" -> stack(full, reportDir);
-                default -> {
-                    System.err.println("unknown benchmark '" + name + "'; available: stack");
-                    System.exit(2);
+        BenchMain b = new BenchMain(full, reportDir);
+        for (String name : NAMES) {
+            if (names.contains(name)) {
+                switch (name) {
+                    case "udp" -> b.udp();
+                    case "stack" -> b.stack();
+                    case "chain" -> b.rounds("chain", ChainBenchmark.class, "n", "N", List.of(2, 6, 10, 19));
+                    case "books" -> b.rounds("books", BooksBenchmark.class, "s", "S", List.of(1, 5, 10, 15));
+                    default -> throw new IllegalStateException(name);
                 }
             }
         }
+        b.index();
     }
 
-    private static void stack(boolean full, Path reportDir) throws RunnerException, IOException {
-        ChainedOptionsBuilder opts = new OptionsBuilder()
-                .include(StackBenchmark.class.getSimpleName())
+    private ChainedOptionsBuilder options(Class<?> benchmark) {
+        return new OptionsBuilder()
+                .include("\\." + benchmark.getSimpleName() + "\\.")
                 .mode(org.openjdk.jmh.annotations.Mode.SampleTime)
                 .timeUnit(TimeUnit.MICROSECONDS)
                 .forks(1)
-                .warmupIterations(full ? 5 : 3).warmupTime(TimeValue.seconds(full ? 5 : 2))
-                .measurementIterations(full ? 10 : 3).measurementTime(TimeValue.seconds(full ? 5 : 2));
-        Collection<RunResult> results = new Runner(opts.build()).run();
-        StringBuilder table = new StringBuilder();
-        table.append("# Stack: one message down one stack and up another\n\n")
-                .append("500-byte content, no sockets, both copies of each frame delivered; JMH sample time, ")
-                .append(full ? "full" : "quick").append(" mode, ").append(LocalDate.now()).append(".\n\n")
-                .append(Machine.describe()).append("\n\n")
-                .append("| profile | median µs | p90 µs | p99 µs | samples |\n|---|---|---|---|---|\n");
+                .jvmArgsAppend("-Djava.awt.headless=true", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error")
+                .warmupIterations(full ? 5 : 2).warmupTime(TimeValue.seconds(full ? 3 : 1))
+                .measurementIterations(full ? 10 : 3).measurementTime(TimeValue.seconds(full ? 3 : 1));
+    }
+
+    private static double median(RunResult r) {
+        return r.getPrimaryResult().getStatistics().getPercentile(50);
+    }
+
+    private String header(String title, String what) {
+        return "# " + title + "\n\n" + what + "\n\nJMH sample time, " + (full ? "full" : "quick") + " mode, "
+                + LocalDate.now() + ". " + Machine.describe() + "\n\n";
+    }
+
+    private void udp() throws RunnerException, IOException {
+        Collection<RunResult> results = new Runner(options(UdpBaselineBenchmark.class).build()).run();
+        StringBuilder md = new StringBuilder(header("UDP baseline", "A 500-byte datagram ping-pong on loopback, per hop: "
+                + "the physical floor Concord's hops are measured against."));
+        md.append("| mode | median µs per hop | p90 |\n|---|---|---|\n");
+        for (RunResult r : results) {
+            String mode = r.getParams().getParam("mode");
+            double m = median(r);
+            udpHopUs.put(mode, m);
+            System.out.printf(Locale.ROOT, "RESULT udp %s 500 hop_us=%.2f%n", mode, m);
+            md.append(String.format(Locale.ROOT, "| %s | %.2f | %.2f |%n", mode, m,
+                    r.getPrimaryResult().getStatistics().getPercentile(90)));
+        }
+        Files.writeString(reportDir.resolve("udp.md"), md.toString());
+    }
+
+    private void stack() throws RunnerException, IOException {
+        Collection<RunResult> results = new Runner(options(StackBenchmark.class).build()).run();
+        StringBuilder md = new StringBuilder(header("Stack: one message down one stack and up another",
+                "500-byte content, no sockets, both copies of each frame delivered (the second is filtered)."));
+        md.append("| profile | median µs | p90 µs | p99 µs |\n|---|---|---|---|\n");
         for (RunResult r : results) {
             String profile = r.getParams().getParam("profile");
-            var stats = r.getPrimaryResult().getStatistics();
-            double median = stats.getPercentile(50);
+            var st = r.getPrimaryResult().getStatistics();
             System.out.printf(Locale.ROOT, "RESULT stack %s 500 down_up_us=%.2f%n",
-                    profile.equals("CLASS_7") ? "class7" : profile.toLowerCase(Locale.ROOT), median);
-            table.append(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.2f | %d |%n", profile, median,
-                    stats.getPercentile(90), stats.getPercentile(99), stats.getN()));
+                    profile.equals("CLASS_7") ? "class7" : profile.toLowerCase(Locale.ROOT), st.getPercentile(50));
+            md.append(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.2f |%n", profile, st.getPercentile(50),
+                    st.getPercentile(90), st.getPercentile(99)));
         }
-        table.append("\nFor scale: a 500-byte UDP send and receive on loopback costs about 5 µs of system calls ")
-                .append("on these machines (ARCHITECTURE.md); `bench/run quick udp` will measure it in the same run.\n");
-        Files.writeString(reportDir.resolve("stack.md"), table.toString());
+        md.append("\nFor scale, the UDP baseline (udp.md) gives the cost of a loopback hop on the same machine.\n");
+        Files.writeString(reportDir.resolve("stack.md"), md.toString());
+    }
+
+    /** Chain or books in one JVM: every platform at every size. */
+    private void rounds(String name, Class<?> benchmark, String param, String label, List<Integer> sizes)
+            throws RunnerException, IOException {
+        ChainedOptionsBuilder o = options(benchmark)
+                .param("platform", PLATFORMS.toArray(new String[0]))
+                .param(param, sizes.stream().map(String::valueOf).toArray(String[]::new));
+        Collection<RunResult> results = new Runner(o.build()).run();
+        Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(PLATFORMS);
+        for (RunResult r : results) {
+            byPlatform.get(r.getParams().getParam("platform")).put(Integer.parseInt(r.getParams().getParam(param)), median(r));
+        }
+        StringBuilder md = new StringBuilder(header(name.equals("chain") ? "Chain (pass the secret), one JVM"
+                        : "Book buyer, one JVM",
+                name.equals("chain") ? "N agents pass a 500-byte content round a ring; time per round. JADE: one main container."
+                        : "One buyer, S sellers: QUERY-REF to all, INFORM quotes, REQUEST to the cheapest, AGREE; time per "
+                        + "round. JADE: one main container."));
+        md.append("Concord class 7 is the full EN 50159 class-7 stack with agents of one runtime handing frames over in "
+                + "memory (both stacks still run whole); `class7-sockets` forces every frame through the kernel; "
+                + "`closed` is the closed-network profile.\n\n");
+        md.append("| ").append(label).append(" | concord class 7 µs | class 7 sockets µs | closed µs | JADE µs | speedup (JADE / class 7) |");
+        if (name.equals("chain")) {
+            md.append(" class-7 µs per hop |");
+        }
+        md.append("\n|---|---|---|---|---|---|").append(name.equals("chain") ? "---|" : "").append("\n");
+        for (int size : sizes) {
+            Double c7 = byPlatform.get(Platforms.CONCORD_CLASS7).get(size);
+            Double sock = byPlatform.get(Platforms.CONCORD_CLASS7_SOCKETS).get(size);
+            Double closed = byPlatform.get(Platforms.CONCORD_CLOSED).get(size);
+            Double jade = byPlatform.get(Platforms.JADE).get(size);
+            if (c7 != null && jade != null) {
+                System.out.printf(Locale.ROOT, "RESULT %s onejvm %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
+                        name, size, c7, jade, jade / c7);
+            }
+            md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s | %s | %s |", size, fmt(c7), fmt(sock), fmt(closed),
+                    fmt(jade), c7 != null && jade != null ? String.format(Locale.ROOT, "%.2f", jade / c7) : "-"));
+            if (name.equals("chain")) {
+                md.append(c7 == null ? " - |" : String.format(Locale.ROOT, " %.2f |", c7 / size));
+            }
+            md.append('\n');
+        }
+        if (name.equals("chain") && udpHopUs.containsKey("onethread")) {
+            Double c7at19 = byPlatform.get(Platforms.CONCORD_CLASS7).get(19);
+            if (c7at19 != null) {
+                md.append(String.format(Locale.ROOT, "%nPer hop at N=19: %.2f µs, %.1f times the one-thread UDP floor of "
+                        + "%.2f µs measured in this run.%n", c7at19 / 19, c7at19 / 19 / udpHopUs.get("onethread"),
+                        udpHopUs.get("onethread")));
+            }
+        }
+        String png = name + "-onejvm.png";
+        Charts.line(reportDir.resolve(png), (name.equals("chain") ? "Chain" : "Book buyer") + ": time per round, one JVM",
+                label, "µs per round", byPlatform);
+        md.append("\n![").append(name).append("](").append(png).append(")\n");
+        Files.writeString(reportDir.resolve(name + ".md"), md.toString());
+    }
+
+    private static String fmt(Double v) {
+        return v == null ? "-" : String.format(Locale.ROOT, "%.1f", v);
+    }
+
+    private void index() throws IOException {
+        StringBuilder md = new StringBuilder("# Concord benchmark report\n\nWritten by `bench/run`. ")
+                .append(Machine.describe()).append("\n\n");
+        for (String n : NAMES) {
+            if (Files.exists(reportDir.resolve(n + ".md"))) {
+                md.append("- [").append(n).append("](").append(n).append(".md)\n");
+            }
+        }
+        Files.writeString(reportDir.resolve("README.md"), md.toString());
     }
 }

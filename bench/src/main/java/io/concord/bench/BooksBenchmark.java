@@ -1,0 +1,89 @@
+package io.concord.bench;
+
+import io.concord.bench.concord.ConcordBooks;
+import io.concord.bench.jade.JadeBooks;
+import io.concord.bench.jade.JadePlatform;
+import io.concord.core.acl.AID;
+import io.concord.core.agent.AgentRuntime;
+import jade.wrapper.AgentController;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Experiment 5 of the dissertation: one buyer, S sellers in one JVM. QUERY-REF to all sellers,
+ * INFORM quotes (a buyer timeout for missing ones), REQUEST to the cheapest, AGREE. Time per round.
+ */
+@State(Scope.Benchmark)
+public class BooksBenchmark {
+    public static final int ROUNDS = 50;
+    static final long TIMEOUT_MS = 1_000;
+
+    @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
+    public String platform;
+
+    @Param({"1", "5", "10", "15"})
+    public int s;
+
+    private final Rounds rounds = new Rounds();
+    private AgentRuntime concord;
+    private ConcordBooks.Buyer buyer;
+    private JadePlatform jade;
+    private AgentController jadeBuyer;
+
+    static int price(int i) {
+        return 40 + (i * 7919) % 23;
+    }
+
+    @Setup(Level.Trial)
+    public void start() throws Exception {
+        if (platform.equals(Platforms.JADE)) {
+            jade = new JadePlatform();
+            rounds.expectReady(s + 1);
+            for (int i = 0; i < s; i++) {
+                jade.start("seller" + i, JadeBooks.Seller.class, price(i), rounds);
+            }
+            jadeBuyer = jade.start("buyer", JadeBooks.Buyer.class, rounds, s, TIMEOUT_MS);
+            rounds.awaitReady();
+            return;
+        }
+        concord = Platforms.concord(platform);
+        List<AID> sellers = new ArrayList<>();
+        for (int i = 0; i < s; i++) {
+            sellers.add(concord.startAgent("seller" + i, new ConcordBooks.Seller(price(i))));
+        }
+        buyer = new ConcordBooks.Buyer(rounds, TIMEOUT_MS);
+        buyer.sellers = sellers;
+        concord.startAgent("buyer", buyer);
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(ROUNDS)
+    public void round() throws Exception {
+        rounds.arm(ROUNDS);
+        if (jade != null) {
+            jadeBuyer.putO2AObject("go", false);
+        } else {
+            concord.execute(buyer::startRound);
+        }
+        rounds.await();
+    }
+
+    @TearDown(Level.Trial)
+    public void stop() {
+        if (concord != null) {
+            concord.close();
+        }
+        if (jade != null) {
+            jade.close();
+        }
+    }
+}

@@ -1,0 +1,91 @@
+package io.concord.bench;
+
+import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.jade.JadeChainLink;
+import io.concord.bench.jade.JadePlatform;
+import io.concord.core.acl.AID;
+import io.concord.core.agent.AgentRuntime;
+import jade.wrapper.AgentController;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Experiment 4 of the dissertation, "pass the secret": N agents in one JVM pass a 500-byte content
+ * round a ring; the first checks it came back unchanged and starts the next round. Time per round.
+ */
+@State(Scope.Benchmark)
+public class ChainBenchmark {
+    public static final int ROUNDS = 50;
+    static final String SECRET = "s".repeat(492) + "checksum";
+
+    @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
+    public String platform;
+
+    @Param({"2", "6", "10", "19"})
+    public int n;
+
+    private final Rounds rounds = new Rounds();
+    private AgentRuntime concord;
+    private ConcordChainLink first;
+    private JadePlatform jade;
+    private AgentController jadeFirst;
+
+    @Setup(Level.Trial)
+    public void start() throws Exception {
+        if (platform.equals(Platforms.JADE)) {
+            jade = new JadePlatform();
+            rounds.expectReady(n);
+            for (int i = n - 1; i >= 0; i--) {
+                AgentController a = jade.start("link" + i, JadeChainLink.class, rounds, i, n, SECRET);
+                if (i == 0) {
+                    jadeFirst = a;
+                }
+            }
+            rounds.awaitReady();
+            return;
+        }
+        concord = Platforms.concord(platform);
+        List<ConcordChainLink> links = new ArrayList<>();
+        List<AID> ids = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            ConcordChainLink l = new ConcordChainLink(rounds, i == 0, SECRET);
+            links.add(l);
+            ids.add(concord.startAgent("link" + i, l));
+        }
+        for (int i = 0; i < n; i++) {
+            links.get(i).next = ids.get((i + 1) % n);
+        }
+        first = links.get(0);
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(ROUNDS)
+    public void round() throws Exception {
+        rounds.arm(ROUNDS);
+        if (jade != null) {
+            jadeFirst.putO2AObject("go", false);
+        } else {
+            concord.execute(first::startRound);
+        }
+        rounds.await();
+    }
+
+    @TearDown(Level.Trial)
+    public void stop() {
+        if (concord != null) {
+            concord.close();
+        }
+        if (jade != null) {
+            jade.close();
+        }
+    }
+}

@@ -1,0 +1,116 @@
+package io.concord.bench;
+
+import javax.imageio.ImageIO;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/** Line charts as PNG, in the spirit of the dissertation's figures 7.13 to 7.16; java.awt only. */
+final class Charts {
+    private static final Color[] COLORS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),
+            new Color(0xff7f0e), new Color(0x9467bd)};
+
+    private Charts() {
+    }
+
+    /**
+     * @param series name to (x to y)
+     */
+    static void line(Path file, String title, String xLabel, String yLabel, Map<String, TreeMap<Integer, Double>> series)
+            throws IOException {
+        int w = 820;
+        int h = 480;
+        int left = 80;
+        int right = 200;
+        int top = 50;
+        int bottom = 60;
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, w, h);
+        double maxY = 0;
+        int minX = Integer.MAX_VALUE;
+        int maxX = Integer.MIN_VALUE;
+        for (TreeMap<Integer, Double> s : series.values()) {
+            for (Map.Entry<Integer, Double> e : s.entrySet()) {
+                maxY = Math.max(maxY, e.getValue());
+                minX = Math.min(minX, e.getKey());
+                maxX = Math.max(maxX, e.getKey());
+            }
+        }
+        if (maxY == 0 || minX == Integer.MAX_VALUE) {
+            g.dispose();
+            ImageIO.write(img, "png", file.toFile());
+            return;
+        }
+        maxY *= 1.1;
+        int pw = w - left - right;
+        int ph = h - top - bottom;
+        g.setColor(Color.BLACK);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 16));
+        g.drawString(title, left, 30);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.drawLine(left, top + ph, left + pw, top + ph);
+        g.drawLine(left, top, left, top + ph);
+        for (int i = 0; i <= 5; i++) {
+            double v = maxY * i / 5;
+            int y = top + ph - (int) (ph * i / 5.0);
+            g.setColor(new Color(0xdddddd));
+            g.drawLine(left + 1, y, left + pw, y);
+            g.setColor(Color.BLACK);
+            g.drawString(String.format("%.0f", v), left - 45, y + 4);
+        }
+        double spanX = Math.max(1, maxX - minX);
+        java.util.TreeSet<Integer> xs = new java.util.TreeSet<>();
+        series.values().forEach(s -> xs.addAll(s.keySet()));
+        for (int x : xs) {
+            int px = left + (int) (pw * (x - minX) / spanX);
+            g.drawLine(px, top + ph, px, top + ph + 5);
+            g.drawString(Integer.toString(x), px - 5, top + ph + 20);
+        }
+        g.drawString(xLabel, left + pw / 2 - 30, h - 15);
+        g.rotate(-Math.PI / 2);
+        g.drawString(yLabel, -(top + ph / 2 + 40), 20);
+        g.rotate(Math.PI / 2);
+        int k = 0;
+        for (Map.Entry<String, TreeMap<Integer, Double>> s : series.entrySet()) {
+            Color c = COLORS[k % COLORS.length];
+            g.setColor(c);
+            g.setStroke(new BasicStroke(2.5f));
+            int px0 = -1;
+            int py0 = -1;
+            for (Map.Entry<Integer, Double> e : s.getValue().entrySet()) {
+                int px = left + (int) (pw * (e.getKey() - minX) / spanX);
+                int py = top + ph - (int) (ph * e.getValue() / maxY);
+                g.fillOval(px - 4, py - 4, 8, 8);
+                if (px0 >= 0) {
+                    g.drawLine(px0, py0, px, py);
+                }
+                px0 = px;
+                py0 = py;
+            }
+            g.fillRect(left + pw + 20, top + 10 + 22 * k, 14, 14);
+            g.setColor(Color.BLACK);
+            g.drawString(s.getKey(), left + pw + 40, top + 22 + 22 * k);
+            k++;
+        }
+        g.dispose();
+        ImageIO.write(img, "png", file.toFile());
+    }
+
+    static Map<String, TreeMap<Integer, Double>> series(List<String> names) {
+        Map<String, TreeMap<Integer, Double>> m = new LinkedHashMap<>();
+        names.forEach(n -> m.put(n, new TreeMap<>()));
+        return m;
+    }
+}
