@@ -40,6 +40,8 @@ public abstract class Agent {
     private final List<ThreadedBehaviourFactory.Runner> runners = new CopyOnWriteArrayList<>();
     private int blockingWaiters;
     private volatile boolean deleteRequested;
+    private boolean inRound;
+    private boolean compactPending;
     private State state = State.INITIATED;
     private long idCounter;
 
@@ -118,9 +120,16 @@ public abstract class Agent {
     /** Removes a behaviour; it is not run again and its {@code onEnd} is not called. */
     public final void removeBehaviour(Behaviour b) {
         int i = behaviours.indexOf(b);
-        if (i >= 0) {
+        if (i < 0) {
+            return;
+        }
+        b.detach();
+        if (inRound) {
+            // The round walks the list by index: leave a hole and close it when the round ends.
             behaviours.set(i, null);
-            b.detach();
+            compactPending = true;
+        } else {
+            behaviours.remove(i);
         }
     }
 
@@ -271,6 +280,7 @@ public abstract class Agent {
     boolean runRound() {
         int size = behaviours.size();
         boolean removed = false;
+        inRound = true;
         for (int i = 0; i < size && !deleteRequested; i++) {
             Behaviour b = behaviours.get(i);
             if (b == null || !b.isRunnable()) {
@@ -292,8 +302,10 @@ public abstract class Agent {
                 b.detach();
             }
         }
-        if (removed) {
+        inRound = false;
+        if (removed || compactPending) {
             behaviours.removeIf(Objects::isNull);
+            compactPending = false;
         }
         return hasRunnable();
     }
@@ -308,6 +320,11 @@ public abstract class Agent {
     }
 
     /** Behaviours scheduled now (for tests and tools). */
+    /** Slots in the behaviour list, holes included (for tests: removals must not leave holes). */
+    int behaviourSlots() {
+        return behaviours.size();
+    }
+
     int behaviourCount() {
         int n = 0;
         for (Behaviour b : behaviours) {

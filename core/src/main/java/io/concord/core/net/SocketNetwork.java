@@ -37,6 +37,7 @@ public final class SocketNetwork implements Network {
     private final boolean localDelivery;
     private final Map<Address, UdpEndpoint> localUdp = new HashMap<>();
     private final java.util.ArrayDeque<LocalFrame> localQueue = new java.util.ArrayDeque<>();
+    private int cyclesWithoutSelect;
 
     private record LocalFrame(Address from, UdpEndpoint to, byte[] data) {
     }
@@ -113,6 +114,12 @@ public final class SocketNetwork implements Network {
     @Override
     public int poll(long nowNs) {
         int local = drainLocal(nowNs);
+        // While frames between agents of this JVM keep the loop busy, look at the sockets only every
+        // few cycles: a selectNow() is a system call, as costly as a whole in-memory hop.
+        if (local > 0 && ++cyclesWithoutSelect < 16) {
+            return local;
+        }
+        cyclesWithoutSelect = 0;
         try {
             // selectNow() counts only keys newly selected; keys that a blocking await() already put
             // in the selected set must be drained too, so look at the set, not at the count.

@@ -423,4 +423,17 @@ class BehaviourTest {
             r.close();
         }
     }
+
+    @Test
+    void behavioursRemovedOutsideARoundLeaveNoTrace() {
+        Agent[] ref = new Agent[1];
+        start("a", ag -> ref[0] = ag);
+        for (int i = 0; i < 1_000; i++) {
+            Behaviour b = counting("w", 1_000_000);
+            ref[0].addBehaviour(b);
+            ref[0].removeBehaviour(b);
+        }
+        assertEquals(0, ref[0].behaviourCount(), "a thousand added and removed: none left");
+        assertEquals(0, ref[0].behaviourSlots(), "not even a hole in the list");
+    }
 }

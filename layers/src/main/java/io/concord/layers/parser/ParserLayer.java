@@ -30,6 +30,10 @@ public final class ParserLayer extends Layer {
     private final int maxFrameBytes;
     private final int overheadBytes;
     private final Map<String, Long> ids = new HashMap<>();
+    // A message to several receivers is encoded once; each envelope gets its own copy of the bytes.
+    private AclMessage lastEncoded;
+    private byte[] lastBytes;
+    private int lastLength;
 
     /** A parser with no frame limit of its own (the communication layer still enforces one). */
     public ParserLayer(Membership membership, PlatformClock clock, boolean identification) {
@@ -79,17 +83,31 @@ public final class ParserLayer extends Layer {
 
     @Override
     public void onDown(LayerContext ctx, Envelope env) {
-        BinaryAclCodec.Writer w = new BinaryAclCodec.Writer(Frames.HEADROOM + 256);
-        w.skip(Frames.HEADROOM);
-        BinaryAclCodec.INSTANCE.encode(env.message(), w);
-        int aclBytes = w.size() - Frames.HEADROOM;
+        byte[] bytes;
+        int aclBytes;
+        // Valid only within one send: it walks the receivers in order, so the first receiver always
+        // encodes afresh (the caller may have changed and re-sent the same message object).
+        if (env.message() == lastEncoded && env.receiver() != env.message().getReceivers().get(0)) {
+            aclBytes = lastLength;
+            bytes = new byte[Frames.HEADROOM + aclBytes + 40];
+            System.arraycopy(lastBytes, Frames.HEADROOM, bytes, Frames.HEADROOM, aclBytes);
+        } else {
+            BinaryAclCodec.Writer w = new BinaryAclCodec.Writer(Frames.HEADROOM + 256);
+            w.skip(Frames.HEADROOM);
+            BinaryAclCodec.INSTANCE.encode(env.message(), w);
+            bytes = w.array();
+            aclBytes = w.size() - Frames.HEADROOM;
+            lastEncoded = env.message();
+            lastBytes = bytes.clone();
+            lastLength = aclBytes;
+        }
         if ((long) aclBytes + overheadBytes > maxFrameBytes) {
             throw new io.concord.core.layer.SendRejectedException("too-large", "the message to "
                     + env.receiver().name() + " encodes to " + aclBytes + " bytes; with the stack's " + overheadBytes
                     + " bytes of headers its frame would be " + (aclBytes + overheadBytes) + " bytes, over the limit of "
                     + maxFrameBytes + "; shorten its content, or raise maxFrameBytes (up to 65507 on UDP)");
         }
-        env.setData(w.array(), Frames.HEADROOM, aclBytes);
+        env.setData(bytes, Frames.HEADROOM, aclBytes);
         env.setPeerId(idOf(env.receiver()));
         ctx.passDown(env);
     }

@@ -101,13 +101,18 @@ public final class SecurityLayer extends Layer {
     private long counter;
     private byte[] platformKeyBytes;
     private SecretKeySpec platformAead;
-    private Cipher gcm;
+    private Cipher platformEncrypt;
+    private Cipher platformDecrypt;
     private Mac mac;
     private Identity identity;
 
     /** What a layer keeps per peer under GCM_PAIR. */
     private static final class Pair {
         SecretKeySpec key;
+        // One cipher per key and direction: the JDK expands an AES key again whenever a cipher is
+        // initialised with another key than last time, which would cost more than the encryption.
+        Cipher encrypt;
+        Cipher decrypt;
         byte[] peerAgreement;
         Address address;
         final ArrayDeque<Envelope> queue = new ArrayDeque<>();
@@ -133,7 +138,8 @@ public final class SecurityLayer extends Layer {
             if (config.protection() != Protection.CRC) {
                 platformKeyBytes = config.platformKey().bytes();
                 platformAead = new SecretKeySpec(Crypto.hkdf(platformKeyBytes, null, "concord platform aead v1", 16), "AES");
-                gcm = Cipher.getInstance("AES/GCM/NoPadding");
+                platformEncrypt = Cipher.getInstance("AES/GCM/NoPadding");
+                platformDecrypt = Cipher.getInstance("AES/GCM/NoPadding");
             }
             if (config.protection() == Protection.HMAC) {
                 mac = Mac.getInstance("HmacSHA256");
@@ -172,13 +178,13 @@ public final class SecurityLayer extends Layer {
     public void onDown(LayerContext ctx, Envelope env) {
         switch (config.protection()) {
             case CRC, HMAC, GCM_PLATFORM -> {
-                seal(env, config.protection().bits, 0, platformAead);
+                seal(env, config.protection().bits, 0, platformAead, platformEncrypt);
                 ctx.passDown(env);
             }
             case GCM_PAIR -> {
                 Pair p = pairs.computeIfAbsent(env.peerId(), k -> new Pair());
                 if (p.key != null) {
-                    seal(env, Frames.PROTECTION_GCM_PAIR, 0, p.key);
+                    seal(env, Frames.PROTECTION_GCM_PAIR, 0, p.key, p.encrypt);
                     ctx.passDown(env);
                     return;
                 }
@@ -197,7 +203,7 @@ public final class SecurityLayer extends Layer {
         }
     }
 
-    private void seal(Envelope env, int protection, int flags, SecretKeySpec key) {
+    private void seal(Envelope env, int protection, int flags, SecretKeySpec key, Cipher gcm) {
         int h = env.prepend(Frames.HEADER_BYTES);
         byte[] d = env.data();
         Frames.putShort(d, h, Frames.MAGIC);
@@ -311,6 +317,7 @@ public final class SecurityLayer extends Layer {
                 bodyLen = len - Frames.HEADER_BYTES - Frames.CRC_BYTES - Frames.TAG_BYTES;
             } else {
                 SecretKeySpec key = platformAead;
+                Cipher gcm = platformDecrypt;
                 if (protection == Frames.PROTECTION_GCM_PAIR) {
                     Pair p = pairs.get(src);
                     if (p == null || p.key == null) {
@@ -326,6 +333,7 @@ public final class SecurityLayer extends Layer {
                         return;
                     }
                     key = p.key;
+                    gcm = p.decrypt;
                 }
                 try {
                     nonceFor(src, ctr);
@@ -396,7 +404,7 @@ public final class SecurityLayer extends Layer {
         byte[] sig = identity.sign(buf, o, signedLen + 8);
         System.arraycopy(sig, 0, buf, o + signedLen, 64);
         Envelope env = Envelope.control(peerId, to, buf, o, signedLen + 64);
-        seal(env, Frames.PROTECTION_GCM_PLATFORM, Frames.FLAG_HANDSHAKE, platformAead);
+        seal(env, Frames.PROTECTION_GCM_PLATFORM, Frames.FLAG_HANDSHAKE, platformAead, platformEncrypt);
         ctx.passDown(env);
     }
 
@@ -472,6 +480,12 @@ public final class SecurityLayer extends Layer {
             byte[] key = Crypto.hkdf(identity.agree(agreementKey), platformKeyBytes, info, 16);
             pair.key = new SecretKeySpec(key, "AES");
             pair.peerAgreement = agreementKey;
+            try {
+                pair.encrypt = Cipher.getInstance("AES/GCM/NoPadding");
+                pair.decrypt = Cipher.getInstance("AES/GCM/NoPadding");
+            } catch (GeneralSecurityException e) {
+                throw new IllegalStateException("this JVM lacks AES-GCM: " + e.getMessage(), e);
+            }
         }
         if (type == HELLO) {
             sendHello(ctx, src, env.source(), HELLO_REPLY);
@@ -482,7 +496,7 @@ public final class SecurityLayer extends Layer {
         }
         while (!pair.queue.isEmpty()) {
             Envelope queued = pair.queue.poll();
-            seal(queued, Frames.PROTECTION_GCM_PAIR, 0, pair.key);
+            seal(queued, Frames.PROTECTION_GCM_PAIR, 0, pair.key, pair.encrypt);
             ctx.passDown(queued);
         }
     }

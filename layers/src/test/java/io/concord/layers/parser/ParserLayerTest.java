@@ -98,4 +98,25 @@ class ParserLayerTest {
         h.receiveUp(junk);
         assertEquals(1, h.drops().get("malformed"));
     }
+
+    @Test
+    void aMessageToSeveralReceiversIsEncodedOnceButAChangedOneAgain() throws Exception {
+        LayerHarness alice = new LayerHarness("alice@p", clock, new ParserLayer(Membership.open(), null, true));
+        AID carol = new AID("carol@p");
+        AclMessage m = new AclMessage(Performative.INFORM).setSender(ALICE).addReceiver(BOB).addReceiver(carol).setContent("v1");
+        for (AID r : m.getReceivers()) {
+            alice.sendDown(Envelope.outgoing(m, r, new Address("h", 2)));
+        }
+        m.setContent("v2");
+        for (AID r : m.getReceivers()) {
+            alice.sendDown(Envelope.outgoing(m, r, new Address("h", 2)));
+        }
+        String[] contents = new String[4];
+        for (int i = 0; i < 4; i++) {
+            Envelope e = alice.pollDown();
+            contents[i] = io.concord.core.codec.BinaryAclCodec.INSTANCE.decode(e.data(), e.offset(), e.length()).getContent();
+            assertEquals(i % 2 == 0 ? Frames.id("bob@p") : Frames.id("carol@p"), e.peerId());
+        }
+        assertEquals(java.util.List.of("v1", "v1", "v2", "v2"), java.util.List.of(contents));
+    }
 }
