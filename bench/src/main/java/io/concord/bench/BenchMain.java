@@ -67,8 +67,14 @@ public final class BenchMain {
                 switch (name) {
                     case "udp" -> b.udp();
                     case "stack" -> b.stack();
-                    case "chain" -> b.rounds("chain", ChainBenchmark.class, "n", "N", List.of(2, 6, 10, 19));
-                    case "books" -> b.rounds("books", BooksBenchmark.class, "s", "S", List.of(1, 5, 10, 15));
+                    case "chain" -> {
+                        b.rounds("chain", ChainBenchmark.class, "n", "N", List.of(2, 6, 10, 19));
+                        b.processes("chain", ProcessChainBenchmark.class, "n", "N", full ? List.of(2, 6, 10, 19) : List.of(2, 6));
+                    }
+                    case "books" -> {
+                        b.rounds("books", BooksBenchmark.class, "s", "S", List.of(1, 5, 10, 15));
+                        b.processes("books", ProcessBooksBenchmark.class, "s", "S", full ? List.of(1, 5, 10, 15) : List.of(1, 5));
+                    }
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -83,8 +89,8 @@ public final class BenchMain {
                 .timeUnit(TimeUnit.MICROSECONDS)
                 .forks(1)
                 .jvmArgsAppend("-Djava.awt.headless=true", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error")
-                .warmupIterations(full ? 5 : 2).warmupTime(TimeValue.seconds(full ? 3 : 1))
-                .measurementIterations(full ? 10 : 3).measurementTime(TimeValue.seconds(full ? 3 : 1));
+                .warmupIterations(full ? 5 : 1).warmupTime(TimeValue.seconds(full ? 3 : 1))
+                .measurementIterations(full ? 10 : 2).measurementTime(TimeValue.seconds(full ? 3 : 1));
     }
 
     private static double median(RunResult r) {
@@ -182,6 +188,41 @@ public final class BenchMain {
                 label, "µs per round", byPlatform);
         md.append("\n![").append(name).append("](").append(png).append(")\n");
         Files.writeString(reportDir.resolve(name + ".md"), md.toString());
+    }
+
+    /** Chain or books with one process per agent: Concord class 7 and JADE. */
+    private void processes(String name, Class<?> benchmark, String param, String label, List<Integer> sizes)
+            throws RunnerException, IOException {
+        List<String> platforms = List.of(Platforms.CONCORD_CLASS7, Platforms.JADE);
+        ChainedOptionsBuilder o = options(benchmark)
+                .param("platform", platforms.toArray(new String[0]))
+                .param(param, sizes.stream().map(String::valueOf).toArray(String[]::new));
+        Collection<RunResult> results = new Runner(o.build()).run();
+        Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(platforms);
+        for (RunResult r : results) {
+            byPlatform.get(r.getParams().getParam("platform")).put(Integer.parseInt(r.getParams().getParam(param)), median(r));
+        }
+        StringBuilder md = new StringBuilder("\n## One process per agent\n\n")
+                .append("The first agent (link 0, or the buyer) runs in the benchmark's JVM, every other agent in a JVM ")
+                .append("of its own. Concord: UDP on loopback with the class-7 stack, addresses exchanged at start. JADE: ")
+                .append("a main container here and a peripheral container per agent. On 2 cores, from 6 processes on, ")
+                .append("the operating system's scheduling weighs more than either platform.\n\n")
+                .append("| ").append(label).append(" | concord class 7 µs | JADE µs | speedup |\n|---|---|---|---|\n");
+        for (int size : sizes) {
+            Double c7 = byPlatform.get(Platforms.CONCORD_CLASS7).get(size);
+            Double jade = byPlatform.get(Platforms.JADE).get(size);
+            if (c7 != null && jade != null) {
+                System.out.printf(Locale.ROOT, "RESULT %s processes %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
+                        name, size, c7, jade, jade / c7);
+            }
+            md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s |%n", size, fmt(c7), fmt(jade),
+                    c7 != null && jade != null ? String.format(Locale.ROOT, "%.2f", jade / c7) : "-"));
+        }
+        String png = name + "-processes.png";
+        Charts.line(reportDir.resolve(png), (name.equals("chain") ? "Chain" : "Book buyer")
+                + ": time per round, one process per agent", label, "µs per round", byPlatform);
+        md.append("\n![").append(name).append(" processes](").append(png).append(")\n");
+        Files.writeString(reportDir.resolve(name + ".md"), md.toString(), java.nio.file.StandardOpenOption.APPEND);
     }
 
     private static String fmt(Double v) {

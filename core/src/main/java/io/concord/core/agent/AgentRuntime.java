@@ -55,6 +55,7 @@ public final class AgentRuntime implements AutoCloseable {
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
     private final int idleSpinIterations;
+    private final int idleYieldIterations;
     private final Transport transport;
     private final DeadlineTimerWheel wheel;
     private final Map<Long, Timer> timersById = new HashMap<>();
@@ -85,6 +86,7 @@ public final class AgentRuntime implements AutoCloseable {
         this.stackFactory = b.stackFactory != null ? b.stackFactory : defaultStack();
         this.mailboxCapacity = b.mailboxCapacity;
         this.idleSpinIterations = b.idleSpinIterations;
+        this.idleYieldIterations = b.idleYieldIterations;
         this.transport = b.transport;
         this.nowNs = clock.nanoTime();
         this.wheel = DeadlineTimerWheel.forAgents(nowNs);
@@ -115,7 +117,8 @@ public final class AgentRuntime implements AutoCloseable {
         private Tracer tracer = Tracer.NONE;
         private Supplier<List<Layer>> stackFactory;
         private int mailboxCapacity = 100_000;
-        private int idleSpinIterations = 2_000;
+        private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 50);
+        private int idleYieldIterations = Integer.getInteger("concord.idle.yield", 0);
         private Transport transport = Transport.UDP;
 
         private Builder() {
@@ -185,9 +188,21 @@ public final class AgentRuntime implements AutoCloseable {
             return this;
         }
 
-        /** How many empty work cycles the loop spins before it parks on the network. */
+        /**
+         * How many empty work cycles the loop spins before it starts yielding the CPU. Spinning
+         * catches a reply that comes within microseconds without a kernel wake-up.
+         */
         public Builder idleSpinIterations(int iterations) {
             this.idleSpinIterations = iterations;
+            return this;
+        }
+
+        /**
+         * How many further empty cycles it yields the CPU (so that other processes on a busy machine
+         * run) before it parks on the network until a datagram, a task or a timer.
+         */
+        public Builder idleYieldIterations(int iterations) {
+            this.idleYieldIterations = iterations;
             return this;
         }
 
@@ -205,8 +220,9 @@ public final class AgentRuntime implements AutoCloseable {
             if (mailboxCapacity < 1) {
                 throw new IllegalArgumentException("mailboxCapacity must be >= 1, got " + mailboxCapacity);
             }
-            if (idleSpinIterations < 0) {
-                throw new IllegalArgumentException("idleSpinIterations must be >= 0, got " + idleSpinIterations);
+            if (idleSpinIterations < 0 || idleYieldIterations < 0) {
+                throw new IllegalArgumentException("idleSpinIterations and idleYieldIterations must be >= 0, got "
+                        + idleSpinIterations + " and " + idleYieldIterations);
             }
             return new AgentRuntime(this);
         }
@@ -543,6 +559,11 @@ public final class AgentRuntime implements AutoCloseable {
             if (idle < idleSpinIterations) {
                 idle++;
                 Thread.onSpinWait();
+                continue;
+            }
+            if (idle < idleSpinIterations + idleYieldIterations) {
+                idle++;
+                Thread.yield();
                 continue;
             }
             parked = true;

@@ -1,0 +1,82 @@
+package io.concord.bench;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Agents in JVM processes of their own, for the one-process-per-agent topology. Each child prints
+ * {@code READY <address>} once its agent is set up, takes commands on its standard input, and
+ * exits when that input closes.
+ */
+final class Children implements AutoCloseable {
+    private final List<Process> processes = new ArrayList<>();
+    private final List<BufferedReader> outputs = new ArrayList<>();
+
+    /** Starts a child JVM running {@code mainClass} with the arguments. */
+    void start(Class<?> mainClass, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx256m", "-XX:+UseSerialGC", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error",
+                "-cp", System.getProperty("java.class.path")));
+        for (String prop : new String[]{"concord.idle.spin", "concord.idle.yield"}) {
+            if (System.getProperty(prop) != null) {
+                cmd.add("-D" + prop + "=" + System.getProperty(prop));
+            }
+        }
+        cmd.add(mainClass.getName());
+        cmd.addAll(List.of(args));
+        Process p = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        processes.add(p);
+        outputs.add(new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8)));
+    }
+
+    /** Waits for every child's READY line and returns what follows READY, in start order. */
+    List<String> awaitReady() throws IOException {
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i < outputs.size(); i++) {
+            String line;
+            while ((line = outputs.get(i).readLine()) != null && !line.startsWith("READY")) {
+                // JADE's banner and other chatter
+            }
+            if (line == null) {
+                throw new IllegalStateException("child " + i + " ended before it was ready");
+            }
+            out.add(line.length() > 6 ? line.substring(6).trim() : "");
+        }
+        return out;
+    }
+
+    /** Sends a command line to child i. */
+    void tell(int i, String line) throws IOException {
+        OutputStream in = processes.get(i).getOutputStream();
+        in.write((line + "\n").getBytes(StandardCharsets.UTF_8));
+        in.flush();
+    }
+
+    @Override
+    public void close() {
+        for (Process p : processes) {
+            try {
+                p.getOutputStream().close();
+            } catch (IOException ignored) {
+                // already gone
+            }
+        }
+        for (Process p : processes) {
+            try {
+                if (!p.waitFor(10, TimeUnit.SECONDS)) {
+                    p.destroyForcibly();
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                p.destroyForcibly();
+            }
+        }
+    }
+}

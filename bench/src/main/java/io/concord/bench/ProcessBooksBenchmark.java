@@ -1,0 +1,90 @@
+package io.concord.bench;
+
+import io.concord.bench.concord.ConcordBooks;
+import io.concord.bench.jade.JadeBooks;
+import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.jade.JadeProcessAgent;
+import io.concord.core.acl.AID;
+import io.concord.core.agent.AgentRuntime;
+import jade.wrapper.AgentController;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/** The book buyer with one process per agent: the buyer here, every seller in a JVM of its own. */
+@State(Scope.Benchmark)
+public class ProcessBooksBenchmark {
+    public static final int ROUNDS = 20;
+
+    @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
+    public String platform;
+
+    @Param({"1", "5"})
+    public int s;
+
+    private final Rounds rounds = new Rounds();
+    private final Children children = new Children();
+    private AgentRuntime concord;
+    private ConcordBooks.Buyer buyer;
+    private JadePlatform jade;
+    private AgentController jadeBuyer;
+
+    @Setup(Level.Trial)
+    public void start() throws Exception {
+        if (platform.equals(Platforms.JADE)) {
+            jade = new JadePlatform();
+            for (int i = 0; i < s; i++) {
+                children.start(JadeProcessAgent.class, Integer.toString(jade.port()), "seller", "seller" + i,
+                        Integer.toString(BooksBenchmark.price(i)));
+            }
+            children.awaitReady();
+            rounds.expectReady(1);
+            jadeBuyer = jade.start("buyer", JadeBooks.Buyer.class, rounds, s, BooksBenchmark.TIMEOUT_MS);
+            rounds.awaitReady();
+            return;
+        }
+        for (int i = 0; i < s; i++) {
+            children.start(ProcessAgent.class, "seller", "seller" + i, Integer.toString(BooksBenchmark.price(i)), platform);
+        }
+        List<String> addresses = children.awaitReady();
+        List<AID> sellers = new ArrayList<>();
+        for (int i = 0; i < s; i++) {
+            sellers.add(new AID("seller" + i + "@bench", addresses.get(i)));
+        }
+        concord = Platforms.concord(platform);
+        buyer = new ConcordBooks.Buyer(rounds, BooksBenchmark.TIMEOUT_MS);
+        buyer.sellers = sellers;
+        concord.startAgent("buyer", buyer);
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(ROUNDS)
+    public void round() throws Exception {
+        rounds.arm(ROUNDS);
+        if (jade != null) {
+            jadeBuyer.putO2AObject("go", false);
+        } else {
+            concord.execute(buyer::startRound);
+        }
+        rounds.await();
+    }
+
+    @TearDown(Level.Trial)
+    public void stop() {
+        if (concord != null) {
+            concord.close();
+        }
+        if (jade != null) {
+            jade.close();
+        }
+        children.close();
+    }
+}

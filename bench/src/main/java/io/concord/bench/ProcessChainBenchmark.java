@@ -1,0 +1,93 @@
+package io.concord.bench;
+
+import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.jade.JadeChainLink;
+import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.jade.JadeProcessAgent;
+import io.concord.core.acl.AID;
+import io.concord.core.agent.AgentRuntime;
+import jade.wrapper.AgentController;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+
+import java.util.List;
+
+/**
+ * The chain with one process per agent: link 0 in the benchmark's JVM, every other link in a JVM
+ * of its own. Concord over UDP with the class-7 stack; JADE with a main container here and a
+ * peripheral container per agent.
+ */
+@State(Scope.Benchmark)
+public class ProcessChainBenchmark {
+    public static final int ROUNDS = 20;
+
+    @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
+    public String platform;
+
+    @Param({"2", "6"})
+    public int n;
+
+    private final Rounds rounds = new Rounds();
+    private final Children children = new Children();
+    private AgentRuntime concord;
+    private ConcordChainLink first;
+    private JadePlatform jade;
+    private AgentController jadeFirst;
+
+    @Setup(Level.Trial)
+    public void start() throws Exception {
+        if (platform.equals(Platforms.JADE)) {
+            jade = new JadePlatform();
+            for (int i = 1; i < n; i++) {
+                children.start(JadeProcessAgent.class, Integer.toString(jade.port()), "link", "link" + i,
+                        Integer.toString(i), Integer.toString(n));
+            }
+            children.awaitReady();
+            rounds.expectReady(1);
+            jadeFirst = jade.start("link0", JadeChainLink.class, rounds, 0, n, ChainBenchmark.SECRET);
+            rounds.awaitReady();
+            return;
+        }
+        for (int i = 1; i < n; i++) {
+            children.start(ProcessAgent.class, "link", "link" + i, platform);
+        }
+        List<String> addresses = children.awaitReady();
+        concord = Platforms.concord(platform);
+        first = new ConcordChainLink(rounds, true, ChainBenchmark.SECRET);
+        AID firstAid = concord.startAgent("link0", first);
+        for (int i = 1; i < n; i++) {
+            AID next = i + 1 < n ? new AID("link" + (i + 1) + "@bench", addresses.get(i)) : firstAid;
+            children.tell(i - 1, "NEXT " + next.localName() + " " + next.addresses().get(0));
+        }
+        first.next = new AID("link1@bench", addresses.get(0));
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(ROUNDS)
+    public void round() throws Exception {
+        rounds.arm(ROUNDS);
+        if (jade != null) {
+            jadeFirst.putO2AObject("go", false);
+        } else {
+            concord.execute(first::startRound);
+        }
+        rounds.await();
+    }
+
+    @TearDown(Level.Trial)
+    public void stop() {
+        if (concord != null) {
+            concord.close();
+        }
+        if (jade != null) {
+            jade.close();
+        }
+        children.close();
+    }
+}
