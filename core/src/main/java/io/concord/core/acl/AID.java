@@ -17,7 +17,7 @@ import java.util.Objects;
  */
 public final class AID {
     private final String name;
-    private final String lowerName;
+    private String lowerName;
     private final List<String> addresses;
     private final List<AID> resolvers;
     private final Map<String, String> userDefined;
@@ -38,10 +38,10 @@ public final class AID {
             throw new IllegalArgumentException("an AID needs a non-empty name, such as alice@myplatform");
         }
         this.name = name;
-        this.lowerName = name.toLowerCase(Locale.ROOT);
+        // List.copyOf returns an immutable list as it is; decoding hands over such lists.
         this.addresses = List.copyOf(addresses);
-        this.resolvers = List.copyOf(resolvers);
-        this.userDefined = Collections.unmodifiableMap(new LinkedHashMap<>(userDefined));
+        this.resolvers = resolvers.isEmpty() ? List.of() : List.copyOf(resolvers);
+        this.userDefined = userDefined.isEmpty() ? Map.of() : Collections.unmodifiableMap(new LinkedHashMap<>(userDefined));
         for (String k : this.userDefined.keySet()) {
             if (!AclMessage.isParameterName(k)) {
                 throw new IllegalArgumentException("an AID slot name must be a word of letters, digits, '-', '_' "
@@ -118,14 +118,24 @@ public final class AID {
         return true;
     }
 
+    /** The name in lower case, computed when first needed (AIDs are compared far less than decoded). */
+    private String lower() {
+        String l = lowerName;
+        if (l == null) {
+            l = name.toLowerCase(Locale.ROOT);
+            lowerName = l;
+        }
+        return l;
+    }
+
     @Override
     public boolean equals(Object o) {
-        return o instanceof AID other && lowerName.equals(other.lowerName);
+        return o == this || o instanceof AID other && (name.equals(other.name) || lower().equals(other.lower()));
     }
 
     @Override
     public int hashCode() {
-        return lowerName.hashCode();
+        return lower().hashCode();
     }
 
     @Override

@@ -220,6 +220,9 @@ public final class BinaryAclCodec implements AclCodec {
 
     private static List<AID> readAids(Reader r, int depth) throws AclParseException {
         int n = r.count("an AID count");
+        if (n == 0) {
+            return List.of();
+        }
         List<AID> out = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
             out.add(readAid(r, depth));
@@ -237,17 +240,20 @@ public final class BinaryAclCodec implements AclCodec {
             throw new AclParseException(at, "a non-empty AID name", "an empty one");
         }
         int na = r.count("an address count");
-        List<String> addresses = new ArrayList<>(na);
+        String[] addresses = new String[na];
         for (int i = 0; i < na; i++) {
-            addresses.add(r.string("an address"));
+            addresses[i] = r.string("an address");
         }
         List<AID> resolvers = readAids(r, depth + 1);
         Map<String, String> user = readMap(r);
-        return new AID(name, addresses, resolvers, user);
+        return new AID(name, List.of(addresses), resolvers, user);
     }
 
     private static Map<String, String> readMap(Reader r) throws AclParseException {
         int n = r.count("a parameter count");
+        if (n == 0) {
+            return Map.of();
+        }
         Map<String, String> map = new LinkedHashMap<>();
         for (int i = 0; i < n; i++) {
             int at = r.pos - r.start;
