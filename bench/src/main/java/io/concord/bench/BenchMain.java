@@ -20,6 +20,8 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 
+import io.concord.core.net.Transport;
+
 /**
  * {@code bench/run quick|full [name ...]}: runs the named benchmarks (all by default), prints one
  * RESULT line per measured point, and writes a page per benchmark under {@code bench/report/} with
@@ -27,7 +29,7 @@ import java.util.concurrent.TimeUnit;
  * {@code books}, {@code udp}.
  */
 public final class BenchMain {
-    static final List<String> NAMES = List.of("udp", "stack", "chain", "books");
+    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -75,6 +77,7 @@ public final class BenchMain {
                         b.rounds("books", BooksBenchmark.class, "s", "S", List.of(1, 5, 10, 15));
                         b.processes("books", ProcessBooksBenchmark.class, "s", "S", full ? List.of(1, 5, 10, 15) : List.of(1, 5));
                     }
+                    case "stress" -> b.stress();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -98,7 +101,11 @@ public final class BenchMain {
     }
 
     private String header(String title, String what) {
-        return "# " + title + "\n\n" + what + "\n\nJMH sample time, " + (full ? "full" : "quick") + " mode, "
+        return header(title, what, "JMH sample time");
+    }
+
+    private String header(String title, String what, String method) {
+        return "# " + title + "\n\n" + what + "\n\n" + method + ", " + (full ? "full" : "quick") + " mode, "
                 + LocalDate.now() + ". " + Machine.describe() + "\n\n";
     }
 
@@ -223,6 +230,37 @@ public final class BenchMain {
                 + ": time per round, one process per agent", label, "µs per round", byPlatform);
         md.append("\n![").append(name).append(" processes](").append(png).append(")\n");
         Files.writeString(reportDir.resolve(name + ".md"), md.toString(), java.nio.file.StandardOpenOption.APPEND);
+    }
+
+    /** Experiment 3: minutes in quick mode ({@code -Dconcord.stress.seconds} to change), longer when asked. */
+    private void stress() throws IOException {
+        int seconds = Integer.getInteger("concord.stress.seconds", full ? 600 : 30);
+        StringBuilder md = new StringBuilder(header("Stress (experiment 3)", "A sender and a receiver in two runtimes (real "
+                + "sockets, class 7): four 500-byte messages every 2 ms for " + seconds + " s per transport; in the second "
+                + "half, a message of growing size too, from 64 bytes to twice the frame limit (those over it are refused "
+                + "to the sender, which goes on). Rate of the small messages and heap after GC, per window. The heap "
+                + "grows while the sequence layer's retransmission buffer (1024 frames a peer) fills with the large "
+                + "frames, and stays bounded by it: up to 8 MiB on UDP, 16 MiB on TCP.",
+                "Wall-clock windows"));
+        for (Transport t : List.of(Transport.UDP, Transport.TCP)) {
+            StressHarness.Outcome o;
+            try {
+                o = StressHarness.run(t, seconds, 10);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+            System.out.println(StressHarness.describe(o));
+            md.append("## ").append(t).append("\n\n| window | messages/s | heap MB after GC |\n|---|---|---|\n");
+            for (int w = 0; w < o.ratePerWindow().size(); w++) {
+                md.append(String.format(Locale.ROOT, "| %d | %.0f | %.1f |%n", w + 1, o.ratePerWindow().get(w),
+                        o.heapMbPerWindow().get(w)));
+            }
+            md.append(String.format(Locale.ROOT, "%nDelivered %d small messages, %d out of order; %d over the limit "
+                            + "refused to the sender; the largest delivered was %d bytes. Drops at the receiver: %s.%n%n",
+                    o.delivered(), o.outOfOrder(), o.refused(), o.maxSizeDelivered(), o.drops()));
+        }
+        Files.writeString(reportDir.resolve("stress.md"), md.toString());
     }
 
     private static String fmt(Double v) {
