@@ -275,6 +275,9 @@ public final class BenchMain {
                 md.append("- [").append(n).append("](").append(n).append(".md)\n");
             }
         }
+        if (Files.exists(reportDir.resolve("ANALYSIS.md"))) {
+            md.append("- [analysis: targets, and where the time goes](ANALYSIS.md) (written by hand from a run)\n");
+        }
         Files.writeString(reportDir.resolve("README.md"), md.toString());
     }
 }
