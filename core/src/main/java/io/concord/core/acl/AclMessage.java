@@ -29,7 +29,8 @@ public final class AclMessage {
 
     private Performative performative;
     private AID sender;
-    private final List<AID> receivers = new ArrayList<>(1);
+    private List<AID> receivers;
+    private java.util.function.Supplier<List<AID>> lazyReceivers;
     private final List<AID> replyTo = new ArrayList<>(0);
     private String content;
     private byte[] byteContent;
@@ -69,16 +70,35 @@ public final class AclMessage {
 
     /** The receivers, in order; a live, modifiable list. */
     public List<AID> getReceivers() {
+        return receivers();
+    }
+
+    private List<AID> receivers() {
+        if (receivers == null) {
+            receivers = lazyReceivers == null ? new ArrayList<>(1) : new ArrayList<>(lazyReceivers.get());
+            lazyReceivers = null;
+        }
         return receivers;
     }
 
+    /**
+     * For codecs: the receivers will be built by {@code decoder} when first asked for. A receiver of a
+     * message to many agents rarely reads the list; building it is much of the cost of decoding.
+     * The decoder must have validated the bytes already: it must not fail.
+     */
+    public void setReceiversLazily(java.util.function.Supplier<List<AID>> decoder) {
+        this.receivers = null;
+        this.lazyReceivers = Objects.requireNonNull(decoder, "decoder");
+    }
+
     public AclMessage addReceiver(AID receiver) {
-        receivers.add(Objects.requireNonNull(receiver, "receiver"));
+        receivers().add(Objects.requireNonNull(receiver, "receiver"));
         return this;
     }
 
     public AclMessage clearAllReceiver() {
-        receivers.clear();
+        receivers = new ArrayList<>(1);
+        lazyReceivers = null;
         return this;
     }
 
@@ -281,9 +301,9 @@ public final class AclMessage {
     public AclMessage createReply() {
         AclMessage reply = new AclMessage(performative);
         if (!replyTo.isEmpty()) {
-            reply.receivers.addAll(replyTo);
+            reply.receivers().addAll(replyTo);
         } else if (sender != null) {
-            reply.receivers.add(sender);
+            reply.receivers().add(sender);
         }
         reply.language = language;
         reply.ontology = ontology;
@@ -300,7 +320,7 @@ public final class AclMessage {
     public AclMessage copy() {
         AclMessage m = new AclMessage(performative);
         m.sender = sender;
-        m.receivers.addAll(receivers);
+        m.receivers().addAll(receivers());
         m.replyTo.addAll(replyTo);
         m.content = content;
         m.byteContent = byteContent == null ? null : byteContent.clone();
@@ -323,7 +343,7 @@ public final class AclMessage {
      */
     public boolean sameAs(AclMessage o) {
         return o != null && performative == o.performative && aidEq(sender, o.sender)
-                && aidsEq(receivers, o.receivers) && aidsEq(replyTo, o.replyTo)
+                && aidsEq(receivers(), o.receivers()) && aidsEq(replyTo, o.replyTo)
                 && Objects.equals(content, o.content) && Arrays.equals(byteContent, o.byteContent)
                 && Objects.equals(language, o.language) && Objects.equals(encoding, o.encoding)
                 && Objects.equals(ontology, o.ontology) && Objects.equals(protocol, o.protocol)

@@ -169,7 +169,15 @@ public final class BinaryAclCodec implements AclCodec {
             m.setSender(readAid(r, 0));
         }
         if ((flags & F_RECEIVERS) != 0) {
-            m.getReceivers().addAll(readAids(r, 0));
+            // Checked now, built when first read: a receiver of a message to many rarely reads them.
+            int n = r.count("an AID count");
+            int from = r.pos;
+            for (int i = 0; i < n; i++) {
+                r.checkAid(0);
+            }
+            byte[] span = Arrays.copyOfRange(data, from, r.pos);
+            int count = n;
+            m.setReceiversLazily(() -> decodeCheckedAids(span, count));
         }
         if ((flags & F_REPLY_TO) != 0) {
             m.getReplyTo().addAll(readAids(r, 0));
@@ -216,6 +224,20 @@ public final class BinaryAclCodec implements AclCodec {
             throw new AclParseException(r.pos - offset, "the end of the message", (r.end - r.pos) + " more bytes");
         }
         return m;
+    }
+
+    /** Builds AIDs from bytes {@link Reader#checkAid} has accepted; cannot fail. */
+    private static List<AID> decodeCheckedAids(byte[] span, int count) {
+        Reader r = new Reader(span, 0, span.length);
+        List<AID> out = new ArrayList<>(count);
+        try {
+            for (int i = 0; i < count; i++) {
+                out.add(readAid(r, 0));
+            }
+        } catch (AclParseException e) {
+            throw new IllegalStateException("receivers that were checked failed to decode: " + e.getMessage(), e);
+        }
+        return out;
     }
 
     private static List<AID> readAids(Reader r, int depth) throws AclParseException {
@@ -397,6 +419,66 @@ public final class BinaryAclCodec implements AclCodec {
         /** A count of items of at least one byte each. */
         int count(String what) throws AclParseException {
             return length(what);
+        }
+
+        /**
+         * Moves past an AID checking everything {@code readAid} would (lengths, a non-empty name,
+         * parameter names, the nesting depth) without building anything.
+         */
+        void checkAid(int depth) throws AclParseException {
+            if (depth > MAX_AID_DEPTH) {
+                throw new AclParseException(pos - start, "AIDs nested at most " + MAX_AID_DEPTH + " deep", "deeper");
+            }
+            int at = pos - start;
+            int nameLength = length("an AID name's length");
+            if (nameLength == 0) {
+                throw new AclParseException(at, "a non-empty AID name", "an empty one");
+            }
+            pos += nameLength;
+            int na = count("an address count");
+            for (int i = 0; i < na; i++) {
+                // Not pos += length(...): Java would read pos before length() moves it past the varint.
+                int addressLength = length("an address's length");
+                pos += addressLength;
+            }
+            int nr = count("an AID count");
+            for (int i = 0; i < nr; i++) {
+                checkAid(depth + 1);
+            }
+            int nu = count("a parameter count");
+            for (int i = 0; i < nu; i++) {
+                int keyAt = pos - start;
+                int kl = length("a parameter name's length");
+                if (!isParameterName(data, pos, kl)) {
+                    throw new AclParseException(keyAt, "a parameter name of letters, digits, '-', '_', '.' not starting X-",
+                            "'" + new String(data, pos, kl, StandardCharsets.UTF_8) + "'");
+                }
+                pos += kl;
+                int valueLength = length("a parameter value's length");
+                pos += valueLength;
+            }
+        }
+
+        /** The byte form of {@link AclMessage#isParameterName}, plus no {@code X-} prefix. */
+        private static boolean isParameterName(byte[] b, int off, int len) {
+            if (len == 0) {
+                return false;
+            }
+            int c0 = b[off];
+            if (!((c0 >= 'a' && c0 <= 'z') || (c0 >= 'A' && c0 <= 'Z'))) {
+                return false;
+            }
+            if (len >= 2 && (c0 == 'X' || c0 == 'x') && b[off + 1] == '-') {
+                return false;
+            }
+            for (int i = 1; i < len; i++) {
+                int c = b[off + i];
+                if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_'
+                        || c == '.')) {
+                    return false;
+                }
+            }
+            return true;
         }
 
         String string(String what) throws AclParseException {

@@ -6,6 +6,7 @@ import io.concord.core.acl.Performative;
 import org.junit.jupiter.api.Test;
 
 import java.util.HexFormat;
+import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -81,5 +82,28 @@ class BinaryAclCodecTest {
     @Test
     void checksTheByteRange() {
         assertThrows(AclParseException.class, () -> codec.decode(new byte[4], 3, 5));
+    }
+
+    @Test
+    void receiversAreCheckedWhenDecodedEvenIfBuiltLater() throws Exception {
+        AclMessage m = new AclMessage(Performative.INFORM);
+        m.addReceiver(new AID("b@p", List.of("udp://h:1"), List.of(), java.util.Map.of("role", "seller")));
+        byte[] good = codec.encode(m);
+        AclMessage back = codec.decode(good);
+        assertEquals("seller", back.getReceivers().get(0).userDefined().get("role"));
+        // Damage the slot name inside the receiver: decoding must fail now, not when the list is read.
+        byte[] bad = good.clone();
+        int at = new String(bad, java.nio.charset.StandardCharsets.ISO_8859_1).indexOf("role");
+        bad[at] = '9';
+        assertThrows(AclParseException.class, () -> codec.decode(bad));
+    }
+
+    @Test
+    void aDecodedReceiverListIsLiveAndModifiable() throws Exception {
+        AclMessage m = new AclMessage(Performative.INFORM).addReceiver(new AID("b@p")).addReceiver(new AID("c@p"));
+        AclMessage back = codec.decode(codec.encode(m));
+        back.addReceiver(new AID("d@p"));
+        assertEquals(List.of(new AID("b@p"), new AID("c@p"), new AID("d@p")), back.getReceivers());
+        assertTrue(back.copy().sameAs(back));
     }
 }

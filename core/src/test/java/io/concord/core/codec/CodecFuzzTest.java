@@ -1,5 +1,6 @@
 package io.concord.core.codec;
 
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.time.ManualClock;
 import org.junit.jupiter.api.Test;
@@ -14,7 +15,7 @@ import static org.junit.jupiter.api.Assertions.fail;
  * {@link AclParseException}; any other exception is a bug.
  */
 class CodecFuzzTest {
-    private static final int ITERATIONS = 30_000;
+    private static final int ITERATIONS = 60_000;
 
     @Test
     void binaryDecoderThrowsOnlyParseErrors() {
@@ -35,6 +36,8 @@ class CodecFuzzTest {
                 if (m == null) {
                     fail("decode returned null for iteration " + i);
                 }
+                // Receivers may be built lazily: reading them must not fail once decoding succeeded.
+                m.getReceivers().forEach(AID::name);
             } catch (AclParseException expected) {
                 // fine: a clear error
             } catch (RuntimeException | StackOverflowError e) {

@@ -408,6 +408,7 @@ class ProtocolsTest {
 
         private ProtocolException failure(CompletableFuture<?> f) {
             sim.runUntil(f::isDone, 60_000);
+            assertTrue(f.isDone(), "the future completed in virtual time; log " + log);
             ExecutionException e = assertThrows(ExecutionException.class, f::get);
             return assertInstanceOf(ProtocolException.class, e.getCause());
         }
