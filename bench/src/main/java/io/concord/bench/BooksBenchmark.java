@@ -33,11 +33,9 @@ public class BooksBenchmark {
     @Param({"1", "5", "10", "15"})
     public int s;
 
-    private final Rounds rounds = new Rounds();
-    private AgentRuntime concord;
+    private final RoundDriver driver = new RoundDriver();
+    private final Rounds rounds = driver.rounds;
     private ConcordBooks.Buyer buyer;
-    private JadePlatform jade;
-    private AgentController jadeBuyer;
 
     static int price(int i) {
         return 40 + (i * 7919) % 23;
@@ -46,16 +44,17 @@ public class BooksBenchmark {
     @Setup(Level.Trial)
     public void start() throws Exception {
         if (platform.equals(Platforms.JADE)) {
-            jade = new JadePlatform();
+            driver.jade = new JadePlatform();
             rounds.expectReady(s + 1);
             for (int i = 0; i < s; i++) {
-                jade.start("seller" + i, JadeBooks.Seller.class, price(i), rounds);
+                driver.jade.start("seller" + i, JadeBooks.Seller.class, price(i), rounds);
             }
-            jadeBuyer = jade.start("buyer", JadeBooks.Buyer.class, rounds, s, TIMEOUT_MS);
+            driver.jadeStarter = driver.jade.start("buyer", JadeBooks.Buyer.class, rounds, s, TIMEOUT_MS);
             rounds.awaitReady();
             return;
         }
-        concord = Platforms.concord(platform);
+        driver.concord = Platforms.concord(platform);
+        AgentRuntime concord = driver.concord;
         List<AID> sellers = new ArrayList<>();
         for (int i = 0; i < s; i++) {
             sellers.add(concord.startAgent("seller" + i, new ConcordBooks.Seller(price(i))));
@@ -63,27 +62,17 @@ public class BooksBenchmark {
         buyer = new ConcordBooks.Buyer(rounds, TIMEOUT_MS);
         buyer.sellers = sellers;
         concord.startAgent("buyer", buyer);
+        driver.concordStart = buyer::startRound;
     }
 
     @Benchmark
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
-        rounds.arm(ROUNDS);
-        if (jade != null) {
-            jadeBuyer.putO2AObject("go", false);
-        } else {
-            concord.execute(buyer::startRound);
-        }
-        rounds.await();
+        driver.runBatch(ROUNDS);
     }
 
     @TearDown(Level.Trial)
     public void stop() {
-        if (concord != null) {
-            concord.close();
-        }
-        if (jade != null) {
-            jade.close();
-        }
+        driver.close();
     }
 }

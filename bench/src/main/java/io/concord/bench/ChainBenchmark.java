@@ -33,27 +33,26 @@ public class ChainBenchmark {
     @Param({"2", "6", "10", "19"})
     public int n;
 
-    private final Rounds rounds = new Rounds();
-    private AgentRuntime concord;
+    private final RoundDriver driver = new RoundDriver();
+    private final Rounds rounds = driver.rounds;
     private ConcordChainLink first;
-    private JadePlatform jade;
-    private AgentController jadeFirst;
 
     @Setup(Level.Trial)
     public void start() throws Exception {
         if (platform.equals(Platforms.JADE)) {
-            jade = new JadePlatform();
+            driver.jade = new JadePlatform();
             rounds.expectReady(n);
             for (int i = n - 1; i >= 0; i--) {
-                AgentController a = jade.start("link" + i, JadeChainLink.class, rounds, i, n, SECRET);
+                AgentController a = driver.jade.start("link" + i, JadeChainLink.class, rounds, i, n, SECRET);
                 if (i == 0) {
-                    jadeFirst = a;
+                    driver.jadeStarter = a;
                 }
             }
             rounds.awaitReady();
             return;
         }
-        concord = Platforms.concord(platform);
+        driver.concord = Platforms.concord(platform);
+        AgentRuntime concord = driver.concord;
         List<ConcordChainLink> links = new ArrayList<>();
         List<AID> ids = new ArrayList<>();
         for (int i = 0; i < n; i++) {
@@ -65,27 +64,17 @@ public class ChainBenchmark {
             links.get(i).next = ids.get((i + 1) % n);
         }
         first = links.get(0);
+        driver.concordStart = first::startRound;
     }
 
     @Benchmark
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
-        rounds.arm(ROUNDS);
-        if (jade != null) {
-            jadeFirst.putO2AObject("go", false);
-        } else {
-            concord.execute(first::startRound);
-        }
-        rounds.await();
+        driver.runBatch(ROUNDS);
     }
 
     @TearDown(Level.Trial)
     public void stop() {
-        if (concord != null) {
-            concord.close();
-        }
-        if (jade != null) {
-            jade.close();
-        }
+        driver.close();
     }
 }

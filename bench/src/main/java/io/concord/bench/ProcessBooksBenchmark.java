@@ -30,24 +30,22 @@ public class ProcessBooksBenchmark {
     @Param({"1", "5"})
     public int s;
 
-    private final Rounds rounds = new Rounds();
-    private final Children children = new Children();
-    private AgentRuntime concord;
+    private final RoundDriver driver = new RoundDriver();
+    private final Rounds rounds = driver.rounds;
+    private final Children children = driver.children;
     private ConcordBooks.Buyer buyer;
-    private JadePlatform jade;
-    private AgentController jadeBuyer;
 
     @Setup(Level.Trial)
     public void start() throws Exception {
         if (platform.equals(Platforms.JADE)) {
-            jade = new JadePlatform();
+            driver.jade = new JadePlatform();
             for (int i = 0; i < s; i++) {
-                children.start(JadeProcessAgent.class, Integer.toString(jade.port()), "seller", "seller" + i,
+                children.start(JadeProcessAgent.class, Integer.toString(driver.jade.port()), "seller", "seller" + i,
                         Integer.toString(BooksBenchmark.price(i)));
             }
             children.awaitReady();
             rounds.expectReady(1);
-            jadeBuyer = jade.start("buyer", JadeBooks.Buyer.class, rounds, s, BooksBenchmark.TIMEOUT_MS);
+            driver.jadeStarter = driver.jade.start("buyer", JadeBooks.Buyer.class, rounds, s, BooksBenchmark.TIMEOUT_MS);
             rounds.awaitReady();
             return;
         }
@@ -59,32 +57,22 @@ public class ProcessBooksBenchmark {
         for (int i = 0; i < s; i++) {
             sellers.add(new AID("seller" + i + "@bench", addresses.get(i)));
         }
-        concord = Platforms.concord(platform);
+        driver.concord = Platforms.concord(platform);
+        AgentRuntime concord = driver.concord;
         buyer = new ConcordBooks.Buyer(rounds, BooksBenchmark.TIMEOUT_MS);
         buyer.sellers = sellers;
         concord.startAgent("buyer", buyer);
+        driver.concordStart = buyer::startRound;
     }
 
     @Benchmark
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
-        rounds.arm(ROUNDS);
-        if (jade != null) {
-            jadeBuyer.putO2AObject("go", false);
-        } else {
-            concord.execute(buyer::startRound);
-        }
-        rounds.await();
+        driver.runBatch(ROUNDS);
     }
 
     @TearDown(Level.Trial)
     public void stop() {
-        if (concord != null) {
-            concord.close();
-        }
-        if (jade != null) {
-            jade.close();
-        }
-        children.close();
+        driver.close();
     }
 }

@@ -33,24 +33,22 @@ public class ProcessChainBenchmark {
     @Param({"2", "6"})
     public int n;
 
-    private final Rounds rounds = new Rounds();
-    private final Children children = new Children();
-    private AgentRuntime concord;
+    private final RoundDriver driver = new RoundDriver();
+    private final Rounds rounds = driver.rounds;
+    private final Children children = driver.children;
     private ConcordChainLink first;
-    private JadePlatform jade;
-    private AgentController jadeFirst;
 
     @Setup(Level.Trial)
     public void start() throws Exception {
         if (platform.equals(Platforms.JADE)) {
-            jade = new JadePlatform();
+            driver.jade = new JadePlatform();
             for (int i = 1; i < n; i++) {
-                children.start(JadeProcessAgent.class, Integer.toString(jade.port()), "link", "link" + i,
+                children.start(JadeProcessAgent.class, Integer.toString(driver.jade.port()), "link", "link" + i,
                         Integer.toString(i), Integer.toString(n));
             }
             children.awaitReady();
             rounds.expectReady(1);
-            jadeFirst = jade.start("link0", JadeChainLink.class, rounds, 0, n, ChainBenchmark.SECRET);
+            driver.jadeStarter = driver.jade.start("link0", JadeChainLink.class, rounds, 0, n, ChainBenchmark.SECRET);
             rounds.awaitReady();
             return;
         }
@@ -58,7 +56,8 @@ public class ProcessChainBenchmark {
             children.start(ProcessAgent.class, "link", "link" + i, platform);
         }
         List<String> addresses = children.awaitReady();
-        concord = Platforms.concord(platform);
+        driver.concord = Platforms.concord(platform);
+        AgentRuntime concord = driver.concord;
         first = new ConcordChainLink(rounds, true, ChainBenchmark.SECRET);
         AID firstAid = concord.startAgent("link0", first);
         for (int i = 1; i < n; i++) {
@@ -66,28 +65,17 @@ public class ProcessChainBenchmark {
             children.tell(i - 1, "NEXT " + next.localName() + " " + next.addresses().get(0));
         }
         first.next = new AID("link1@bench", addresses.get(0));
+        driver.concordStart = first::startRound;
     }
 
     @Benchmark
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
-        rounds.arm(ROUNDS);
-        if (jade != null) {
-            jadeFirst.putO2AObject("go", false);
-        } else {
-            concord.execute(first::startRound);
-        }
-        rounds.await();
+        driver.runBatch(ROUNDS);
     }
 
     @TearDown(Level.Trial)
     public void stop() {
-        if (concord != null) {
-            concord.close();
-        }
-        if (jade != null) {
-            jade.close();
-        }
-        children.close();
+        driver.close();
     }
 }
