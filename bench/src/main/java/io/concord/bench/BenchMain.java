@@ -200,7 +200,9 @@ public final class BenchMain {
     /** Chain or books with one process per agent: Concord class 7 and JADE. */
     private void processes(String name, Class<?> benchmark, String param, String label, List<Integer> sizes)
             throws RunnerException, IOException {
-        List<String> platforms = List.of(Platforms.CONCORD_CLASS7, Platforms.JADE);
+        // Quick mode keeps within its five minutes; full mode adds the closed profile.
+        List<String> platforms = full ? List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE)
+                : List.of(Platforms.CONCORD_CLASS7, Platforms.JADE);
         ChainedOptionsBuilder o = options(benchmark)
                 .param("platform", platforms.toArray(new String[0]))
                 .param(param, sizes.stream().map(String::valueOf).toArray(String[]::new));
@@ -214,15 +216,16 @@ public final class BenchMain {
                 .append("of its own. Concord: UDP on loopback with the class-7 stack, addresses exchanged at start. JADE: ")
                 .append("a main container here and a peripheral container per agent. On 2 cores, from 6 processes on, ")
                 .append("the operating system's scheduling weighs more than either platform.\n\n")
-                .append("| ").append(label).append(" | concord class 7 µs | JADE µs | speedup |\n|---|---|---|---|\n");
+                .append("| ").append(label).append(" | concord class 7 µs | closed µs | JADE µs | speedup |\n|---|---|---|---|---|\n");
         for (int size : sizes) {
             Double c7 = byPlatform.get(Platforms.CONCORD_CLASS7).get(size);
+            Double closed = byPlatform.containsKey(Platforms.CONCORD_CLOSED) ? byPlatform.get(Platforms.CONCORD_CLOSED).get(size) : null;
             Double jade = byPlatform.get(Platforms.JADE).get(size);
             if (c7 != null && jade != null) {
                 System.out.printf(Locale.ROOT, "RESULT %s processes %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
                         name, size, c7, jade, jade / c7);
             }
-            md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s |%n", size, fmt(c7), fmt(jade),
+            md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s | %s |%n", size, fmt(c7), fmt(closed), fmt(jade),
                     c7 != null && jade != null ? String.format(Locale.ROOT, "%.2f", jade / c7) : "-"));
         }
         String png = name + "-processes.png";

@@ -24,7 +24,7 @@ import java.util.List;
 public class ProcessBooksBenchmark {
     public static final int ROUNDS = 20;
 
-    @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
+    @Param({Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE})
     public String platform;
 
     @Param({"1", "5"})

@@ -27,7 +27,7 @@ import java.util.List;
 public class ProcessChainBenchmark {
     public static final int ROUNDS = 20;
 
-    @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
+    @Param({Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE})
     public String platform;
 
     @Param({"2", "6"})
