@@ -165,14 +165,6 @@ public abstract class Behaviour {
         }
     }
 
-    boolean wantsBlock() {
-        return blockRequested;
-    }
-
-    void markBlocked() {
-        runnable = false;
-    }
-
     void markRunnable() {
         runnable = true;
     }
