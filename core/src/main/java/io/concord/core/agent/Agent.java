@@ -87,9 +87,12 @@ public abstract class Agent {
         return runtime.random();
     }
 
-    /** The platform's wall-clock time in epoch milliseconds. */
+    /**
+     * The platform's wall-clock time in epoch milliseconds: the time of the platform's time source
+     * when the agent's stack keeps one (the temporal layer's NTP-like estimate), else its runtime's.
+     */
     public final long currentTimeMillis() {
-        return runtime.clock().epochMillis();
+        return node != null ? node.platformMillis() : runtime.clock().epochMillis();
     }
 
     /** A conversation id unique to this agent ({@code name-c<n>}), deterministic in a simulation. */

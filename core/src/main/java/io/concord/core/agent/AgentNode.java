@@ -27,6 +27,7 @@ final class AgentNode implements StackHost {
     final DropCounters drops = new DropCounters();
     LayerStack stack;
     boolean queued;
+    java.util.function.LongSupplier platformTime;
 
     AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint, Transport transport) {
         this.runtime = runtime;
@@ -119,7 +120,7 @@ final class AgentNode implements StackHost {
     }
 
     private void deliverMessage(AclMessage msg) {
-        msg.setReceivedAtEpochMs(runtime.clock().epochMillis());
+        msg.setReceivedAtEpochMs(platformMillis());
         Tracer t = runtime.tracer();
         if (!agent.postMessage(msg, runtime.mailboxCapacity())) {
             dropOutgoing(msg, "mailbox-full", "the mailbox holds " + runtime.mailboxCapacity() + " messages");
@@ -150,6 +151,17 @@ final class AgentNode implements StackHost {
     @Override
     public Transport transport() {
         return transport;
+    }
+
+    @Override
+    public void setPlatformTime(java.util.function.LongSupplier epochMillis) {
+        this.platformTime = epochMillis;
+    }
+
+    /** The platform's time for this agent: its stack's platform clock if one was set, else the runtime's. */
+    long platformMillis() {
+        java.util.function.LongSupplier t = platformTime;
+        return t != null ? t.getAsLong() : runtime.clock().epochMillis();
     }
 
     @Override

@@ -13,6 +13,14 @@ public interface StackHost {
         return null;
     }
 
+    /**
+     * Lets a layer that keeps the platform's time (the temporal layer) give it to the agent: from
+     * then on the agent's {@code currentTimeMillis()} reads it. Until then the agent reads its
+     * runtime's clock.
+     */
+    default void setPlatformTime(java.util.function.LongSupplier epochMillis) {
+    }
+
     /** The node's transport. */
     default io.concord.core.net.Transport transport() {
         return io.concord.core.net.Transport.UDP;

@@ -71,6 +71,7 @@ public final class TemporalLayer extends Layer {
     @Override
     public void init(LayerContext ctx) {
         clock.bind(ctx.host().clock());
+        ctx.host().setPlatformTime(clock::nowMs);
     }
 
     @Override

@@ -88,4 +88,24 @@ class TemporalLayerTest {
         assertEquals(0, agentTime.offsetUs());
         assertEquals(1, agent.drops().get("unexpected-time"));
     }
+
+    @Test
+    void anAgentReadsThePlatformTimeItsTemporalLayerKeeps() {
+        try (io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(12,
+                io.concord.core.testkit.FaultPlan.NONE)) {
+            io.concord.core.agent.AgentRuntime rt = sim.newRuntime("h", () -> java.util.List.of(
+                    new io.concord.layers.parser.ParserLayer(io.concord.layers.parser.Membership.open(), null, true),
+                    new TemporalLayer(TemporalLayer.Config.window(1_000), new PlatformClock()),
+                    new io.concord.layers.security.SecurityLayer(new io.concord.layers.security.SecurityLayer.Config(
+                            io.concord.layers.security.SecurityLayer.Protection.CRC, null, null, 1_000, 1)),
+                    new io.concord.layers.communication.CommunicationLayer(
+                            new io.concord.layers.communication.CommunicationLayer.Config(8192, 1))));
+            io.concord.core.agent.Agent[] ref = new io.concord.core.agent.Agent[1];
+            io.concord.core.acl.AID a = rt.startAgent("a", new io.concord.core.agent.LambdaAgent(ag -> ref[0] = ag));
+            PlatformClock clock = ((TemporalLayer) rt.layers(a).get(1)).clock();
+            clock.update(7_000_000, 100);
+            assertEquals(sim.clock().epochMillis() + 7_000, ref[0].currentTimeMillis(),
+                    "the agent reads the platform time, 7 s ahead of its host's");
+        }
+    }
 }
