@@ -117,7 +117,7 @@ public final class AgentRuntime implements AutoCloseable {
         private Tracer tracer = Tracer.NONE;
         private Supplier<List<Layer>> stackFactory;
         private int mailboxCapacity = 100_000;
-        private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 50);
+        private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 300);
         private int idleYieldIterations = Integer.getInteger("concord.idle.yield", 0);
         private Transport transport = Transport.UDP;
 
@@ -544,6 +544,14 @@ public final class AgentRuntime implements AutoCloseable {
 
     private void loop() {
         int idle = 0;
+        // The spin budget adapts between 0 and idleSpinIterations: spinning pays when work comes
+        // back within the spin window (a quick reply), and only wastes a shared CPU when it does
+        // not (more busy processes than cores). Count both outcomes; halve or double the budget.
+        int spinBudget = idleSpinIterations;
+        int wins = 0;
+        int losses = 0;
+        long spinWindowNs = 0;
+        long idleSinceNs = 0;
         while (running) {
             int work;
             try {
@@ -553,20 +561,30 @@ public final class AgentRuntime implements AutoCloseable {
                 work = 1;
             }
             if (work > 0) {
+                if (idle > 0) {
+                    wins++; // work came while spinning
+                }
                 idle = 0;
                 continue;
             }
-            if (idle < idleSpinIterations) {
+            if (idle == 0) {
+                idleSinceNs = clock.nanoTime();
+            }
+            if (idle < spinBudget) {
                 idle++;
                 Thread.onSpinWait();
                 continue;
             }
-            if (idle < idleSpinIterations + idleYieldIterations) {
+            if (idle < spinBudget + idleYieldIterations) {
                 idle++;
                 Thread.yield();
                 continue;
             }
+            if (spinBudget == idleSpinIterations && idle > 0) {
+                spinWindowNs = clock.nanoTime() - idleSinceNs; // how long a full spin lasts here
+            }
             parked = true;
+            long parkedAtNs = clock.nanoTime();
             if (tasks.isEmpty() && running) {
                 long next = wheel.earliestDeadline();
                 long timeout = next == Long.MAX_VALUE ? TimeUnit.SECONDS.toNanos(1) : next - clock.nanoTime();
@@ -575,6 +593,18 @@ public final class AgentRuntime implements AutoCloseable {
                 }
             }
             parked = false;
+            // Woken sooner than a full spin would have lasted: spinning would have caught it.
+            if (clock.nanoTime() - parkedAtNs < Math.max(spinWindowNs, 20_000)) {
+                wins++;
+            } else {
+                losses++;
+            }
+            if (wins + losses >= 32) {
+                spinBudget = wins * 4 < wins + losses ? spinBudget / 2
+                        : Math.min(idleSpinIterations, Math.max(1, spinBudget * 2));
+                wins = 0;
+                losses = 0;
+            }
             idle = 0;
         }
     }
