@@ -203,7 +203,8 @@ public final class BenchMain {
         // Quick mode keeps within its five minutes; full mode adds the closed profile.
         List<String> platforms = full ? List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE)
                 : List.of(Platforms.CONCORD_CLASS7, Platforms.JADE);
-        ChainedOptionsBuilder o = options(benchmark)
+        // Child JVMs compile their hot paths and the loops adapt their idle strategy: warm up longer.
+        ChainedOptionsBuilder o = options(benchmark).warmupIterations(full ? 5 : 3)
                 .param("platform", platforms.toArray(new String[0]))
                 .param(param, sizes.stream().map(String::valueOf).toArray(String[]::new));
         Collection<RunResult> results = new Runner(o.build()).run();
