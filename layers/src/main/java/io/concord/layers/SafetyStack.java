@@ -177,8 +177,7 @@ public final class SafetyStack {
             SecurityLayer.Config security = new SecurityLayer.Config(profile.protection(), key, ids, handshakeWindowMs, 1024);
             Membership members = membership;
             SequenceLayer.Config seq = sequence;
-            EnumSet<LayerKind> out = EnumSet.copyOf(without.isEmpty() ? EnumSet.of(LayerKind.PARSER) : without);
-            out.retainAll(without);
+            EnumSet<LayerKind> out = EnumSet.copyOf(without);
             int overhead = Frames.HEADER_BYTES + Frames.CRC_BYTES
                     + (profile == Profile.CLOSED ? 0 : Frames.TAG_BYTES)
                     + (out.contains(LayerKind.SEQUENCE) ? 0 : SequenceLayer.HEADER_BYTES)

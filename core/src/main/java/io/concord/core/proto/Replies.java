@@ -34,7 +34,7 @@ final class Replies {
         return m.getConversationId() + "|" + (m.getSender() == null ? "" : m.getSender().name().toLowerCase(java.util.Locale.ROOT));
     }
 
-    /** Milliseconds from now until the message's {@code :reply-by}, or -1 if it has none. */
+    /** The loop time (ns) at which the message's {@code :reply-by} passes, or -1 if it has none. */
     static long replyByDeadlineNs(io.concord.core.agent.Agent agent, AclMessage msg) {
         if (!msg.hasReplyBy()) {
             return -1;

@@ -123,20 +123,7 @@ public final class VirtualNetwork implements Network {
         if (transport == io.concord.core.net.Transport.UDP) {
             return tryBind(host, port, receiver);
         }
-        int p = port;
-        if (p == 0) {
-            p = EPHEMERAL_BASE;
-            while (boundTcp.containsKey(new Address(host, p))) {
-                p++;
-            }
-        }
-        Address a = new Address(host, p);
-        if (boundTcp.containsKey(a)) {
-            return null;
-        }
-        VirtualEndpoint ep = new VirtualEndpoint(a, receiver, true);
-        boundTcp.put(a, ep);
-        return ep;
+        return bind(boundTcp, host, port, receiver, true);
     }
 
     /**
@@ -157,20 +144,26 @@ public final class VirtualNetwork implements Network {
 
     @Override
     public Endpoint tryBind(String host, int port, Receiver receiver) {
-        if (port == 0) {
-            int p = nextEphemeral.getOrDefault(host, EPHEMERAL_BASE);
-            while (bound.containsKey(new Address(host, p))) {
+        return bind(bound, host, port, receiver, false);
+    }
+
+    /** Binds in a port space (UDP's or TCP's); port 0 takes the next free one from the ephemeral base. */
+    private Endpoint bind(Map<Address, VirtualEndpoint> space, String host, int port, Receiver receiver, boolean tcp) {
+        int p = port;
+        if (p == 0) {
+            String key = (tcp ? "tcp:" : "udp:") + host;
+            p = nextEphemeral.getOrDefault(key, EPHEMERAL_BASE);
+            while (space.containsKey(new Address(host, p))) {
                 p++;
             }
-            nextEphemeral.put(host, p + 1);
-            port = p;
+            nextEphemeral.put(key, p + 1);
         }
-        Address a = new Address(host, port);
-        if (bound.containsKey(a)) {
+        Address a = new Address(host, p);
+        if (space.containsKey(a)) {
             return null;
         }
-        VirtualEndpoint ep = new VirtualEndpoint(a, receiver, false);
-        bound.put(a, ep);
+        VirtualEndpoint ep = new VirtualEndpoint(a, receiver, tcp);
+        space.put(a, ep);
         return ep;
     }
 

@@ -97,8 +97,9 @@ public final class ParserLayer extends Layer {
             BinaryAclCodec.INSTANCE.encode(env.message(), w);
             bytes = w.array();
             aclBytes = w.size() - Frames.HEADROOM;
-            lastEncoded = env.message();
-            lastBytes = bytes.clone();
+            boolean several = env.message().getReceivers().size() > 1;
+            lastEncoded = several ? env.message() : null;
+            lastBytes = several ? bytes.clone() : null;
             lastLength = aclBytes;
         }
         if ((long) aclBytes + overheadBytes > maxFrameBytes) {

@@ -194,11 +194,7 @@ public final class SecurityLayer extends Layer {
                 }
                 p.queue.add(env);
                 p.address = env.destination();
-                if (p.timer < 0) {
-                    p.attempts = 0;
-                    sendHello(ctx, env.peerId(), p.address, HELLO);
-                    scheduleRetry(ctx, env.peerId(), p);
-                }
+                startHandshake(ctx, env.peerId(), p);
             }
         }
     }
@@ -325,11 +321,7 @@ public final class SecurityLayer extends Layer {
                                 + " (this agent restarted?); starting a handshake");
                         Pair np = pairs.computeIfAbsent(src, k -> new Pair());
                         np.address = env.source();
-                        if (np.timer < 0) {
-                            np.attempts = 0;
-                            sendHello(ctx, src, np.address, HELLO);
-                            scheduleRetry(ctx, src, np);
-                        }
+                        startHandshake(ctx, src, np);
                         return;
                     }
                     key = p.key;
@@ -386,6 +378,15 @@ public final class SecurityLayer extends Layer {
     }
 
     // ---- handshake ------------------------------------------------------------------------------
+
+    /** Sends a hello and keeps repeating it until answered, unless a handshake is already running. */
+    private void startHandshake(LayerContext ctx, long peerId, Pair p) {
+        if (p.timer < 0) {
+            p.attempts = 0;
+            sendHello(ctx, peerId, p.address, HELLO);
+            scheduleRetry(ctx, peerId, p);
+        }
+    }
 
     private void sendHello(LayerContext ctx, long peerId, Address to, int type) {
         byte[] name = ownName.getBytes(StandardCharsets.UTF_8);
