@@ -28,6 +28,8 @@ final class AgentNode implements StackHost {
     LayerStack stack;
     boolean queued;
     java.util.function.LongSupplier platformTime;
+    java.util.List<Address> neighbours = java.util.List.of();
+    io.concord.core.layer.Router router;
 
     AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint, Transport transport) {
         this.runtime = runtime;
@@ -37,7 +39,8 @@ final class AgentNode implements StackHost {
         this.transport = transport;
     }
 
-    void send(AclMessage msg) {
+    @Override
+    public void send(AclMessage msg) {
         if (msg.getSender() == null) {
             msg.setSender(aid);
         }
@@ -47,7 +50,18 @@ final class AgentNode implements StackHost {
         }
         Tracer tracer = runtime.tracer();
         for (AID receiver : msg.getReceivers()) {
-            Address dst = runtime.resolve(receiver, transport);
+            Address dst = runtime.resolveLocal(receiver, transport);
+            AID via = null;
+            if (dst == null && router != null) {
+                io.concord.core.layer.Router.Route r = router.route(receiver);
+                if (r != null) {
+                    dst = r.address();
+                    via = r.node().equals(receiver) ? null : r.node();
+                }
+            }
+            if (dst == null) {
+                dst = runtime.resolveByAddress(receiver, transport);
+            }
             if (dst == null) {
                 dropOutgoing(msg, "unknown-receiver", "no " + transport + " address known for " + receiver.name());
                 returnFailure(msg, receiver);
@@ -56,7 +70,11 @@ final class AgentNode implements StackHost {
             if (tracer.enabled()) {
                 tracer.trace(runtime.nowNs(), aid.name(), "send", describe(msg) + " to " + receiver.name());
             }
-            stack.sendDown(Envelope.outgoing(msg, receiver, dst));
+            Envelope env = Envelope.outgoing(msg, receiver, dst);
+            if (via != null) {
+                env.setVia(via);
+            }
+            stack.sendDown(env);
         }
     }
 
@@ -162,6 +180,32 @@ final class AgentNode implements StackHost {
     long platformMillis() {
         java.util.function.LongSupplier t = platformTime;
         return t != null ? t.getAsLong() : runtime.clock().epochMillis();
+    }
+
+    @Override
+    public java.util.List<Address> neighbours() {
+        return neighbours;
+    }
+
+    @Override
+    public void setRouter(io.concord.core.layer.Router router) {
+        this.router = router;
+    }
+
+    @Override
+    public void deliverToAgent(AclMessage message) {
+        deliverMessage(message);
+        runtime.makeReady(this);
+    }
+
+    @Override
+    public java.util.random.RandomGenerator random() {
+        return runtime.random();
+    }
+
+    @Override
+    public String platformName() {
+        return runtime.platformName();
     }
 
     @Override

@@ -15,12 +15,28 @@ import java.util.function.Supplier;
  * @param stack     the agent's layers, top first, or {@code null} for the runtime's
  * @param transport UDP or TCP, or {@code null} for the runtime's
  */
-public record AgentOptions(int port, Supplier<List<Layer>> stack, Transport transport) {
+public record AgentOptions(int port, Supplier<List<Layer>> stack, Transport transport, PortRange portRange) {
 
     public AgentOptions {
         if (port < 0 || port > 65535) {
             throw new IllegalArgumentException("port must be 0..65535, got " + port);
         }
+        if (port != 0 && portRange != null) {
+            throw new IllegalArgumentException("choose a fixed port or a port range, not both");
+        }
+    }
+
+    public AgentOptions(int port, Supplier<List<Layer>> stack, Transport transport) {
+        this(port, stack, transport, null);
+    }
+
+    /**
+     * Port-binding discovery: the agent takes the first free port of the range; the ports it finds
+     * held below it and in the probe window past it are its potential peers
+     * ({@link io.concord.core.layer.StackHost#neighbours()}).
+     */
+    public AgentOptions withPortRange(PortRange range) {
+        return new AgentOptions(0, stack, transport, Objects.requireNonNull(range, "range"));
     }
 
     /** Any free port, the runtime's stack. */
@@ -29,14 +45,14 @@ public record AgentOptions(int port, Supplier<List<Layer>> stack, Transport tran
     }
 
     public AgentOptions withPort(int p) {
-        return new AgentOptions(p, stack, transport);
+        return new AgentOptions(p, stack, transport, portRange);
     }
 
     public AgentOptions withStack(Supplier<List<Layer>> topFirstLayers) {
-        return new AgentOptions(port, Objects.requireNonNull(topFirstLayers, "stack"), transport);
+        return new AgentOptions(port, Objects.requireNonNull(topFirstLayers, "stack"), transport, portRange);
     }
 
     public AgentOptions withTransport(Transport t) {
-        return new AgentOptions(port, stack, Objects.requireNonNull(t, "transport"));
+        return new AgentOptions(port, stack, Objects.requireNonNull(t, "transport"), portRange);
     }
 }

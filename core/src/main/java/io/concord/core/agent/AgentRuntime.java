@@ -282,14 +282,25 @@ public final class AgentRuntime implements AutoCloseable {
         }
         AgentNode[] holder = new AgentNode[1];
         Transport t = options.transport() != null ? options.transport() : transport;
-        Endpoint ep = network.tryBind(t, host, port, (from, data, off, len, now) -> holder[0].onDatagram(from, data, off, len, now));
-        if (ep == null) {
-            throw new IllegalStateException(t + " port " + port + " on " + host + " is already in use; "
-                    + "choose another port or 0 for any free one");
+        io.concord.core.net.Receiver receiver = (from, data, off, len, now) -> holder[0].onDatagram(from, data, off, len, now);
+        List<Address> neighbours = List.of();
+        Endpoint ep;
+        if (options.portRange() != null) {
+            PortRange range = options.portRange();
+            List<Address> held = new ArrayList<>();
+            ep = range.bindFirstFree(network, t, host, receiver, held);
+            neighbours = List.copyOf(held);
+        } else {
+            ep = network.tryBind(t, host, port, receiver);
+            if (ep == null) {
+                throw new IllegalStateException(t + " port " + port + " on " + host + " is already in use; "
+                        + "choose another port or 0 for any free one");
+            }
         }
         AID aid = new AID(nameOnly.name(), ep.localAddress().toUri(t));
         AgentNode node = new AgentNode(this, agent, aid, ep, t);
         holder[0] = node;
+        node.neighbours = neighbours;
         try {
             List<Layer> layers = (options.stack() != null ? options.stack() : stackFactory).get();
             node.stack = new LayerStack(layers, node, node::deliver, node::transmit, ev -> { });
@@ -359,15 +370,23 @@ public final class AgentRuntime implements AutoCloseable {
         }
     }
 
+    /** An agent of this runtime with the given transport, by name; {@code null} if none. */
+    Address resolveLocal(AID aid, Transport t) {
+        AgentNode local = directory.get(aid);
+        return local != null && local.transport == t ? local.endpoint.localAddress() : null;
+    }
+
     /**
      * Where to send to an agent over the given transport: an agent of this runtime by name, else
      * the first address of that transport in its AID. {@code null} if neither is known.
      */
     Address resolve(AID aid, Transport t) {
-        AgentNode local = directory.get(aid);
-        if (local != null && local.transport == t) {
-            return local.endpoint.localAddress();
-        }
+        Address a = resolveLocal(aid, t);
+        return a != null ? a : resolveByAddress(aid, t);
+    }
+
+    /** The first address of the transport in the AID, parsed (and cached); {@code null} if none. */
+    Address resolveByAddress(AID aid, Transport t) {
         String uri = aid.firstAddress(t.scheme());
         if (uri == null) {
             return null;
@@ -387,6 +406,9 @@ public final class AgentRuntime implements AutoCloseable {
 
     private void removeAgent(AgentNode node, boolean takeDown) {
         directory.remove(node.aid);
+        if (!takeDown) {
+            node.endpoint.close(); // a crash: nothing more goes out, not even what the layers say on stop
+        }
         node.agent.terminate(takeDown);
         node.stack.stop();
         node.endpoint.close();

@@ -26,6 +26,42 @@ public interface StackHost {
         return io.concord.core.net.Transport.UDP;
     }
 
+    /**
+     * The ports of this host that were held by others when this node bound its own in its port
+     * range, and those found held in the probe window past it: the potential agents of the
+     * port-binding discovery. Empty when the node was bound to a fixed port.
+     */
+    default java.util.List<io.concord.core.net.Address> neighbours() {
+        return java.util.List.of();
+    }
+
+    /** Installs the name-based addressing of the platform's agent lists; {@code null} removes it. */
+    default void setRouter(Router router) {
+    }
+
+    /**
+     * Hands an ACL message to the node's agent, as if it had come up the stack; for layers that
+     * answer for the platform (the AMS, a FAILURE).
+     */
+    default void deliverToAgent(io.concord.core.acl.AclMessage message) {
+    }
+
+    /** Sends an ACL message from this node, through the whole stack, as the agent would. */
+    default void send(io.concord.core.acl.AclMessage message) {
+    }
+
+    /** The seeded random source of the node's runtime. */
+    default java.util.random.RandomGenerator random() {
+        return new java.util.SplittableRandom();
+    }
+
+    /** The platform name (the part after {@code @} in agent names). */
+    default String platformName() {
+        String n = nodeName();
+        int at = n.indexOf('@');
+        return at < 0 ? "" : n.substring(at + 1);
+    }
+
     Clock clock();
 
     /** The loop's current time (read once per work cycle). */

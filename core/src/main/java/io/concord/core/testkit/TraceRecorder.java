@@ -16,6 +16,7 @@ public final class TraceRecorder implements Tracer {
     private final ArrayDeque<String> lines;
     private long hash = 0xcbf29ce484222325L;
     private long count;
+    private final List<Tracer> listeners = new ArrayList<>();
 
     /** Keeps the last 200 lines. */
     public TraceRecorder() {
@@ -27,8 +28,16 @@ public final class TraceRecorder implements Tracer {
         this.lines = new ArrayDeque<>(Math.max(1, keepLines));
     }
 
+    /** Also hands every event to a listener (an invariant checker). */
+    public void addListener(Tracer listener) {
+        listeners.add(listener);
+    }
+
     @Override
     public void trace(long nowNs, String node, String event, String detail) {
+        for (int i = 0; i < listeners.size(); i++) {
+            listeners.get(i).trace(nowNs, node, event, detail);
+        }
         String line = nowNs + " " + node + " " + event + " " + detail;
         byte[] b = line.getBytes(StandardCharsets.UTF_8);
         long h = hash;

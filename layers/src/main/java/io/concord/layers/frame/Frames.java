@@ -37,6 +37,17 @@ public final class Frames {
     /** Flag bit 2: a handshake frame of the security layer. */
     public static final int FLAG_HANDSHAKE = 4;
 
+    /**
+     * The destination id of a frame for whichever agent holds the port it is sent to: the
+     * port-binding discovery asks a port before it knows the name behind it. Such frames are sealed
+     * with the platform key, are not sequenced, and may carry only platform messages.
+     */
+    public static final long ANY = 0;
+    /** Envelope header id the security layer sets on a frame that came addressed to {@link #ANY}. */
+    public static final int ENVELOPE_ANY = 9;
+    /** The local name of the receiver that stands for {@link #ANY}: {@code *@platform}. */
+    public static final String ANY_LOCAL_NAME = "*";
+
     private static final VarHandle LONG = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.BIG_ENDIAN);
     private static final VarHandle INT = MethodHandles.byteArrayViewVarHandle(int[].class, ByteOrder.BIG_ENDIAN);
     private static final VarHandle SHORT = MethodHandles.byteArrayViewVarHandle(short[].class, ByteOrder.BIG_ENDIAN);

@@ -65,6 +65,9 @@ public final class ParserLayer extends Layer {
     private long idOf(AID aid) {
         Long id = ids.get(aid.name());
         if (id == null) {
+            if (Frames.ANY_LOCAL_NAME.equals(aid.localName())) {
+                return Frames.ANY;
+            }
             if (ids.size() > 10_000) {
                 ids.clear();
             }
@@ -109,7 +112,7 @@ public final class ParserLayer extends Layer {
                     + maxFrameBytes + "; shorten its content, or raise maxFrameBytes (up to 65507 on UDP)");
         }
         env.setData(bytes, Frames.HEADROOM, aclBytes);
-        env.setPeerId(idOf(env.receiver()));
+        env.setPeerId(idOf(env.hop()));
         ctx.passDown(env);
     }
 
@@ -130,6 +133,10 @@ public final class ParserLayer extends Layer {
         if (identification && idOf(sender) != env.peerId()) {
             ctx.drop(env, "identification", "the message claims to be from " + sender.name()
                     + " but the frame is authenticated as another agent's");
+            return;
+        }
+        if (env.header(Frames.ENVELOPE_ANY) != null && !Membership.PLATFORM_ONTOLOGY.equals(m.getOntology())) {
+            ctx.drop(env, "unprotected", "a message addressed to any agent at this port that is not platform discovery");
             return;
         }
         switch (membership.check(m, sender, env.source())) {

@@ -176,6 +176,13 @@ public final class SecurityLayer extends Layer {
 
     @Override
     public void onDown(LayerContext ctx, Envelope env) {
+        if (env.peerId() == Frames.ANY) {
+            // For whoever holds the port: no pair key can exist yet; the platform key seals it.
+            Protection p = config.protection() == Protection.GCM_PAIR ? Protection.GCM_PLATFORM : config.protection();
+            seal(env, p.bits, 0, platformAead, platformEncrypt);
+            ctx.passDown(env);
+            return;
+        }
         switch (config.protection()) {
             case CRC, HMAC, GCM_PLATFORM -> {
                 seal(env, config.protection().bits, 0, platformAead, platformEncrypt);
@@ -269,15 +276,21 @@ public final class SecurityLayer extends Layer {
         long src = Frames.getLong(d, h + 4);
         long dst = Frames.getLong(d, h + 12);
         long ctr = Frames.getLong(d, h + 20);
-        if (dst != ownId) {
+        boolean any = dst == Frames.ANY;
+        if (dst != ownId && !any) {
             ctx.drop(env, "misdirected", "the frame is for agent id " + Long.toHexString(dst) + ", not for this one");
+            return;
+        }
+        if (any && handshake) {
+            ctx.drop(env, "malformed-frame", "a handshake addressed to any agent");
             return;
         }
         if (handshake && config.protection() != Protection.GCM_PAIR) {
             ctx.drop(env, "unprotected", "a handshake, but this agent does not use per-pair keys");
             return;
         }
-        int required = handshake ? Frames.PROTECTION_GCM_PLATFORM : config.protection().bits;
+        int required = handshake || (any && config.protection() == Protection.GCM_PAIR)
+                ? Frames.PROTECTION_GCM_PLATFORM : config.protection().bits;
         if (protection != required) {
             ctx.drop(env, "unprotected", "protection " + protection + " where " + required + " is required");
             return;
@@ -360,6 +373,9 @@ public final class SecurityLayer extends Layer {
         }
         env.setPeerId(src);
         env.setData(body, bodyOff, bodyLen);
+        if (any) {
+            env.putHeader(Frames.ENVELOPE_ANY, Boolean.TRUE);
+        }
         ctx.passUp(env);
     }
 

@@ -38,6 +38,8 @@ public final class SequenceLayer extends Layer {
     private static final int NAK = 2;
     private static final int PROBE = 3;
     private static final int SKIP = 4;
+    /** A frame for any agent at a port (discovery): not sequenced, not acknowledged. */
+    private static final int DATAGRAM = 5;
     private static final int MAX_NAK_ENTRIES = 64;
     private static final int OLD_STREAMS = 4;
 
@@ -162,6 +164,15 @@ public final class SequenceLayer extends Layer {
 
     @Override
     public void onDown(LayerContext ctx, Envelope env) {
+        if (env.peerId() == Frames.ANY) {
+            int at = env.prepend(HEADER_BYTES);
+            byte[] d = env.data();
+            d[at] = DATAGRAM;
+            Frames.putInt(d, at + 1, 0);
+            Frames.putLong(d, at + 5, 0);
+            ctx.passDown(env);
+            return;
+        }
         Out o = outs.computeIfAbsent(env.peerId(), k -> new Out(config.retransmitBuffer()));
         o.address = env.destination();
         long seq = o.nextSeq++;
@@ -245,6 +256,14 @@ public final class SequenceLayer extends Layer {
         long peer = env.peerId();
         switch (kind) {
             case DATA -> onData(ctx, env, peer, streamId, seq);
+            case DATAGRAM -> {
+                if (env.header(Frames.ENVELOPE_ANY) == null) {
+                    ctx.drop(env, "malformed-frame", "an unsequenced frame that was not addressed to any agent");
+                    return;
+                }
+                env.skip(HEADER_BYTES);
+                ctx.passUp(env);
+            }
             case ACK -> {
                 Out out = outs.get(peer);
                 if (out != null && streamId == stream && seq > out.acked) {

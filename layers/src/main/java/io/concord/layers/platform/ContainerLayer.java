@@ -1,0 +1,1323 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.Layer;
+import io.concord.core.layer.LayerContext;
+import io.concord.core.layer.Router;
+import io.concord.core.layer.SendRejectedException;
+import io.concord.core.layer.StackHost;
+import io.concord.core.layer.Tracer;
+import io.concord.core.net.Address;
+import io.concord.layers.frame.Frames;
+import io.concord.layers.parser.Membership;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+
+/**
+ * The container layer (dissertation ch. 5): the top of every agent's stack on a platform with no
+ * main container. Each agent carries it, so each can be elected container.
+ *
+ * <ul>
+ * <li><b>Discovery</b>: the ports held in the agent's port range when it bound its own are its
+ *     potential peers; it asks each "who is container" (QUERY-REF, to whoever holds the port).
+ *     If none was found it is container at once.</li>
+ * <li><b>Election</b>: when nobody knows a container, the oldest agent (then the lowest port)
+ *     takes the role; the others exclude themselves and wait for its announcement; after three
+ *     rounds without one, the lowest port wins.</li>
+ * <li><b>LAL</b>: newcomers join (INFORM-REF, answered by CONFIRM with the period and timeout the
+ *     container computed from the agent count); the container distributes the Local Agent List,
+ *     packed into as few messages as fit, versioned by (term, container, sequence), and each agent
+ *     CONFIRMs the version it holds.</li>
+ * <li><b>Maintenance</b>: each period the container tells every agent it is alive (INFORM);
+ *     agents CONFIRM; a silent agent is removed and the removal distributed. Agents that stop
+ *     hearing the container elect the oldest agent left in their list, which takes the next term,
+ *     asks every agent for its information (REQUEST) and redistributes the list.</li>
+ * <li><b>White and yellow pages</b>: the container answers {@code ams@platform} and
+ *     {@code df@platform}; each entry of the LAL carries its agent's services, so the yellow pages
+ *     survive a failover. Names resolve through the LAL: no address is configured anywhere.</li>
+ * </ul>
+ *
+ * <p>Platform messages are FIPA ACL with the ontology {@code concord-platform}; this layer takes
+ * them off the way up, so agents never see them. A message from an agent of another platform is
+ * dropped and counted ({@code foreign-platform}), as is a malformed one ({@code malformed-platform}).
+ */
+public final class ContainerLayer extends Layer {
+    /** The agent's part in the platform. */
+    public enum Role { SEEKING, MEMBER, CONTAINER, STOPPED }
+
+    static final String ONTOLOGY = Membership.PLATFORM_ONTOLOGY;
+    static final String LANGUAGE = "concord-lines";
+    static final String P_DISCOVERY = "concord-discovery";
+    static final String P_LAL = "concord-lal";
+    static final String P_MAINTENANCE = "concord-maintenance";
+    static final String P_SERVICES = "concord-services";
+
+    private final PlatformConfig config;
+    private LayerContext ctx;
+    private StackHost host;
+    private String platform;
+    private String self;
+    private AgentEntry selfEntry;
+    private AID selfAid;
+    private AID amsAid;
+    private AID dfAid;
+
+    private Role role = Role.SEEKING;
+    private long term;
+    private long seq;
+    private AgentEntry container;
+    private final TreeMap<String, AgentEntry> lal = new TreeMap<>();
+    private final Map<String, Router.Route> routes = new HashMap<>();
+    private volatile Snapshot snapshot = Snapshot.EMPTY;
+
+    // seeking
+    private final Map<Address, Boolean> asked = new LinkedHashMap<>();
+    private final Map<String, AgentEntry> seekers = new HashMap<>();
+    private long claimTerm = -1;
+    private AgentEntry claim;
+    private int round;
+    private int attempt;
+    private long discoveryTimer = -1;
+    private long maxTermSeen;
+
+    // joining
+    private AgentEntry joinTarget;
+    private int joinFailures;
+    private long joinTimer = -1;
+
+    // member
+    private long watchTimer = -1;
+    private long periodMs;
+    private long timeoutMs;
+    private final Set<String> suspects = new HashSet<>();
+    private int failoverRounds;
+    private final Map<String, String[]> pages = new HashMap<>();
+    private String pagesKey;
+
+    // container
+    private final Map<String, Long> lastHeard = new HashMap<>();
+    private final Map<String, Long> heldSeq = new HashMap<>();
+    private long cycleTimer = -1;
+    private long pushTimer = -1;
+    private int cycles;
+
+    // requests of the Java API
+    private final Map<String, CompletableFuture<AclMessage>> pendingRequests = new HashMap<>();
+    private long requestCounter;
+    private final List<Consumer<ContainerLayer>> listeners = new ArrayList<>();
+
+    /** A thread-safe picture of what this agent knows of the platform. */
+    public record Snapshot(Role role, long term, long seq, String container, List<AgentEntry> agents) {
+        static final Snapshot EMPTY = new Snapshot(Role.SEEKING, 0, 0, null, List.of());
+    }
+
+    public ContainerLayer(PlatformConfig config) {
+        this.config = config;
+    }
+
+    public ContainerLayer() {
+        this(PlatformConfig.defaults());
+    }
+
+    @Override
+    public String name() {
+        return "container";
+    }
+
+    // ---- views ------------------------------------------------------------------------------------
+
+    /** What this agent knows now; safe from any thread. */
+    public Snapshot snapshot() {
+        return snapshot;
+    }
+
+    public Role role() {
+        return role;
+    }
+
+    /** The container this agent follows (itself if it is the container), or {@code null}. */
+    public String containerName() {
+        return container == null ? null : container.name();
+    }
+
+    /** The LAL as this agent holds it, by name. Loop thread only. */
+    public Collection<AgentEntry> agents() {
+        return List.copyOf(lal.values());
+    }
+
+    public long term() {
+        return term;
+    }
+
+    public long lalSequence() {
+        return seq;
+    }
+
+    /** This agent's own entry (its services included). */
+    public AgentEntry selfEntry() {
+        return selfEntry;
+    }
+
+    /** Calls back on the loop whenever the role, the container or the list changes. */
+    public void addListener(Consumer<ContainerLayer> l) {
+        listeners.add(l);
+    }
+
+    /** Searches the yellow pages in this agent's copy of the LAL (no message is sent). */
+    public List<AgentEntry> search(ServiceDescription template) {
+        List<AgentEntry> out = new ArrayList<>();
+        for (AgentEntry e : lal.values()) {
+            for (ServiceDescription s : e.services()) {
+                if (s.matches(template)) {
+                    out.add(e);
+                    break;
+                }
+            }
+        }
+        return out;
+    }
+
+    // ---- life cycle -------------------------------------------------------------------------------
+
+    @Override
+    public void init(LayerContext ctx) {
+        this.ctx = ctx;
+        this.host = ctx.host();
+    }
+
+    @Override
+    public void start(LayerContext ctx) {
+        platform = host.platformName();
+        self = host.nodeName();
+        Address at = host.localAddress();
+        String uri = at == null ? "" : at.toUri(host.transport());
+        selfEntry = new AgentEntry(self, uri, host.clock().epochMillis(), List.of());
+        selfAid = selfEntry.aid();
+        amsAid = AID.local("ams", platform);
+        dfAid = AID.local("df", platform);
+        host.setRouter(this::route);
+        trace("start", "neighbours=" + host.neighbours().size());
+        if (host.neighbours().isEmpty()) {
+            becomeContainer(1, "no other agent holds a port of the range");
+        } else {
+            for (Address a : host.neighbours()) {
+                asked.put(a, Boolean.FALSE);
+            }
+            beginDiscovery();
+        }
+    }
+
+    @Override
+    public void stop(LayerContext ctx) {
+        Role was = role;
+        cancelAll();
+        if (was == Role.CONTAINER) {
+            for (AgentEntry e : lal.values()) {
+                if (!e.name().equals(self)) {
+                    sendQuietly(platformMessage(Performative.INFORM, P_MAINTENANCE, e.aid(),
+                            Lines.content("leave", Lines.params("term", term), List.of())));
+                }
+            }
+        } else if (was == Role.MEMBER && container != null && !container.name().equals(self)) {
+            sendQuietly(platformMessage(Performative.INFORM, P_MAINTENANCE, container.aid(),
+                    Lines.content("leave", Lines.params("term", term), List.of())));
+        }
+        role = Role.STOPPED;
+        host.setRouter(null);
+        publish();
+    }
+
+    private void cancelAll() {
+        discoveryTimer = cancel(discoveryTimer);
+        joinTimer = cancel(joinTimer);
+        watchTimer = cancel(watchTimer);
+        cycleTimer = cancel(cycleTimer);
+        pushTimer = cancel(pushTimer);
+    }
+
+    private long cancel(long timer) {
+        if (timer >= 0) {
+            host.cancel(timer);
+        }
+        return -1;
+    }
+
+    private long after(long ms, Runnable r) {
+        return host.schedule(host.nowNs() + ms * 1_000_000L, r);
+    }
+
+    // ---- routing ----------------------------------------------------------------------------------
+
+    private Router.Route route(AID receiver) {
+        String name = receiver.name();
+        Router.Route r = routes.get(name);
+        if (r != null) {
+            return r;
+        }
+        if (container != null && (name.equals(amsAid.name()) || name.equals(dfAid.name()))) {
+            Address a = container.transportAddress();
+            return a == null ? null : new Router.Route(a, container.aid());
+        }
+        return null;
+    }
+
+    private void rebuildRoutes() {
+        routes.clear();
+        for (AgentEntry e : lal.values()) {
+            Address a = e.transportAddress();
+            if (a != null) {
+                routes.put(e.name(), new Router.Route(a, e.aid()));
+            }
+        }
+    }
+
+    // ---- up ---------------------------------------------------------------------------------------
+
+    @Override
+    public void onUp(LayerContext ctx, Envelope env) {
+        AclMessage m = env.message();
+        boolean forService = addressedToService(m);
+        boolean platformMessage = !forService && ONTOLOGY.equals(m.getOntology());
+        if (!platformMessage && !forService) {
+            ctx.passUp(env);
+            return;
+        }
+        AID sender = m.getSender();
+        if (!platform.equals(sender.platform())) {
+            ctx.drop(env, "foreign-platform", sender.name() + " belongs to platform '" + sender.platform()
+                    + "', not to '" + platform + "'");
+            return;
+        }
+        if (role == Role.STOPPED) {
+            return;
+        }
+        try {
+            if (forService) {
+                serve(m);
+            } else {
+                onPlatformMessage(env, m);
+            }
+        } catch (IllegalArgumentException e) {
+            ctx.drop(env, "malformed-platform", e.getMessage());
+        }
+    }
+
+    private boolean addressedToService(AclMessage m) {
+        for (AID r : m.getReceivers()) {
+            if (r.name().equals(dfAid.name()) || r.name().equals(amsAid.name())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void onPlatformMessage(Envelope env, AclMessage m) {
+        Lines.Content c = Lines.parse(m.getContent());
+        AID sender = m.getSender();
+        if (host.tracer().enabled()) {
+            host.tracer().trace(host.nowNs(), self, "platform-accept", m.getPerformative().wireName() + " " + c.command()
+                    + " from " + sender.name());
+        }
+        if (m.getInReplyTo() != null) {
+            CompletableFuture<AclMessage> f = pendingRequests.remove(m.getInReplyTo());
+            if (f != null) {
+                f.complete(m);
+                return;
+            }
+        }
+        switch (c.command()) {
+            case "who-is-container" -> onQuery(m, c);
+            case "container" -> onContainerClaim(m, c);
+            case "seeking" -> onSeekingReply(m, c);
+            case "join" -> onJoin(m, c);
+            case "joined" -> onJoined(m, c);
+            case "lal" -> onLal(m, c);
+            case "lal-held" -> onLalHeld(m, c);
+            case "alive" -> onAlive(m, c);
+            case "alive-held" -> onLalHeld(m, c);
+            case "agent-info" -> onAgentInfo(m, c);
+            case "leave" -> onLeave(m, c);
+            case "lal-request" -> onLalRequest(m);
+            case "lal-copy" -> onLalCopy(c);
+            default -> throw new IllegalArgumentException("unknown platform command '" + c.command() + "'");
+        }
+    }
+
+    // ---- discovery and election ---------------------------------------------------------------
+
+    private void beginDiscovery() {
+        role = Role.SEEKING;
+        attempt = 0;
+        claim = null;
+        claimTerm = -1;
+        for (Map.Entry<Address, Boolean> e : asked.entrySet()) {
+            e.setValue(Boolean.FALSE);
+        }
+        askNeighbours();
+        publish();
+    }
+
+    private void askNeighbours() {
+        attempt++;
+        String content = Lines.content("who-is-container", Lines.params("round", round), List.of(selfEntry));
+        for (Map.Entry<Address, Boolean> e : asked.entrySet()) {
+            if (!e.getValue()) {
+                sendQuietly(platformMessage(Performative.QUERY_REF, P_DISCOVERY, anyAt(e.getKey()), content));
+            }
+        }
+        discoveryTimer = cancel(discoveryTimer);
+        discoveryTimer = after(config.discoveryTimeoutMs(), this::onDiscoveryTimeout);
+    }
+
+    private AID anyAt(Address a) {
+        return new AID(Frames.ANY_LOCAL_NAME + "@" + platform, a.toUri(host.transport()));
+    }
+
+    private void onDiscoveryTimeout() {
+        discoveryTimer = -1;
+        if (role != Role.SEEKING || joinTarget != null) {
+            return;
+        }
+        if (claim == null && attempt < config.discoveryAttempts() && asked.containsValue(Boolean.FALSE)) {
+            askNeighbours();
+            return;
+        }
+        decide();
+    }
+
+    private void onQuery(AclMessage m, Lines.Content c) {
+        AgentEntry asker = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (asker == null || !asker.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("a who-is-container query must carry its sender's entry");
+        }
+        AclMessage reply = m.createReply();
+        reply.setSender(selfAid);
+        reply.setPerformative(Performative.INFORM);
+        if (container != null && role != Role.SEEKING) {
+            reply.setContent(Lines.content("container", Lines.params("term", term), List.of(container, selfEntry)));
+        } else {
+            seekers.put(asker.name(), asker);
+            reply.setContent(Lines.content("seeking", Lines.params("round", round, "term", maxTermSeen),
+                    List.of(selfEntry)));
+        }
+        reply.clearAllReceiver();
+        reply.addReceiver(asker.aid());
+        sendQuietly(reply);
+        if (role == Role.CONTAINER) {
+            // A newcomer: it will join; nothing to do until then.
+            return;
+        }
+    }
+
+    private void markAnswered(AclMessage m) {
+        Address a = addressOf(m.getSender());
+        if (a != null && asked.containsKey(a)) {
+            asked.put(a, Boolean.TRUE);
+        }
+    }
+
+    private static Address addressOf(AID aid) {
+        for (String uri : aid.addresses()) {
+            Address a = Address.parse(uri);
+            if (a != null) {
+                return a;
+            }
+        }
+        return null;
+    }
+
+    private void onSeekingReply(AclMessage m, Lines.Content c) {
+        markAnswered(m);
+        if (c.entries().size() != 1) {
+            throw new IllegalArgumentException("a seeking reply carries exactly its sender's entry");
+        }
+        AgentEntry e = c.entries().get(0);
+        maxTermSeen = Math.max(maxTermSeen, Long.parseLong(c.params().getOrDefault("term", "0")));
+        if (role == Role.SEEKING) {
+            seekers.put(e.name(), e);
+            if (joinTarget == null && claim == null && !asked.containsValue(Boolean.FALSE)) {
+                discoveryTimer = cancel(discoveryTimer);
+                decide();
+            }
+        }
+    }
+
+    /** A "container" message: a discovery reply, an announcement, or a redirection to a better one. */
+    private void onContainerClaim(AclMessage m, Lines.Content c) {
+        markAnswered(m);
+        long t = c.longParam("term");
+        if (c.entries().isEmpty()) {
+            throw new IllegalArgumentException("a container message must carry the container's entry");
+        }
+        AgentEntry claimed = c.entries().get(0);
+        maxTermSeen = Math.max(maxTermSeen, t);
+        if (claimed.name().equals(self)) {
+            return;
+        }
+        switch (role) {
+            case SEEKING -> {
+                if (claim == null || beats(t, claimed, claimTerm, claim)) {
+                    claim = claimed;
+                    claimTerm = t;
+                }
+                if (joinTarget == null || beats(t, claimed, claimTerm, joinTarget)) {
+                    discoveryTimer = cancel(discoveryTimer);
+                    startJoin(claimed, t);
+                }
+            }
+            case MEMBER -> {
+                if (container == null || beats(t, claimed, term, container)) {
+                    startJoin(claimed, t);
+                } else if (!claimed.name().equals(container.name())) {
+                    tellBetter(claimed.aid());
+                }
+            }
+            case CONTAINER -> {
+                if (beats(t, claimed, term, selfEntry)) {
+                    yieldTo(claimed, t);
+                } else {
+                    tellBetter(claimed.aid());
+                }
+            }
+            default -> { }
+        }
+    }
+
+    /** True if (t1, c1) is a better container claim than (t2, c2): a later term, else the elder. */
+    static boolean beats(long t1, AgentEntry c1, long t2, AgentEntry c2) {
+        if (c2 == null) {
+            return true;
+        }
+        if (t1 != t2) {
+            return t1 > t2;
+        }
+        return AgentEntry.SENIORITY.compare(c1, c2) < 0;
+    }
+
+    private void tellBetter(AID to) {
+        if (container == null) {
+            return;
+        }
+        sendQuietly(platformMessage(Performative.INFORM, P_DISCOVERY, to,
+                Lines.content("container", Lines.params("term", term), List.of(container, selfEntry))));
+    }
+
+    private void decide() {
+        if (claim != null) {
+            startJoin(claim, claimTerm);
+            return;
+        }
+        List<AgentEntry> candidates = new ArrayList<>(seekers.values());
+        candidates.add(selfEntry);
+        candidates.sort(round < 3 ? AgentEntry.SENIORITY : AgentEntry.BY_PORT);
+        if (candidates.get(0).name().equals(self)) {
+            becomeContainer(maxTermSeen + 1, seekers.isEmpty() ? "no potential agent answered"
+                    : "the " + (round < 3 ? "oldest" : "lowest port") + " of " + candidates.size() + " seeking agents");
+            return;
+        }
+        // Excluded: wait for the winner to announce itself, then ask again.
+        trace("excluded", "waiting for " + candidates.get(0).name() + " round=" + round);
+        discoveryTimer = after(config.electionTimeoutMs(), () -> {
+            discoveryTimer = -1;
+            if (role == Role.SEEKING && joinTarget == null) {
+                round++;
+                seekers.clear();
+                beginDiscovery();
+            }
+        });
+    }
+
+    private void becomeContainer(long newTerm, String why) {
+        discoveryTimer = cancel(discoveryTimer);
+        joinTimer = cancel(joinTimer);
+        watchTimer = cancel(watchTimer);
+        joinTarget = null;
+        role = Role.CONTAINER;
+        term = newTerm;
+        maxTermSeen = Math.max(maxTermSeen, term);
+        seq = 1;
+        container = selfEntry;
+        for (String s : suspects) {
+            lal.remove(s);
+        }
+        suspects.clear();
+        failoverRounds = 0;
+        lal.put(self, selfEntry);
+        long now = host.nowNs();
+        lastHeard.clear();
+        heldSeq.clear();
+        for (String n : lal.keySet()) {
+            lastHeard.put(n, now);
+        }
+        rebuildRoutes();
+        trace("container", "term=" + term + " agents=" + lal.size() + ": " + why);
+        // Announce to those who wait, and ask every listed agent for its information (rebuild).
+        for (AgentEntry s : seekers.values()) {
+            sendQuietly(platformMessage(Performative.INFORM, P_DISCOVERY, s.aid(),
+                    Lines.content("container", Lines.params("term", term), List.of(selfEntry))));
+        }
+        seekers.clear();
+        for (AgentEntry e : lal.values()) {
+            if (!e.name().equals(self)) {
+                sendQuietly(platformMessage(Performative.REQUEST, P_LAL, e.aid(),
+                        Lines.content("agent-info", Lines.params("term", term), List.of(selfEntry))));
+            }
+        }
+        if (lal.size() > 1) {
+            schedulePush();
+        }
+        periodMs = config.periodMs(lal.size());
+        timeoutMs = config.timeoutMs(lal.size());
+        cycleTimer = cancel(cycleTimer);
+        cycleTimer = after(periodMs, this::cycle);
+        publish();
+    }
+
+    private void yieldTo(AgentEntry better, long t) {
+        trace("yield", "to " + better.name() + " term=" + t);
+        cycleTimer = cancel(cycleTimer);
+        pushTimer = cancel(pushTimer);
+        String content = Lines.content("container", Lines.params("term", t), List.of(better, selfEntry));
+        for (AgentEntry e : lal.values()) {
+            if (!e.name().equals(self) && !e.name().equals(better.name())) {
+                sendQuietly(platformMessage(Performative.INFORM, P_DISCOVERY, e.aid(), content));
+            }
+        }
+        role = Role.MEMBER;
+        startJoin(better, t);
+    }
+
+    // ---- join -----------------------------------------------------------------------------------
+
+    private void startJoin(AgentEntry target, long t) {
+        joinTarget = target;
+        claimTerm = Math.max(claimTerm, t);
+        joinFailures = 0;
+        sendJoin();
+    }
+
+    private void sendJoin() {
+        joinTimer = cancel(joinTimer);
+        sendQuietly(platformMessage(Performative.INFORM_REF, P_LAL, joinTarget.aid(),
+                Lines.content("join", Lines.params("term", claimTerm), List.of(selfEntry))));
+        joinTimer = after(config.joinRetryMs(), this::onJoinTimeout);
+    }
+
+    private void onJoinTimeout() {
+        joinTimer = -1;
+        if (joinTarget == null) {
+            return;
+        }
+        if (++joinFailures < config.joinAttempts()) {
+            sendJoin();
+            return;
+        }
+        // The container does not answer: ask a random known agent for the last valid LAL, then
+        // take part in the next election with it.
+        trace("join-failed", joinTarget.name() + " did not confirm " + joinFailures + " joins");
+        suspects.add(joinTarget.name());
+        AgentEntry failed = joinTarget;
+        joinTarget = null;
+        List<AID> known = new ArrayList<>();
+        for (AgentEntry e : seekers.values()) {
+            known.add(e.aid());
+        }
+        for (AgentEntry e : lal.values()) {
+            if (!e.name().equals(self) && !e.name().equals(failed.name())) {
+                known.add(e.aid());
+            }
+        }
+        if (known.isEmpty()) {
+            for (Address a : asked.keySet()) {
+                if (!a.equals(failed.transportAddress())) {
+                    known.add(anyAt(a));
+                }
+            }
+        }
+        if (!known.isEmpty()) {
+            AID pick = known.get(host.random().nextInt(known.size()));
+            sendQuietly(platformMessage(Performative.REQUEST, P_LAL, pick,
+                    Lines.content("lal-request", Lines.params("term", term), List.of(selfEntry))));
+        }
+        role = Role.MEMBER;
+        container = failed;
+        term = Math.max(term, claimTerm);
+        lal.put(self, selfEntry);
+        lal.put(failed.name(), failed);
+        rebuildRoutes();
+        timeoutMs = Math.max(timeoutMs, config.timeoutMs(lal.size()));
+        failover("the container " + failed.name() + " did not answer " + joinFailures + " joins");
+    }
+
+    private void onJoin(AclMessage m, Lines.Content c) {
+        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (e == null || !e.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("a join must carry its sender's entry");
+        }
+        if (role != Role.CONTAINER) {
+            if (container != null && role == Role.MEMBER) {
+                sendQuietly(platformMessage(Performative.INFORM, P_DISCOVERY, e.aid(),
+                        Lines.content("container", Lines.params("term", term), List.of(container, selfEntry))));
+            }
+            return;
+        }
+        AgentEntry old = lal.put(e.name(), keepServices(old(e.name()), e));
+        lastHeard.put(e.name(), host.nowNs());
+        if (old == null || !old.equals(lal.get(e.name()))) {
+            seq++;
+            rebuildRoutes();
+            schedulePush();
+            trace("registered", e.name() + " agents=" + lal.size());
+        }
+        periodMs = config.periodMs(lal.size());
+        timeoutMs = config.timeoutMs(lal.size());
+        AclMessage reply = platformReply(m, Performative.CONFIRM,
+                Lines.content("joined", Lines.params("term", term, "period", periodMs, "timeout", timeoutMs), List.of(selfEntry)));
+        sendQuietly(reply);
+        publish();
+    }
+
+    private AgentEntry old(String name) {
+        return lal.get(name);
+    }
+
+    /** A rejoining agent that lost its own copy keeps the services the list holds for it. */
+    private static AgentEntry keepServices(AgentEntry known, AgentEntry joining) {
+        if (known != null && joining.services().isEmpty() && !known.services().isEmpty()
+                && known.address().equals(joining.address()) && known.startMs() == joining.startMs()) {
+            return joining.withServices(known.services());
+        }
+        return joining;
+    }
+
+    private void onJoined(AclMessage m, Lines.Content c) {
+        long t = c.longParam("term");
+        AgentEntry by = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (by == null || !by.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("a joined confirmation must carry the container's entry");
+        }
+        if (joinTarget == null || !joinTarget.name().equals(by.name())) {
+            return; // an old confirmation
+        }
+        joinTimer = cancel(joinTimer);
+        discoveryTimer = cancel(discoveryTimer);
+        joinTarget = null;
+        becomeMember(by, t, c.longParam("period"), c.longParam("timeout"));
+    }
+
+    private void becomeMember(AgentEntry by, long t, long period, long timeout) {
+        boolean changed = role != Role.MEMBER || container == null || !container.name().equals(by.name()) || term != t;
+        cycleTimer = cancel(cycleTimer);
+        pushTimer = cancel(pushTimer);
+        role = Role.MEMBER;
+        if (container == null || !container.name().equals(by.name()) || t != term) {
+            seq = 0; // a new container's list replaces ours whatever its sequence
+        }
+        container = by;
+        term = t;
+        maxTermSeen = Math.max(maxTermSeen, t);
+        periodMs = period;
+        timeoutMs = timeout;
+        suspects.clear();
+        failoverRounds = 0;
+        seekers.clear();
+        if (!lal.containsKey(by.name())) {
+            lal.put(by.name(), by);
+            rebuildRoutes();
+        }
+        resetWatch();
+        if (changed) {
+            trace("member", "of " + by.name() + " term=" + t);
+        }
+        publish();
+    }
+
+    /** A page of the last valid LAL a known agent held, asked for after failed joins. */
+    private void onLalCopy(Lines.Content c) {
+        if (role == Role.CONTAINER) {
+            return;
+        }
+        boolean added = false;
+        for (AgentEntry e : c.entries()) {
+            if (!lal.containsKey(e.name()) && !suspects.contains(e.name())) {
+                lal.put(e.name(), e);
+                added = true;
+            }
+        }
+        if (added) {
+            rebuildRoutes();
+            publish();
+        }
+    }
+
+    // ---- LAL distribution -----------------------------------------------------------------------
+
+    private void schedulePush() {
+        if (pushTimer < 0) {
+            pushTimer = after(config.pushDelayMs(), () -> {
+                pushTimer = -1;
+                pushAll();
+            });
+        }
+    }
+
+    private List<String> lalPages() {
+        List<String> out = new ArrayList<>();
+        StringBuilder b = new StringBuilder();
+        for (AgentEntry e : lal.values()) {
+            StringBuilder line = new StringBuilder(80);
+            Lines.appendEntry(line, e);
+            if (b.length() > 0 && b.length() + line.length() + 1 > config.maxContentBytes()) {
+                out.add(b.toString());
+                b.setLength(0);
+            }
+            if (b.length() > 0) {
+                b.append('\n');
+            }
+            b.append(line);
+        }
+        out.add(b.toString());
+        return out;
+    }
+
+    private void pushAll() {
+        if (role != Role.CONTAINER) {
+            return;
+        }
+        List<String> p = lalPages();
+        for (AgentEntry e : lal.values()) {
+            if (!e.name().equals(self)) {
+                pushTo(e.aid(), p);
+            }
+        }
+        trace("distribute", "term=" + term + " seq=" + seq + " agents=" + lal.size() + " pages=" + p.size());
+        publish();
+    }
+
+    private void pushTo(AID to, List<String> p) {
+        for (int i = 0; i < p.size(); i++) {
+            String head = Lines.content("lal", Lines.params("term", term, "seq", seq, "page", i, "pages", p.size(),
+                    "period", periodMs, "timeout", timeoutMs), List.of());
+            sendQuietly(platformMessage(Performative.INFORM_REF, P_LAL, to, head + "\n" + p.get(i)));
+        }
+    }
+
+    private void onLal(AclMessage m, Lines.Content c) {
+        long t = c.longParam("term");
+        long s = c.longParam("seq");
+        int page = (int) c.longParam("page");
+        int n = (int) c.longParam("pages");
+        if (n < 1 || n > 10_000 || page < 0 || page >= n) {
+            throw new IllegalArgumentException("a bad LAL page " + page + " of " + n);
+        }
+        String from = m.getSender().name();
+        AgentEntry by = null;
+        for (AgentEntry e : c.entries()) {
+            if (e.name().equals(from)) {
+                by = e;
+            }
+        }
+        if (by == null && n == 1) {
+            throw new IllegalArgumentException("a LAL must list its container");
+        }
+        AgentEntry claimed = by != null ? by : lal.get(from);
+        if (claimed == null) {
+            claimed = new AgentEntry(from, m.getSender().addresses().isEmpty() ? "" : m.getSender().addresses().get(0), Long.MAX_VALUE, List.of());
+        }
+        if (role == Role.CONTAINER) {
+            if (beats(t, claimed, term, selfEntry)) {
+                yieldTo(claimed, t);
+            } else if (!from.equals(self)) {
+                tellBetter(m.getSender());
+            }
+            return;
+        }
+        boolean fromMine = container != null && container.name().equals(from) && term == t;
+        if (!fromMine) {
+            if (container != null && !beats(t, claimed, term, container) && !suspects.contains(container.name())) {
+                tellBetter(m.getSender());
+                return;
+            }
+        } else if (s <= seq) {
+            // Already held: confirm again (our confirmation may have been lost).
+            sendQuietly(platformMessage(Performative.CONFIRM, P_LAL, m.getSender(),
+                    Lines.content("lal-held", Lines.params("term", term, "seq", seq), List.of())));
+            resetWatch();
+            return;
+        }
+        String key = t + "/" + from + "/" + s;
+        if (!key.equals(pagesKey)) {
+            pages.clear();
+            pagesKey = key;
+        }
+        String text = m.getContent();
+        int nl = text.indexOf('\n');
+        String[] got = pages.computeIfAbsent(key, k -> new String[n]);
+        if (got.length != n) {
+            throw new IllegalArgumentException("LAL pages disagree on their count");
+        }
+        got[page] = nl < 0 ? "" : text.substring(nl + 1);
+        for (String g : got) {
+            if (g == null) {
+                return;
+            }
+        }
+        List<AgentEntry> all = new ArrayList<>();
+        for (String g : got) {
+            if (!g.isEmpty()) {
+                for (String line : g.split("\n", -1)) {
+                    all.add(Lines.parseEntry(line));
+                }
+            }
+        }
+        pages.clear();
+        pagesKey = null;
+        AgentEntry containerEntry = null;
+        for (AgentEntry e : all) {
+            if (e.name().equals(from)) {
+                containerEntry = e;
+            }
+        }
+        if (containerEntry == null) {
+            throw new IllegalArgumentException("the LAL from " + from + " does not list its container");
+        }
+        joinTarget = null;
+        joinTimer = cancel(joinTimer);
+        discoveryTimer = cancel(discoveryTimer);
+        becomeMember(containerEntry, t, c.longParam("period"), c.longParam("timeout"));
+        lal.clear();
+        for (AgentEntry e : all) {
+            lal.put(e.name(), e);
+        }
+        seq = s;
+        rebuildRoutes();
+        AgentEntry mine = lal.get(self);
+        if (mine == null) {
+            // Removed (we were silent too long): join again.
+            trace("rejoin", "not in the list of " + from);
+            startJoin(containerEntry, t);
+        } else {
+            selfEntry = mine;
+        }
+        sendQuietly(platformMessage(Performative.CONFIRM, P_LAL, m.getSender(),
+                Lines.content("lal-held", Lines.params("term", term, "seq", seq), List.of())));
+        publish();
+    }
+
+    /** A member's confirmation of the version it holds (after a LAL or an alive). */
+    private void onLalHeld(AclMessage m, Lines.Content c) {
+        if (role != Role.CONTAINER) {
+            return;
+        }
+        String from = m.getSender().name();
+        long t = c.longParam("term");
+        long s = c.longParam("seq");
+        if (!lal.containsKey(from)) {
+            // Removed while silent: its list is outdated; our list tells it to join again.
+            pushTo(m.getSender(), lalPages());
+            return;
+        }
+        lastHeard.put(from, host.nowNs());
+        heldSeq.put(from, s);
+        if (t != term || s < seq) {
+            if (pushTimer < 0) {
+                pushTo(lal.get(from).aid(), lalPages());
+            }
+        }
+    }
+
+    private void onLalRequest(AclMessage m) {
+        if (lal.isEmpty()) {
+            return;
+        }
+        List<String> p = lalPages();
+        // The last valid list this agent holds, sent as its container sent it.
+        for (int i = 0; i < p.size(); i++) {
+            String head = Lines.content("lal-copy", Lines.params("term", term, "seq", seq, "page", i, "pages", p.size(),
+                    "container", container == null ? "" : container.name()), List.of());
+            AclMessage r = platformReply(m, Performative.INFORM_REF, head + "\n" + p.get(i));
+            sendQuietly(r);
+        }
+    }
+
+    // ---- maintenance ----------------------------------------------------------------------------
+
+    private void cycle() {
+        cycleTimer = -1;
+        if (role != Role.CONTAINER) {
+            return;
+        }
+        cycles++;
+        long now = host.nowNs();
+        boolean changed = false;
+        List<String> dead = new ArrayList<>();
+        for (String n : lal.keySet()) {
+            if (n.equals(self)) {
+                continue;
+            }
+            Long heard = lastHeard.get(n);
+            if (heard == null) {
+                lastHeard.put(n, now);
+            } else if (now - heard > timeoutMs * 1_000_000L) {
+                dead.add(n);
+            }
+        }
+        for (String n : dead) {
+            lal.remove(n);
+            lastHeard.remove(n);
+            heldSeq.remove(n);
+            trace("removed", n + " silent for more than " + timeoutMs + " ms");
+            changed = true;
+        }
+        if (changed) {
+            seq++;
+            rebuildRoutes();
+            pushAll();
+        }
+        periodMs = config.periodMs(lal.size());
+        timeoutMs = config.timeoutMs(lal.size());
+        String alive = Lines.content("alive", Lines.params("term", term, "seq", seq, "period", periodMs,
+                "timeout", timeoutMs), List.of(selfEntry));
+        for (AgentEntry e : lal.values()) {
+            if (!e.name().equals(self)) {
+                sendQuietly(platformMessage(Performative.INFORM, P_MAINTENANCE, e.aid(), alive));
+            }
+        }
+        // Keep asking the potential agents of the range that are not listed: a container elected
+        // while one of them was slow to answer finds the other container this way.
+        if (cycles % 4 == 1) {
+            String q = Lines.content("who-is-container", Lines.params("round", round), List.of(selfEntry));
+            Set<Address> listed = new HashSet<>();
+            for (AgentEntry e : lal.values()) {
+                listed.add(e.transportAddress());
+            }
+            for (Address a : asked.keySet()) {
+                if (!listed.contains(a)) {
+                    sendQuietly(platformMessage(Performative.QUERY_REF, P_DISCOVERY, anyAt(a), q));
+                }
+            }
+        }
+        cycleTimer = after(periodMs, this::cycle);
+        if (changed) {
+            publish();
+        }
+    }
+
+    private void onAlive(AclMessage m, Lines.Content c) {
+        long t = c.longParam("term");
+        AgentEntry by = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (by == null || !by.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("an alive message must carry the container's entry");
+        }
+        if (role == Role.CONTAINER) {
+            if (beats(t, by, term, selfEntry)) {
+                yieldTo(by, t);
+            } else {
+                tellBetter(m.getSender());
+            }
+            return;
+        }
+        boolean mine = container != null && container.name().equals(by.name()) && term == t;
+        if (!mine) {
+            if (container == null || beats(t, by, term, container) || suspects.contains(container.name())) {
+                if (joinTarget == null || !joinTarget.name().equals(by.name())) {
+                    startJoin(by, t);
+                }
+            } else {
+                tellBetter(m.getSender());
+            }
+            return;
+        }
+        periodMs = c.longParam("period");
+        timeoutMs = c.longParam("timeout");
+        if (role == Role.SEEKING && joinTarget == null) {
+            becomeMember(by, t, periodMs, timeoutMs);
+        }
+        resetWatch();
+        sendQuietly(platformMessage(Performative.CONFIRM, P_MAINTENANCE, m.getSender(),
+                Lines.content("alive-held", Lines.params("term", term, "seq", seq), List.of())));
+    }
+
+    private void resetWatch() {
+        watchTimer = cancel(watchTimer);
+        long t = timeoutMs > 0 ? timeoutMs : config.timeoutMs(Math.max(1, lal.size()));
+        watchTimer = after(t, () -> {
+            watchTimer = -1;
+            if (role == Role.MEMBER && container != null) {
+                failover("no word from the container " + container.name() + " for " + t + " ms");
+            }
+        });
+    }
+
+    /** The container is gone: the eldest agent left in the list takes over. */
+    private void failover(String why) {
+        if (container != null) {
+            suspects.add(container.name());
+        }
+        failoverRounds++;
+        List<AgentEntry> candidates = new ArrayList<>();
+        for (AgentEntry e : lal.values()) {
+            if (!suspects.contains(e.name())) {
+                candidates.add(e);
+            }
+        }
+        if (!candidates.contains(selfEntry) && !suspects.contains(self)) {
+            candidates.add(selfEntry);
+        }
+        candidates.sort(failoverRounds <= 3 ? AgentEntry.SENIORITY : AgentEntry.BY_PORT);
+        AgentEntry next = candidates.isEmpty() ? selfEntry : candidates.get(0);
+        trace("failover", why + "; next container: " + next.name());
+        if (next.name().equals(self)) {
+            becomeContainer(Math.max(term, maxTermSeen) + 1, why);
+            return;
+        }
+        // Wait for the successor; if it stays silent too, it is suspected in turn.
+        container = next;
+        publish();
+        resetWatch();
+    }
+
+    private void onAgentInfo(AclMessage m, Lines.Content c) {
+        if (m.getPerformative() == Performative.REQUEST) {
+            long t = c.longParam("term");
+            AgentEntry by = c.entries().isEmpty() ? null : c.entries().get(0);
+            if (by == null || !by.name().equals(m.getSender().name())) {
+                throw new IllegalArgumentException("an agent-info request must carry the container's entry");
+            }
+            if (role == Role.CONTAINER ? beats(t, by, term, selfEntry)
+                    : container == null || container.name().equals(by.name()) || beats(t, by, term, container)
+                    || suspects.contains(container.name())) {
+                if (role == Role.CONTAINER) {
+                    yieldTo(by, t);
+                    return;
+                }
+                joinTarget = null;
+                joinTimer = cancel(joinTimer);
+                becomeMember(by, t, Math.max(periodMs, config.periodMs(lal.size())), Math.max(timeoutMs, config.timeoutMs(lal.size())));
+                sendQuietly(platformReply(m, Performative.INFORM,
+                        Lines.content("agent-info", Lines.params("term", t), List.of(selfEntry))));
+            } else {
+                tellBetter(m.getSender());
+            }
+            return;
+        }
+        if (role != Role.CONTAINER || c.entries().size() != 1 || !c.entries().get(0).name().equals(m.getSender().name())) {
+            return;
+        }
+        AgentEntry e = c.entries().get(0);
+        lastHeard.put(e.name(), host.nowNs());
+        AgentEntry was = lal.put(e.name(), e);
+        if (!e.equals(was)) {
+            seq++;
+            rebuildRoutes();
+            schedulePush();
+            publish();
+        }
+    }
+
+    private void onLeave(AclMessage m, Lines.Content c) {
+        String from = m.getSender().name();
+        if (role == Role.CONTAINER) {
+            if (lal.remove(from) != null) {
+                lastHeard.remove(from);
+                heldSeq.remove(from);
+                seq++;
+                rebuildRoutes();
+                trace("removed", from + " left");
+                schedulePush();
+                publish();
+            }
+        } else if (container != null && container.name().equals(from)) {
+            lal.remove(from);
+            rebuildRoutes();
+            failover(from + " left");
+        }
+    }
+
+    // ---- white and yellow pages ---------------------------------------------------------------
+
+    private void serve(AclMessage m) {
+        Performative act = m.getPerformative();
+        if (act != Performative.REQUEST && act != Performative.QUERY_REF) {
+            if (act == Performative.CFP || act == Performative.QUERY_IF || act == Performative.SUBSCRIBE
+                    || act == Performative.PROPOSE) {
+                sendQuietly(serviceReply(m, Performative.NOT_UNDERSTOOD, "(unsupported-act " + act.wireName() + ")"));
+            }
+            return;
+        }
+        if (role != Role.CONTAINER) {
+            sendQuietly(serviceReply(m, Performative.FAILURE, "(not-container"
+                    + (container == null ? "" : " " + Lines.escape(container.name())) + ")"));
+            return;
+        }
+        Lines.Content c;
+        try {
+            c = Lines.parse(m.getContent());
+        } catch (IllegalArgumentException e) {
+            sendQuietly(serviceReply(m, Performative.NOT_UNDERSTOOD, "(malformed \"" + e.getMessage().replace("\"", "'") + "\")"));
+            return;
+        }
+        String from = m.getSender().name();
+        AgentEntry entry = lal.get(from);
+        switch (c.command()) {
+            case "register", "modify" -> {
+                if (entry == null) {
+                    sendQuietly(serviceReply(m, Performative.REFUSE, "(not-registered " + Lines.escape(from) + ")"));
+                    return;
+                }
+                List<ServiceDescription> s = Lines.parseServices(c.params().getOrDefault("services", "-"));
+                if (c.command().equals("register") && !entry.services().isEmpty()) {
+                    List<ServiceDescription> merged = new ArrayList<>(entry.services());
+                    for (ServiceDescription d : s) {
+                        if (!merged.contains(d)) {
+                            merged.add(d);
+                        }
+                    }
+                    s = merged;
+                }
+                updateServices(entry, s);
+                sendQuietly(serviceReply(m, Performative.INFORM, "done"));
+            }
+            case "deregister" -> {
+                if (entry != null) {
+                    updateServices(entry, List.of());
+                }
+                sendQuietly(serviceReply(m, Performative.INFORM, "done"));
+            }
+            case "search" -> {
+                ServiceDescription template = Lines.parseService(c.params().getOrDefault("template", "*"));
+                List<AgentEntry> found = search(template);
+                sendQuietly(serviceReply(m, Performative.INFORM, Lines.content("result",
+                        Lines.params("count", found.size()), found)));
+            }
+            case "agents" -> {
+                String name = c.params().get("name");
+                List<AgentEntry> found = new ArrayList<>();
+                for (AgentEntry e : lal.values()) {
+                    if (name == null || e.name().equalsIgnoreCase(name)) {
+                        found.add(e);
+                    }
+                }
+                sendQuietly(serviceReply(m, Performative.INFORM, Lines.content("result",
+                        Lines.params("count", found.size(), "container", self, "term", term), found)));
+            }
+            default -> sendQuietly(serviceReply(m, Performative.NOT_UNDERSTOOD,
+                    "(unknown-action " + Lines.escape(c.command()) + ")"));
+        }
+    }
+
+    private void updateServices(AgentEntry entry, List<ServiceDescription> s) {
+        AgentEntry updated = entry.withServices(s);
+        if (!updated.equals(entry)) {
+            lal.put(entry.name(), updated);
+            if (entry.name().equals(self)) {
+                selfEntry = updated;
+            }
+            seq++;
+            rebuildRoutes();
+            schedulePush();
+            publish();
+        }
+    }
+
+    private AclMessage serviceReply(AclMessage m, Performative p, String content) {
+        AclMessage r = m.createReply();
+        r.setPerformative(p);
+        // Sent as the container itself: the frame is authenticated as the container's, and the
+        // receiver's identification check holds the sender's name to that.
+        r.setSender(selfAid);
+        r.setContent(content);
+        r.setLanguage(LANGUAGE);
+        return r;
+    }
+
+    /**
+     * Sends a request to this platform's DF or AMS for the Java API; the future completes with the
+     * reply. Loop thread only.
+     */
+    CompletableFuture<AclMessage> request(boolean df, Performative p, String content) {
+        CompletableFuture<AclMessage> f = new CompletableFuture<>();
+        if (role == Role.STOPPED) {
+            f.completeExceptionally(new IllegalStateException("the agent has stopped"));
+            return f;
+        }
+        AclMessage m = platformMessage(p, P_SERVICES, df ? dfAid : amsAid, content);
+        String rw = self + "-p" + (++requestCounter);
+        m.setReplyWith(rw);
+        pendingRequests.put(rw, f);
+        after(Math.max(1_000, 4 * Math.max(timeoutMs, config.timeoutMs(lal.size()))), () -> {
+            CompletableFuture<AclMessage> late = pendingRequests.remove(rw);
+            if (late != null) {
+                late.completeExceptionally(new java.util.concurrent.TimeoutException("the "
+                        + (df ? "DF" : "AMS") + " did not answer; the container may be changing, try again"));
+            }
+        });
+        try {
+            host.send(m);
+        } catch (SendRejectedException e) {
+            pendingRequests.remove(rw);
+            f.completeExceptionally(e);
+        }
+        return f;
+    }
+
+    // ---- helpers --------------------------------------------------------------------------------
+
+    private AclMessage platformMessage(Performative p, String protocol, AID to, String content) {
+        AclMessage m = new AclMessage(p);
+        m.setSender(selfAid);
+        m.addReceiver(to);
+        m.setOntology(ONTOLOGY);
+        m.setLanguage(LANGUAGE);
+        m.setProtocol(protocol);
+        m.setContent(content);
+        return m;
+    }
+
+    private AclMessage platformReply(AclMessage to, Performative p, String content) {
+        AclMessage r = to.createReply();
+        r.setPerformative(p);
+        r.setSender(selfAid);
+        r.setOntology(ONTOLOGY);
+        r.setLanguage(LANGUAGE);
+        r.setContent(content);
+        return r;
+    }
+
+    private void sendQuietly(AclMessage m) {
+        try {
+            host.send(m);
+        } catch (SendRejectedException e) {
+            host.drops().record(self, e.reason(), e.getMessage());
+        } catch (RuntimeException e) {
+            host.drops().record(self, "platform-send", e.toString());
+        }
+    }
+
+    private void trace(String event, String detail) {
+        Tracer t = host.tracer();
+        if (t.enabled()) {
+            t.trace(host.nowNs(), self, "platform-" + event, detail);
+        }
+    }
+
+    private void publish() {
+        snapshot = new Snapshot(role, term, seq, container == null ? null : container.name(), List.copyOf(lal.values()));
+        for (Consumer<ContainerLayer> l : listeners) {
+            l.accept(this);
+        }
+    }
+}

@@ -1,0 +1,187 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.AgentOptions;
+import io.concord.core.agent.AgentRuntime;
+import io.concord.core.agent.PortRange;
+import io.concord.core.layer.Layer;
+import io.concord.core.net.Transport;
+import io.concord.layers.Profile;
+import io.concord.layers.SafetyStack;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.function.Supplier;
+
+/**
+ * A platform with no main container, embedded in a Java program. Each agent started here gets
+ * the container layer on top of its safety stack and a port of the range by port-binding
+ * discovery; the agents of this JVM, and of any other JVM on the host that uses the same platform
+ * name, port range and key, find each other and elect a container by themselves.
+ *
+ * <pre>{@code
+ * try (Platform p = Platform.builder().name("shop").build()) {
+ *     p.startAgent("seller1", new Seller(), 42);
+ *     p.startAgent("buyer", new Buyer());
+ *     ...
+ * }
+ * }</pre>
+ */
+public final class Platform implements AutoCloseable {
+    private final AgentRuntime runtime;
+    private final boolean ownsRuntime;
+    private final PortRange ports;
+    private final Supplier<List<Layer>> stack;
+    private final Transport transport;
+
+    private Platform(Builder b, AgentRuntime runtime, boolean owns) {
+        this.runtime = runtime;
+        this.ownsRuntime = owns;
+        this.ports = b.ports;
+        this.transport = b.transport;
+        Supplier<List<Layer>> safety = b.safety != null ? b.safety
+                : SafetyStack.builder().profile(b.profile).transport(b.transport).build();
+        PlatformConfig config = b.config;
+        this.stack = () -> {
+            List<Layer> l = new ArrayList<>();
+            l.add(new ContainerLayer(config));
+            l.addAll(safety.get());
+            return l;
+        };
+    }
+
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /** Settings, checked at {@link #build()}. */
+    public static final class Builder {
+        private String name = "concord";
+        private String host = "127.0.0.1";
+        private PortRange ports = PortRange.defaults();
+        private Profile profile = Profile.CLASS_7;
+        private Transport transport = Transport.UDP;
+        private PlatformConfig config = PlatformConfig.defaults();
+        private Supplier<List<Layer>> safety;
+        private AgentRuntime runtime;
+
+        private Builder() {
+        }
+
+        /** The platform name, the part after {@code @}; agents of one platform must agree on it. */
+        public Builder name(String n) {
+            this.name = Objects.requireNonNull(n, "name");
+            return this;
+        }
+
+        /** The address agents bind to; 127.0.0.1 by default. */
+        public Builder host(String h) {
+            this.host = Objects.requireNonNull(h, "host");
+            return this;
+        }
+
+        /** The port range of the port-binding discovery; 7001-7200 by default. */
+        public Builder ports(PortRange r) {
+            this.ports = Objects.requireNonNull(r, "ports");
+            return this;
+        }
+
+        /** The safety profile; class 7 by default. */
+        public Builder profile(Profile p) {
+            this.profile = Objects.requireNonNull(p, "profile");
+            return this;
+        }
+
+        public Builder transport(Transport t) {
+            this.transport = Objects.requireNonNull(t, "transport");
+            return this;
+        }
+
+        /** The container layer's timing. */
+        public Builder config(PlatformConfig c) {
+            this.config = Objects.requireNonNull(c, "config");
+            return this;
+        }
+
+        /** The safety layers under the container layer, instead of the profile's defaults. */
+        public Builder safetyStack(Supplier<List<Layer>> s) {
+            this.safety = Objects.requireNonNull(s, "safetyStack");
+            return this;
+        }
+
+        /**
+         * Runs the platform's agents on a runtime the caller made and drives (a simulation, or a
+         * runtime shared with other work); its platform name is used.
+         */
+        public Builder runtime(AgentRuntime rt) {
+            this.runtime = Objects.requireNonNull(rt, "runtime");
+            return this;
+        }
+
+        /**
+         * @throws IllegalArgumentException naming the bad setting
+         */
+        public Platform build() {
+            if (runtime != null) {
+                return new Platform(this, runtime, false);
+            }
+            AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).transport(transport).build();
+            Platform p = new Platform(this, rt, true);
+            rt.start();
+            return p;
+        }
+    }
+
+    /**
+     * Starts an agent: it binds the first free port of the range, discovers the others and joins
+     * the platform. Thread-safe.
+     *
+     * @throws IllegalStateException if the port range is full (the message says how to widen it)
+     */
+    public AID startAgent(String localName, Agent agent, Object... args) {
+        AgentOptions o = AgentOptions.defaults().withPortRange(ports).withStack(stack).withTransport(transport);
+        return runtime.startAgentWith(localName, agent, o, args);
+    }
+
+    /** The runtime that runs this platform's agents here. */
+    public AgentRuntime runtime() {
+        return runtime;
+    }
+
+    public String name() {
+        return runtime.platformName();
+    }
+
+    public PortRange ports() {
+        return ports;
+    }
+
+    /** The container layer of an agent of this JVM, or {@code null} if it has none. Loop thread. */
+    public static ContainerLayer containerLayer(AgentRuntime rt, AID aid) {
+        for (Layer l : rt.layers(aid)) {
+            if (l instanceof ContainerLayer c) {
+                return c;
+            }
+        }
+        return null;
+    }
+
+    /** The platform services of an agent: white and yellow pages, its role. */
+    public static PlatformServices of(Agent agent) {
+        ContainerLayer c = containerLayer(agent.runtime(), agent.getAID());
+        if (c == null) {
+            throw new IllegalStateException(agent.getName() + " was not started on a Platform (it has no container layer)");
+        }
+        return new PlatformServices(agent, c);
+    }
+
+    /** Stops every agent of this JVM (they leave the platform cleanly) and the runtime if it made it. */
+    @Override
+    public void close() {
+        if (ownsRuntime) {
+            runtime.close();
+        }
+    }
+}

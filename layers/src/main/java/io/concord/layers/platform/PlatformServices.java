@@ -1,0 +1,94 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+/**
+ * The white and yellow pages for an agent, in plain Java. Reads come from the agent's own copy of
+ * the LAL, which the container keeps equal on every agent: no message is sent. Changes go to the
+ * platform's DF, wherever the container is; their futures complete when the DF has taken them.
+ * Call from the agent's behaviours (its loop); the futures complete there too.
+ */
+public final class PlatformServices {
+    private final Agent agent;
+    private final ContainerLayer layer;
+
+    PlatformServices(Agent agent, ContainerLayer layer) {
+        this.agent = agent;
+        this.layer = layer;
+    }
+
+    /** True if this agent is its host's container now. */
+    public boolean isContainer() {
+        return layer.role() == ContainerLayer.Role.CONTAINER;
+    }
+
+    /** The container's name, or {@code null} while none is known. */
+    public String container() {
+        return layer.containerName();
+    }
+
+    /** The white pages: every agent of the platform on this host, as this agent knows them. */
+    public List<AgentEntry> agents() {
+        return List.copyOf(layer.agents());
+    }
+
+    /** The agents whose services match the template (yellow pages, this agent's copy). */
+    public List<AgentEntry> search(ServiceDescription template) {
+        return layer.search(template);
+    }
+
+    /** Registers services of this agent with the DF (added to those it has). */
+    public CompletableFuture<Void> register(ServiceDescription... services) {
+        StringBuilder b = new StringBuilder();
+        Lines.appendServices(b, List.of(services));
+        return done(layer.request(true, Performative.REQUEST,
+                Lines.content("register", Lines.params("services", b.toString()), List.of())));
+    }
+
+    /** Replaces this agent's services with these. */
+    public CompletableFuture<Void> modify(ServiceDescription... services) {
+        StringBuilder b = new StringBuilder();
+        Lines.appendServices(b, List.of(services));
+        return done(layer.request(true, Performative.REQUEST,
+                Lines.content("modify", Lines.params("services", b.toString()), List.of())));
+    }
+
+    /** Removes every service of this agent. */
+    public CompletableFuture<Void> deregister() {
+        return done(layer.request(true, Performative.REQUEST, Lines.content("deregister", Lines.params(), List.of())));
+    }
+
+    /** Asks the DF itself (not this agent's copy). */
+    public CompletableFuture<List<AgentEntry>> searchAtDf(ServiceDescription template) {
+        StringBuilder b = new StringBuilder();
+        Lines.appendService(b, template);
+        return layer.request(true, Performative.REQUEST, Lines.content("search", Lines.params("template", b.toString()), List.of()))
+                .thenApply(this::entries);
+    }
+
+    private List<AgentEntry> entries(AclMessage reply) {
+        if (reply.getPerformative() != Performative.INFORM) {
+            throw new IllegalStateException("the DF answered " + reply.getPerformative().wireName() + ": " + reply.getContent());
+        }
+        return Lines.parse(reply.getContent()).entries();
+    }
+
+    private static CompletableFuture<Void> done(CompletableFuture<AclMessage> f) {
+        return f.thenApply(r -> {
+            if (r.getPerformative() != Performative.INFORM) {
+                throw new IllegalStateException("the DF answered " + r.getPerformative().wireName() + ": " + r.getContent());
+            }
+            return null;
+        });
+    }
+
+    /** The agent these services are for. */
+    public Agent agent() {
+        return agent;
+    }
+}
