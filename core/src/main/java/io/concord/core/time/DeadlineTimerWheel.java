@@ -31,6 +31,10 @@ public final class DeadlineTimerWheel {
     private static final long EMPTY = Long.MAX_VALUE;
 
     private final long tickNs;
+    // The earliest deadline, kept while it is known: a scan finds it; scheduling an earlier one
+    // lowers it; cancelling (or firing) the timer that holds it forgets it until the next scan.
+    private long knownMin = Long.MAX_VALUE;
+    private boolean minKnown = true;
     private final int ticksPerWheel;
     private final int mask;
     private final long startNs;
@@ -99,6 +103,9 @@ public final class DeadlineTimerWheel {
     }
 
     private long place(int slot, int index, long deadlineNs) {
+        if (minKnown && deadlineNs < knownMin) {
+            knownMin = deadlineNs;
+        }
         deadlines[slot][index] = deadlineNs;
         sequences[slot][index] = nextSequence++;
         timerCount++;
@@ -114,6 +121,9 @@ public final class DeadlineTimerWheel {
         int index = (int) timerId;
         if (slot >= ticksPerWheel || index >= deadlines[slot].length || deadlines[slot][index] == EMPTY) {
             return false;
+        }
+        if (deadlines[slot][index] == knownMin) {
+            minKnown = false;
         }
         deadlines[slot][index] = EMPTY;
         timerCount--;
@@ -139,6 +149,9 @@ public final class DeadlineTimerWheel {
         if (timerCount == 0) {
             return Long.MAX_VALUE;
         }
+        if (minKnown) {
+            return knownMin;
+        }
         long min = Long.MAX_VALUE;
         for (long[] slot : deadlines) {
             for (long d : slot) {
@@ -147,6 +160,8 @@ public final class DeadlineTimerWheel {
                 }
             }
         }
+        knownMin = min;
+        minKnown = true;
         return min;
     }
 

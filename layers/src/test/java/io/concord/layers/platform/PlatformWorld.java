@@ -52,7 +52,9 @@ final class PlatformWorld implements AutoCloseable {
         sim.trace().addListener((ns, node, event, detail) -> {
             if (event.equals("platform-accept")) {
                 String from = detail.substring(detail.lastIndexOf(" from ") + 6);
-                if (!everStarted.contains(from)) {
+                String nodePlatform = node.substring(node.indexOf('@') + 1);
+                boolean member = nodePlatform.equals("sim") ? everStarted.contains(from) : from.endsWith("@" + nodePlatform);
+                if (!member) {
                     violations.add(node + " accepted a platform message from the non-member " + from + ": " + detail);
                 }
             }
