@@ -1,0 +1,205 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.PortRange;
+import io.concord.core.testkit.FaultPlan;
+import io.concord.core.testkit.Simulation;
+import io.concord.layers.Profile;
+import io.concord.layers.SafetyStack;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** White and yellow pages, naming, leaving, and a full range, on the virtual network. */
+class PlatformServicesTest {
+
+    /** Keeps what it receives. */
+    static final class Inbox extends Agent {
+        final List<AclMessage> got = new ArrayList<>();
+
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                    } else {
+                        got.add(m);
+                    }
+                }
+            });
+        }
+    }
+
+    private static PlatformWorld world(Profile p) {
+        PlatformWorld w = new PlatformWorld(5, FaultPlan.lossy(0.05, 0.05, 0.05, 0), p);
+        return w;
+    }
+
+    private static <T> T await(PlatformWorld w, CompletableFuture<T> f) {
+        assertTrue(w.sim.runUntil(f::isDone, 5_000), "no answer");
+        return f.join();
+    }
+
+    @Test
+    void agentsAddressEachOtherByNameOnly() {
+        try (PlatformWorld w = world(Profile.CLASS_7)) {
+            Inbox b = new Inbox();
+            w.start("a");
+            w.everStarted.add("b@sim");
+            w.live.put("b", w.platform.startAgent("b", b));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            Agent a = w.rt.agent(w.live.get("a"));
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(AID.local("b", "sim")); // no address: the LAL resolves it
+            m.setContent("hello by name");
+            a.send(m);
+            assertTrue(w.sim.runUntil(() -> !b.got.isEmpty(), 2_000));
+            assertEquals("hello by name", b.got.get(0).getContent());
+            assertEquals("a@sim", b.got.get(0).getSender().name());
+        }
+    }
+
+    @Test
+    void yellowPagesThroughTheJavaApiSurviveTheContainersDeath() {
+        try (PlatformWorld w = world(Profile.CLOSED)) {
+            for (int i = 0; i < 5; i++) {
+                w.start("s" + i);
+            }
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            String container = w.containers().get(0);
+            String seller = w.live.keySet().stream().filter(n -> !n.equals(container)).findFirst().orElseThrow();
+            PlatformServices ps = Platform.of(w.rt.agent(w.live.get(seller)));
+            await(w, ps.register(ServiceDescription.of("book-selling", "cheap-books").withProperty("price", "42")));
+            w.sim.runUntil(w::converged, 2_000);
+            // Every agent finds it in its own copy, without a message.
+            for (String n : w.live.keySet()) {
+                List<AgentEntry> found = Platform.of(w.rt.agent(w.live.get(n))).search(ServiceDescription.ofType("book-selling"));
+                assertEquals(List.of(seller + "@sim"), found.stream().map(AgentEntry::name).toList(), n);
+            }
+            assertTrue(ps.search(ServiceDescription.ofType("book-buying")).isEmpty());
+            assertTrue(ps.search(ServiceDescription.ofType("book-selling").withProperty("price", "41")).isEmpty());
+
+            w.crash(container);
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            assertNotEquals(container, w.containers().get(0));
+            String other = w.live.keySet().stream().filter(n -> !n.equals(seller)).findFirst().orElseThrow();
+            PlatformServices asker = Platform.of(w.rt.agent(w.live.get(other)));
+            List<AgentEntry> atDf = await(w, asker.searchAtDf(ServiceDescription.ofType("book-selling")));
+            assertEquals(List.of(seller + "@sim"), atDf.stream().map(AgentEntry::name).toList());
+            assertEquals("42", atDf.get(0).services().get(0).properties().get("price"));
+
+            await(w, ps.deregister());
+            w.sim.runUntil(w::converged, 2_000);
+            assertTrue(asker.search(ServiceDescription.ofType("book-selling")).isEmpty());
+        }
+    }
+
+    @Test
+    void amsAndDfAnswerAclRequestsByName() {
+        try (PlatformWorld w = world(Profile.CLASS_3)) {
+            Inbox asker = new Inbox();
+            w.start("x");
+            w.start("y");
+            w.everStarted.add("asker@sim");
+            w.live.put("asker", w.platform.startAgent("asker", asker));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            Agent a = w.rt.agent(w.live.get("asker"));
+
+            AclMessage reg = new AclMessage(Performative.REQUEST);
+            reg.addReceiver(AID.local("df", "sim"));
+            reg.setContent("register services=t=weather;n=forecast");
+            reg.setReplyWith("r1");
+            a.send(reg);
+            assertTrue(w.sim.runUntil(() -> asker.got.size() == 1, 2_000));
+            assertEquals(Performative.INFORM, asker.got.get(0).getPerformative());
+            assertEquals("r1", asker.got.get(0).getInReplyTo());
+
+            AclMessage q = new AclMessage(Performative.QUERY_REF);
+            q.addReceiver(AID.local("ams", "sim"));
+            q.setContent("agents");
+            a.send(q);
+            AclMessage s = new AclMessage(Performative.REQUEST);
+            s.addReceiver(AID.local("df", "sim"));
+            s.setContent("search template=t=weather");
+            a.send(s);
+            AclMessage bad = new AclMessage(Performative.REQUEST);
+            bad.addReceiver(AID.local("df", "sim"));
+            bad.setContent("fly-to the=moon");
+            a.send(bad);
+            assertTrue(w.sim.runUntil(() -> asker.got.size() == 4, 2_000));
+            String agents = asker.got.get(1).getContent();
+            assertTrue(agents.startsWith("result count=3"), agents);
+            assertTrue(agents.contains("\nx@sim ") && agents.contains("\ny@sim ") && agents.contains("\nasker@sim "), agents);
+            String found = asker.got.get(2).getContent();
+            assertTrue(found.startsWith("result count=1\nasker@sim "), found);
+            assertEquals(Performative.NOT_UNDERSTOOD, asker.got.get(3).getPerformative());
+            assertTrue(asker.got.get(3).getContent().contains("fly-to"));
+        }
+    }
+
+    @Test
+    void anUnknownNameGetsTheFipaFailure() {
+        try (PlatformWorld w = world(Profile.CLOSED)) {
+            Inbox a = new Inbox();
+            w.everStarted.add("a@sim");
+            w.live.put("a", w.platform.startAgent("a", a));
+            w.sim.runUntil(w::converged, 2_000);
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(AID.local("nobody", "sim"));
+            w.rt.agent(w.live.get("a")).send(m);
+            assertTrue(w.sim.runUntil(() -> !a.got.isEmpty(), 1_000));
+            assertEquals(Performative.FAILURE, a.got.get(0).getPerformative());
+            assertTrue(a.got.get(0).getContent().contains("Agent not found: nobody@sim"));
+        }
+    }
+
+    @Test
+    void anAgentThatLeavesIsRemovedAtOnceNotAfterItsTimeout() {
+        try (PlatformWorld w = world(Profile.CLOSED)) {
+            for (int i = 0; i < 4; i++) {
+                w.start("m" + i);
+            }
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            String container = w.containers().get(0);
+            String leaver = w.live.keySet().stream().filter(n -> !n.equals(container)).findFirst().orElseThrow();
+            long timeout = PlatformConfig.defaults().timeoutMs(4);
+            w.stop(leaver);
+            // Well before the silence timeout could have removed it.
+            assertTrue(w.sim.runUntil(w::converged, timeout / 3), w.describe());
+            // The container leaves too: the others elect at once.
+            w.stop(container);
+            assertTrue(w.sim.runUntil(w::converged, timeout / 3), w.describe());
+            assertFalse(w.containers().contains(container));
+        }
+    }
+
+    @Test
+    void aFullPortRangeIsAClearError() {
+        try (Simulation sim = new Simulation(1, FaultPlan.NONE)) {
+            var rt = sim.newRuntime("h1");
+            Platform p = Platform.builder().runtime(rt).ports(new PortRange(7001, 3, 10))
+                    .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
+            for (int i = 0; i < 3; i++) {
+                p.startAgent("a" + i, new PlatformWorld.Idle());
+            }
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> p.startAgent("a3", new PlatformWorld.Idle()));
+            assertTrue(e.getMessage().contains("port range 7001-7003 on h1 is full"), e.getMessage());
+            assertTrue(e.getMessage().contains("--ports 7001-7006"), e.getMessage());
+        }
+    }
+}
