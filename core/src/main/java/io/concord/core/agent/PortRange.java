@@ -88,11 +88,8 @@ public record PortRange(int base, int count, int window) {
         }
         int end = Math.min(last(), p + window);
         for (int q = p + 1; q <= end; q++) {
-            Endpoint probe = network.tryBind(transport, host, q, (from, d, o, l, n) -> { });
-            if (probe == null) {
+            if (network.isHeld(transport, host, q)) {
                 held.add(new Address(host, q));
-            } else {
-                probe.close();
             }
         }
         return own;

@@ -5,7 +5,7 @@ package io.concord.core.net;
  * deterministic virtual network of the test kit. One loop polls it; {@link #wakeup()} is the only
  * method other threads may call.
  */
-public interface Network {
+public interface Network extends AutoCloseable {
 
     /**
      * Binds a port.
@@ -31,6 +31,19 @@ public interface Network {
     }
 
     /**
+     * True if a port is held by someone (a socket of this network or of another program), checked
+     * by binding it and releasing it at once; the port-binding discovery probes with it.
+     */
+    default boolean isHeld(Transport transport, String host, int port) {
+        Endpoint e = tryBind(transport, host, port, (from, d, o, l, n) -> { });
+        if (e == null) {
+            return true;
+        }
+        e.close();
+        return false;
+    }
+
+    /**
      * Delivers the datagrams that have arrived by {@code nowNs} to their receivers.
      *
      * @return how many were delivered
@@ -50,5 +63,6 @@ public interface Network {
     void wakeup();
 
     /** Closes every endpoint and the network itself. */
+    @Override
     void close();
 }

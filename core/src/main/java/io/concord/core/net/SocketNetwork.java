@@ -79,6 +79,26 @@ public final class SocketNetwork implements Network {
         return TcpEndpoint.bind(selector, host, port, receiver);
     }
 
+    /**
+     * Binds and closes a bare channel, never registered with the selector: a registered channel's
+     * port is released only at the selector's next select, which would make the port look held.
+     */
+    @Override
+    public boolean isHeld(Transport transport, String host, int port) {
+        try (java.nio.channels.NetworkChannel ch = transport == Transport.UDP ? DatagramChannel.open()
+                : java.nio.channels.ServerSocketChannel.open()) {
+            if (transport == Transport.TCP) {
+                ch.setOption(StandardSocketOptions.SO_REUSEADDR, true);
+            }
+            ch.bind(new InetSocketAddress(host, port));
+            return false;
+        } catch (BindException e) {
+            return true;
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot probe " + transport + " " + host + ":" + port + ": " + e.getMessage(), e);
+        }
+    }
+
     @Override
     public Endpoint tryBind(String host, int port, Receiver receiver) {
         DatagramChannel ch = null;

@@ -379,7 +379,7 @@ public final class ContainerLayer extends Layer {
             }
         }
         discoveryTimer = cancel(discoveryTimer);
-        discoveryTimer = after(config.discoveryTimeoutMs(), this::onDiscoveryTimeout);
+        discoveryTimer = after(config.discoveryTimeoutMs() << Math.min(attempt - 1, 4), this::onDiscoveryTimeout);
     }
 
     private AID anyAt(Address a) {
@@ -613,7 +613,8 @@ public final class ContainerLayer extends Layer {
         joinTimer = cancel(joinTimer);
         sendQuietly(platformMessage(Performative.INFORM_REF, P_LAL, joinTarget.aid(),
                 Lines.content("join", Lines.params("term", claimTerm), List.of(selfEntry))));
-        joinTimer = after(config.joinRetryMs(), this::onJoinTimeout);
+        // Backing off: the first join to a container may wait for a signed handshake on a cold JVM.
+        joinTimer = after(config.joinRetryMs() << Math.min(joinFailures, 4), this::onJoinTimeout);
     }
 
     private void onJoinTimeout() {

@@ -35,8 +35,8 @@ public record PlatformConfig(long discoveryTimeoutMs, int discoveryAttempts, lon
     }
 
     /**
-     * The defaults: 25 ms discovery (3 attempts), 40 ms + 0.5 ms per agent maintenance period, dead
-     * after 3 silent periods, joins confirmed within 60 ms (4 attempts), LAL pushed 5 ms after a
+     * The defaults: discovery answers awaited 25, 50, 100 ms (3 attempts), 40 ms + 0.5 ms per agent maintenance period, dead
+     * after 3 silent periods, joins retried after 60, 120, 240 ms (4 attempts), LAL pushed 5 ms after a
      * change, 3,000 bytes of LAL a message (well within the 8 KiB UDP frame of the safety stack).
      */
     public static PlatformConfig defaults() {

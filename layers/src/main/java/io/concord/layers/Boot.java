@@ -1,0 +1,287 @@
+package io.concord.layers;
+
+import io.concord.core.acl.AID;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.PortRange;
+import io.concord.core.net.Transport;
+import io.concord.layers.platform.ContainerLayer;
+import io.concord.layers.platform.Platform;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Properties;
+
+/**
+ * The command line, in the style of JADE's {@code jade.Boot}: starts agents on this host's
+ * platform; they find the others by themselves.
+ *
+ * <pre>
+ * java -cp app.jar io.concord.layers.Boot -agents "seller1:org.example.Seller(42);buyer:org.example.Buyer"
+ *      [-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp]
+ *      [-host 127.0.0.1] [-conf platform.properties] [-watch]
+ * </pre>
+ *
+ * A configuration file holds the same settings as Java properties ({@code name}, {@code ports},
+ * {@code profile}, {@code transport}, {@code host}, {@code agents}, {@code watch}); the command line
+ * overrides it. Each agent class extends {@link Agent} and has a public no-argument constructor;
+ * its arguments arrive as strings in {@code getArguments()}.
+ */
+public final class Boot {
+
+    /** A bad command line or configuration, with what to do about it. */
+    public static final class BootException extends RuntimeException {
+        BootException(String message) {
+            super(message);
+        }
+
+        BootException(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+
+    /** One agent to start: {@code name:class(arg,arg)}. */
+    public record AgentSpec(String name, String className, List<String> args) {
+    }
+
+    private Boot() {
+    }
+
+    public static void main(String[] args) {
+        Platform p;
+        try {
+            p = start(args, System.out);
+        } catch (BootException e) {
+            System.err.println("concord: " + e.getMessage());
+            System.exit(2);
+            return;
+        }
+        Runtime.getRuntime().addShutdownHook(new Thread(p::close, "concord-shutdown"));
+    }
+
+    /**
+     * Parses the arguments, starts the platform's runtime and the agents; returns the platform.
+     *
+     * @throws BootException saying what was wrong and what to do
+     */
+    public static Platform start(String[] args, PrintStream out) {
+        Map<String, String> s = settings(args);
+        if (s.containsKey("help")) {
+            out.println(usage());
+            throw new BootException("usage printed");
+        }
+        List<AgentSpec> specs = parseAgents(s.getOrDefault("agents", ""));
+        Platform.Builder b = Platform.builder().name(s.getOrDefault("name", "concord"))
+                .host(s.getOrDefault("host", "127.0.0.1"))
+                .ports(range(s.getOrDefault("ports", PortRange.DEFAULT_BASE + "-" + (PortRange.DEFAULT_BASE + PortRange.DEFAULT_COUNT - 1))))
+                .profile(profile(s.getOrDefault("profile", "class7")))
+                .transport(transport(s.getOrDefault("transport", "udp")));
+        List<Agent> agents = new ArrayList<>();
+        for (AgentSpec spec : specs) {
+            agents.add(instantiate(spec));
+        }
+        Platform p;
+        try {
+            p = b.build();
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            throw new BootException(e.getMessage(), e);
+        }
+        boolean watch = Boolean.parseBoolean(s.getOrDefault("watch", "false"));
+        try {
+            for (int i = 0; i < specs.size(); i++) {
+                AgentSpec spec = specs.get(i);
+                AID aid = p.startAgent(spec.name(), agents.get(i), spec.args().toArray());
+                out.println("started " + aid.name() + " at " + aid.addresses().get(0) + " (" + spec.className() + ")");
+                if (watch) {
+                    watch(p, aid, out);
+                }
+            }
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            p.close();
+            throw new BootException(e.getMessage(), e);
+        }
+        return p;
+    }
+
+    /** Prints each change of the agent's role and of its container. */
+    private static void watch(Platform p, AID aid, PrintStream out) {
+        p.runtime().execute(() -> {
+            ContainerLayer c = Platform.containerLayer(p.runtime(), aid);
+            String[] last = {""};
+            java.util.function.Consumer<ContainerLayer> print = l -> {
+                String now = l.role() + " " + l.containerName();
+                if (!now.equals(last[0]) && l.role() != ContainerLayer.Role.SEEKING && l.containerName() != null) {
+                    last[0] = now;
+                    out.println(aid.localName() + ": " + (l.role() == ContainerLayer.Role.CONTAINER
+                            ? "I am the container (term " + l.term() + ")"
+                            : "container is " + l.containerName() + " (term " + l.term() + ")"));
+                }
+            };
+            c.addListener(print);
+            print.accept(c);
+        });
+    }
+
+    static Map<String, String> settings(String[] args) {
+        Map<String, String> cli = new LinkedHashMap<>();
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            if (!a.startsWith("-") || a.length() < 2) {
+                throw new BootException("unexpected argument '" + a + "'; options start with '-'. " + usage());
+            }
+            String key = a.replaceFirst("^--?", "").toLowerCase(Locale.ROOT);
+            switch (key) {
+                case "help", "h", "watch" -> cli.put(key.equals("h") ? "help" : key, "true");
+                case "agents", "name", "ports", "profile", "transport", "host", "conf" -> {
+                    if (i + 1 >= args.length) {
+                        throw new BootException("-" + key + " needs a value. " + usage());
+                    }
+                    cli.put(key, args[++i]);
+                }
+                default -> throw new BootException("unknown option '" + a + "'. " + usage());
+            }
+        }
+        Map<String, String> all = new LinkedHashMap<>();
+        String conf = cli.get("conf");
+        if (conf != null) {
+            Properties props = new Properties();
+            try (Reader r = Files.newBufferedReader(Path.of(conf), StandardCharsets.UTF_8)) {
+                props.load(r);
+            } catch (IOException e) {
+                throw new BootException("cannot read the configuration file " + conf + ": " + e.getMessage(), e);
+            }
+            for (String k : props.stringPropertyNames()) {
+                String key = k.toLowerCase(Locale.ROOT);
+                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch").contains(key)) {
+                    throw new BootException("unknown setting '" + k + "' in " + conf
+                            + "; known: name, ports, profile, transport, host, agents, watch");
+                }
+                all.put(key, props.getProperty(k).trim());
+            }
+        }
+        all.putAll(cli);
+        return all;
+    }
+
+    /**
+     * Parses {@code name:class(arg,arg);name:class}.
+     *
+     * @throws BootException naming the bad part
+     */
+    public static List<AgentSpec> parseAgents(String text) {
+        List<AgentSpec> out = new ArrayList<>();
+        int depth = 0;
+        int start = 0;
+        for (int i = 0; i <= text.length(); i++) {
+            char c = i < text.length() ? text.charAt(i) : ';';
+            if (c == '(') {
+                depth++;
+            } else if (c == ')') {
+                depth--;
+                if (depth < 0) {
+                    throw new BootException("an unmatched ')' in -agents \"" + text + "\"");
+                }
+            } else if (c == ';' && depth == 0) {
+                String one = text.substring(start, Math.min(i, text.length())).trim();
+                if (!one.isEmpty()) {
+                    out.add(parseAgent(one));
+                }
+                start = i + 1;
+            }
+        }
+        if (depth != 0) {
+            throw new BootException("an unclosed '(' in -agents \"" + text + "\"");
+        }
+        return out;
+    }
+
+    private static AgentSpec parseAgent(String one) {
+        int colon = one.indexOf(':');
+        if (colon < 1 || colon == one.length() - 1) {
+            throw new BootException("an agent is written name:class or name:class(arguments), got '" + one + "'");
+        }
+        String name = one.substring(0, colon).trim();
+        String rest = one.substring(colon + 1).trim();
+        List<String> args = new ArrayList<>();
+        int open = rest.indexOf('(');
+        String cls = rest;
+        if (open >= 0) {
+            if (!rest.endsWith(")")) {
+                throw new BootException("the arguments of '" + name + "' must end with ')', got '" + rest + "'");
+            }
+            cls = rest.substring(0, open).trim();
+            String inner = rest.substring(open + 1, rest.length() - 1).trim();
+            if (!inner.isEmpty()) {
+                for (String a : inner.split(",", -1)) {
+                    args.add(a.trim());
+                }
+            }
+        }
+        if (!cls.matches("[A-Za-z_$][\\w$]*(\\.[A-Za-z_$][\\w$]*)*")) {
+            throw new BootException("'" + cls + "' is not a Java class name (agent '" + name + "')");
+        }
+        return new AgentSpec(name, cls, args);
+    }
+
+    private static Agent instantiate(AgentSpec spec) {
+        Class<?> c;
+        try {
+            c = Class.forName(spec.className());
+        } catch (ClassNotFoundException e) {
+            throw new BootException("agent '" + spec.name() + "': class " + spec.className()
+                    + " is not on the class path; add its jar with -cp", e);
+        }
+        if (!Agent.class.isAssignableFrom(c)) {
+            throw new BootException("agent '" + spec.name() + "': " + spec.className() + " does not extend "
+                    + Agent.class.getName());
+        }
+        try {
+            return (Agent) c.getDeclaredConstructor().newInstance();
+        } catch (NoSuchMethodException e) {
+            throw new BootException("agent '" + spec.name() + "': " + spec.className()
+                    + " needs a public constructor without parameters", e);
+        } catch (ReflectiveOperationException e) {
+            throw new BootException("agent '" + spec.name() + "': cannot create " + spec.className() + ": "
+                    + (e.getCause() != null ? e.getCause() : e), e);
+        }
+    }
+
+    private static PortRange range(String s) {
+        try {
+            return PortRange.parse(s);
+        } catch (IllegalArgumentException e) {
+            throw new BootException(e.getMessage(), e);
+        }
+    }
+
+    private static Profile profile(String s) {
+        return switch (s.toLowerCase(Locale.ROOT).replace("_", "").replace("-", "")) {
+            case "class7" -> Profile.CLASS_7;
+            case "class3" -> Profile.CLASS_3;
+            case "closed" -> Profile.CLOSED;
+            default -> throw new BootException("unknown profile '" + s + "'; use class7 (default), class3 or closed");
+        };
+    }
+
+    private static Transport transport(String s) {
+        return switch (s.toLowerCase(Locale.ROOT)) {
+            case "udp" -> Transport.UDP;
+            case "tcp" -> Transport.TCP;
+            default -> throw new BootException("unknown transport '" + s + "'; use udp (default) or tcp");
+        };
+    }
+
+    static String usage() {
+        return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
+                + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
+                + "[-host 127.0.0.1] [-conf file.properties] [-watch]";
+    }
+}

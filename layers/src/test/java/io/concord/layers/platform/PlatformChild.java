@@ -1,0 +1,75 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.PortRange;
+import io.concord.layers.Profile;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * One agent in a JVM of its own, for the multi-process tests: it prints its view of the platform
+ * on every change ({@code STATE role=.. container=.. term=.. agents=..}) and every message it gets
+ * ({@code GOT ..}); it answers REQUESTs with an INFORM; the parent writes {@code send <name> <text>}
+ * on its standard input to make it send a REQUEST by name.
+ *
+ * <p>Arguments: platform name, port range, agent name. The platform key comes from
+ * {@code -Dconcord.home}.
+ */
+public final class PlatformChild {
+    static final class Echo extends Agent {
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    System.out.println("GOT " + m.getPerformative().wireName() + " from " + m.getSender().localName()
+                            + " " + m.getContent());
+                    if (m.getPerformative() == Performative.REQUEST) {
+                        AclMessage r = m.createReply();
+                        r.setPerformative(Performative.INFORM);
+                        r.setContent("echo:" + m.getContent());
+                        myAgent.send(r);
+                    }
+                }
+            });
+        }
+    }
+
+    public static void main(String[] args) throws Exception {
+        Platform p = Platform.builder().name(args[0]).ports(PortRange.parse(args[1])).profile(Profile.CLASS_7).build();
+        Echo echo = new Echo();
+        AID aid = p.startAgent(args[2], echo);
+        p.runtime().execute(() -> {
+            ContainerLayer c = Platform.containerLayer(p.runtime(), aid);
+            java.util.function.Consumer<ContainerLayer> print = l -> System.out.println("STATE role=" + l.role()
+                    + " container=" + l.containerName() + " term=" + l.term() + " agents=" + l.agents().size());
+            c.addListener(print);
+            print.accept(c); // the state before the listener was added
+
+        });
+        System.out.println("STARTED " + aid.name() + " " + aid.addresses().get(0));
+        BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
+        String line;
+        while ((line = in.readLine()) != null) {
+            String[] w = line.split(" ", 3);
+            if (w.length == 3 && w[0].equals("send")) {
+                AclMessage m = new AclMessage(Performative.REQUEST);
+                m.addReceiver(AID.local(w[1], args[0]));
+                m.setContent(w[2]);
+                echo.send(m);
+            }
+        }
+        p.close();
+    }
+}
