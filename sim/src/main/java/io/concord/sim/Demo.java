@@ -1,213 +1,137 @@
 package io.concord.sim;
 
-import io.concord.core.acl.AID;
-import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
-import io.concord.core.agent.AgentRuntime;
-import io.concord.core.agent.CyclicBehaviour;
-import io.concord.core.agent.OneShotBehaviour;
-import io.concord.core.proto.ContractNetResponder;
-import io.concord.core.proto.Conversations;
-import io.concord.core.proto.FailureException;
-import io.concord.core.proto.FipaProtocols;
-import io.concord.core.proto.RefuseException;
-import io.concord.layers.Profile;
-import io.concord.layers.SafetyStack;
+import io.concord.layers.Boot;
 import io.concord.layers.security.PlatformKey;
+import io.concord.sim.books.BookBuyer;
+import io.concord.sim.books.BookSeller;
 
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
+import java.util.Map;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 
 /**
- * The platform demo: agents in one JVM, each with its own UDP port on loopback and the class-7
- * safety stack, served by one loop. A buyer runs a contract net with three book sellers and buys
- * from the cheapest; then five agents pass a secret round a ring. Everything said is printed.
+ * The platform demo: three JVMs on this machine, started with the {@link Boot} command line and
+ * nothing configured but the agents. They find each other by port binding (7001 and up), elect
+ * a container, and build the white and yellow pages; a buyer finds three book sellers in the DF,
+ * asks them by name with a contract net and buys from the cheapest. Then the container's JVM is
+ * killed ({@code kill -9}) and the other two elect a new one. Every JVM's output is shown,
+ * prefixed with its letter.
  */
 public final class Demo {
     private static final PrintStream OUT = System.out;
+    private static final String TITLE = "The Art of Agents";
 
     private Demo() {
     }
 
+    /** One JVM of the demo, and the lines it printed. */
+    private static final class Jvm {
+        final String letter;
+        final Process process;
+        final LinkedBlockingQueue<String> lines;
+
+        Jvm(String letter, Process process, LinkedBlockingQueue<String> lines) {
+            this.letter = letter;
+            this.process = process;
+            this.lines = lines;
+        }
+    }
+
     public static void main(String[] args) throws Exception {
-        try (AgentRuntime runtime = AgentRuntime.builder().platformName("demo")
-                .stack(SafetyStack.builder().profile(Profile.CLASS_7).build()).build().start()) {
-            OUT.println("Concord demo: one runtime, one loop, every agent on its own UDP port on 127.0.0.1");
-            OUT.println("Every agent carries the EN 50159 class-7 stack: sequence numbers, timestamps, CRC-32C, and");
-            OUT.println("AES-GCM with per-pair keys from signed X25519 handshakes; platform key: "
-                    + PlatformKey.defaultDirectory().resolve("platform.key"));
-            List<AID> sellers = new ArrayList<>();
-            int[][] stock = {{42, 3}, {35, 0}, {39, 5}};
-            for (int i = 0; i < stock.length; i++) {
-                AID aid = runtime.startAgent("seller" + (i + 1), new Seller(stock[i][0], stock[i][1]));
-                sellers.add(aid);
-                OUT.printf("  started %-16s at %s  (price %d, %d in stock)%n", aid.name(), aid.addresses().get(0),
-                        stock[i][0], stock[i][1]);
-            }
-            CompletableFuture<String> bought = new CompletableFuture<>();
-            runtime.startAgent("buyer", new Buyer(sellers, "The Art of Agents", bought));
-            OUT.println("  result: " + bought.get(10, TimeUnit.SECONDS));
+        String platform = "demo";
+        OUT.println("Concord platform demo: three JVMs, no main container, nothing configured but the agents.");
+        OUT.println("Each agent binds the first free UDP port from 7001 on 127.0.0.1, finds the others by the ports");
+        OUT.println("they hold, and they elect a container among themselves. Every message goes through the EN 50159");
+        OUT.println("class-7 stack (per-pair AES-GCM keys from signed handshakes); platform key: "
+                + PlatformKey.defaultDirectory().resolve("platform.key"));
+        OUT.println();
+        LinkedBlockingQueue<String> events = new LinkedBlockingQueue<>();
+        Map<String, Jvm> jvms = new LinkedHashMap<>();
+        try {
+            jvms.put("A", spawn("A", platform, "seller1:" + BookSeller.class.getName() + "(" + TITLE + ",42);"
+                    + "seller2:" + BookSeller.class.getName() + "(" + TITLE + ",35)", events));
+            jvms.put("B", spawn("B", platform, "seller3:" + BookSeller.class.getName() + "(" + TITLE + ",39)", events));
+            jvms.put("C", spawn("C", platform, "buyer:" + BookBuyer.class.getName() + "(" + TITLE + ",3)", events));
 
-            OUT.println();
-            OUT.println("Chain: 5 agents pass a 500-byte secret round a ring, 3 rounds");
-            CountDownLatch rounds = new CountDownLatch(3);
-            int n = 5;
-            List<ChainLink> links = new ArrayList<>();
-            for (int i = 0; i < n; i++) {
-                links.add(new ChainLink(i == 0 ? rounds : null));
-            }
-            List<AID> ring = new ArrayList<>();
-            for (int i = 0; i < n; i++) {
-                ring.add(runtime.startAgent("link" + i, links.get(i)));
-            }
-            for (int i = 0; i < n; i++) {
-                links.get(i).next = ring.get((i + 1) % n);
-            }
-            runtime.execute(links.get(0)::startRound);
-            if (!rounds.await(10, TimeUnit.SECONDS)) {
-                OUT.println("  the ring did not complete 3 rounds in 10 s");
+            String done = await(events, l -> l.endsWith("buyer: DONE"), 60);
+            if (done == null) {
+                OUT.println("The buyer did not finish within 60 s.");
+                return;
             }
             OUT.println();
-            OUT.println("Dropped frames by reason (copies sent against loss are expected here): " + runtime.drops());
+            String container = null;
+            for (String l : new ArrayList<>(history)) {
+                if (l.contains("I am the container")) {
+                    container = l;
+                }
+            }
+            if (container == null) {
+                OUT.println("No container was reported.");
+                return;
+            }
+            String letter = container.substring(1, 2);
+            String name = container.substring(4, container.indexOf(':'));
+            OUT.println("Failover: kill -9 JVM " + letter + ", whose " + name + " is the container.");
+            Jvm victim = jvms.remove(letter);
+            victim.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+            String next = await(events, l -> l.contains("I am the container") && !l.startsWith("[" + letter + "]"), 30);
+            OUT.println(next == null ? "No new container within 30 s." : "A new container took over; the demo ends.");
+        } finally {
+            for (Jvm j : jvms.values()) {
+                j.process.destroy(); // SIGTERM: its agents leave the platform cleanly
+            }
+            for (Jvm j : jvms.values()) {
+                if (!j.process.waitFor(10, TimeUnit.SECONDS)) {
+                    j.process.destroyForcibly();
+                }
+            }
         }
     }
 
-    /** Sells one title at a fixed price while it has stock; answers contract-net CFPs. */
-    static final class Seller extends Agent {
-        private final int price;
-        private int stock;
+    private static final List<String> history = java.util.Collections.synchronizedList(new ArrayList<>());
 
-        Seller(int price, int stock) {
-            this.price = price;
-            this.stock = stock;
-        }
-
-        @Override
-        protected void setup() {
-            addBehaviour(new ContractNetResponder(this, ContractNetResponder.createMessageTemplate(FipaProtocols.CONTRACT_NET)) {
-                @Override
-                protected AclMessage handleCfp(AclMessage cfp) throws RefuseException {
-                    if (stock == 0) {
-                        OUT.printf("  %s: REFUSE  %s (out of stock)%n", getLocalName(), cfp.getContent());
-                        throw new RefuseException("(out-of-stock \"" + cfp.getContent() + "\")");
-                    }
-                    AclMessage propose = cfp.createReply();
-                    propose.setPerformative(Performative.PROPOSE);
-                    propose.setContent(Integer.toString(price));
-                    OUT.printf("  %s: PROPOSE %d%n", getLocalName(), price);
-                    return propose;
+    private static Jvm spawn(String letter, String platform, String agents, LinkedBlockingQueue<String> events)
+            throws Exception {
+        String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        Process p = new ProcessBuilder(java, "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"),
+                Boot.class.getName(), "-name", platform, "-watch", "-agents", agents)
+                .redirectErrorStream(true).start();
+        LinkedBlockingQueue<String> lines = new LinkedBlockingQueue<>();
+        Thread t = new Thread(() -> {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+                String l;
+                while ((l = r.readLine()) != null) {
+                    String shown = "[" + letter + "] " + l;
+                    OUT.println(shown);
+                    history.add(shown);
+                    events.add(shown);
                 }
-
-                @Override
-                protected AclMessage handleAcceptProposal(AclMessage cfp, AclMessage propose, AclMessage accept)
-                        throws FailureException {
-                    if (stock == 0) {
-                        throw new FailureException("(sold-out)");
-                    }
-                    stock--;
-                    AclMessage inform = accept.createReply();
-                    inform.setPerformative(Performative.INFORM);
-                    inform.setContent("(sold \"" + cfp.getContent() + "\" " + price + ")");
-                    OUT.printf("  %s: INFORM  sold at %d, %d left%n", getLocalName(), price, stock);
-                    return inform;
-                }
-
-                @Override
-                protected void handleRejectProposal(AclMessage cfp, AclMessage propose, AclMessage reject) {
-                    OUT.printf("  %s: was rejected%n", getLocalName());
-                }
-            });
-        }
+            } catch (java.io.IOException ignored) {
+                // the JVM ended
+            }
+        }, "demo-" + letter);
+        t.setDaemon(true);
+        t.start();
+        return new Jvm(letter, p, lines);
     }
 
-    /** Asks every seller for the title and buys from the cheapest. */
-    static final class Buyer extends Agent {
-        private final List<AID> sellers;
-        private final String title;
-        private final CompletableFuture<String> result;
-
-        Buyer(List<AID> sellers, String title, CompletableFuture<String> result) {
-            this.sellers = sellers;
-            this.title = title;
-            this.result = result;
+    private static String await(LinkedBlockingQueue<String> events, java.util.function.Predicate<String> p, int seconds)
+            throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        String l;
+        while ((l = events.poll(Math.max(1, end - System.nanoTime()), TimeUnit.NANOSECONDS)) != null) {
+            if (p.test(l)) {
+                return l;
+            }
         }
-
-        @Override
-        protected void setup() {
-            addBehaviour(new OneShotBehaviour(this) {
-                @Override
-                public void action() {
-                    AclMessage cfp = new AclMessage(Performative.CFP);
-                    sellers.forEach(cfp::addReceiver);
-                    cfp.setContent(title);
-                    cfp.setReplyByEpochMs(currentTimeMillis() + 2_000);
-                    OUT.printf("  %s: CFP     \"%s\" to %d sellers%n", getLocalName(), title, sellers.size());
-                    Conversations.contractNet(Buyer.this, cfp,
-                                    proposals -> proposals.stream()
-                                            .min(Comparator.comparingInt(p -> Integer.parseInt(p.getContent())))
-                                            .orElse(null))
-                            .whenComplete((outcome, error) -> result.complete(error != null
-                                    ? "no purchase: " + error.getMessage()
-                                    : "bought from " + outcome.proposal().getSender().localName() + ": "
-                                    + outcome.result().getContent()));
-                }
-            });
-        }
-    }
-
-    /** One link of the ring: passes the secret on; the first link checks it came back unchanged. */
-    static final class ChainLink extends Agent {
-        private final CountDownLatch rounds;
-        AID next;
-        private String secret;
-        private long startNs;
-
-        ChainLink(CountDownLatch rounds) {
-            this.rounds = rounds;
-        }
-
-        void startRound() {
-            secret = "s".repeat(500 - 8) + String.format("%08d", rounds.getCount());
-            startNs = runtime().clock().nanoTime();
-            pass(secret);
-        }
-
-        private void pass(String content) {
-            AclMessage m = new AclMessage(Performative.INFORM);
-            m.addReceiver(next);
-            m.setContent(content);
-            send(m);
-        }
-
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour(this) {
-                @Override
-                public void action() {
-                    AclMessage m = receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    if (rounds == null) {
-                        pass(m.getContent());
-                        return;
-                    }
-                    long us = (runtime().clock().nanoTime() - startNs) / 1_000;
-                    OUT.printf("  %s: the secret came back %s after %d hops in %d us%n", getLocalName(),
-                            m.getContent().equals(secret) ? "unchanged" : "CHANGED", 5, us);
-                    rounds.countDown();
-                    if (rounds.getCount() > 0) {
-                        startRound();
-                    }
-                }
-            });
-        }
+        return null;
     }
 }

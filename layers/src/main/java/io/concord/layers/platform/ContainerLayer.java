@@ -103,6 +103,7 @@ public final class ContainerLayer extends Layer {
     private long periodMs;
     private long timeoutMs;
     private final Set<String> suspects = new HashSet<>();
+    private AgentEntry successor; // after a failover, the agent expected to take over
     private int failoverRounds;
     private final Map<String, String[]> pages = new HashMap<>();
     private String pagesKey;
@@ -115,7 +116,6 @@ public final class ContainerLayer extends Layer {
     private int cycles;
 
     // requests of the Java API
-    private final Map<String, CompletableFuture<AclMessage>> pendingRequests = new HashMap<>();
     private long requestCounter;
     private final List<Consumer<ContainerLayer>> listeners = new ArrayList<>();
 
@@ -331,12 +331,9 @@ public final class ContainerLayer extends Layer {
             host.tracer().trace(host.nowNs(), self, "platform-accept", m.getPerformative().wireName() + " " + c.command()
                     + " from " + sender.name());
         }
-        if (m.getInReplyTo() != null) {
-            CompletableFuture<AclMessage> f = pendingRequests.remove(m.getInReplyTo());
-            if (f != null) {
-                f.complete(m);
-                return;
-            }
+        if (m.getInReplyTo() != null && serviceRequests.containsKey(m.getInReplyTo())) {
+            answerRequest(m);
+            return;
         }
         switch (c.command()) {
             case "who-is-container" -> onQuery(m, c);
@@ -546,6 +543,7 @@ public final class ContainerLayer extends Layer {
         watchTimer = cancel(watchTimer);
         joinTarget = null;
         role = Role.CONTAINER;
+        successor = null;
         term = newTerm;
         maxTermSeen = Math.max(maxTermSeen, term);
         seq = 1;
@@ -724,6 +722,7 @@ public final class ContainerLayer extends Layer {
         cycleTimer = cancel(cycleTimer);
         pushTimer = cancel(pushTimer);
         role = Role.MEMBER;
+        successor = null;
         if (container == null || !container.name().equals(by.name()) || t != term) {
             seq = 0; // a new container's list replaces ours whatever its sequence
         }
@@ -1057,8 +1056,9 @@ public final class ContainerLayer extends Layer {
         long t = timeoutMs > 0 ? timeoutMs : config.timeoutMs(Math.max(1, lal.size()));
         watchTimer = after(t, () -> {
             watchTimer = -1;
-            if (role == Role.MEMBER && container != null) {
-                failover("no word from the container " + container.name() + " for " + t + " ms");
+            if (role == Role.MEMBER && (container != null || successor != null)) {
+                failover("no word from " + (container != null ? "the container " + container.name()
+                        : "the expected successor " + successor.name()) + " for " + t + " ms");
             }
         });
     }
@@ -1068,6 +1068,10 @@ public final class ContainerLayer extends Layer {
         if (container != null) {
             suspects.add(container.name());
         }
+        if (successor != null) {
+            suspects.add(successor.name());
+        }
+        successor = null;
         failoverRounds++;
         List<AgentEntry> candidates = new ArrayList<>();
         for (AgentEntry e : lal.values()) {
@@ -1085,8 +1089,10 @@ public final class ContainerLayer extends Layer {
             becomeContainer(Math.max(term, maxTermSeen) + 1, why);
             return;
         }
-        // Wait for the successor; if it stays silent too, it is suspected in turn.
-        container = next;
+        // Wait for the successor; if it stays silent too, it is suspected in turn. Until it speaks
+        // there is no container (requests to the DF wait).
+        successor = next;
+        container = null;
         publish();
         resetWatch();
     }
@@ -1245,34 +1251,95 @@ public final class ContainerLayer extends Layer {
         return r;
     }
 
+    /** A request of the Java API, kept until answered: sent again on timeout (all are idempotent). */
+    private static final class ServiceRequest {
+        final boolean df;
+        final Performative act;
+        final String content;
+        final String replyWith;
+        final CompletableFuture<AclMessage> future = new CompletableFuture<>();
+        int attempts;
+        long timer = -1;
+
+        ServiceRequest(boolean df, Performative act, String content, String replyWith) {
+            this.df = df;
+            this.act = act;
+            this.content = content;
+            this.replyWith = replyWith;
+        }
+    }
+
+    private static final int REQUEST_ATTEMPTS = 4;
+    private final List<ServiceRequest> waitingForContainer = new ArrayList<>();
+    private final Map<String, ServiceRequest> serviceRequests = new HashMap<>();
+
     /**
      * Sends a request to this platform's DF or AMS for the Java API; the future completes with the
-     * reply. Loop thread only.
+     * reply. Held until the agent knows its container; sent again if unanswered. Loop thread only.
      */
     CompletableFuture<AclMessage> request(boolean df, Performative p, String content) {
-        CompletableFuture<AclMessage> f = new CompletableFuture<>();
+        ServiceRequest r = new ServiceRequest(df, p, content, self + "-p" + (++requestCounter));
         if (role == Role.STOPPED) {
-            f.completeExceptionally(new IllegalStateException("the agent has stopped"));
-            return f;
+            r.future.completeExceptionally(new IllegalStateException("the agent has stopped"));
+            return r.future;
         }
-        AclMessage m = platformMessage(p, P_SERVICES, df ? dfAid : amsAid, content);
-        String rw = self + "-p" + (++requestCounter);
-        m.setReplyWith(rw);
-        pendingRequests.put(rw, f);
-        after(Math.max(1_000, 4 * Math.max(timeoutMs, config.timeoutMs(lal.size()))), () -> {
-            CompletableFuture<AclMessage> late = pendingRequests.remove(rw);
-            if (late != null) {
-                late.completeExceptionally(new java.util.concurrent.TimeoutException("the "
-                        + (df ? "DF" : "AMS") + " did not answer; the container may be changing, try again"));
+        serviceRequests.put(r.replyWith, r);
+        if (role == Role.SEEKING || container == null) {
+            waitingForContainer.add(r);
+        } else {
+            sendRequest(r);
+        }
+        return r.future;
+    }
+
+    private void sendRequest(ServiceRequest r) {
+        r.attempts++;
+        AclMessage m = platformMessage(r.act, P_SERVICES, r.df ? dfAid : amsAid, r.content);
+        m.setReplyWith(r.replyWith);
+        long wait = Math.max(500, 2 * Math.max(timeoutMs, config.timeoutMs(lal.size())));
+        r.timer = after(wait, () -> {
+            r.timer = -1;
+            if (r.future.isDone()) {
+                return;
+            }
+            if (r.attempts >= REQUEST_ATTEMPTS) {
+                serviceRequests.remove(r.replyWith);
+                r.future.completeExceptionally(new java.util.concurrent.TimeoutException("the "
+                        + (r.df ? "DF" : "AMS") + " did not answer " + r.attempts + " requests; is a container elected?"));
+            } else if (role == Role.SEEKING || container == null) {
+                waitingForContainer.add(r);
+            } else {
+                sendRequest(r);
             }
         });
         try {
             host.send(m);
         } catch (SendRejectedException e) {
-            pendingRequests.remove(rw);
-            f.completeExceptionally(e);
+            serviceRequests.remove(r.replyWith);
+            r.timer = cancel(r.timer);
+            r.future.completeExceptionally(e);
         }
-        return f;
+    }
+
+    private void answerRequest(AclMessage reply) {
+        ServiceRequest r = serviceRequests.remove(reply.getInReplyTo());
+        if (r != null) {
+            r.timer = cancel(r.timer);
+            r.future.complete(reply);
+        }
+    }
+
+    private void releaseWaitingRequests() {
+        if (waitingForContainer.isEmpty() || role == Role.SEEKING || container == null) {
+            return;
+        }
+        List<ServiceRequest> ready = new ArrayList<>(waitingForContainer);
+        waitingForContainer.clear();
+        for (ServiceRequest r : ready) {
+            if (!r.future.isDone()) {
+                sendRequest(r);
+            }
+        }
     }
 
     // ---- helpers --------------------------------------------------------------------------------
@@ -1316,6 +1383,7 @@ public final class ContainerLayer extends Layer {
     }
 
     private void publish() {
+        releaseWaitingRequests();
         snapshot = new Snapshot(role, term, seq, container == null ? null : container.name(), List.copyOf(lal.values()));
         for (Consumer<ContainerLayer> l : listeners) {
             l.accept(this);
