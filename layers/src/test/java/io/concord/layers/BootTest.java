@@ -1,0 +1,96 @@
+package io.concord.layers;
+
+import io.concord.core.agent.Agent;
+import io.concord.layers.platform.Platform;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+class BootTest {
+
+    /** Records its arguments. */
+    public static final class Recorder extends Agent {
+        static volatile Object[] seen;
+
+        @Override
+        protected void setup() {
+            seen = getArguments();
+        }
+    }
+
+    @Test
+    void parsesAgentSpecsLikeJade() {
+        List<Boot.AgentSpec> specs = Boot.parseAgents("seller1:org.example.Seller(42, The Art);buyer:org.example.Buyer ; x:a.B()");
+        assertEquals(List.of(new Boot.AgentSpec("seller1", "org.example.Seller", List.of("42", "The Art")),
+                new Boot.AgentSpec("buyer", "org.example.Buyer", List.of()),
+                new Boot.AgentSpec("x", "a.B", List.of())), specs);
+    }
+
+    @Test
+    void badSpecsSayWhatIsWrong() {
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.parseAgents("seller1"))
+                .getMessage().contains("name:class"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.parseAgents("a:b.C(1"))
+                .getMessage().contains("unclosed '('"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.parseAgents("a:b.C(1))"))
+                .getMessage().contains("unmatched ')'"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.parseAgents("a:not a class"))
+                .getMessage().contains("not a Java class name"));
+    }
+
+    @Test
+    void badOptionsAndClassesSayWhatToDo() {
+        PrintStream out = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-nmae", "x"}, out))
+                .getMessage().contains("unknown option '-nmae'"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-profile", "class9"}, out))
+                .getMessage().contains("use class7 (default), class3 or closed"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-ports", "7001-x"}, out))
+                .getMessage().contains("7001-7200"));
+        assertTrue(assertThrows(Boot.BootException.class,
+                () -> Boot.start(new String[]{"-agents", "a:org.example.Missing"}, out))
+                .getMessage().contains("not on the class path"));
+        assertTrue(assertThrows(Boot.BootException.class,
+                () -> Boot.start(new String[]{"-agents", "a:java.lang.String"}, out))
+                .getMessage().contains("does not extend"));
+    }
+
+    @Test
+    void aConfigurationFileAndTheCommandLineCombine(@TempDir Path dir) throws Exception {
+        Path conf = dir.resolve("platform.properties");
+        Files.writeString(conf, "name=confplat\nports=7601-7650\nprofile=closed\n");
+        Map<String, String> s = Boot.settings(new String[]{"-conf", conf.toString(), "-ports", "7651-7700"});
+        assertEquals("confplat", s.get("name"));
+        assertEquals("7651-7700", s.get("ports"));
+        assertEquals("closed", s.get("profile"));
+        Files.writeString(conf, "nmae=x\n");
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.settings(new String[]{"-conf", conf.toString()}))
+                .getMessage().contains("unknown setting 'nmae'"));
+    }
+
+    @Test
+    void startsTheAgentsWithTheirArguments() {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        String name = "boot" + ProcessHandle.current().pid();
+        try (Platform p = Boot.start(new String[]{"-name", name, "-ports", "7651-7700", "-profile", "closed",
+                "-agents", "r:" + Recorder.class.getName() + "(1,two)"}, out)) {
+            assertEquals(name, p.name());
+            assertArrayEquals(new Object[]{"1", "two"}, Recorder.seen);
+            String printed = bytes.toString(StandardCharsets.UTF_8);
+            assertTrue(printed.startsWith("started r@" + name + " at udp://127.0.0.1:76"), printed);
+        }
+    }
+}
