@@ -27,6 +27,8 @@ final class AgentNode implements StackHost {
     final DropCounters drops = new DropCounters();
     LayerStack stack;
     boolean queued;
+    /** Set when the agent crashes: from then on nothing leaves or enters its stack. */
+    boolean crashed;
     java.util.function.LongSupplier platformTime;
     java.util.List<Address> neighbours = java.util.List.of();
     io.concord.core.layer.Router router;
@@ -106,6 +108,9 @@ final class AgentNode implements StackHost {
 
     /** The bottom of the stack: to the network. */
     void transmit(Envelope env) {
+        if (crashed) {
+            return;
+        }
         if (transport == Transport.UDP && env.length() > SocketNetwork.MAX_DATAGRAM) {
             stackDrop(env, "too-large", env.length() + " bytes exceed the datagram limit of "
                     + SocketNetwork.MAX_DATAGRAM);
@@ -126,7 +131,7 @@ final class AgentNode implements StackHost {
 
     /** From the network. */
     void onDatagram(Address from, byte[] data, int offset, int length, long nowNs) {
-        if (agent.getState() == Agent.State.DELETED) {
+        if (crashed || agent.getState() == Agent.State.DELETED) {
             return;
         }
         stack.receiveUp(Envelope.incoming(from, data, offset, length, nowNs));

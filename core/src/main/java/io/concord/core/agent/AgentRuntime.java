@@ -407,7 +407,8 @@ public final class AgentRuntime implements AutoCloseable {
     private void removeAgent(AgentNode node, boolean takeDown) {
         directory.remove(node.aid);
         if (!takeDown) {
-            node.endpoint.close(); // a crash: nothing more goes out, not even what the layers say on stop
+            node.crashed = true; // a crash: nothing more goes out, not even what the layers say on stop
+            node.endpoint.close();
         }
         node.agent.terminate(takeDown);
         node.stack.stop();

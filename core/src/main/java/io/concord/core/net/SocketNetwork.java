@@ -289,6 +289,9 @@ public final class SocketNetwork implements Network {
 
         @Override
         public boolean send(Address to, byte[] data, int offset, int length) {
+            if (!channel.isOpen()) {
+                return false;
+            }
             if (localDelivery) {
                 UdpEndpoint peer = localUdp.get(to);
                 if (peer != null && peer.isOpen()) {

@@ -84,7 +84,8 @@ public final class ContainerLayer extends Layer {
     private volatile Snapshot snapshot = Snapshot.EMPTY;
 
     // seeking
-    private final Map<Address, Boolean> asked = new LinkedHashMap<>();
+    private final Map<Address, Boolean> asked = new LinkedHashMap<>(); // neighbour -> answered
+    private final Set<Address> sentTo = new HashSet<>();
     private final Map<String, AgentEntry> seekers = new HashMap<>();
     private long claimTerm = -1;
     private AgentEntry claim;
@@ -114,6 +115,9 @@ public final class ContainerLayer extends Layer {
     private long cycleTimer = -1;
     private long pushTimer = -1;
     private int cycles;
+    private long cycleStartNs;
+    private final Set<String> cycleAwaiting = new HashSet<>();
+    private volatile long lastCycleNs = -1;
 
     // requests of the Java API
     private long requestCounter;
@@ -156,6 +160,14 @@ public final class ContainerLayer extends Layer {
     /** The LAL as this agent holds it, by name. Loop thread only. */
     public Collection<AgentEntry> agents() {
         return List.copyOf(lal.values());
+    }
+
+    /**
+     * How long the last complete maintenance cycle took on the container: from its alive messages
+     * to the last agent's confirmation, in ns; -1 if none completed yet. Safe from any thread.
+     */
+    public long lastCycleNs() {
+        return lastCycleNs;
     }
 
     public long term() {
@@ -363,6 +375,7 @@ public final class ContainerLayer extends Layer {
         for (Map.Entry<Address, Boolean> e : asked.entrySet()) {
             e.setValue(Boolean.FALSE);
         }
+        sentTo.clear();
         askNeighbours();
         publish();
     }
@@ -370,13 +383,26 @@ public final class ContainerLayer extends Layer {
     private void askNeighbours() {
         attempt++;
         String content = Lines.content("who-is-container", Lines.params("round", round), List.of(selfEntry));
+        // The nearest ports first, a batch at a time: any member that answers names the container.
+        List<Address> open = new ArrayList<>();
         for (Map.Entry<Address, Boolean> e : asked.entrySet()) {
             if (!e.getValue()) {
-                sendQuietly(platformMessage(Performative.QUERY_REF, P_DISCOVERY, anyAt(e.getKey()), content));
+                open.add(e.getKey());
             }
+        }
+        int own = selfEntry.port();
+        open.sort(java.util.Comparator.comparingInt(a -> Math.abs(a.port() - own)));
+        for (Address a : open.subList(0, Math.min(open.size(), batch()))) {
+            sentTo.add(a);
+            sendQuietly(platformMessage(Performative.QUERY_REF, P_DISCOVERY, anyAt(a), content));
         }
         discoveryTimer = cancel(discoveryTimer);
         discoveryTimer = after(config.discoveryTimeoutMs() << Math.min(attempt - 1, 4), this::onDiscoveryTimeout);
+    }
+
+    /** Neighbours asked per attempt: a batch that grows with the attempts. */
+    private int batch() {
+        return 16 << Math.min(attempt - 1, 10);
     }
 
     private AID anyAt(Address a) {
@@ -410,8 +436,11 @@ public final class ContainerLayer extends Layer {
             reply.setContent(Lines.content("seeking", Lines.params("round", round, "term", maxTermSeen),
                     List.of(selfEntry)));
         }
+        // Answered to whoever holds the asker's port, as it asked: sealed with the platform key, so
+        // that discovery costs no signed handshake per pair of agents.
         reply.clearAllReceiver();
-        reply.addReceiver(asker.aid());
+        Address back = asker.transportAddress();
+        reply.addReceiver(back != null ? anyAt(back) : asker.aid());
         sendQuietly(reply);
         if (role == Role.CONTAINER) {
             // A newcomer: it will join; nothing to do until then.
@@ -445,9 +474,17 @@ public final class ContainerLayer extends Layer {
         maxTermSeen = Math.max(maxTermSeen, Long.parseLong(c.params().getOrDefault("term", "0")));
         if (role == Role.SEEKING) {
             seekers.put(e.name(), e);
-            if (joinTarget == null && claim == null && !asked.containsValue(Boolean.FALSE)) {
+            boolean waiting = false;
+            for (Address a : sentTo) {
+                waiting |= !asked.get(a);
+            }
+            if (joinTarget == null && claim == null && !waiting) {
                 discoveryTimer = cancel(discoveryTimer);
-                decide();
+                if (asked.containsValue(Boolean.FALSE)) {
+                    askNeighbours(); // every one asked is seeking too: ask the next batch now
+                } else {
+                    decide();
+                }
             }
         }
     }
@@ -932,6 +969,9 @@ public final class ContainerLayer extends Layer {
         }
         lastHeard.put(from, host.nowNs());
         heldSeq.put(from, s);
+        if (cycleAwaiting.remove(from) && cycleAwaiting.isEmpty()) {
+            lastCycleNs = host.nowNs() - cycleStartNs;
+        }
         if (t != term || s < seq) {
             if (pushTimer < 0) {
                 pushTo(lal.get(from).aid(), lalPages());
@@ -989,6 +1029,10 @@ public final class ContainerLayer extends Layer {
         }
         periodMs = config.periodMs(lal.size());
         timeoutMs = config.timeoutMs(lal.size());
+        cycleStartNs = now;
+        cycleAwaiting.clear();
+        cycleAwaiting.addAll(lal.keySet());
+        cycleAwaiting.remove(self);
         String alive = Lines.content("alive", Lines.params("term", term, "seq", seq, "period", periodMs,
                 "timeout", timeoutMs), List.of(selfEntry));
         for (AgentEntry e : lal.values()) {
