@@ -688,14 +688,16 @@ public final class ContainerLayer extends Layer {
             sendQuietly(platformMessage(Performative.REQUEST, P_LAL, pick,
                     Lines.content("lal-request", Lines.params("term", term), List.of(selfEntry))));
         }
+        // Wait a timeout for the copy (it may name a container to join); then elect from it.
         role = Role.MEMBER;
-        container = failed;
+        container = null;
+        successor = failed;
         term = Math.max(term, claimTerm);
         lal.put(self, selfEntry);
-        lal.put(failed.name(), failed);
         rebuildRoutes();
         timeoutMs = Math.max(timeoutMs, config.timeoutMs(lal.size()));
-        failover("the container " + failed.name() + " did not answer " + joinFailures + " joins");
+        publish();
+        resetWatch();
     }
 
     private void onJoin(AclMessage m, Lines.Content c) {
@@ -797,6 +799,20 @@ public final class ContainerLayer extends Layer {
         if (added) {
             rebuildRoutes();
             publish();
+        }
+        // The copy names the container its holder follows: if that is not the one that failed us,
+        // join it rather than wait for an election.
+        String named = c.params().getOrDefault("container", "");
+        long t = Long.parseLong(c.params().getOrDefault("term", "0"));
+        if (!named.isEmpty() && !suspects.contains(named) && !named.equals(self) && joinTarget == null
+                && (container == null || t > term)) {
+            for (AgentEntry e : c.entries()) {
+                if (e.name().equals(named)) {
+                    trace("join-from-copy", named + " term=" + t);
+                    startJoin(e, t);
+                    return;
+                }
+            }
         }
     }
 
@@ -1100,7 +1116,7 @@ public final class ContainerLayer extends Layer {
         long t = timeoutMs > 0 ? timeoutMs : config.timeoutMs(Math.max(1, lal.size()));
         watchTimer = after(t, () -> {
             watchTimer = -1;
-            if (role == Role.MEMBER && (container != null || successor != null)) {
+            if (role == Role.MEMBER && joinTarget == null && (container != null || successor != null)) {
                 failover("no word from " + (container != null ? "the container " + container.name()
                         : "the expected successor " + successor.name()) + " for " + t + " ms");
             }

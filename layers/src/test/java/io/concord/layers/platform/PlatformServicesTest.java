@@ -202,4 +202,28 @@ class PlatformServicesTest {
             assertTrue(e.getMessage().contains("--ports 7001-7006"), e.getMessage());
         }
     }
+
+    @Test
+    void aNewcomerWhoseContainerDiedAsksAKnownAgentForTheLastListAndJoinsTheNextContainer() {
+        try (PlatformWorld w = new PlatformWorld(9, FaultPlan.NONE, Profile.CLOSED)) {
+            for (int i = 0; i < 4; i++) {
+                w.start("m" + i);
+            }
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            List<String> newcomerEvents = new ArrayList<>();
+            w.sim.trace().addListener((ns, node, event, detail) -> {
+                if (node.equals("late@sim") && event.startsWith("platform-")) {
+                    newcomerEvents.add(event);
+                }
+            });
+            String container = w.containers().get(0);
+            // The members still name the old container when the newcomer asks: its joins go nowhere.
+            w.crash(container);
+            w.start("late");
+            assertTrue(w.sim.runUntil(w::converged, 10_000), w.describe());
+            assertTrue(newcomerEvents.contains("platform-join-failed"), newcomerEvents.toString());
+            assertTrue(newcomerEvents.contains("platform-join-from-copy"), newcomerEvents.toString());
+            assertFalse(w.containers().contains("late"), "the newcomer took over instead of joining: " + w.describe());
+        }
+    }
 }

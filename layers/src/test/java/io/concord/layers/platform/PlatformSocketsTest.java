@@ -19,6 +19,7 @@ import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** Twenty agents in one JVM on real UDP sockets, class 7: one platform, messaging by name, failover. */
 class PlatformSocketsTest {
@@ -123,6 +124,34 @@ class PlatformSocketsTest {
             AclMessage reply = from.informed.get(30, TimeUnit.SECONDS);
             assertEquals("echo:after", reply.getContent());
             assertNotEquals(old, reply.getSender().name());
+        }
+    }
+
+    @Test
+    void twoPlatformsWithTheirOwnKeysShareAPortRangeAndStayApart() throws Exception {
+        long pid = ProcessHandle.current().pid();
+        PortRange range = PortRange.of(7461, 7480);
+        try (Platform a = Platform.builder().name("one" + pid).ports(range)
+                .safetyStack(SafetyStack.builder().profile(Profile.CLASS_3).platformKey(PlatformKey.random()).build()).build();
+             Platform b = Platform.builder().name("two" + pid).ports(range)
+                     .safetyStack(SafetyStack.builder().profile(Profile.CLASS_3).platformKey(PlatformKey.random()).build()).build()) {
+            List<AID> inA = new ArrayList<>();
+            List<AID> inB = new ArrayList<>();
+            for (int i = 0; i < 3; i++) {
+                // Interleaved: each platform's agents hold ports between the other's.
+                inA.add(a.startAgent("x" + i, new Echo()));
+                inB.add(b.startAgent("y" + i, new Echo()));
+            }
+            when(a, inA, l -> agreed(l, 3)).get(30, TimeUnit.SECONDS);
+            when(b, inB, l -> agreed(l, 3)).get(30, TimeUnit.SECONDS);
+            CompletableFuture<List<String>> namesInA = new CompletableFuture<>();
+            a.runtime().execute(() -> namesInA.complete(Platform.containerLayer(a.runtime(), inA.get(0)).agents().stream()
+                    .map(AgentEntry::name).toList()));
+            assertEquals(List.of("x0@one" + pid, "x1@one" + pid, "x2@one" + pid), namesInA.get(10, TimeUnit.SECONDS));
+            // The other platform's frames failed authentication and were counted, never accepted.
+            CompletableFuture<Long> badTags = new CompletableFuture<>();
+            a.runtime().execute(() -> badTags.complete(a.runtime().drops().getOrDefault("bad-tag", 0L)));
+            assertTrue(badTags.get(10, TimeUnit.SECONDS) > 0);
         }
     }
 }
