@@ -20,4 +20,24 @@ class PlatformBasicsTest {
             assertTrue(w.violations.isEmpty(), w.violations.toString());
         }
     }
+
+    @Test
+    void agentsOnTcpFormAPlatformToo() {
+        try (io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(3, FaultPlan.NONE)) {
+            var rt = sim.newRuntime("h1");
+            Platform p = Platform.builder().runtime(rt).transport(io.concord.core.net.Transport.TCP)
+                    .safetyStack(io.concord.layers.SafetyStack.builder().profile(Profile.CLOSED)
+                            .transport(io.concord.core.net.Transport.TCP).build()).build();
+            java.util.List<io.concord.core.acl.AID> aids = new java.util.ArrayList<>();
+            for (int i = 0; i < 5; i++) {
+                aids.add(p.startAgent("t" + i, new PlatformWorld.Idle()));
+            }
+            java.util.function.BooleanSupplier agreed = () -> {
+                long containers = aids.stream().filter(a -> Platform.containerLayer(rt, a).role() == ContainerLayer.Role.CONTAINER).count();
+                return containers == 1 && aids.stream().allMatch(a -> Platform.containerLayer(rt, a).agents().size() == 5);
+            };
+            assertTrue(sim.runUntil(agreed, 5_000));
+            assertTrue(aids.get(0).addresses().get(0).startsWith("tcp://"), aids.get(0).toString());
+        }
+    }
 }
