@@ -226,4 +226,41 @@ class PlatformServicesTest {
             assertFalse(w.containers().contains("late"), "the newcomer took over instead of joining: " + w.describe());
         }
     }
+
+    @Test
+    void malformedPlatformMessagesAreDroppedAndCountedAndChangeNothing() {
+        try (PlatformWorld w = world(Profile.CLOSED)) {
+            for (int i = 0; i < 3; i++) {
+                w.start("g" + i);
+            }
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            String container = w.containers().get(0);
+            Agent sender = w.rt.agent(w.live.get(w.live.keySet().stream().filter(n -> !n.equals(container)).findFirst().orElseThrow()));
+            java.util.SplittableRandom r = new java.util.SplittableRandom(4);
+            String[] commands = {"lal", "alive", "join", "joined", "container", "seeking", "who-is-container", "leave",
+                    "agent-info", "lal-held", "lal-copy", "lal-request", "nonsense", ""};
+            for (int i = 0; i < 2_000; i++) {
+                StringBuilder b = new StringBuilder(commands[r.nextInt(commands.length)]);
+                int params = r.nextInt(4);
+                for (int k = 0; k < params; k++) {
+                    b.append(' ').append(new String[]{"term", "seq", "page", "pages", "period", "timeout"}[r.nextInt(6)])
+                            .append('=').append(r.nextInt(3) == 0 ? "x" : Long.toString(r.nextLong(-5, 1L << 40)));
+                }
+                if (r.nextBoolean()) {
+                    b.append('\n').append(r.nextBoolean() ? "z@sim udp://h1:1 5 -" : "garbage line");
+                }
+                AclMessage m = new AclMessage(r.nextBoolean() ? Performative.INFORM : Performative.REQUEST);
+                m.addReceiver(AID.local(r.nextBoolean() ? container : "g" + r.nextInt(3), "sim"));
+                m.setOntology("concord-platform");
+                m.setContent(b.toString());
+                sender.send(m);
+                w.sim.runFor(1);
+            }
+            w.sim.runFor(2_000);
+            assertTrue(w.rt.drops().getOrDefault("malformed-platform", 0L) > 0, w.rt.drops().toString());
+            assertEquals(0L, w.rt.drops().getOrDefault("layer-error", 0L), w.rt.drops().toString());
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            assertEquals(3, w.live.size());
+        }
+    }
 }

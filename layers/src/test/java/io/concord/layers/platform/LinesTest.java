@@ -1,0 +1,36 @@
+package io.concord.layers.platform;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+class LinesTest {
+
+    @Test
+    void entriesWithAwkwardCharactersRoundTrip() {
+        ServiceDescription s = new ServiceDescription("book selling", "Dune, vol. 1; 2=3 %", Map.of("price €", "42 ,;=%\n"),
+                List.of("o 1"), List.of("fipa-sl"), List.of("fipa-contract-net"));
+        AgentEntry e = new AgentEntry("söller 1@plat", "udp://127.0.0.1:7001", 1_767_225_600_123L, List.of(s, ServiceDescription.ofType("x")));
+        String text = Lines.content("lal", Lines.params("term", 3, "seq", 7), List.of(e, e.withServices(List.of())));
+        Lines.Content c = Lines.parse(text);
+        assertEquals("lal", c.command());
+        assertEquals(7, c.longParam("seq"));
+        assertEquals(List.of(e, e.withServices(List.of())), c.entries());
+    }
+
+    @Test
+    void malformedContentsSayWhatIsWrong() {
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse(""));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("lal term"));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("lal\na@p udp://x:1 notanumber -"));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("lal\nnoplatform udp://x:1 1 -"));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("lal\na@p udp://x:1 1 q=1"));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("lal\na@p udp://x:1 1 t=%4"));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("lal\na@p udp://x:1 1 - extra"));
+        assertThrows(IllegalArgumentException.class, () -> Lines.parse("join").longParam("term"));
+    }
+}
