@@ -27,7 +27,7 @@ import java.util.Properties;
  * <pre>
  * java -cp app.jar io.concord.layers.Boot -agents "seller1:org.example.Seller(42);buyer:org.example.Buyer"
  *      [-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp]
- *      [-host 127.0.0.1] [-conf platform.properties] [-watch]
+ *      [-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-conf platform.properties] [-watch]
  * </pre>
  *
  * A configuration file holds the same settings as Java properties ({@code name}, {@code ports},
@@ -84,6 +84,18 @@ public final class Boot {
                 .ports(range(s.getOrDefault("ports", PortRange.DEFAULT_BASE + "-" + (PortRange.DEFAULT_BASE + PortRange.DEFAULT_COUNT - 1))))
                 .profile(profile(s.getOrDefault("profile", "class7")))
                 .transport(transport(s.getOrDefault("transport", "udp")));
+        try {
+            io.concord.layers.platform.NetworkConfig net = io.concord.layers.platform.NetworkConfig.defaults();
+            if (s.containsKey("discovery-port")) {
+                net = net.withPort(Integer.parseInt(s.get("discovery-port").trim()));
+            }
+            if (s.containsKey("seeds") && !s.get("seeds").isBlank()) {
+                net = net.withSeeds(List.of(s.get("seeds").split(",")));
+            }
+            b.network(net);
+        } catch (IllegalArgumentException e) {
+            throw new BootException("-seeds is written host[:port],... and -discovery-port a port number: " + e.getMessage(), e);
+        }
         List<Agent> agents = new ArrayList<>();
         for (AgentSpec spec : specs) {
             agents.add(instantiate(spec));
@@ -140,7 +152,7 @@ public final class Boot {
             String key = a.replaceFirst("^--?", "").toLowerCase(Locale.ROOT);
             switch (key) {
                 case "help", "h", "watch" -> cli.put(key.equals("h") ? "help" : key, "true");
-                case "agents", "name", "ports", "profile", "transport", "host", "conf" -> {
+                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port" -> {
                     if (i + 1 >= args.length) {
                         throw new BootException("-" + key + " needs a value. " + usage());
                     }
@@ -160,9 +172,9 @@ public final class Boot {
             }
             for (String k : props.stringPropertyNames()) {
                 String key = k.toLowerCase(Locale.ROOT);
-                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch").contains(key)) {
+                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port").contains(key)) {
                     throw new BootException("unknown setting '" + k + "' in " + conf
-                            + "; known: name, ports, profile, transport, host, agents, watch");
+                            + "; known: name, ports, profile, transport, host, agents, watch, seeds, discovery-port");
                 }
                 all.put(key, props.getProperty(k).trim());
             }
@@ -282,6 +294,6 @@ public final class Boot {
     static String usage() {
         return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
                 + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
-                + "[-host 127.0.0.1] [-conf file.properties] [-watch]";
+                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-conf file.properties] [-watch]";
     }
 }

@@ -204,6 +204,22 @@ final class AgentNode implements StackHost {
     }
 
     @Override
+    public Endpoint openListener(int port) {
+        if (transport != Transport.UDP) {
+            return null;
+        }
+        String host = endpoint.localAddress().host();
+        boolean broadcast = !runtime.network().broadcastAddresses(host).isEmpty();
+        return runtime.network().bindListener(host, port, broadcast, this::onDatagram);
+    }
+
+    @Override
+    public java.util.List<String> broadcastAddresses() {
+        return transport == Transport.UDP ? runtime.network().broadcastAddresses(endpoint.localAddress().host())
+                : java.util.List.of();
+    }
+
+    @Override
     public java.util.random.RandomGenerator random() {
         return runtime.random();
     }

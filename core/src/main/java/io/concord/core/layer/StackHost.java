@@ -50,6 +50,22 @@ public interface StackHost {
     default void send(io.concord.core.acl.AclMessage message) {
     }
 
+    /**
+     * Opens the node's listener on a shared UDP port (the containers' network discovery port):
+     * what arrives there goes up this node's stack. Receives broadcasts unless the node is bound
+     * to loopback.
+     *
+     * @return the listener, to close when done; {@code null} if the port cannot be shared
+     */
+    default io.concord.core.net.Endpoint openListener(int port) {
+        return null;
+    }
+
+    /** The broadcast addresses this node reaches (none on loopback). */
+    default java.util.List<String> broadcastAddresses() {
+        return java.util.List.of();
+    }
+
     /** The seeded random source of the node's runtime. */
     default java.util.random.RandomGenerator random() {
         return new java.util.SplittableRandom();

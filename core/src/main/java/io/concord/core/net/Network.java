@@ -44,6 +44,28 @@ public interface Network extends AutoCloseable {
     }
 
     /**
+     * Binds a listener that shares its UDP port with others on the host (SO_REUSEADDR) and
+     * receives broadcasts: the network discovery port of the containers.
+     *
+     * @param host      the local host address the node is bound to
+     * @param port      the port
+     * @param broadcast true to receive broadcasts (bind the wildcard address), false to bind the host only
+     * @return the endpoint, or {@code null} if the port cannot be shared
+     */
+    default Endpoint bindListener(String host, int port, boolean broadcast, Receiver receiver) {
+        throw new UnsupportedOperationException(getClass().getSimpleName() + " has no shared listeners");
+    }
+
+    /**
+     * The broadcast addresses a node bound to {@code host} reaches: the subnet broadcast of the
+     * host's interface, then the limited broadcast 255.255.255.255. Empty for loopback, where
+     * nothing is broadcast.
+     */
+    default java.util.List<String> broadcastAddresses(String host) {
+        return java.util.List.of();
+    }
+
+    /**
      * Delivers the datagrams that have arrived by {@code nowNs} to their receivers.
      *
      * @return how many were delivered

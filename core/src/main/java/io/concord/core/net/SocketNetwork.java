@@ -100,12 +100,58 @@ public final class SocketNetwork implements Network {
     }
 
     @Override
+    public Endpoint bindListener(String host, int port, boolean broadcast, Receiver receiver) {
+        DatagramChannel ch = null;
+        try {
+            ch = DatagramChannel.open(java.net.StandardProtocolFamily.INET);
+            ch.setOption(StandardSocketOptions.SO_REUSEADDR, true);
+            ch.setOption(StandardSocketOptions.SO_BROADCAST, true);
+            ch.setOption(StandardSocketOptions.SO_RCVBUF, socketBufferBytes);
+            ch.bind(broadcast ? new InetSocketAddress(port) : new InetSocketAddress(host, port));
+            ch.configureBlocking(false);
+            UdpEndpoint ep = new UdpEndpoint(ch, receiver);
+            ch.register(selector, SelectionKey.OP_READ, ep);
+            return ep;
+        } catch (BindException e) {
+            closeQuietly(ch);
+            return null;
+        } catch (IOException e) {
+            closeQuietly(ch);
+            throw new UncheckedIOException("cannot bind the shared UDP port " + port + ": " + e.getMessage(), e);
+        }
+    }
+
+    @Override
+    public java.util.List<String> broadcastAddresses(String host) {
+        try {
+            java.net.InetAddress a = java.net.InetAddress.getByName(host);
+            if (a.isLoopbackAddress() || a.isAnyLocalAddress() || !(a instanceof java.net.Inet4Address)) {
+                return java.util.List.of();
+            }
+            java.util.List<String> out = new java.util.ArrayList<>();
+            java.net.NetworkInterface ni = java.net.NetworkInterface.getByInetAddress(a);
+            if (ni != null) {
+                for (java.net.InterfaceAddress ia : ni.getInterfaceAddresses()) {
+                    if (ia.getAddress().equals(a) && ia.getBroadcast() != null) {
+                        out.add(ia.getBroadcast().getHostAddress());
+                    }
+                }
+            }
+            out.add("255.255.255.255");
+            return out;
+        } catch (IOException e) {
+            return java.util.List.of();
+        }
+    }
+
+    @Override
     public Endpoint tryBind(String host, int port, Receiver receiver) {
         DatagramChannel ch = null;
         try {
             ch = DatagramChannel.open();
             ch.setOption(StandardSocketOptions.SO_RCVBUF, socketBufferBytes);
             ch.setOption(StandardSocketOptions.SO_SNDBUF, socketBufferBytes);
+            ch.setOption(StandardSocketOptions.SO_BROADCAST, true);
             ch.bind(new InetSocketAddress(host, port));
             ch.configureBlocking(false);
             UdpEndpoint ep = new UdpEndpoint(ch, receiver);

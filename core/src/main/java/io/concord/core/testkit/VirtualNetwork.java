@@ -33,6 +33,9 @@ public final class VirtualNetwork implements Network {
     private String mediumFromHost;
     private final Map<Address, VirtualEndpoint> bound = new HashMap<>();
     private final Map<Address, VirtualEndpoint> boundTcp = new HashMap<>();
+    private final Map<Integer, java.util.List<VirtualEndpoint>> listeners = new HashMap<>();
+    /** The host of a broadcast: delivered to every host's listener on the port. */
+    public static final String BROADCAST = "255.255.255.255";
     private final Map<String, Long> lastTcpDelivery = new HashMap<>();
     private final Map<String, Integer> nextEphemeral = new HashMap<>();
     private final PriorityQueue<Delivery> pending = new PriorityQueue<>();
@@ -139,7 +142,7 @@ public final class VirtualNetwork implements Network {
         String link = from + ">" + to;
         long at = Math.max(clock.nanoTime() + plan.latencyNs(), lastTcpDelivery.getOrDefault(link, 0L));
         lastTcpDelivery.put(link, at);
-        pending.add(new Delivery(at, sequence++, from, to, Arrays.copyOfRange(data, offset, offset + length), true));
+        pending.add(new Delivery(at, sequence++, from, to, Arrays.copyOfRange(data, offset, offset + length), true, null));
     }
 
     @Override
@@ -167,6 +170,19 @@ public final class VirtualNetwork implements Network {
         return ep;
     }
 
+    @Override
+    public Endpoint bindListener(String host, int port, boolean broadcast, Receiver receiver) {
+        VirtualEndpoint ep = new VirtualEndpoint(new Address(host, port), receiver, false);
+        ep.listener = true;
+        listeners.computeIfAbsent(port, k -> new java.util.ArrayList<>()).add(ep);
+        return ep;
+    }
+
+    @Override
+    public java.util.List<String> broadcastAddresses(String host) {
+        return java.util.List.of(BROADCAST);
+    }
+
     /** Closes every endpoint bound on a host, as a crash of its processes would. */
     public void closeHost(String host) {
         for (VirtualEndpoint ep : bound.values().toArray(new VirtualEndpoint[0])) {
@@ -179,11 +195,48 @@ public final class VirtualNetwork implements Network {
                 ep.close();
             }
         }
+        for (java.util.List<VirtualEndpoint> l : listeners.values()) {
+            for (VirtualEndpoint ep : l.toArray(new VirtualEndpoint[0])) {
+                if (ep.local.host().equals(host)) {
+                    ep.close();
+                }
+            }
+        }
+    }
+
+    /** The endpoints a datagram to this address reaches: the bound one, or the listeners on its port. */
+    private java.util.List<VirtualEndpoint> targets(Address to) {
+        VirtualEndpoint ep = bound.get(to);
+        if (ep != null) {
+            return java.util.List.of(ep);
+        }
+        java.util.List<VirtualEndpoint> l = listeners.get(to.port());
+        if (l == null) {
+            return java.util.List.of();
+        }
+        java.util.List<VirtualEndpoint> out = new java.util.ArrayList<>(1);
+        for (VirtualEndpoint e : l) {
+            if (to.host().equals(BROADCAST) || e.local.host().equals(to.host())) {
+                out.add(e);
+            }
+        }
+        return out;
     }
 
     private void send(Address from, Address to, byte[] data, int offset, int length) {
+        if (to.host().equals(BROADCAST)) {
+            for (VirtualEndpoint e : targets(to)) {
+                sendOne(from, to, e, data, offset, length);
+            }
+            return;
+        }
+        sendOne(from, to, null, data, offset, length);
+    }
+
+    private void sendOne(Address from, Address to, VirtualEndpoint target, byte[] data, int offset, int length) {
+        Address hostOf = target != null ? target.local : to;
         sent++;
-        if (blocked(from.host(), to.host()) || random.nextDouble() < plan.dropRate()) {
+        if (blocked(from.host(), hostOf.host()) || random.nextDouble() < plan.dropRate()) {
             dropped++;
             return;
         }
@@ -201,9 +254,9 @@ public final class VirtualNetwork implements Network {
             long at = clock.nanoTime() + delay;
             if (medium != null && from.host().equals(mediumFromHost)) {
                 medium.carry(from, to, bytes, (extraNs, b) -> pending.add(new Delivery(at + Math.max(0, extraNs),
-                        sequence++, from, to, b.clone(), false)));
+                        sequence++, from, to, b.clone(), false, target)));
             } else {
-                pending.add(new Delivery(at, sequence++, from, to, bytes, false));
+                pending.add(new Delivery(at, sequence++, from, to, bytes, false, target));
             }
         }
     }
@@ -218,8 +271,16 @@ public final class VirtualNetwork implements Network {
         Delivery d;
         while ((d = pending.peek()) != null && d.timeNs <= nowNs) {
             pending.poll();
-            VirtualEndpoint ep = (d.tcp ? boundTcp : bound).get(d.to);
-            if (ep == null || blocked(d.from.host(), d.to.host())) {
+            VirtualEndpoint ep;
+            if (d.target != null) {
+                ep = d.target.open ? d.target : null;
+            } else if (d.tcp) {
+                ep = boundTcp.get(d.to);
+            } else {
+                java.util.List<VirtualEndpoint> t = targets(d.to);
+                ep = t.isEmpty() ? null : t.get(t.size() - 1); // a unicast to a shared port: the last bound, as Linux does
+            }
+            if (ep == null || blocked(d.from.host(), ep.local.host())) {
                 dropped++;
                 continue;
             }
@@ -262,7 +323,8 @@ public final class VirtualNetwork implements Network {
         pending.clear();
     }
 
-    private record Delivery(long timeNs, long seq, Address from, Address to, byte[] data, boolean tcp)
+    private record Delivery(long timeNs, long seq, Address from, Address to, byte[] data, boolean tcp,
+                            VirtualEndpoint target)
             implements Comparable<Delivery> {
         @Override
         public int compareTo(Delivery o) {
@@ -276,6 +338,7 @@ public final class VirtualNetwork implements Network {
         private final Receiver receiver;
         private final boolean tcp;
         private boolean open = true;
+        private boolean listener;
 
         VirtualEndpoint(Address local, Receiver receiver, boolean tcp) {
             this.local = local;
@@ -305,7 +368,14 @@ public final class VirtualNetwork implements Network {
         public void close() {
             if (open) {
                 open = false;
-                (tcp ? boundTcp : bound).remove(local);
+                if (listener) {
+                    java.util.List<VirtualEndpoint> l = listeners.get(local.port());
+                    if (l != null) {
+                        l.remove(this);
+                    }
+                } else {
+                    (tcp ? boundTcp : bound).remove(local);
+                }
             }
         }
 

@@ -66,6 +66,13 @@ public final class ContainerLayer extends Layer {
     static final String P_SERVICES = "concord-services";
 
     private final PlatformConfig config;
+    private final Federation federation;
+    // The Global Agent List as this agent holds it: the other hosts' agents, from its container.
+    private final TreeMap<String, AgentEntry> gal = new TreeMap<>();
+    private long gseq;
+    private String galFrom;
+    private final Map<String, String[]> galPages = new HashMap<>();
+    private String galPagesKey;
     private LayerContext ctx;
     private StackHost host;
     private String platform;
@@ -129,7 +136,13 @@ public final class ContainerLayer extends Layer {
     }
 
     public ContainerLayer(PlatformConfig config) {
+        this(config, NetworkConfig.defaults());
+    }
+
+    /** A container layer that also federates with the containers of other hosts. */
+    public ContainerLayer(PlatformConfig config, NetworkConfig network) {
         this.config = config;
+        this.federation = network == null ? null : new Federation(this, network);
     }
 
     public ContainerLayer() {
@@ -170,6 +183,25 @@ public final class ContainerLayer extends Layer {
         return lastCycleNs;
     }
 
+    /** The Global Agent List as this agent holds it: agents of other hosts. Loop thread only. */
+    public Collection<AgentEntry> globalAgents() {
+        return List.copyOf(gal.values());
+    }
+
+    /** The other hosts' containers this container is in contact with (empty unless container). */
+    public List<String> facilitators() {
+        if (federation == null) {
+            return List.of();
+        }
+        List<String> out = new ArrayList<>();
+        for (Federation.Facilitator f : federation.facilitators().values()) {
+            if (f.contacted) {
+                out.add(f.entry.name());
+            }
+        }
+        return out;
+    }
+
     public long term() {
         return term;
     }
@@ -191,7 +223,13 @@ public final class ContainerLayer extends Layer {
     /** Searches the yellow pages in this agent's copy of the LAL (no message is sent). */
     public List<AgentEntry> search(ServiceDescription template) {
         List<AgentEntry> out = new ArrayList<>();
-        for (AgentEntry e : lal.values()) {
+        List<AgentEntry> all = new ArrayList<>(lal.values());
+        for (AgentEntry e : gal.values()) {
+            if (!lal.containsKey(e.name())) {
+                all.add(e);
+            }
+        }
+        for (AgentEntry e : all) {
             for (ServiceDescription s : e.services()) {
                 if (s.matches(template)) {
                     out.add(e);
@@ -236,6 +274,9 @@ public final class ContainerLayer extends Layer {
     public void stop(LayerContext ctx) {
         Role was = role;
         cancelAll();
+        if (federation != null) {
+            federation.stop();
+        }
         if (was == Role.CONTAINER) {
             for (AgentEntry e : lal.values()) {
                 if (!e.name().equals(self)) {
@@ -260,14 +301,18 @@ public final class ContainerLayer extends Layer {
         pushTimer = cancel(pushTimer);
     }
 
-    private long cancel(long timer) {
+    long cancel(long timer) {
         if (timer >= 0) {
             host.cancel(timer);
         }
         return -1;
     }
 
-    private long after(long ms, Runnable r) {
+    StackHost host() {
+        return host;
+    }
+
+    long after(long ms, Runnable r) {
         return host.schedule(host.nowNs() + ms * 1_000_000L, r);
     }
 
@@ -288,6 +333,12 @@ public final class ContainerLayer extends Layer {
 
     private void rebuildRoutes() {
         routes.clear();
+        for (AgentEntry e : gal.values()) {
+            Address a = e.transportAddress();
+            if (a != null) {
+                routes.put(e.name(), new Router.Route(a, e.aid()));
+            }
+        }
         for (AgentEntry e : lal.values()) {
             Address a = e.transportAddress();
             if (a != null) {
@@ -361,7 +412,12 @@ public final class ContainerLayer extends Layer {
             case "leave" -> onLeave(m, c);
             case "lal-request" -> onLalRequest(m);
             case "lal-copy" -> onLalCopy(c);
-            default -> throw new IllegalArgumentException("unknown platform command '" + c.command() + "'");
+            case "gal" -> onGal(m, c);
+            default -> {
+                if (federation == null || !federation.handle(m, c)) {
+                    throw new IllegalArgumentException("unknown platform command '" + c.command() + "'");
+                }
+            }
         }
     }
 
@@ -405,7 +461,7 @@ public final class ContainerLayer extends Layer {
         return 16 << Math.min(attempt - 1, 10);
     }
 
-    private AID anyAt(Address a) {
+    AID anyAt(Address a) {
         return new AID(Frames.ANY_LOCAL_NAME + "@" + platform, a.toUri(host.transport()));
     }
 
@@ -618,11 +674,17 @@ public final class ContainerLayer extends Layer {
         timeoutMs = config.timeoutMs(lal.size());
         cycleTimer = cancel(cycleTimer);
         cycleTimer = after(periodMs, this::cycle);
+        if (federation != null) {
+            federation.start();
+        }
         publish();
     }
 
     private void yieldTo(AgentEntry better, long t) {
         trace("yield", "to " + better.name() + " term=" + t);
+        if (federation != null) {
+            federation.stop();
+        }
         cycleTimer = cancel(cycleTimer);
         pushTimer = cancel(pushTimer);
         String content = Lines.content("container", Lines.params("term", t), List.of(better, selfEntry));
@@ -758,6 +820,9 @@ public final class ContainerLayer extends Layer {
 
     private void becomeMember(AgentEntry by, long t, long period, long timeout) {
         boolean changed = role != Role.MEMBER || container == null || !container.name().equals(by.name()) || term != t;
+        if (federation != null) {
+            federation.stop();
+        }
         cycleTimer = cancel(cycleTimer);
         pushTimer = cancel(pushTimer);
         role = Role.MEMBER;
@@ -827,10 +892,14 @@ public final class ContainerLayer extends Layer {
         }
     }
 
-    private List<String> lalPages() {
+    List<String> lalPages() {
+        return pagesOf(lal.values());
+    }
+
+    private List<String> pagesOf(Collection<AgentEntry> entries) {
         List<String> out = new ArrayList<>();
         StringBuilder b = new StringBuilder();
-        for (AgentEntry e : lal.values()) {
+        for (AgentEntry e : entries) {
             StringBuilder line = new StringBuilder(80);
             Lines.appendEntry(line, e);
             if (b.length() > 0 && b.length() + line.length() + 1 > config.maxContentBytes()) {
@@ -857,6 +926,10 @@ public final class ContainerLayer extends Layer {
             }
         }
         trace("distribute", "term=" + term + " seq=" + seq + " agents=" + lal.size() + " pages=" + p.size());
+        if (federation != null) {
+            federation.localChanged();
+            globalChanged();
+        }
         publish();
     }
 
@@ -985,6 +1058,10 @@ public final class ContainerLayer extends Layer {
         }
         lastHeard.put(from, host.nowNs());
         heldSeq.put(from, s);
+        String g = c.params().get("gseq");
+        if (g != null && Long.parseLong(g) < gseq && pushTimer < 0) {
+            pushGalTo(lal.get(from).aid(), pagesOf(gal.values()));
+        }
         if (cycleAwaiting.remove(from) && cycleAwaiting.isEmpty()) {
             lastCycleNs = host.nowNs() - cycleStartNs;
         }
@@ -1108,7 +1185,7 @@ public final class ContainerLayer extends Layer {
         }
         resetWatch();
         sendQuietly(platformMessage(Performative.CONFIRM, P_MAINTENANCE, m.getSender(),
-                Lines.content("alive-held", Lines.params("term", term, "seq", seq), List.of())));
+                Lines.content("alive-held", Lines.params("term", term, "seq", seq, "gseq", gseq), List.of())));
     }
 
     private void resetWatch() {
@@ -1211,6 +1288,102 @@ public final class ContainerLayer extends Layer {
             lal.remove(from);
             rebuildRoutes();
             failover(from + " left");
+        }
+    }
+
+    // ---- global agent list ----------------------------------------------------------------------
+
+    /** The federation's lists changed (container): recompute the GAL and give it to every agent. */
+    void globalChanged() {
+        if (role != Role.CONTAINER || federation == null) {
+            return;
+        }
+        List<AgentEntry> now = federation.globalAgents(lal.keySet());
+        if (now.equals(List.copyOf(gal.values()))) {
+            return;
+        }
+        gal.clear();
+        for (AgentEntry e : now) {
+            gal.put(e.name(), e);
+        }
+        gseq++;
+        galFrom = self;
+        rebuildRoutes();
+        List<String> p = pagesOf(gal.values());
+        for (AgentEntry e : lal.values()) {
+            if (!e.name().equals(self)) {
+                pushGalTo(e.aid(), p);
+            }
+        }
+        trace("gal", "gseq=" + gseq + " agents=" + gal.size());
+        publish();
+    }
+
+    private void pushGalTo(AID to, List<String> p) {
+        for (int i = 0; i < p.size(); i++) {
+            String head = Lines.content("gal", Lines.params("term", term, "gseq", gseq, "page", i, "pages", p.size()), List.of());
+            sendQuietly(platformMessage(Performative.INFORM_REF, P_LAL, to, head + "\n" + p.get(i)));
+        }
+    }
+
+    /** A page of the GAL from this agent's container. */
+    private void onGal(AclMessage m, Lines.Content c) {
+        String from = m.getSender().name();
+        if (role != Role.MEMBER || container == null || !container.name().equals(from)) {
+            return; // only the container this agent follows gives it the GAL
+        }
+        long g = c.longParam("gseq");
+        int page = (int) c.longParam("page");
+        int n = (int) c.longParam("pages");
+        if (n < 1 || n > 10_000 || page < 0 || page >= n) {
+            throw new IllegalArgumentException("a bad GAL page " + page + " of " + n);
+        }
+        if (from.equals(galFrom) && g <= gseq) {
+            return;
+        }
+        String key = from + "/" + g;
+        if (!key.equals(galPagesKey)) {
+            galPages.clear();
+            galPagesKey = key;
+        }
+        String text = m.getContent();
+        int nl = text.indexOf('\n');
+        String[] got = galPages.computeIfAbsent(key, k -> new String[n]);
+        if (got.length != n) {
+            throw new IllegalArgumentException("GAL pages disagree on their count");
+        }
+        got[page] = nl < 0 ? "" : text.substring(nl + 1);
+        for (String x : got) {
+            if (x == null) {
+                return;
+            }
+        }
+        gal.clear();
+        for (String x : got) {
+            if (!x.isEmpty()) {
+                for (String line : x.split("\n", -1)) {
+                    AgentEntry e = Lines.parseEntry(line);
+                    gal.put(e.name(), e);
+                }
+            }
+        }
+        galPages.clear();
+        galPagesKey = null;
+        gseq = g;
+        galFrom = from;
+        rebuildRoutes();
+        publish();
+    }
+
+    /** Another container announced itself from this host: the usual comparison decides. */
+    void sameHostContainer(AgentEntry other, long t) {
+        if (role != Role.CONTAINER || other.name().equals(self)) {
+            return;
+        }
+        if (beats(t, other, term, selfEntry)) {
+            yieldTo(other, t);
+        } else {
+            tellBetter(other.aid());
         }
     }
 
@@ -1404,7 +1577,7 @@ public final class ContainerLayer extends Layer {
 
     // ---- helpers --------------------------------------------------------------------------------
 
-    private AclMessage platformMessage(Performative p, String protocol, AID to, String content) {
+    AclMessage platformMessage(Performative p, String protocol, AID to, String content) {
         AclMessage m = new AclMessage(p);
         m.setSender(selfAid);
         m.addReceiver(to);
@@ -1413,6 +1586,10 @@ public final class ContainerLayer extends Layer {
         m.setProtocol(protocol);
         m.setContent(content);
         return m;
+    }
+
+    AclMessage platformReplyTo(AclMessage to, Performative p, String content) {
+        return platformReply(to, p, content);
     }
 
     private AclMessage platformReply(AclMessage to, Performative p, String content) {
@@ -1425,7 +1602,7 @@ public final class ContainerLayer extends Layer {
         return r;
     }
 
-    private void sendQuietly(AclMessage m) {
+    void sendQuietly(AclMessage m) {
         try {
             host.send(m);
         } catch (SendRejectedException e) {
@@ -1435,7 +1612,7 @@ public final class ContainerLayer extends Layer {
         }
     }
 
-    private void trace(String event, String detail) {
+    void trace(String event, String detail) {
         Tracer t = host.tracer();
         if (t.enabled()) {
             t.trace(host.nowNs(), self, "platform-" + event, detail);

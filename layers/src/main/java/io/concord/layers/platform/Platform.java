@@ -44,9 +44,10 @@ public final class Platform implements AutoCloseable {
         Supplier<List<Layer>> safety = b.safety != null ? b.safety
                 : SafetyStack.builder().profile(b.profile).transport(b.transport).build();
         PlatformConfig config = b.config;
+        NetworkConfig network = b.network;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
-            l.add(new ContainerLayer(config));
+            l.add(new ContainerLayer(config, network));
             l.addAll(safety.get());
             return l;
         };
@@ -64,6 +65,7 @@ public final class Platform implements AutoCloseable {
         private Profile profile = Profile.CLASS_7;
         private Transport transport = Transport.UDP;
         private PlatformConfig config = PlatformConfig.defaults();
+        private NetworkConfig network = NetworkConfig.defaults();
         private Supplier<List<Layer>> safety;
         private AgentRuntime runtime;
 
@@ -102,6 +104,21 @@ public final class Platform implements AutoCloseable {
         /** The container layer's timing. */
         public Builder config(PlatformConfig c) {
             this.config = Objects.requireNonNull(c, "config");
+            return this;
+        }
+
+        /**
+         * Network discovery between hosts: the discovery port, seeds, broadcast; {@code null} keeps
+         * the platform to this host.
+         */
+        public Builder network(NetworkConfig n) {
+            this.network = n;
+            return this;
+        }
+
+        /** Seeds to contact by unicast besides broadcast ({@code host} or {@code host:port}). */
+        public Builder seeds(String... hostPorts) {
+            this.network = (network == null ? NetworkConfig.defaults() : network).withSeeds(List.of(hostPorts));
             return this;
         }
 

@@ -1,0 +1,400 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.net.Address;
+import io.concord.core.net.Endpoint;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+
+/**
+ * What a container does with the containers of other hosts (dissertation fig. 5.12): it announces
+ * itself by broadcast and to its seeds; on first contact the two agree a secret (REQUEST
+ * who-is-facilitator with a random 128-bit secret, INFORM is-facilitator), then each sends its LAL
+ * to the other with that secret, and again whenever it changes (INFORM-REF gal-update, CONFIRM
+ * gal-held). An update without the right secret is discarded and counted ({@code bad-secret}).
+ * The other hosts' lists make the Global Agent List; their containers the Facilitator Agent List.
+ * A host not heard for the timeout leaves both; a host whose container changed is taken over by
+ * its new container, whose announcement replaces the old one.
+ */
+final class Federation {
+    static final String P_NETWORK = "concord-network";
+
+    /** One facilitator: another host's container. */
+    static final class Facilitator {
+        AgentEntry entry;
+        final String host;
+        String secret;
+        boolean contacted;
+        long term;
+        long seq = -1;
+        List<AgentEntry> agents = List.of();
+        long lastHeardNs;
+        long contactTimer = -1;
+        int contactAttempts;
+        long heldSeq = -1;
+        long heldTerm = -1;
+        final Map<Long, String[]> pages = new HashMap<>();
+
+        Facilitator(AgentEntry entry, String host) {
+            this.entry = entry;
+            this.host = host;
+        }
+    }
+
+    private final ContainerLayer layer;
+    private final NetworkConfig config;
+    private final Map<String, Facilitator> fal = new TreeMap<>();
+    private Endpoint listener;
+    private long announceTimer = -1;
+    private boolean running;
+
+    Federation(ContainerLayer layer, NetworkConfig config) {
+        this.layer = layer;
+        this.config = config;
+    }
+
+    /** The facilitators this container knows, by name. */
+    Map<String, Facilitator> facilitators() {
+        return fal;
+    }
+
+    /** Starts listening and announcing: this agent became its host's container. */
+    void start() {
+        if (running) {
+            return;
+        }
+        running = true;
+        listener = layer.host().openListener(config.discoveryPort());
+        layer.trace("network", listener == null ? "cannot listen on the discovery port " + config.discoveryPort()
+                + " (announcing only)" : "listening on the discovery port " + config.discoveryPort());
+        announce();
+    }
+
+    /** Stops: this agent is no longer container (or stops). */
+    void stop() {
+        if (!running) {
+            return;
+        }
+        running = false;
+        announceTimer = layer.cancel(announceTimer);
+        for (Facilitator f : fal.values()) {
+            f.contactTimer = layer.cancel(f.contactTimer);
+        }
+        fal.clear();
+        if (listener != null) {
+            listener.close();
+            listener = null;
+        }
+    }
+
+    boolean running() {
+        return running;
+    }
+
+    private String ownHost() {
+        Address a = layer.selfEntry().transportAddress();
+        return a == null ? "" : a.host();
+    }
+
+    private void announce() {
+        announceTimer = -1;
+        if (!running) {
+            return;
+        }
+        String content = Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
+                "seq", layer.lalSequence()), List.of(layer.selfEntry()));
+        List<AID> to = new ArrayList<>();
+        if (config.broadcast()) {
+            for (String b : layer.host().broadcastAddresses()) {
+                to.add(layer.anyAt(new Address(b, config.discoveryPort())));
+            }
+        }
+        for (Address s : config.seeds()) {
+            to.add(layer.anyAt(s));
+        }
+        for (Facilitator f : fal.values()) {
+            to.add(f.entry.aid());
+        }
+        for (AID a : to) {
+            layer.sendQuietly(layer.platformMessage(Performative.INFORM, P_NETWORK, a, content));
+        }
+        // Lists not yet confirmed go again: distribution heals itself under loss.
+        for (Facilitator f : fal.values()) {
+            if (f.contacted && (f.heldSeq != layer.lalSequence() || f.heldTerm != layer.term())) {
+                sendLal(f);
+            }
+        }
+        expire();
+        announceTimer = layer.after(config.announcePeriodMs(), this::announce);
+    }
+
+    /** Hosts not heard for the timeout leave the lists. */
+    private void expire() {
+        long now = layer.host().nowNs();
+        List<String> gone = new ArrayList<>();
+        for (Facilitator f : fal.values()) {
+            if (now - f.lastHeardNs > config.hostTimeoutMs() * 1_000_000L) {
+                gone.add(f.entry.name());
+            }
+        }
+        for (String g : gone) {
+            Facilitator f = fal.remove(g);
+            f.contactTimer = layer.cancel(f.contactTimer);
+            layer.trace("host-gone", f.host + " (" + g + ") silent for " + config.hostTimeoutMs() + " ms");
+        }
+        if (!gone.isEmpty()) {
+            layer.globalChanged();
+        }
+    }
+
+    /** The other hosts' agents, without any name the LAL holds. */
+    List<AgentEntry> globalAgents(Set<String> local) {
+        List<AgentEntry> out = new ArrayList<>();
+        Set<String> seen = new HashSet<>(local);
+        for (Facilitator f : fal.values()) {
+            for (AgentEntry e : f.agents) {
+                if (seen.add(e.name())) {
+                    out.add(e);
+                }
+            }
+        }
+        out.sort(java.util.Comparator.comparing(AgentEntry::name));
+        return out;
+    }
+
+    /** The local LAL changed: send it to every facilitator in contact. */
+    void localChanged() {
+        if (!running) {
+            return;
+        }
+        for (Facilitator f : fal.values()) {
+            if (f.contacted) {
+                sendLal(f);
+            }
+        }
+    }
+
+    private void sendLal(Facilitator f) {
+        List<String> pages = layer.lalPages();
+        for (int i = 0; i < pages.size(); i++) {
+            String head = Lines.content("gal-update", Lines.params("secret", f.secret, "term", layer.term(),
+                    "seq", layer.lalSequence(), "page", i, "pages", pages.size()), List.of());
+            layer.sendQuietly(layer.platformMessage(Performative.INFORM_REF, P_NETWORK, f.entry.aid(), head + "\n" + pages.get(i)));
+        }
+    }
+
+    /** Handles a network message; false if the command is not one of the network protocol's. */
+    boolean handle(AclMessage m, Lines.Content c) {
+        switch (c.command()) {
+            case "announce" -> onAnnounce(m, c);
+            case "who-is-facilitator" -> onWhoIs(m, c);
+            case "is-facilitator" -> onIs(m, c);
+            case "is-not-facilitator" -> onIsNot(m);
+            case "gal-update" -> onUpdate(m, c);
+            case "gal-held" -> onHeld(m, c);
+            default -> {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private void onAnnounce(AclMessage m, Lines.Content c) {
+        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (e == null || !e.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("an announcement must carry its sender's entry");
+        }
+        if (!running || e.name().equals(layer.selfEntry().name())) {
+            return;
+        }
+        String host = c.param("host");
+        if (host.equals(ownHost())) {
+            layer.sameHostContainer(e, c.longParam("term"));
+            return;
+        }
+        Facilitator f = fal.get(e.name());
+        if (f == null) {
+            replaceHost(host, e.name());
+            f = new Facilitator(e, host);
+            f.term = c.longParam("term");
+            fal.put(e.name(), f);
+            layer.trace("facilitator", "heard " + e.name() + " of host " + host);
+        }
+        f.entry = e;
+        f.lastHeardNs = layer.host().nowNs();
+        if (!f.contacted && f.contactTimer < 0) {
+            if (layer.selfEntry().name().compareTo(e.name()) < 0) {
+                contact(f);
+            } else {
+                // The other one (the smaller name) opens the contact: make sure it has heard of us.
+                layer.sendQuietly(layer.platformMessage(Performative.INFORM, P_NETWORK, e.aid(),
+                        Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
+                                "seq", layer.lalSequence()), List.of(layer.selfEntry()))));
+            }
+        } else if (f.contacted && c.longParam("seq") != f.seq && c.longParam("term") >= f.term) {
+            // Its list moved on and no update arrived: ours may be what it lacks; it will send its own.
+            f.lastHeardNs = layer.host().nowNs();
+        }
+    }
+
+    /** A new container for a host replaces the old one: no stale container lingers. */
+    private void replaceHost(String host, String newName) {
+        List<String> stale = new ArrayList<>();
+        for (Facilitator f : fal.values()) {
+            if (f.host.equals(host) && !f.entry.name().equals(newName)) {
+                stale.add(f.entry.name());
+            }
+        }
+        for (String s : stale) {
+            Facilitator old = fal.remove(s);
+            old.contactTimer = layer.cancel(old.contactTimer);
+            layer.trace("facilitator-replaced", s + " by " + newName + " on host " + host);
+        }
+        if (!stale.isEmpty()) {
+            layer.globalChanged();
+        }
+    }
+
+    private void contact(Facilitator f) {
+        if (f.secret == null) {
+            byte[] s = new byte[16];
+            java.security.SecureRandom r = new java.security.SecureRandom();
+            r.nextBytes(s);
+            f.secret = HexFormat.of().formatHex(s);
+        }
+        f.contactAttempts++;
+        layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, f.entry.aid(),
+                Lines.content("who-is-facilitator", Lines.params("secret", f.secret, "term", layer.term(), "host", ownHost()),
+                        List.of(layer.selfEntry()))));
+        f.contactTimer = layer.after(Math.max(50, config.announcePeriodMs() / 2), () -> {
+            f.contactTimer = -1;
+            if (!f.contacted && fal.get(f.entry.name()) == f && f.contactAttempts < 8) {
+                contact(f);
+            }
+        });
+    }
+
+    private void onWhoIs(AclMessage m, Lines.Content c) {
+        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (e == null || !e.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("who-is-facilitator must carry its sender's entry");
+        }
+        if (!running) {
+            layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM,
+                    Lines.content("is-not-facilitator", Lines.params(), List.of())));
+            return;
+        }
+        String host = c.param("host");
+        Facilitator f = fal.get(e.name());
+        if (f == null) {
+            replaceHost(host, e.name());
+            f = new Facilitator(e, host);
+            fal.put(e.name(), f);
+            layer.trace("facilitator", "contacted by " + e.name() + " of host " + host);
+        }
+        f.entry = e;
+        f.term = c.longParam("term");
+        f.secret = c.param("secret");
+        f.contacted = true;
+        f.lastHeardNs = layer.host().nowNs();
+        layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM, Lines.content("is-facilitator",
+                Lines.params("secret", f.secret, "term", layer.term(), "host", ownHost()), List.of(layer.selfEntry()))));
+        sendLal(f);
+    }
+
+    private void onIs(AclMessage m, Lines.Content c) {
+        Facilitator f = fal.get(m.getSender().name());
+        if (f == null || f.secret == null || !f.secret.equals(c.param("secret"))) {
+            layer.host().drops().record(layer.selfEntry().name(), "bad-secret", m.getSender().name()
+                    + " confirmed a contact with a secret this container did not offer");
+            return;
+        }
+        f.contacted = true;
+        f.lastHeardNs = layer.host().nowNs();
+        f.contactTimer = layer.cancel(f.contactTimer);
+        layer.trace("facilitator-contact", m.getSender().name());
+        sendLal(f);
+    }
+
+    private void onIsNot(AclMessage m) {
+        Facilitator f = fal.remove(m.getSender().name());
+        if (f != null) {
+            f.contactTimer = layer.cancel(f.contactTimer);
+            layer.globalChanged();
+        }
+    }
+
+    private void onUpdate(AclMessage m, Lines.Content c) {
+        Facilitator f = fal.get(m.getSender().name());
+        if (f == null || !f.contacted || f.secret == null || !f.secret.equals(c.params().get("secret"))) {
+            layer.host().drops().record(layer.selfEntry().name(), "bad-secret", "a list update from "
+                    + m.getSender().name() + " without the secret agreed with it: discarded");
+            layer.trace("gal-rejected", m.getSender().name());
+            return;
+        }
+        long term = c.longParam("term");
+        long seq = c.longParam("seq");
+        int page = (int) c.longParam("page");
+        int n = (int) c.longParam("pages");
+        if (n < 1 || n > 10_000 || page < 0 || page >= n) {
+            throw new IllegalArgumentException("a bad list page " + page + " of " + n);
+        }
+        f.lastHeardNs = layer.host().nowNs();
+        if (term < f.term || (term == f.term && seq <= f.seq)) {
+            ack(f, m);
+            return;
+        }
+        String text = m.getContent();
+        int nl = text.indexOf('\n');
+        String[] got = f.pages.computeIfAbsent(seq * 31 + term, k -> new String[n]);
+        if (got.length != n) {
+            throw new IllegalArgumentException("list pages disagree on their count");
+        }
+        got[page] = nl < 0 ? "" : text.substring(nl + 1);
+        for (String g : got) {
+            if (g == null) {
+                return;
+            }
+        }
+        List<AgentEntry> all = new ArrayList<>();
+        for (String g : got) {
+            if (!g.isEmpty()) {
+                for (String line : g.split("\n", -1)) {
+                    all.add(Lines.parseEntry(line));
+                }
+            }
+        }
+        f.pages.clear();
+        f.term = term;
+        f.seq = seq;
+        f.agents = List.copyOf(all);
+        layer.trace("gal-applied", m.getSender().name() + " term=" + term + " seq=" + seq + " agents=" + all.size());
+        ack(f, m);
+        layer.globalChanged();
+    }
+
+    private void ack(Facilitator f, AclMessage m) {
+        layer.sendQuietly(layer.platformReplyTo(m, Performative.CONFIRM,
+                Lines.content("gal-held", Lines.params("secret", f.secret, "term", f.term, "seq", f.seq), List.of())));
+        // (term, seq) here are the sender's own list version, which this container now holds.
+    }
+
+    private void onHeld(AclMessage m, Lines.Content c) {
+        Facilitator f = fal.get(m.getSender().name());
+        if (f == null || f.secret == null || !f.secret.equals(c.params().get("secret"))) {
+            return;
+        }
+        f.lastHeardNs = layer.host().nowNs();
+        f.heldSeq = c.longParam("seq");
+        f.heldTerm = c.longParam("term");
+    }
+}
