@@ -637,6 +637,7 @@ public final class ContainerLayer extends Layer {
         joinTarget = null;
         role = Role.CONTAINER;
         successor = null;
+        galFrom = self;
         term = newTerm;
         maxTermSeen = Math.max(maxTermSeen, term);
         seq = 1;
@@ -1059,7 +1060,8 @@ public final class ContainerLayer extends Layer {
         lastHeard.put(from, host.nowNs());
         heldSeq.put(from, s);
         String g = c.params().get("gseq");
-        if (g != null && Long.parseLong(g) < gseq && pushTimer < 0) {
+        boolean otherSource = !self.equals(c.params().getOrDefault("gfrom", self));
+        if (g != null && (otherSource || Long.parseLong(g) < gseq) && pushTimer < 0 && self.equals(galFrom)) {
             pushGalTo(lal.get(from).aid(), pagesOf(gal.values()));
         }
         if (cycleAwaiting.remove(from) && cycleAwaiting.isEmpty()) {
@@ -1185,7 +1187,8 @@ public final class ContainerLayer extends Layer {
         }
         resetWatch();
         sendQuietly(platformMessage(Performative.CONFIRM, P_MAINTENANCE, m.getSender(),
-                Lines.content("alive-held", Lines.params("term", term, "seq", seq, "gseq", gseq), List.of())));
+                Lines.content("alive-held", Lines.params("term", term, "seq", seq, "gseq", gseq,
+                        "gfrom", galFrom == null ? "-" : galFrom), List.of())));
     }
 
     private void resetWatch() {

@@ -201,6 +201,8 @@ final class Federation {
             case "is-not-facilitator" -> onIsNot(m);
             case "gal-update" -> onUpdate(m, c);
             case "gal-held" -> onHeld(m, c);
+            case "unknown-secret" -> onUnknownSecret(m);
+            case "contact-me" -> onContactMe(m, c);
             default -> {
                 return false;
             }
@@ -235,10 +237,11 @@ final class Federation {
             if (layer.selfEntry().name().compareTo(e.name()) < 0) {
                 contact(f);
             } else {
-                // The other one (the smaller name) opens the contact: make sure it has heard of us.
-                layer.sendQuietly(layer.platformMessage(Performative.INFORM, P_NETWORK, e.aid(),
-                        Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
-                                "seq", layer.lalSequence()), List.of(layer.selfEntry()))));
+                // The other one (the smaller name) opens the contact; it may believe it is in contact
+                // with us already (we took its host for gone while it did not): ask for a new one.
+                layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, e.aid(),
+                        Lines.content("contact-me", Lines.params("term", layer.term(), "host", ownHost()),
+                                List.of(layer.selfEntry()))));
             }
         } else if (f.contacted && c.longParam("seq") != f.seq && c.longParam("term") >= f.term) {
             // Its list moved on and no update arrived: ours may be what it lacks; it will send its own.
@@ -325,6 +328,54 @@ final class Federation {
         sendLal(f);
     }
 
+    /** A facilitator with a larger name has no contact with us: open a new one. */
+    private void onContactMe(AclMessage m, Lines.Content c) {
+        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
+        if (e == null || !e.name().equals(m.getSender().name())) {
+            throw new IllegalArgumentException("contact-me must carry its sender's entry");
+        }
+        if (!running || layer.selfEntry().name().compareTo(e.name()) >= 0) {
+            return;
+        }
+        String host = c.param("host");
+        Facilitator f = fal.get(e.name());
+        if (f == null) {
+            replaceHost(host, e.name());
+            f = new Facilitator(e, host);
+            fal.put(e.name(), f);
+        }
+        f.entry = e;
+        f.lastHeardNs = layer.host().nowNs();
+        if (f.contactTimer >= 0) {
+            return; // a contact is under way
+        }
+        f.contacted = false;
+        f.secret = null;
+        f.seq = -1;
+        f.contactAttempts = 0;
+        contact(f);
+    }
+
+    /** The facilitator does not know our secret: contact it again (the smaller name opens). */
+    private void onUnknownSecret(AclMessage m) {
+        Facilitator f = fal.get(m.getSender().name());
+        if (f == null || !running) {
+            return;
+        }
+        f.contacted = false;
+        f.secret = null;
+        f.seq = -1;
+        f.contactAttempts = 0;
+        f.contactTimer = layer.cancel(f.contactTimer);
+        if (layer.selfEntry().name().compareTo(f.entry.name()) < 0) {
+            contact(f);
+        } else {
+            layer.sendQuietly(layer.platformMessage(Performative.INFORM, P_NETWORK, f.entry.aid(),
+                    Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
+                            "seq", layer.lalSequence()), List.of(layer.selfEntry()))));
+        }
+    }
+
     private void onIsNot(AclMessage m) {
         Facilitator f = fal.remove(m.getSender().name());
         if (f != null) {
@@ -339,6 +390,12 @@ final class Federation {
             layer.host().drops().record(layer.selfEntry().name(), "bad-secret", "a list update from "
                     + m.getSender().name() + " without the secret agreed with it: discarded");
             layer.trace("gal-rejected", m.getSender().name());
+            if (running) {
+                // Perhaps it kept a contact this container forgot (it took that host for gone): say so,
+                // and a new contact with a new secret follows.
+                layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM,
+                        Lines.content("unknown-secret", Lines.params(), List.of())));
+            }
             return;
         }
         long term = c.longParam("term");
