@@ -1325,7 +1325,8 @@ public final class ContainerLayer extends Layer {
     private void pushGalTo(AID to, List<String> p) {
         for (int i = 0; i < p.size(); i++) {
             String head = Lines.content("gal", Lines.params("term", term, "gseq", gseq, "page", i, "pages", p.size()), List.of());
-            sendQuietly(platformMessage(Performative.INFORM_REF, P_LAL, to, head + "\n" + p.get(i)));
+            // An empty GAL is a page without entry lines.
+            sendQuietly(platformMessage(Performative.INFORM_REF, P_LAL, to, p.get(i).isEmpty() ? head : head + "\n" + p.get(i)));
         }
     }
 

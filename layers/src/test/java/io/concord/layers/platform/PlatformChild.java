@@ -47,13 +47,18 @@ public final class PlatformChild {
     }
 
     public static void main(String[] args) throws Exception {
-        Platform p = Platform.builder().name(args[0]).ports(PortRange.parse(args[1])).profile(Profile.CLASS_7).build();
+        Platform.Builder b = Platform.builder().name(args[0]).ports(PortRange.parse(args[1])).profile(Profile.CLASS_7);
+        if (args.length > 3) {
+            b.host(args[3]);
+        }
+        Platform p = b.build();
         Echo echo = new Echo();
         AID aid = p.startAgent(args[2], echo);
         p.runtime().execute(() -> {
             ContainerLayer c = Platform.containerLayer(p.runtime(), aid);
             java.util.function.Consumer<ContainerLayer> print = l -> System.out.println("STATE role=" + l.role()
-                    + " container=" + l.containerName() + " term=" + l.term() + " agents=" + l.agents().size());
+                    + " container=" + l.containerName() + " term=" + l.term() + " agents=" + l.agents().size()
+                    + " gal=" + l.globalAgents().size());
             c.addListener(print);
             print.accept(c); // the state before the listener was added
 
@@ -68,6 +73,13 @@ public final class PlatformChild {
                 m.addReceiver(AID.local(w[1], args[0]));
                 m.setContent(w[2]);
                 echo.send(m);
+            } else if (w.length == 2 && w[0].equals("register")) {
+                p.runtime().execute(() -> Platform.of(echo).register(ServiceDescription.ofType(w[1]))
+                        .whenComplete((ok, e) -> System.out.println(e == null ? "REGISTERED " + w[1] : "REGISTER-FAILED " + e)));
+            } else if (w.length == 2 && w[0].equals("search")) {
+                p.runtime().execute(() -> Platform.of(echo).searchAtDf(ServiceDescription.ofType(w[1]))
+                        .whenComplete((found, e) -> System.out.println(e != null ? "SEARCH-FAILED " + e
+                                : "FOUND " + w[1] + " " + found.stream().map(AgentEntry::name).sorted().toList())));
             }
         }
         p.close();

@@ -43,7 +43,7 @@ class PlatformProcessesTest {
         final PrintWriter in;
         final LinkedBlockingQueue<String> lines = new LinkedBlockingQueue<>();
         volatile String state = "";
-        final java.util.Queue<String> all = new java.util.concurrent.ConcurrentLinkedQueue<>();
+        final java.util.Collection<String> all = new java.util.concurrent.ConcurrentLinkedQueue<>();
 
         Child(String name, Process process) {
             this.name = name;
