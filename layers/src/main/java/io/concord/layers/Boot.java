@@ -129,12 +129,16 @@ public final class Boot {
             ContainerLayer c = Platform.containerLayer(p.runtime(), aid);
             String[] last = {""};
             java.util.function.Consumer<ContainerLayer> print = l -> {
-                String now = l.role() + " " + l.containerName();
+                String now = l.role() + " " + l.containerName() + " " + l.agents().size() + " " + l.globalAgents().size();
                 if (!now.equals(last[0]) && l.role() != ContainerLayer.Role.SEEKING && l.containerName() != null) {
                     last[0] = now;
+                    int here = l.agents().size();
+                    int elsewhere = l.globalAgents().size();
                     out.println(aid.localName() + ": " + (l.role() == ContainerLayer.Role.CONTAINER
                             ? "I am the container (term " + l.term() + ")"
-                            : "container is " + l.containerName() + " (term " + l.term() + ")"));
+                            : "container is " + l.containerName() + " (term " + l.term() + ")")
+                            + ", " + here + (here == 1 ? " agent" : " agents") + " here"
+                            + (elsewhere > 0 ? ", " + elsewhere + " on other hosts" : ""));
                 }
             };
             c.addListener(print);

@@ -88,6 +88,12 @@ public final class ContainerLayer extends Layer {
     private AgentEntry container;
     private final TreeMap<String, AgentEntry> lal = new TreeMap<>();
     private final Map<String, Router.Route> routes = new HashMap<>();
+    // Routes of agents that left the lists lately, kept for ROUTE_GRACE_NS: a list that flickers (an
+    // agent taken for dead on a starved machine, a host's container changing) does not turn a
+    // message to a known name into a FAILURE. After the grace the name is unknown.
+    private final LinkedHashMap<String, Router.Route> recentRoutes = new LinkedHashMap<>(16, 0.75f, true);
+    private final Map<String, Long> recentSince = new HashMap<>();
+    static final long ROUTE_GRACE_NS = 5_000_000_000L;
     private volatile Snapshot snapshot = Snapshot.EMPTY;
 
     // seeking
@@ -324,6 +330,15 @@ public final class ContainerLayer extends Layer {
         if (r != null) {
             return r;
         }
+        r = recentRoutes.get(name);
+        if (r != null) {
+            Long since = recentSince.get(name);
+            if (since != null && host.nowNs() - since < ROUTE_GRACE_NS) {
+                return r;
+            }
+            recentRoutes.remove(name);
+            recentSince.remove(name);
+        }
         if (container != null && (name.equals(amsAid.name()) || name.equals(dfAid.name()))) {
             Address a = container.transportAddress();
             return a == null ? null : new Router.Route(a, container.aid());
@@ -332,6 +347,16 @@ public final class ContainerLayer extends Layer {
     }
 
     private void rebuildRoutes() {
+        long now = host.nowNs();
+        for (Map.Entry<String, Router.Route> e : routes.entrySet()) {
+            recentRoutes.put(e.getKey(), e.getValue());
+            recentSince.put(e.getKey(), now);
+        }
+        while (recentRoutes.size() > 10_000) {
+            String eldest = recentRoutes.keySet().iterator().next();
+            recentRoutes.remove(eldest);
+            recentSince.remove(eldest);
+        }
         routes.clear();
         for (AgentEntry e : gal.values()) {
             Address a = e.transportAddress();

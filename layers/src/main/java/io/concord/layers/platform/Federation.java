@@ -110,8 +110,17 @@ final class Federation {
         if (!running) {
             return;
         }
+        // The facilitators in contact ride along: where only seeds connect the hosts, each learns of
+        // the others through the ones it knows.
+        List<AgentEntry> known = new ArrayList<>();
+        known.add(layer.selfEntry());
+        for (Facilitator f : fal.values()) {
+            if (f.contacted) {
+                known.add(f.entry);
+            }
+        }
         String content = Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
-                "seq", layer.lalSequence()), List.of(layer.selfEntry()));
+                "seq", layer.lalSequence()), known);
         List<AID> to = new ArrayList<>();
         if (config.broadcast()) {
             for (String b : layer.host().broadcastAddresses()) {
@@ -223,13 +232,25 @@ final class Federation {
             layer.sameHostContainer(e, c.longParam("term"));
             return;
         }
+        for (AgentEntry other : c.entries().subList(1, c.entries().size())) {
+            Address a = other.transportAddress();
+            if (a != null && !fal.containsKey(other.name()) && !other.name().equals(layer.selfEntry().name())
+                    && !a.host().equals(ownHost())) {
+                learn(other, a.host(), 0);
+            }
+        }
+        learn(e, host, c.longParam("term"));
+    }
+
+    /** A facilitator heard (or heard of): known from now on; contacted by the smaller name. */
+    private void learn(AgentEntry e, String host, long term) {
         Facilitator f = fal.get(e.name());
         if (f == null) {
             replaceHost(host, e.name());
             f = new Facilitator(e, host);
-            f.term = c.longParam("term");
+            f.term = term;
             fal.put(e.name(), f);
-            layer.trace("facilitator", "heard " + e.name() + " of host " + host);
+            layer.trace("facilitator", "heard of " + e.name() + " of host " + host);
         }
         f.entry = e;
         f.lastHeardNs = layer.host().nowNs();
@@ -237,15 +258,10 @@ final class Federation {
             if (layer.selfEntry().name().compareTo(e.name()) < 0) {
                 contact(f);
             } else {
-                // The other one (the smaller name) opens the contact; it may believe it is in contact
-                // with us already (we took its host for gone while it did not): ask for a new one.
                 layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, e.aid(),
                         Lines.content("contact-me", Lines.params("term", layer.term(), "host", ownHost()),
                                 List.of(layer.selfEntry()))));
             }
-        } else if (f.contacted && c.longParam("seq") != f.seq && c.longParam("term") >= f.term) {
-            // Its list moved on and no update arrived: ours may be what it lacks; it will send its own.
-            f.lastHeardNs = layer.host().nowNs();
         }
     }
 

@@ -191,4 +191,22 @@ class NetworkSimulationTest {
                     .filter(f -> f.startsWith("seller") || f.startsWith("other")).toList());
         }
     }
+
+    @Test
+    void withoutBroadcastSeedsConnectTheHostsAndTheyLearnOfEachOtherThroughThem() {
+        try (NetworkWorld w = new NetworkWorld(8, FaultPlan.lossy(0.05, 0, 0, 0), Profile.CLOSED)) {
+            NetworkConfig unicast = NetworkConfig.defaults().withBroadcast(false);
+            w.addHost("h1", unicast);
+            for (int h = 2; h <= 4; h++) {
+                w.addHost("h" + h, unicast.withSeeds(List.of("h1:7000")));
+            }
+            for (int h = 1; h <= 4; h++) {
+                w.start("h" + h, "h" + h + "a");
+                w.start("h" + h, "h" + h + "b");
+            }
+            assertTrue(w.sim.runUntil(w::converged, 10_000), w.describe());
+            // h4 was seeded with h1 only; it reached h2 and h3 through what h1 knew.
+            assertEquals(3, w.layer("h4", "h4a").facilitators().size() + w.layer("h4", "h4b").facilitators().size());
+        }
+    }
 }

@@ -38,6 +38,10 @@ final class NetworkWorld implements AutoCloseable {
     }
 
     void addHost(String host) {
+        addHost(host, NetworkConfig.defaults());
+    }
+
+    void addHost(String host, NetworkConfig network) {
         AgentRuntime rt = sim.newRuntime(host);
         SafetyStack.Builder sb = SafetyStack.builder().profile(profile);
         if (profile != Profile.CLOSED) {
@@ -46,7 +50,8 @@ final class NetworkWorld implements AutoCloseable {
         if (profile == Profile.CLASS_7) {
             sb.identities(PlatformWorld.sharedIdentities());
         }
-        Platform p = Platform.builder().runtime(rt).ports(new PortRange(7001, 100, 10)).safetyStack(sb.build()).build();
+        Platform p = Platform.builder().runtime(rt).ports(new PortRange(7001, 100, 10)).network(network)
+                .safetyStack(sb.build()).build();
         hosts.put(host, rt);
         platforms.put(host, p);
         live.put(host, new LinkedHashMap<>());
