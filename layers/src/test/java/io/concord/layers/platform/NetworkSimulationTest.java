@@ -209,4 +209,26 @@ class NetworkSimulationTest {
             assertEquals(3, w.layer("h4", "h4a").facilitators().size() + w.layer("h4", "h4b").facilitators().size());
         }
     }
+
+    @Test
+    void announcementsUnderAnotherKeyAreDroppedAndCountedAndNeverMakeAFacilitator() {
+        try (NetworkWorld w = new NetworkWorld(12, FaultPlan.NONE, Profile.CLASS_3)) {
+            w.addHost("h1");
+            w.addHost("h2");
+            byte[] other = new byte[32];
+            other[0] = 1;
+            w.addHost("intruder", NetworkConfig.defaults(), other);
+            w.start("h1", "a");
+            w.start("h2", "b");
+            w.start("intruder", "x");
+            // The intruder's host is not part of the platform: only h1 and h2 must agree.
+            w.live.remove("intruder");
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            w.sim.runFor(2_000);
+            assertTrue(w.converged(), w.describe());
+            assertEquals(List.of("b@net"), w.layer("h1", "a").globalAgents().stream().map(AgentEntry::name).toList());
+            assertTrue(w.hosts.get("h1").drops().getOrDefault("bad-tag", 0L) > 0, w.hosts.get("h1").drops().toString());
+            assertEquals(List.of("b@net"), w.layer("h1", "a").facilitators());
+        }
+    }
 }

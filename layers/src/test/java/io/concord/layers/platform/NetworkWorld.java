@@ -42,10 +42,15 @@ final class NetworkWorld implements AutoCloseable {
     }
 
     void addHost(String host, NetworkConfig network) {
+        addHost(host, network, new byte[32]);
+    }
+
+    /** A host whose agents hold the given platform key (another key: another platform). */
+    void addHost(String host, NetworkConfig network, byte[] key) {
         AgentRuntime rt = sim.newRuntime(host);
         SafetyStack.Builder sb = SafetyStack.builder().profile(profile);
         if (profile != Profile.CLOSED) {
-            sb.platformKey(PlatformKey.of(new byte[32]));
+            sb.platformKey(PlatformKey.of(key));
         }
         if (profile == Profile.CLASS_7) {
             sb.identities(PlatformWorld.sharedIdentities());
