@@ -214,6 +214,11 @@ final class AgentNode implements StackHost {
     }
 
     @Override
+    public void execute(Runnable task) {
+        runtime.execute(task);
+    }
+
+    @Override
     public java.util.List<String> broadcastAddresses() {
         return transport == Transport.UDP ? runtime.network().broadcastAddresses(endpoint.localAddress().host())
                 : java.util.List.of();

@@ -66,6 +66,11 @@ public interface StackHost {
         return java.util.List.of();
     }
 
+    /** Runs a task on the node's loop; callable from any thread. */
+    default void execute(Runnable task) {
+        task.run();
+    }
+
     /** The seeded random source of the node's runtime. */
     default java.util.random.RandomGenerator random() {
         return new java.util.SplittableRandom();

@@ -67,6 +67,8 @@ public final class ContainerLayer extends Layer {
 
     private final PlatformConfig config;
     private final Federation federation;
+    private final Gateway gateway;
+    private boolean gatewayStarted;
     // The Global Agent List as this agent holds it: the other hosts' agents, from its container.
     private final TreeMap<String, AgentEntry> gal = new TreeMap<>();
     private long gseq;
@@ -147,8 +149,14 @@ public final class ContainerLayer extends Layer {
 
     /** A container layer that also federates with the containers of other hosts. */
     public ContainerLayer(PlatformConfig config, NetworkConfig network) {
+        this(config, network, null);
+    }
+
+    /** ... and reaches foreign platforms through a gateway (the JADE bridge), or none if {@code null}. */
+    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway) {
         this.config = config;
         this.federation = network == null ? null : new Federation(this, network);
+        this.gateway = gateway;
     }
 
     public ContainerLayer() {
@@ -283,6 +291,7 @@ public final class ContainerLayer extends Layer {
         if (federation != null) {
             federation.stop();
         }
+        stopGateway();
         if (was == Role.CONTAINER) {
             for (AgentEntry e : lal.values()) {
                 if (!e.name().equals(self)) {
@@ -339,6 +348,10 @@ public final class ContainerLayer extends Layer {
             recentRoutes.remove(name);
             recentSince.remove(name);
         }
+        if (gateway != null && container != null && !platform.equals(receiver.platform()) && gateway.reaches(receiver)) {
+            Address a = container.transportAddress();
+            return a == null ? null : new Router.Route(a, container.aid());
+        }
         if (container != null && (name.equals(amsAid.name()) || name.equals(dfAid.name()))) {
             Address a = container.transportAddress();
             return a == null ? null : new Router.Route(a, container.aid());
@@ -373,6 +386,147 @@ public final class ContainerLayer extends Layer {
     }
 
     // ---- up ---------------------------------------------------------------------------------------
+
+    // ---- foreign platforms (gateway) ----------------------------------------------------------
+
+    private static final String RELAY_OUT = "relay-out ";
+    private static final String RELAY_IN = "relay-in ";
+
+    /**
+     * A message of this agent to a foreign receiver goes to the container, wrapped: the container's
+     * gateway carries it out. The frame stays the container's, so identification holds.
+     */
+    @Override
+    public void onDown(LayerContext ctx, Envelope env) {
+        AID r = env.receiver();
+        if (gateway != null && r != null && env.via() != null && env.message() != null
+                && !ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
+            AclMessage wrapped = platformMessage(Performative.INFORM, P_SERVICES, env.via(),
+                    RELAY_OUT + "receiver=" + Lines.escape(r.name()) + " addresses=" + Lines.escape(String.join(",", r.addresses()))
+                            + "\n" + io.concord.core.codec.StringAclCodec.INSTANCE.encodeToString(env.message()));
+            Envelope w = Envelope.outgoing(wrapped, env.via(), env.destination());
+            ctx.passDown(w);
+            return;
+        }
+        ctx.passDown(env);
+    }
+
+    private void onRelay(AclMessage wrapper) {
+        String text = wrapper.getContent();
+        int nl = text.indexOf('\n');
+        if (nl < 0) {
+            throw new IllegalArgumentException("a relayed message without its ACL part");
+        }
+        AclMessage inner;
+        try {
+            inner = io.concord.core.codec.StringAclCodec.INSTANCE.decode(text.substring(nl + 1));
+        } catch (io.concord.core.codec.AclParseException e) {
+            throw new IllegalArgumentException("a relayed message that does not parse: " + e.getMessage());
+        }
+        if (text.startsWith(RELAY_IN)) {
+            // From the container: a foreign agent's message for this agent.
+            if (container == null || !container.name().equals(wrapper.getSender().name())) {
+                throw new IllegalArgumentException("a foreign message relayed by " + wrapper.getSender().name()
+                        + ", which is not this agent's container");
+            }
+            host.deliverToAgent(inner);
+            return;
+        }
+        // RELAY_OUT: to the container's gateway.
+        Map<String, String> p = Lines.parse(text.substring(0, nl)).params();
+        String name = p.get("receiver");
+        if (name == null) {
+            throw new IllegalArgumentException("a relay without receiver=");
+        }
+        String addrs = p.getOrDefault("addresses", "");
+        AID receiver = new AID(name, addrs.isEmpty() ? new String[0] : addrs.split(","));
+        if (role != Role.CONTAINER || !gatewayStarted) {
+            host.drops().record(self, "no-gateway", "a message for " + name + " reached an agent that serves no gateway");
+            return;
+        }
+        gateway.sendOut(inner, receiver);
+    }
+
+    private void startGateway() {
+        if (gateway == null || gatewayStarted) {
+            return;
+        }
+        gatewayStarted = true;
+        try {
+            gateway.start(gatewayContext);
+            trace("gateway", "started at " + gateway.addresses());
+        } catch (RuntimeException e) {
+            gatewayStarted = false;
+            host.drops().record(self, "gateway-failed", "the gateway did not start: " + e.getMessage());
+        }
+    }
+
+    private void stopGateway() {
+        if (gateway != null && gatewayStarted) {
+            gatewayStarted = false;
+            try {
+                gateway.stop();
+            } catch (RuntimeException e) {
+                host.drops().record(self, "gateway-failed", "the gateway did not stop cleanly: " + e.getMessage());
+            }
+        }
+    }
+
+    private final GatewayContext gatewayContext = new GatewayContext() {
+        @Override
+        public String platformName() {
+            return platform;
+        }
+
+        @Override
+        public void execute(Runnable task) {
+            host.execute(task);
+        }
+
+        @Override
+        public boolean deliver(AclMessage message, AID receiver) {
+            String name = receiver.name();
+            if (name.equalsIgnoreCase(self)) {
+                host.deliverToAgent(message);
+                return true;
+            }
+            AgentEntry e = null;
+            for (AgentEntry x : lal.values()) {
+                if (x.name().equalsIgnoreCase(name)) {
+                    e = x;
+                }
+            }
+            if (e == null) {
+                for (AgentEntry x : gal.values()) {
+                    if (x.name().equalsIgnoreCase(name)) {
+                        e = x;
+                    }
+                }
+            }
+            if (e == null) {
+                return false;
+            }
+            sendQuietly(platformMessage(Performative.INFORM, P_SERVICES, e.aid(), RELAY_IN + "receiver="
+                    + Lines.escape(e.name()) + "\n" + io.concord.core.codec.StringAclCodec.INSTANCE.encodeToString(message)));
+            return true;
+        }
+
+        @Override
+        public List<AgentEntry> search(ServiceDescription template) {
+            return ContainerLayer.this.search(template);
+        }
+
+        @Override
+        public List<AgentEntry> agents() {
+            List<AgentEntry> all = new ArrayList<>(lal.values());
+            for (AgentEntry e : gal.values()) {
+                if (!lal.containsKey(e.name())) {
+                    all.add(e);
+                }
+            }
+            return all;
+        }
+    };
 
     @Override
     public void onUp(LayerContext ctx, Envelope env) {
@@ -413,6 +567,11 @@ public final class ContainerLayer extends Layer {
     }
 
     private void onPlatformMessage(Envelope env, AclMessage m) {
+        String text = m.getContent();
+        if (text != null && (text.startsWith(RELAY_OUT) || text.startsWith(RELAY_IN))) {
+            onRelay(m);
+            return;
+        }
         Lines.Content c = Lines.parse(m.getContent());
         AID sender = m.getSender();
         if (host.tracer().enabled()) {
@@ -703,6 +862,7 @@ public final class ContainerLayer extends Layer {
         if (federation != null) {
             federation.start();
         }
+        startGateway();
         publish();
     }
 
@@ -711,6 +871,7 @@ public final class ContainerLayer extends Layer {
         if (federation != null) {
             federation.stop();
         }
+        stopGateway();
         cycleTimer = cancel(cycleTimer);
         pushTimer = cancel(pushTimer);
         String content = Lines.content("container", Lines.params("term", t), List.of(better, selfEntry));
@@ -849,6 +1010,7 @@ public final class ContainerLayer extends Layer {
         if (federation != null) {
             federation.stop();
         }
+        stopGateway();
         cycleTimer = cancel(cycleTimer);
         pushTimer = cancel(pushTimer);
         role = Role.MEMBER;

@@ -45,9 +45,10 @@ public final class Platform implements AutoCloseable {
                 : SafetyStack.builder().profile(b.profile).transport(b.transport).build();
         PlatformConfig config = b.config;
         NetworkConfig network = b.network;
+        Supplier<Gateway> gateways = b.gateway;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
-            l.add(new ContainerLayer(config, network));
+            l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get()));
             l.addAll(safety.get());
             return l;
         };
@@ -66,6 +67,7 @@ public final class Platform implements AutoCloseable {
         private Transport transport = Transport.UDP;
         private PlatformConfig config = PlatformConfig.defaults();
         private NetworkConfig network = NetworkConfig.defaults();
+        private Supplier<Gateway> gateway;
         private Supplier<List<Layer>> safety;
         private AgentRuntime runtime;
 
@@ -119,6 +121,15 @@ public final class Platform implements AutoCloseable {
         /** Seeds to contact by unicast besides broadcast ({@code host} or {@code host:port}). */
         public Builder seeds(String... hostPorts) {
             this.network = (network == null ? NetworkConfig.defaults() : network).withSeeds(List.of(hostPorts));
+            return this;
+        }
+
+        /**
+         * A way to foreign platforms (the JADE bridge's HTTP MTP): one per agent, started by the
+         * agent that is container.
+         */
+        public Builder gateway(Supplier<Gateway> g) {
+            this.gateway = g;
             return this;
         }
 

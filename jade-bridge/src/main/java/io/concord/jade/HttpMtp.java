@@ -1,0 +1,641 @@
+package io.concord.jade;
+
+import com.sun.net.httpserver.HttpExchange;
+import com.sun.net.httpserver.HttpServer;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.codec.AclParseException;
+import io.concord.core.codec.StringAclCodec;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.Gateway;
+import io.concord.layers.platform.GatewayContext;
+import io.concord.layers.platform.ServiceDescription;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.URI;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The FIPA HTTP MTP (SC00084) as a {@link Gateway}: the container serves {@code http://host:port/acc},
+ * accepts messages posted by JADE (or any FIPA platform) and hands them to the platform's agents by
+ * name; it posts the platform agents' messages to foreign agents at their {@code http://} addresses.
+ * JADE's quirks are followed: quoted boundary, the envelope part first and the payload last, the
+ * mandatory {@code intended-receiver}, {@code Connection: close}, local-time dates, UTF-8 declared
+ * in {@code payload-encoding}. Requests to {@code df@platform} and {@code ams@platform} in
+ * {@code fipa-sl0} are answered here as JADE's DF and AMS answer them.
+ */
+public final class HttpMtp implements Gateway {
+    private static final Logger LOG = LoggerFactory.getLogger(HttpMtp.class);
+    static final int MAX_BODY = 1 << 20;
+    static final String ONTOLOGY = "FIPA-Agent-Management";
+
+    private final String host;
+    private final int port;
+    private final String advertisedHost;
+    private HttpServer server;
+    private ExecutorService out;
+    private volatile GatewayContext context;
+    private final Map<String, ForeignEntry> foreignRegistrations = new LinkedHashMap<>();
+    private final AtomicLong received = new AtomicLong();
+    private final AtomicLong rejected = new AtomicLong();
+
+    /** An agent of another platform registered in this platform's DF. */
+    record ForeignEntry(AID aid, List<ServiceDescription> services) {
+    }
+
+    /**
+     * @param host the address to bind (and to advertise, unless it is 0.0.0.0)
+     * @param port the port of the ACC
+     */
+    public HttpMtp(String host, int port) {
+        this(host, port, host.equals("0.0.0.0") ? "127.0.0.1" : host);
+    }
+
+    public HttpMtp(String host, int port, String advertisedHost) {
+        this.host = host;
+        this.port = port;
+        this.advertisedHost = advertisedHost;
+    }
+
+    @Override
+    public List<String> addresses() {
+        return List.of("http://" + advertisedHost + ":" + port + "/acc");
+    }
+
+    /** Requests received and accepted, and rejected with a 4xx, since start. */
+    public long received() {
+        return received.get();
+    }
+
+    public long rejected() {
+        return rejected.get();
+    }
+
+    @Override
+    public void start(GatewayContext ctx) {
+        this.context = ctx;
+        try {
+            server = HttpServer.create(new InetSocketAddress(host, port), 64);
+        } catch (IOException e) {
+            throw new IllegalStateException("the HTTP MTP cannot listen on " + host + ":" + port + " (" + e.getMessage()
+                    + "); choose another port for the JADE bridge", e);
+        }
+        server.createContext("/", this::handle);
+        server.setExecutor(Executors.newSingleThreadExecutor(r -> daemon(r, "concord-http-in")));
+        server.start();
+        out = Executors.newSingleThreadExecutor(r -> daemon(r, "concord-http-out"));
+        LOG.info("HTTP MTP of platform {} at {}", ctx.platformName(), addresses());
+    }
+
+    private static Thread daemon(Runnable r, String name) {
+        Thread t = new Thread(r, name);
+        t.setDaemon(true);
+        return t;
+    }
+
+    @Override
+    public void stop() {
+        if (server != null) {
+            server.stop(0);
+            ((ExecutorService) server.getExecutor()).shutdownNow();
+            server = null;
+        }
+        if (out != null) {
+            out.shutdown();
+            out = null;
+        }
+    }
+
+    @Override
+    public boolean reaches(AID foreign) {
+        for (String a : foreign.addresses()) {
+            if (a.regionMatches(true, 0, "http://", 0, 7)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    // ---- inbound ----------------------------------------------------------------------------------
+
+    private void handle(HttpExchange x) throws IOException {
+        try (x) {
+            if (!x.getRequestMethod().equalsIgnoreCase("POST")) {
+                reply(x, 405, "the ACC accepts POST only");
+                return;
+            }
+            String type = x.getRequestHeaders().getFirst("Content-Type");
+            String boundary = boundaryOf(type);
+            if (boundary == null) {
+                reply(x, 406, "the Content-Type must be multipart/mixed with a boundary, got " + type);
+                return;
+            }
+            byte[] body = readLimited(x.getRequestBody());
+            if (body == null) {
+                reply(x, 413, "the request is larger than " + MAX_BODY + " bytes");
+                return;
+            }
+            Inbound in;
+            try {
+                in = parse(new String(body, StandardCharsets.ISO_8859_1), boundary);
+            } catch (IllegalArgumentException e) {
+                reply(x, 400, e.getMessage());
+                return;
+            }
+            received.incrementAndGet();
+            reply(x, 200, null);
+            GatewayContext ctx = context;
+            if (ctx != null) {
+                ctx.execute(() -> deliver(ctx, in));
+            }
+        } catch (RuntimeException e) {
+            LOG.warn("HTTP MTP request failed: {}", e.toString());
+        }
+    }
+
+    private void reply(HttpExchange x, int status, String problem) throws IOException {
+        if (status != 200) {
+            rejected.incrementAndGet();
+            LOG.debug("HTTP MTP rejected a request ({}): {}", status, problem);
+        }
+        byte[] b = problem == null ? new byte[0] : (problem + "\n").getBytes(StandardCharsets.UTF_8);
+        x.getResponseHeaders().set("Connection", "close");
+        x.getResponseHeaders().set("Content-Type", "text/plain; charset=utf-8");
+        x.sendResponseHeaders(status, b.length == 0 ? -1 : b.length);
+        if (b.length > 0) {
+            x.getResponseBody().write(b);
+        }
+    }
+
+    private static byte[] readLimited(InputStream in) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream();
+        byte[] buf = new byte[8192];
+        int n;
+        while ((n = in.read(buf)) > 0) {
+            if (b.size() + n > MAX_BODY) {
+                return null;
+            }
+            b.write(buf, 0, n);
+        }
+        return b.toByteArray();
+    }
+
+    static String boundaryOf(String contentType) {
+        if (contentType == null || !contentType.toLowerCase(Locale.ROOT).startsWith("multipart/mixed")) {
+            return null;
+        }
+        int at = contentType.toLowerCase(Locale.ROOT).indexOf("boundary=");
+        if (at < 0) {
+            return null;
+        }
+        String b = contentType.substring(at + 9).trim();
+        int semi = b.indexOf(';');
+        if (b.startsWith("\"")) {
+            int end = b.indexOf('"', 1);
+            return end > 1 ? b.substring(1, end) : null;
+        }
+        b = semi >= 0 ? b.substring(0, semi).trim() : b;
+        return b.isEmpty() ? null : b;
+    }
+
+    /** An accepted request: its envelope and its ACL message. */
+    record Inbound(FipaEnvelope envelope, AclMessage message) {
+    }
+
+    /**
+     * Parses a multipart body (as ISO-8859-1 text, so bytes survive): the envelope, then the payload.
+     *
+     * @throws IllegalArgumentException saying what is wrong
+     */
+    static Inbound parse(String body, String boundary) {
+        List<String> parts = new ArrayList<>();
+        String delim = "--" + boundary;
+        int at = body.indexOf(delim);
+        if (at < 0) {
+            throw new IllegalArgumentException("the body never shows the boundary " + boundary);
+        }
+        while (true) {
+            int start = at + delim.length();
+            if (body.startsWith("--", start)) {
+                break; // the closing delimiter
+            }
+            int next = body.indexOf("\r\n" + delim, start);
+            int nextLf = body.indexOf("\n" + delim, start);
+            int end = next >= 0 ? next : nextLf;
+            if (end < 0) {
+                throw new IllegalArgumentException("a multipart part is never closed by --" + boundary);
+            }
+            parts.add(body.substring(start, end));
+            at = body.indexOf(delim, end);
+        }
+        if (parts.size() < 2) {
+            throw new IllegalArgumentException("a FIPA message has two parts, the envelope and the payload; got " + parts.size());
+        }
+        String envXml = content(parts.get(0));
+        FipaEnvelope env = FipaEnvelope.parse(new String(envXml.getBytes(StandardCharsets.ISO_8859_1), StandardCharsets.UTF_8));
+        if (!env.aclRepresentation().equalsIgnoreCase(FipaEnvelope.STRING_REP)) {
+            throw new IllegalArgumentException("only " + FipaEnvelope.STRING_REP + " payloads are understood, got "
+                    + env.aclRepresentation());
+        }
+        Charset cs = StandardCharsets.US_ASCII;
+        if (env.payloadEncoding() != null) {
+            try {
+                cs = Charset.forName(env.payloadEncoding());
+            } catch (RuntimeException e) {
+                throw new IllegalArgumentException("an unknown payload-encoding " + env.payloadEncoding());
+            }
+        }
+        String payload = new String(content(parts.get(1)).getBytes(StandardCharsets.ISO_8859_1), cs);
+        AclMessage m;
+        try {
+            m = StringAclCodec.INSTANCE.decode(payload.trim());
+        } catch (AclParseException e) {
+            throw new IllegalArgumentException("the payload is not a FIPA string ACL message: " + e.getMessage());
+        }
+        if (m.getSender() == null) {
+            if (env.from() == null) {
+                throw new IllegalArgumentException("neither the message nor the envelope names a sender");
+            }
+            m.setSender(env.from());
+        } else if (m.getSender().addresses().isEmpty() && env.from() != null) {
+            m.setSender(env.from());
+        }
+        return new Inbound(env, m);
+    }
+
+    /** The content of a part: after its headers and the blank line. */
+    private static String content(String part) {
+        int crlf = part.indexOf("\r\n\r\n");
+        int lf = part.indexOf("\n\n");
+        int cut;
+        int skip;
+        if (crlf >= 0 && (lf < 0 || crlf <= lf)) {
+            cut = crlf;
+            skip = 4;
+        } else if (lf >= 0) {
+            cut = lf;
+            skip = 2;
+        } else {
+            throw new IllegalArgumentException("a multipart part has no blank line after its headers");
+        }
+        return part.substring(cut + skip);
+    }
+
+    /** On the loop: to the platform's agents, or answered here (DF, AMS), or a FAILURE back. */
+    private void deliver(GatewayContext ctx, Inbound in) {
+        AclMessage m = in.message();
+        for (AID r : in.envelope().deliverTo()) {
+            String local = r.localName();
+            boolean ours = ctx.platformName().equalsIgnoreCase(r.platform());
+            if (ours && (local.equalsIgnoreCase("df") || local.equalsIgnoreCase("ams"))) {
+                answerManagement(ctx, m, local.equalsIgnoreCase("df"));
+                continue;
+            }
+            if (!ours || !ctx.deliver(m, r)) {
+                sendOut(notFound(ctx, m, r), m.getSender());
+            }
+        }
+    }
+
+    /** JADE's AMS FAILURE for an unknown receiver. */
+    private static AclMessage notFound(GatewayContext ctx, AclMessage original, AID receiver) {
+        AclMessage f = new AclMessage(Performative.FAILURE);
+        f.setSender(AID.local("ams", ctx.platformName()));
+        f.addReceiver(original.getSender());
+        f.setConversationId(original.getConversationId());
+        f.setInReplyTo(original.getReplyWith());
+        f.setProtocol(original.getProtocol());
+        f.setLanguage("fipa-sl");
+        f.setContent("( (action ( agent-identifier :name " + original.getSender().name() + " ) (ACLMessage) ) (MTS-error "
+                + "( agent-identifier :name " + receiver.name() + " ) (internal-error \"Agent not found: "
+                + receiver.name() + "\")) )");
+        return f;
+    }
+
+    // ---- FIPA-Agent-Management (fipa-sl0) ---------------------------------------------------------
+
+    private void answerManagement(GatewayContext ctx, AclMessage m, boolean df) {
+        AclMessage r = m.createReply();
+        r.setSender(AID.local(df ? "df" : "ams", ctx.platformName()));
+        r.setLanguage(m.getLanguage() == null ? "fipa-sl0" : m.getLanguage());
+        r.setOntology(ONTOLOGY);
+        Sl0.Expr action;
+        try {
+            if (m.getPerformative() != Performative.REQUEST) {
+                throw new IllegalArgumentException("the " + (df ? "DF" : "AMS") + " takes REQUESTs, not "
+                        + m.getPerformative().wireName());
+            }
+            Sl0.Expr outer = Sl0.parse(m.getContent() == null ? "" : m.getContent());
+            if (outer.items().size() != 1 || !(outer.items().get(0) instanceof Sl0.Expr a) || !a.head().equals("action")
+                    || a.items().size() != 3 || !(a.items().get(2) instanceof Sl0.Expr)) {
+                throw new IllegalArgumentException("expected ((action <agent-identifier> (<function> ...)))");
+            }
+            action = a;
+        } catch (IllegalArgumentException e) {
+            r.setPerformative(Performative.NOT_UNDERSTOOD);
+            r.setContent("(" + Sl0.word(m.getContent() == null ? "" : m.getContent()) + " (error " + Sl0.word(e.getMessage()) + "))");
+            sendOut(r, m.getSender());
+            return;
+        }
+        Sl0.Expr fn = (Sl0.Expr) action.items().get(2);
+        try {
+            String content = switch (fn.head().toLowerCase(Locale.ROOT)) {
+                case "search" -> "((result " + action + " (sequence " + (df ? searchDf(ctx, fn) : searchAms(ctx)) + ")))";
+                case "register" -> {
+                    if (!df) {
+                        throw new UnsupportedOperationException("register with the AMS");
+                    }
+                    register(fn);
+                    yield "((done " + action + "))";
+                }
+                case "deregister" -> {
+                    if (!df) {
+                        throw new UnsupportedOperationException("deregister with the AMS");
+                    }
+                    deregister(fn);
+                    yield "((done " + action + "))";
+                }
+                default -> throw new UnsupportedOperationException(fn.head());
+            };
+            r.setPerformative(Performative.INFORM);
+            r.setContent(content);
+        } catch (UnsupportedOperationException e) {
+            r.setPerformative(Performative.FAILURE);
+            r.setContent("(" + action + " (unsupported-function " + Sl0.word(e.getMessage()) + "))");
+        } catch (IllegalArgumentException e) {
+            r.setPerformative(Performative.FAILURE);
+            r.setContent("(" + action + " (internal-error " + Sl0.word(e.getMessage()) + "))");
+        }
+        sendOut(r, m.getSender());
+    }
+
+    private String searchDf(GatewayContext ctx, Sl0.Expr fn) {
+        Sl0.Expr dfd = fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
+        if (dfd == null || !dfd.head().equals("df-agent-description")) {
+            throw new IllegalArgumentException("search needs a df-agent-description template");
+        }
+        List<ServiceDescription> templates = services(dfd.slot("services"));
+        long max = maxResults(fn);
+        StringBuilder b = new StringBuilder();
+        int n = 0;
+        for (AgentEntry e : ctx.agents()) {
+            if (matches(e.services(), templates) && !e.services().isEmpty() && (max < 0 || n < max)) {
+                b.append(n++ == 0 ? "" : " ").append(describe(new AID(e.name(), addresses().toArray(new String[0])), e.services()));
+            }
+        }
+        for (ForeignEntry f : foreignRegistrations.values()) {
+            if (matches(f.services(), templates) && (max < 0 || n < max)) {
+                b.append(n++ == 0 ? "" : " ").append(describe(f.aid(), f.services()));
+            }
+        }
+        return b.toString();
+    }
+
+    private String searchAms(GatewayContext ctx) {
+        StringBuilder b = new StringBuilder();
+        for (AgentEntry e : ctx.agents()) {
+            b.append(b.length() == 0 ? "" : " ").append("(ams-agent-description :name ")
+                    .append(aid(new AID(e.name(), addresses().toArray(new String[0])))).append(" :state active)");
+        }
+        return b.toString();
+    }
+
+    private static long maxResults(Sl0.Expr fn) {
+        for (Object o : fn.items()) {
+            if (o instanceof Sl0.Expr e && e.head().equals("search-constraints")) {
+                String v = e.text("max-results");
+                if (v != null) {
+                    try {
+                        return Long.parseLong(v);
+                    } catch (NumberFormatException x) {
+                        throw new IllegalArgumentException("a bad :max-results " + v);
+                    }
+                }
+            }
+        }
+        return -1;
+    }
+
+    private static boolean matches(List<ServiceDescription> have, List<ServiceDescription> templates) {
+        for (ServiceDescription t : templates) {
+            boolean any = false;
+            for (ServiceDescription s : have) {
+                any |= s.matches(t);
+            }
+            if (!any) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private void register(Sl0.Expr fn) {
+        Sl0.Expr dfd = fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
+        if (dfd == null || !(dfd.slot("name") instanceof Sl0.Expr name)) {
+            throw new IllegalArgumentException("register needs a df-agent-description with a :name");
+        }
+        AID who = aidOf(name);
+        foreignRegistrations.put(who.name().toLowerCase(Locale.ROOT), new ForeignEntry(who, services(dfd.slot("services"))));
+    }
+
+    private void deregister(Sl0.Expr fn) {
+        Sl0.Expr dfd = fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
+        if (dfd == null || !(dfd.slot("name") instanceof Sl0.Expr name)) {
+            throw new IllegalArgumentException("deregister needs a df-agent-description with a :name");
+        }
+        if (foreignRegistrations.remove(aidOf(name).name().toLowerCase(Locale.ROOT)) == null) {
+            throw new IllegalArgumentException("not-registered");
+        }
+    }
+
+    private static AID aidOf(Sl0.Expr e) {
+        if (!e.head().equals("agent-identifier") || e.text("name") == null) {
+            throw new IllegalArgumentException("expected (agent-identifier :name ...)");
+        }
+        List<String> urls = new ArrayList<>();
+        if (e.slot("addresses") instanceof Sl0.Expr seq) {
+            for (Object o : seq.items().subList(1, seq.items().size())) {
+                if (o instanceof Sl0.Atom a) {
+                    urls.add(a.text());
+                }
+            }
+        }
+        return new AID(e.text("name"), urls.toArray(new String[0]));
+    }
+
+    private static List<ServiceDescription> services(Object set) {
+        List<ServiceDescription> out = new ArrayList<>();
+        if (set == null) {
+            return out;
+        }
+        if (!(set instanceof Sl0.Expr s) || !s.head().equals("set")) {
+            throw new IllegalArgumentException(":services must be a (set ...)");
+        }
+        for (Object o : s.items().subList(1, s.items().size())) {
+            if (!(o instanceof Sl0.Expr sd) || !sd.head().equals("service-description")) {
+                throw new IllegalArgumentException("a :services set holds service-descriptions");
+            }
+            Map<String, String> props = new LinkedHashMap<>();
+            if (sd.slot("properties") instanceof Sl0.Expr ps) {
+                for (Object p : ps.items().subList(1, ps.items().size())) {
+                    if (p instanceof Sl0.Expr prop && prop.text("name") != null && prop.text("value") != null) {
+                        props.put(prop.text("name"), prop.text("value"));
+                    }
+                }
+            }
+            out.add(new ServiceDescription(sd.text("type"), sd.text("name"), props, List.of(), List.of(), List.of()));
+        }
+        return out;
+    }
+
+    private static String describe(AID who, List<ServiceDescription> services) {
+        StringBuilder b = new StringBuilder("(df-agent-description :name ").append(aid(who));
+        if (!services.isEmpty()) {
+            b.append(" :services (set");
+            for (ServiceDescription s : services) {
+                b.append(" (service-description");
+                if (s.name() != null) {
+                    b.append(" :name ").append(Sl0.word(s.name()));
+                }
+                if (s.type() != null) {
+                    b.append(" :type ").append(Sl0.word(s.type()));
+                }
+                if (!s.properties().isEmpty()) {
+                    b.append(" :properties (set");
+                    s.properties().forEach((k, v) -> b.append(" (property :name ").append(Sl0.word(k))
+                            .append(" :value ").append(Sl0.word(v)).append(')'));
+                    b.append(')');
+                }
+                b.append(')');
+            }
+            b.append(')');
+        }
+        return b.append(')').toString();
+    }
+
+    private static String aid(AID a) {
+        StringBuilder b = new StringBuilder("(agent-identifier :name ").append(Sl0.word(a.name()));
+        if (!a.addresses().isEmpty()) {
+            b.append(" :addresses (sequence");
+            for (String u : a.addresses()) {
+                b.append(' ').append(u);
+            }
+            b.append(')');
+        }
+        return b.append(')').toString();
+    }
+
+    // ---- outbound ---------------------------------------------------------------------------------
+
+    @Override
+    public void sendOut(AclMessage message, AID receiver) {
+        GatewayContext ctx = context;
+        ExecutorService ex = out;
+        if (ctx == null || ex == null) {
+            return;
+        }
+        AclMessage m = message.copy();
+        AID sender = m.getSender();
+        if (sender != null && ctx.platformName().equalsIgnoreCase(sender.platform())) {
+            m.setSender(new AID(sender.name(), addresses().toArray(new String[0])));
+        }
+        String payload = StringAclCodec.INSTANCE.encodeToString(m);
+        ex.execute(() -> {
+            String problem = null;
+            for (String url : receiver.addresses()) {
+                if (!url.regionMatches(true, 0, "http://", 0, 7)) {
+                    continue;
+                }
+                try {
+                    int status = post(url, receiver, m.getSender(), payload);
+                    if (status == 200) {
+                        return;
+                    }
+                    problem = url + " answered " + status;
+                } catch (IOException | RuntimeException e) {
+                    problem = url + ": " + e.getMessage();
+                }
+            }
+            String why = problem == null ? "no http address" : problem;
+            LOG.debug("HTTP MTP could not reach {}: {}", receiver.name(), why);
+            if (message.getPerformative() != Performative.FAILURE && sender != null
+                    && ctx.platformName().equalsIgnoreCase(sender.platform())) {
+                ctx.execute(() -> {
+                    AclMessage f = new AclMessage(Performative.FAILURE);
+                    f.setSender(AID.local("ams", ctx.platformName()));
+                    f.addReceiver(sender);
+                    f.setConversationId(message.getConversationId());
+                    f.setInReplyTo(message.getReplyWith());
+                    f.setProtocol(message.getProtocol());
+                    f.setLanguage("fipa-sl");
+                    f.setContent("( (action ( agent-identifier :name " + sender.name() + " ) (ACLMessage) ) (MTS-error "
+                            + "( agent-identifier :name " + receiver.name() + " ) (internal-error \"Foreign agent "
+                            + "unreachable: " + why.replace("\"", "'") + "\")) )");
+                    ctx.deliver(f, sender);
+                });
+            }
+        });
+    }
+
+    /** One POST, as JADE reads it; returns the status. */
+    static int post(String url, AID receiver, AID sender, String payload) throws IOException {
+        URI u = URI.create(url);
+        int p = u.getPort() < 0 ? 80 : u.getPort();
+        byte[] acl = payload.getBytes(StandardCharsets.UTF_8);
+        FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length);
+        byte[] rnd = new byte[16];
+        java.util.concurrent.ThreadLocalRandom.current().nextBytes(rnd);
+        String boundary = HexFormat.of().formatHex(rnd).substring(1);
+        ByteArrayOutputStream body = new ByteArrayOutputStream(acl.length + 1024);
+        body.writeBytes(("This is not part of the MIME multipart encoded message.\r\n--" + boundary
+                + "\r\nContent-Type: application/xml\r\n\r\n" + env.toXml() + "\r\n--" + boundary
+                + "\r\nContent-Type: application/text; charset=UTF-8\r\n\r\n").getBytes(StandardCharsets.UTF_8));
+        body.writeBytes(acl);
+        body.writeBytes(("\r\n--" + boundary + "--\r\n").getBytes(StandardCharsets.UTF_8));
+        String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + u.getHost()
+                + ":" + p + "\r\nContent-Type: multipart/mixed ; boundary=\"" + boundary + "\"\r\nContent-Length: "
+                + body.size() + "\r\nConnection: close\r\n\r\n";
+        try (Socket s = new Socket()) {
+            s.connect(new InetSocketAddress(u.getHost(), p), 5_000);
+            s.setSoTimeout(10_000);
+            OutputStream o = s.getOutputStream();
+            o.write(head.getBytes(StandardCharsets.US_ASCII));
+            body.writeTo(o);
+            o.flush();
+            InputStream in = s.getInputStream();
+            StringBuilder line = new StringBuilder();
+            int c;
+            while ((c = in.read()) >= 0) {
+                if (c == '\n') {
+                    String l = line.toString().trim();
+                    if (l.startsWith("HTTP/1.")) {
+                        String[] w = l.split(" ");
+                        return w.length > 1 ? Integer.parseInt(w[1]) : 500;
+                    }
+                    line.setLength(0);
+                } else {
+                    line.append((char) c);
+                }
+            }
+            throw new IOException("no HTTP status from " + url);
+        }
+    }
+}

@@ -1,0 +1,317 @@
+package io.concord.jade;
+
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.PortRange;
+import io.concord.layers.Profile;
+import io.concord.layers.SafetyStack;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+import io.concord.layers.security.IdentityStore;
+import io.concord.layers.security.PlatformKey;
+import jade.core.behaviours.OneShotBehaviour;
+import jade.domain.DFService;
+import jade.domain.FIPAAgentManagement.DFAgentDescription;
+import jade.lang.acl.ACLMessage;
+import jade.lang.acl.MessageTemplate;
+import jade.wrapper.ContainerController;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Function;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * A real JADE 4.3 platform in this JVM (main container, HTTP MTP with the parser fix) and a
+ * Concord platform whose container serves the HTTP MTP: unchanged JADE code on one side, Concord
+ * agents on the other.
+ */
+class JadeBridgeTest {
+    static final long PID = ProcessHandle.current().pid();
+    static final String CONCORD = "cbridge" + PID;
+    static final String JADE = "jplat" + PID;
+    static int jadeHttp;
+    static int concordHttp;
+    static ContainerController jadeMain;
+    static Platform concord;
+    static final Inbox INBOX = new Inbox();
+
+    /** Keeps what a Concord agent receives. */
+    static final class Inbox extends Agent {
+        final BlockingQueue<AclMessage> got = new LinkedBlockingQueue<>();
+
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                    } else {
+                        got.add(m);
+                    }
+                }
+            });
+        }
+    }
+
+    /** A Concord echo: REQUEST in, INFORM back; registered in the DF as echo-service. */
+    static final class ConcordEcho extends Agent {
+        @Override
+        protected void setup() {
+            addBehaviour(new io.concord.core.agent.OneShotBehaviour(this) {
+                @Override
+                public void action() {
+                    Platform.of(myAgent).register(ServiceDescription.of("echo-service", "concord-echo"));
+                }
+            });
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                    } else if (m.getPerformative() == Performative.REQUEST) {
+                        AclMessage r = m.createReply();
+                        r.setPerformative(Performative.INFORM);
+                        r.setContent("echo:" + m.getContent());
+                        myAgent.send(r);
+                    }
+                }
+            });
+        }
+    }
+
+    /** A JADE agent that runs one task on its own thread and completes a future with the result. */
+    public static final class JadeDriver extends jade.core.Agent {
+        @Override
+        @SuppressWarnings("unchecked")
+        protected void setup() {
+            Function<jade.core.Agent, Object> task = (Function<jade.core.Agent, Object>) getArguments()[0];
+            CompletableFuture<Object> result = (CompletableFuture<Object>) getArguments()[1];
+            addBehaviour(new OneShotBehaviour(this) {
+                @Override
+                public void action() {
+                    try {
+                        result.complete(task.apply(myAgent));
+                    } catch (Exception e) {
+                        result.completeExceptionally(e);
+                    }
+                    myAgent.doDelete();
+                }
+            });
+        }
+    }
+
+    /** A plain JADE echo agent. */
+    public static final class JadeEcho extends jade.core.Agent {
+        @Override
+        protected void setup() {
+            addBehaviour(new jade.core.behaviours.CyclicBehaviour(this) {
+                @Override
+                public void action() {
+                    ACLMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                    } else if (m.getPerformative() == ACLMessage.REQUEST) {
+                        ACLMessage r = m.createReply();
+                        r.setPerformative(ACLMessage.INFORM);
+                        r.setContent("jade-echo:" + m.getContent());
+                        myAgent.send(r);
+                    }
+                }
+            });
+        }
+    }
+
+    static int freePort() throws Exception {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+
+    @BeforeAll
+    static void platforms() throws Exception {
+        jadeHttp = freePort();
+        concordHttp = freePort();
+        jade.core.Runtime rt = jade.core.Runtime.instance();
+        rt.setCloseVM(false);
+        jade.core.Profile p = new jade.core.ProfileImpl();
+        p.setParameter(jade.core.Profile.GUI, "false");
+        p.setParameter(jade.core.Profile.LOCAL_HOST, "127.0.0.1");
+        p.setParameter(jade.core.Profile.LOCAL_PORT, Integer.toString(freePort()));
+        p.setParameter(jade.core.Profile.PLATFORM_ID, JADE);
+        p.setParameter(jade.core.Profile.DETECT_MAIN, "false");
+        p.setParameter(jade.core.Profile.MTPS, "jade.mtp.http.MessageTransportProtocol(http://127.0.0.1:" + jadeHttp + "/acc)");
+        p.setParameter("jade_mtp_http_parser", JadeSaxParser.class.getName());
+        jadeMain = rt.createMainContainer(p);
+        assertNotNull(jadeMain, "JADE's main container did not start");
+        jadeMain.createNewAgent("jecho", JadeEcho.class.getName(), new Object[0]).start();
+
+        concord = Platform.builder().name(CONCORD).ports(PortRange.of(7701, 7750))
+                .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(PlatformKey.random())
+                        .identities(IdentityStore.ephemeral()).build())
+                .gateway(() -> new HttpMtp("127.0.0.1", concordHttp)).network(null).build();
+        concord.startAgent("echo", new ConcordEcho());
+        concord.startAgent("inbox", INBOX);
+    }
+
+    @AfterAll
+    static void stop() {
+        if (concord != null) {
+            concord.close();
+        }
+        if (jadeMain != null) {
+            try {
+                jadeMain.kill();
+            } catch (Exception ignored) {
+                // gone
+            }
+        }
+    }
+
+    static jade.core.AID concordAid(String local) {
+        jade.core.AID a = new jade.core.AID(local + "@" + CONCORD, jade.core.AID.ISGUID);
+        a.addAddresses("http://127.0.0.1:" + concordHttp + "/acc");
+        return a;
+    }
+
+    static Object onJade(Function<jade.core.Agent, Object> task) throws Exception {
+        CompletableFuture<Object> f = new CompletableFuture<>();
+        jadeMain.createNewAgent("driver" + System.nanoTime(), JadeDriver.class.getName(), new Object[]{task, f}).start();
+        return f.get(60, TimeUnit.SECONDS);
+    }
+
+    @Test
+    void aJadeAgentRequestsAConcordAgentAndGetsItsInform() throws Exception {
+        Object reply = onJade(a -> {
+            ACLMessage req = new ACLMessage(ACLMessage.REQUEST);
+            req.addReceiver(concordAid("echo"));
+            req.setContent("hello from jade");
+            req.setConversationId("c1");
+            a.send(req);
+            ACLMessage r = a.blockingReceive(MessageTemplate.MatchConversationId("c1"), 30_000);
+            return r == null ? "nothing" : ACLMessage.getPerformative(r.getPerformative()) + " " + r.getContent()
+                    + " from " + r.getSender().getName();
+        });
+        assertEquals("INFORM echo:hello from jade from echo@" + CONCORD, reply);
+    }
+
+    @Test
+    void aConcordAgentRequestsAJadeAgentByNameAndGetsItsInform() throws Exception {
+        AclMessage req = new AclMessage(Performative.REQUEST);
+        req.addReceiver(new io.concord.core.acl.AID("jecho@" + JADE, "http://127.0.0.1:" + jadeHttp + "/acc"));
+        req.setContent("hello from concord");
+        req.setConversationId("c2");
+        INBOX.send(req);
+        AclMessage r = poll(m -> "c2".equals(m.getConversationId()));
+        assertEquals(Performative.INFORM, r.getPerformative());
+        assertEquals("jade-echo:hello from concord", r.getContent());
+        assertEquals("jecho@" + JADE, r.getSender().name());
+    }
+
+    @Test
+    void aJadeAgentFindsAConcordAgentWithDfServiceSearchOverHttp() throws Exception {
+        Object found = onJade(a -> {
+            DFAgentDescription template = new DFAgentDescription();
+            jade.domain.FIPAAgentManagement.ServiceDescription sd = new jade.domain.FIPAAgentManagement.ServiceDescription();
+            sd.setType("echo-service");
+            template.addServices(sd);
+            for (int i = 0; i < 50; i++) { // the registration reaches the DF in the first moments
+                try {
+                    DFAgentDescription[] r = DFService.search(a, concordAid("df"), template);
+                    if (r.length > 0) {
+                        return r[0].getName().getName() + " " + String.join(",", r[0].getName().getAddressesArray());
+                    }
+                    a.doWait(100);
+                } catch (Exception e) {
+                    return "search failed: " + e;
+                }
+            }
+            return "not found";
+        });
+        assertEquals("echo@" + CONCORD + " http://127.0.0.1:" + concordHttp + "/acc", found);
+    }
+
+    @Test
+    void unknownReceiversGetTheFipaFailureBothWays() throws Exception {
+        Object reply = onJade(a -> {
+            ACLMessage req = new ACLMessage(ACLMessage.REQUEST);
+            req.addReceiver(concordAid("nobody"));
+            req.setConversationId("c3");
+            req.setContent("anyone?");
+            a.send(req);
+            ACLMessage r = a.blockingReceive(MessageTemplate.MatchConversationId("c3"), 30_000);
+            return r == null ? "nothing" : ACLMessage.getPerformative(r.getPerformative()) + " " + r.getContent();
+        });
+        assertTrue(reply.toString().startsWith("FAILURE") && reply.toString().contains("Agent not found: nobody@" + CONCORD),
+                reply.toString());
+
+        AclMessage req = new AclMessage(Performative.REQUEST);
+        req.addReceiver(new io.concord.core.acl.AID("nobody@" + JADE, "http://127.0.0.1:" + jadeHttp + "/acc"));
+        req.setConversationId("c4");
+        req.setContent("anyone there?");
+        INBOX.send(req);
+        AclMessage r = poll(m -> "c4".equals(m.getConversationId()));
+        assertEquals(Performative.FAILURE, r.getPerformative());
+        assertTrue(r.getContent().contains("nobody@" + JADE), r.getContent());
+    }
+
+    @Test
+    void aMalformedHttpRequestGetsA4xxDeliversNothingAndTheEndpointKeepsServing() throws Exception {
+        String[][] bad = {
+                {"text/plain", "hello"},
+                {"multipart/mixed ; boundary=\"b1\"", "--b1\r\ngarbage here\r\n"},
+                {"multipart/mixed ; boundary=\"b1\"", "--b1\r\nContent-Type: application/xml\r\n\r\n<envelope>\r\n--b1\r\n\r\n(inform)\r\n--b1--\r\n"},
+                {"multipart/mixed ; boundary=\"b1\"", "--b1\r\nContent-Type: application/xml\r\n\r\n<envelope><params index=\"1\"><to><agent-identifier><name>echo@"
+                        + CONCORD + "</name></agent-identifier></to><acl-representation>fipa.acl.rep.string.std</acl-representation>"
+                        + "</params></envelope>\r\n--b1\r\nContent-Type: application/text\r\n\r\n(inform :content \"unclosed)\r\n--b1--\r\n"}};
+        for (String[] b : bad) {
+            String request = "POST /acc HTTP/1.1\r\nContent-Type: " + b[0] + "\r\nContent-Length: "
+                    + b[1].getBytes(StandardCharsets.ISO_8859_1).length + "\r\nConnection: close\r\n\r\n" + b[1];
+            int status = rawStatus(request);
+            assertTrue(status >= 400 && status < 500, "status " + status + " for " + request);
+        }
+        assertTrue(INBOX.got.stream().noneMatch(m -> "inform".equalsIgnoreCase(String.valueOf(m.getContent()))));
+        aJadeAgentRequestsAConcordAgentAndGetsItsInform();
+    }
+
+    private static int rawStatus(String request) throws Exception {
+        try (Socket s = new Socket("127.0.0.1", concordHttp)) {
+            s.setSoTimeout(10_000);
+            OutputStream o = s.getOutputStream();
+            o.write(request.getBytes(StandardCharsets.ISO_8859_1));
+            o.flush();
+            InputStream in = s.getInputStream();
+            String line = new String(in.readNBytes(12), StandardCharsets.ISO_8859_1);
+            return Integer.parseInt(line.substring(9, 12));
+        }
+    }
+
+    private static AclMessage poll(java.util.function.Predicate<AclMessage> p) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (System.nanoTime() < end) {
+            AclMessage m = INBOX.got.poll(100, TimeUnit.MILLISECONDS);
+            if (m != null && p.test(m)) {
+                return m;
+            }
+        }
+        throw new AssertionError("no such message within 30 s");
+    }
+}
