@@ -123,6 +123,17 @@ class JadeBridgeTest {
     public static final class JadeEcho extends jade.core.Agent {
         @Override
         protected void setup() {
+            DFAgentDescription dfd = new DFAgentDescription();
+            dfd.setName(getAID());
+            jade.domain.FIPAAgentManagement.ServiceDescription sd = new jade.domain.FIPAAgentManagement.ServiceDescription();
+            sd.setType("jade-echo-service");
+            sd.setName("jecho-service");
+            dfd.addServices(sd);
+            try {
+                DFService.register(this, dfd);
+            } catch (jade.domain.FIPAException e) {
+                throw new IllegalStateException(e);
+            }
             addBehaviour(new jade.core.behaviours.CyclicBehaviour(this) {
                 @Override
                 public void action() {
@@ -290,6 +301,56 @@ class JadeBridgeTest {
         }
         assertTrue(INBOX.got.stream().noneMatch(m -> "inform".equalsIgnoreCase(String.valueOf(m.getContent()))));
         aJadeAgentRequestsAConcordAgentAndGetsItsInform();
+    }
+
+    @Test
+    void aConcordAgentFindsAJadeAgentInJadesDf() throws Exception {
+        AclMessage q = new AclMessage(Performative.REQUEST);
+        io.concord.core.acl.AID df = new io.concord.core.acl.AID("df@" + JADE, "http://127.0.0.1:" + jadeHttp + "/acc");
+        q.addReceiver(df);
+        q.setLanguage("fipa-sl0");
+        q.setOntology("FIPA-Agent-Management");
+        q.setProtocol("fipa-request");
+        q.setConversationId("c5");
+        q.setContent("((action (agent-identifier :name df@" + JADE + ") (search (df-agent-description :services (set "
+                + "(service-description :type jade-echo-service))) (search-constraints :max-results -1))))");
+        INBOX.send(q);
+        AclMessage r = poll(m -> "c5".equals(m.getConversationId()) && m.getPerformative() != Performative.AGREE);
+        assertEquals(Performative.INFORM, r.getPerformative(), r.getContent());
+        assertTrue(r.getContent().contains("jecho@" + JADE), r.getContent());
+    }
+
+    @Test
+    void whenTheContainerThatHostsTheEndpointDiesTheNewOneServesIt() throws Exception {
+        String name = "fo" + PID;
+        int port = freePort();
+        try (Platform p = Platform.builder().name(name).ports(PortRange.of(7751, 7790))
+                .safetyStack(SafetyStack.builder().profile(Profile.CLASS_3).platformKey(PlatformKey.random()).build())
+                .gateway(() -> new HttpMtp("127.0.0.1", port)).network(null).build()) {
+            io.concord.core.acl.AID first = p.startAgent("first", new ConcordEcho());
+            p.startAgent("second", new ConcordEcho());
+            Function<String, Function<jade.core.Agent, Object>> ask = who -> a -> {
+                for (int i = 0; i < 100; i++) {
+                    ACLMessage req = new ACLMessage(ACLMessage.REQUEST);
+                    jade.core.AID to = new jade.core.AID(who + "@" + name, jade.core.AID.ISGUID);
+                    to.addAddresses("http://127.0.0.1:" + port + "/acc");
+                    req.addReceiver(to);
+                    req.setContent("ping");
+                    req.setConversationId("fo" + i);
+                    a.send(req);
+                    ACLMessage r = a.blockingReceive(MessageTemplate.MatchConversationId("fo" + i), 500);
+                    if (r != null && r.getPerformative() == ACLMessage.INFORM) {
+                        return r.getContent() + " after " + i + " tries";
+                    }
+                }
+                return "no answer";
+            };
+            assertTrue(onJade(ask.apply("second")).toString().startsWith("echo:ping"));
+            // "first" bound the range first: it is the container, and serves the endpoint.
+            p.runtime().execute(() -> p.runtime().crashAgent(first));
+            Object after = onJade(ask.apply("second"));
+            assertTrue(after.toString().startsWith("echo:ping"), "nobody served the endpoint after the failover: " + after);
+        }
     }
 
     private static int rawStatus(String request) throws Exception {
