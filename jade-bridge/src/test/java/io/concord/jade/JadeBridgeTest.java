@@ -353,6 +353,37 @@ class JadeBridgeTest {
         }
     }
 
+    @Test
+    void anUnchangedJadeAgentFindsAConcordAgentInItsOwnDfThroughTheMirror() throws Exception {
+        jadeMain.createNewAgent("mirror", ConcordDfMirror.class.getName(),
+                new Object[]{CONCORD, "http://127.0.0.1:" + concordHttp + "/acc", "200"}).start();
+        Object found = onJade(a -> {
+            DFAgentDescription template = new DFAgentDescription();
+            jade.domain.FIPAAgentManagement.ServiceDescription sd = new jade.domain.FIPAAgentManagement.ServiceDescription();
+            sd.setType("echo-service");
+            template.addServices(sd);
+            for (int i = 0; i < 100; i++) {
+                try {
+                    DFAgentDescription[] r = DFService.search(a, template); // JADE's own DF
+                    if (r.length > 0) {
+                        ACLMessage req = new ACLMessage(ACLMessage.REQUEST);
+                        req.addReceiver(r[0].getName());
+                        req.setContent("found you");
+                        req.setConversationId("m1");
+                        a.send(req);
+                        ACLMessage reply = a.blockingReceive(MessageTemplate.MatchConversationId("m1"), 30_000);
+                        return r[0].getName().getName() + " said " + (reply == null ? "nothing" : reply.getContent());
+                    }
+                } catch (Exception e) {
+                    return "search failed: " + e;
+                }
+                a.doWait(100);
+            }
+            return "not mirrored";
+        });
+        assertEquals("echo@" + CONCORD + " said echo:found you", found);
+    }
+
     private static int rawStatus(String request) throws Exception {
         try (Socket s = new Socket("127.0.0.1", concordHttp)) {
             s.setSoTimeout(10_000);
