@@ -151,6 +151,93 @@ class JadeBridgeTest {
         }
     }
 
+    /** A Concord book seller: QUERY-REF gives its price, REQUEST gets AGREE; CFP gets PROPOSE, accept gets INFORM. */
+    static final class ConcordSeller extends Agent {
+        final int price;
+
+        ConcordSeller(int price) {
+            this.price = price;
+        }
+
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    AclMessage r = m.createReply();
+                    switch (m.getPerformative()) {
+                        case QUERY_REF -> {
+                            r.setPerformative(Performative.INFORM);
+                            r.setContent(Integer.toString(price));
+                        }
+                        case REQUEST -> {
+                            r.setPerformative(Performative.AGREE);
+                            r.setContent("(sold " + m.getContent() + ")");
+                        }
+                        case CFP -> {
+                            r.setPerformative(Performative.PROPOSE);
+                            r.setContent(Integer.toString(price));
+                        }
+                        case ACCEPT_PROPOSAL -> {
+                            r.setPerformative(Performative.INFORM);
+                            r.setContent("(sold at " + price + ")");
+                        }
+                        default -> {
+                            return;
+                        }
+                    }
+                    myAgent.send(r);
+                }
+            });
+        }
+    }
+
+    /** The same seller in JADE; the contract net through jade.proto.ContractNetResponder. */
+    public static final class JadeSeller extends jade.core.Agent {
+        @Override
+        protected void setup() {
+            int price = Integer.parseInt(getArguments()[0].toString());
+            addBehaviour(new jade.proto.ContractNetResponder(this, jade.proto.ContractNetResponder.createMessageTemplate(
+                    jade.domain.FIPANames.InteractionProtocol.FIPA_CONTRACT_NET)) {
+                @Override
+                protected ACLMessage handleCfp(ACLMessage cfp) {
+                    ACLMessage p = cfp.createReply();
+                    p.setPerformative(ACLMessage.PROPOSE);
+                    p.setContent(Integer.toString(price));
+                    return p;
+                }
+
+                @Override
+                protected ACLMessage handleAcceptProposal(ACLMessage cfp, ACLMessage propose, ACLMessage accept) {
+                    ACLMessage i = accept.createReply();
+                    i.setPerformative(ACLMessage.INFORM);
+                    i.setContent("(sold at " + price + ")");
+                    return i;
+                }
+            });
+            addBehaviour(new jade.core.behaviours.CyclicBehaviour(this) {
+                @Override
+                public void action() {
+                    ACLMessage m = myAgent.receive(MessageTemplate.or(MessageTemplate.MatchPerformative(ACLMessage.QUERY_REF),
+                            MessageTemplate.MatchPerformative(ACLMessage.REQUEST)));
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    ACLMessage r = m.createReply();
+                    r.setPerformative(m.getPerformative() == ACLMessage.QUERY_REF ? ACLMessage.INFORM : ACLMessage.AGREE);
+                    r.setContent(m.getPerformative() == ACLMessage.QUERY_REF ? Integer.toString(price) : "(sold " + m.getContent() + ")");
+                    myAgent.send(r);
+                }
+            });
+        }
+    }
+
     static int freePort() throws Exception {
         try (ServerSocket s = new ServerSocket(0)) {
             return s.getLocalPort();
@@ -382,6 +469,99 @@ class JadeBridgeTest {
             return "not mirrored";
         });
         assertEquals("echo@" + CONCORD + " said echo:found you", found);
+    }
+
+    @Test
+    void aJadeBuyerBuysFromConcordSellers() throws Exception {
+        int[] prices = {42, 35, 39};
+        for (int i = 0; i < prices.length; i++) {
+            concord.startAgent("cseller" + i, new ConcordSeller(prices[i]));
+        }
+        Object outcome = onJade(a -> {
+            ACLMessage q = new ACLMessage(ACLMessage.QUERY_REF);
+            for (int i = 0; i < prices.length; i++) {
+                q.addReceiver(concordAid("cseller" + i));
+            }
+            q.setContent("dune");
+            q.setConversationId("jb1");
+            a.send(q);
+            ACLMessage best = null;
+            for (int i = 0; i < prices.length; i++) {
+                ACLMessage r = a.blockingReceive(MessageTemplate.and(MessageTemplate.MatchConversationId("jb1"),
+                        MessageTemplate.MatchPerformative(ACLMessage.INFORM)), 30_000);
+                if (r == null) {
+                    return "only " + i + " quotes";
+                }
+                if (best == null || Integer.parseInt(r.getContent()) < Integer.parseInt(best.getContent())) {
+                    best = r;
+                }
+            }
+            ACLMessage buy = best.createReply();
+            buy.setPerformative(ACLMessage.REQUEST);
+            buy.setContent("dune");
+            a.send(buy);
+            ACLMessage agree = a.blockingReceive(MessageTemplate.and(MessageTemplate.MatchConversationId("jb1"),
+                    MessageTemplate.MatchPerformative(ACLMessage.AGREE)), 30_000);
+            return agree == null ? "no agree" : best.getSender().getLocalName() + " " + agree.getContent();
+        });
+        assertEquals("cseller1 (sold dune)", outcome);
+    }
+
+    @Test
+    void aConcordBuyerBuysFromJadeSellersAndRunsAContractNetWithThem() throws Exception {
+        int[] prices = {30, 25, 28};
+        for (int i = 0; i < prices.length; i++) {
+            jadeMain.createNewAgent("jseller" + i, JadeSeller.class.getName(), new Object[]{Integer.toString(prices[i])}).start();
+        }
+        java.util.function.IntFunction<io.concord.core.acl.AID> seller = i -> new io.concord.core.acl.AID("jseller" + i + "@" + JADE,
+                "http://127.0.0.1:" + jadeHttp + "/acc");
+        // The book buyer: QUERY-REF to all, REQUEST to the cheapest, AGREE.
+        AclMessage q = new AclMessage(Performative.QUERY_REF);
+        for (int i = 0; i < prices.length; i++) {
+            q.addReceiver(seller.apply(i));
+        }
+        q.setContent("dune");
+        q.setConversationId("cb1");
+        INBOX.send(q);
+        AclMessage best = null;
+        for (int i = 0; i < prices.length; i++) {
+            AclMessage r = poll(m -> "cb1".equals(m.getConversationId()) && m.getPerformative() == Performative.INFORM);
+            if (best == null || Integer.parseInt(r.getContent()) < Integer.parseInt(best.getContent())) {
+                best = r;
+            }
+        }
+        AclMessage buy = best.createReply();
+        buy.setPerformative(Performative.REQUEST);
+        buy.setContent("dune");
+        INBOX.send(buy);
+        AclMessage agree = poll(m -> "cb1".equals(m.getConversationId()) && m.getPerformative() == Performative.AGREE);
+        assertEquals("jseller1@" + JADE, agree.getSender().name());
+
+        // A contract net, Concord initiator, JADE responders (jade.proto.ContractNetResponder).
+        Agent cn = new Agent() { };
+        concord.startAgent("cnbuyer", cn);
+        CompletableFuture<io.concord.core.proto.Conversations.ContractNetOutcome> outcome = new CompletableFuture<>();
+        concord.runtime().execute(() -> {
+            AclMessage cfp = new AclMessage(Performative.CFP);
+            for (int i = 0; i < prices.length; i++) {
+                cfp.addReceiver(seller.apply(i));
+            }
+            cfp.setContent("dune");
+            cfp.setProtocol("fipa-contract-net");
+            cfp.setReplyByEpochMs(cn.currentTimeMillis() + 20_000);
+            io.concord.core.proto.Conversations.contractNet(cn, cfp, ps -> ps.stream()
+                    .min(java.util.Comparator.comparingInt(p -> Integer.parseInt(p.getContent()))).orElse(null))
+                    .whenComplete((o, e) -> {
+                        if (e != null) {
+                            outcome.completeExceptionally(e);
+                        } else {
+                            outcome.complete(o);
+                        }
+                    });
+        });
+        var o = outcome.get(60, TimeUnit.SECONDS);
+        assertEquals("jseller1@" + JADE, o.proposal().getSender().name());
+        assertEquals("(sold at 25)", o.result().getContent());
     }
 
     private static int rawStatus(String request) throws Exception {
