@@ -429,6 +429,7 @@ class JadeBridgeTest {
                     if (r != null && r.getPerformative() == ACLMessage.INFORM) {
                         return r.getContent() + " after " + i + " tries";
                     }
+                    a.doWait(100); // the FAILURE came at once: the endpoint is between containers
                 }
                 return "no answer";
             };

@@ -1282,6 +1282,9 @@ public final class ContainerLayer extends Layer {
         if (role != Role.CONTAINER) {
             return;
         }
+        if (gateway != null && !gatewayStarted) {
+            startGateway(); // its port may have been held by the previous container a moment ago
+        }
         cycles++;
         long now = host.nowNs();
         boolean changed = false;

@@ -36,7 +36,7 @@ public record PlatformConfig(long discoveryTimeoutMs, int discoveryAttempts, lon
 
     /**
      * The defaults: discovery answers awaited 25, 50, 100 ms (3 attempts), 40 ms + 0.5 ms per agent maintenance period, dead
-     * after 3 silent periods, joins retried after 60, 120, 240 ms (4 attempts), LAL pushed 5 ms after a
+     * after 3 silent periods (at least 250 ms), joins retried after 60, 120, 240 ms (4 attempts), LAL pushed 5 ms after a
      * change, 3,000 bytes of LAL a message (well within the 8 KiB UDP frame of the safety stack).
      */
     public static PlatformConfig defaults() {
@@ -48,8 +48,15 @@ public record PlatformConfig(long discoveryTimeoutMs, int discoveryAttempts, lon
         return basePeriodMs + perAgentMicros * agents / 1000;
     }
 
-    /** The silence after which an agent or the container counts as dead. */
+    /**
+     * The silence after which an agent or the container counts as dead: {@code timeoutPeriods}
+     * periods, and never less than {@link #MIN_TIMEOUT_MS}, so that a loop starved for a moment on a
+     * busy machine (a JVM starting beside it) is not taken for dead.
+     */
     public long timeoutMs(int agents) {
-        return periodMs(agents) * timeoutPeriods;
+        return Math.max(MIN_TIMEOUT_MS, periodMs(agents) * timeoutPeriods);
     }
+
+    /** The shortest silence taken for death. */
+    public static final long MIN_TIMEOUT_MS = 250;
 }
