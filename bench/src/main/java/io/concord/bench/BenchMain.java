@@ -29,7 +29,7 @@ import io.concord.core.net.Transport;
  * {@code books}, {@code udp}.
  */
 public final class BenchMain {
-    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network");
+    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -83,6 +83,7 @@ public final class BenchMain {
                     case "stress" -> b.stress();
                     case "bootstrap", "failover" -> { }
                     case "network" -> b.network();
+                    case "http" -> b.http();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -325,6 +326,27 @@ public final class BenchMain {
     private static <T> double med(List<T> l, java.util.function.ToDoubleFunction<T> f) {
         double[] v = l.stream().mapToDouble(f).sorted().toArray();
         return v.length == 0 ? -1 : v[v.length / 2];
+    }
+
+    /** The JADE bridge: JADE to Concord over HTTP beside JADE to JADE over HTTP. */
+    private void http() throws RunnerException, IOException {
+        Collection<RunResult> results = new Runner(options(HttpBenchmark.class).build()).run();
+        Map<String, Double> us = new TreeMap<>();
+        for (RunResult r : results) {
+            us.put(r.getParams().getParam("target"), median(r));
+        }
+        Double c = us.get("concord");
+        Double j = us.get("jade");
+        System.out.println(String.format(Locale.ROOT, "RESULT http request_reply concord_us=%.1f jade_us=%.1f speedup=%.2f",
+                c, j, j / c));
+        StringBuilder md = new StringBuilder(header("JADE bridge over HTTP", "A JADE 4.3 agent REQUESTs an agent of another "
+                + "platform over FIPA's HTTP MTP and waits for its INFORM, 500 bytes each way, on 127.0.0.1. The other "
+                + "platform is Concord (class 7; its container serves the HTTP MTP and relays to the agent) or a second "
+                + "JADE platform in the same JVM. Time per request and reply."));
+        md.append("| other platform | median µs |\n|---|---|\n");
+        md.append(String.format(Locale.ROOT, "| Concord | %.1f |%n| JADE | %.1f |%n", c, j));
+        md.append(String.format(Locale.ROOT, "%nJADE to Concord takes %.2f times the time of JADE to JADE.%n", c / j));
+        Files.writeString(reportDir.resolve("http.md"), md.toString());
     }
 
     /** Hosts in network namespaces: join and heal times. Needs root (namespaces). */

@@ -16,6 +16,14 @@ public final class JadePlatform implements AutoCloseable {
     private final int port;
 
     public JadePlatform() {
+        this("bench", 0);
+    }
+
+    /**
+     * A main container of its own platform; with {@code httpPort > 0} it serves JADE's HTTP MTP at
+     * {@code http://127.0.0.1:httpPort/acc}, with the parser fix JADE 4.3 needs on Java 17.
+     */
+    public JadePlatform(String platformId, int httpPort) {
         port = freePort();
         Runtime rt = Runtime.instance();
         rt.setCloseVM(false);
@@ -23,8 +31,13 @@ public final class JadePlatform implements AutoCloseable {
         p.setParameter(Profile.GUI, "false");
         p.setParameter(Profile.LOCAL_HOST, "127.0.0.1");
         p.setParameter(Profile.LOCAL_PORT, Integer.toString(port));
-        p.setParameter(Profile.PLATFORM_ID, "bench");
-        p.setParameter(Profile.NO_MTP, "true");
+        p.setParameter(Profile.PLATFORM_ID, platformId);
+        if (httpPort > 0) {
+            p.setParameter(Profile.MTPS, "jade.mtp.http.MessageTransportProtocol(http://127.0.0.1:" + httpPort + "/acc)");
+            p.setParameter("jade_mtp_http_parser", "io.concord.jade.JadeSaxParser");
+        } else {
+            p.setParameter(Profile.NO_MTP, "true");
+        }
         p.setParameter(Profile.DETECT_MAIN, "false");
         main = rt.createMainContainer(p);
         if (main == null) {
@@ -32,7 +45,7 @@ public final class JadePlatform implements AutoCloseable {
         }
     }
 
-    static int freePort() {
+    public static int freePort() {
         try (ServerSocket s = new ServerSocket(0)) {
             return s.getLocalPort();
         } catch (IOException e) {

@@ -1,0 +1,103 @@
+package io.concord.bench;
+
+import io.concord.bench.jade.JadeHttpEcho;
+import io.concord.bench.jade.JadeHttpRequester;
+import io.concord.bench.jade.JadePlatform;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.PortRange;
+import io.concord.jade.HttpMtp;
+import io.concord.layers.Profile;
+import io.concord.layers.SafetyStack;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.security.IdentityStore;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.OperationsPerInvocation;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+
+/**
+ * The JADE bridge: a JADE agent REQUESTs an agent of another platform over FIPA's HTTP MTP and waits
+ * for its INFORM (500 bytes each way). The other platform is Concord (class 7, its container serving
+ * the HTTP MTP) or JADE itself, in the same run. Time per request and reply.
+ */
+@State(Scope.Benchmark)
+public class HttpBenchmark {
+    public static final int ROUNDS = 20;
+    static final String CONTENT = "h".repeat(500);
+
+    @Param({"concord", "jade"})
+    public String target;
+
+    private final RoundDriver driver = new RoundDriver();
+    private JadePlatform jadeTarget;
+    private Platform concordTarget;
+
+    /** A Concord echo. */
+    public static final class Echo extends Agent {
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    AclMessage r = m.createReply();
+                    r.setPerformative(Performative.INFORM);
+                    r.setContent(m.getContent());
+                    myAgent.send(r);
+                }
+            });
+        }
+    }
+
+    @Setup(Level.Trial)
+    public void start() throws Exception {
+        int targetHttp = JadePlatform.freePort();
+        String targetName;
+        if (target.equals("jade")) {
+            jadeTarget = new JadePlatform("httptarget", targetHttp);
+            jadeTarget.start("echo", JadeHttpEcho.class);
+            targetName = "echo@httptarget";
+        } else {
+            concordTarget = Platform.builder().name("httptarget").ports(PortRange.of(7951, 7990)).network(null)
+                    .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(Platforms.KEY)
+                            .identities(IdentityStore.ephemeral()).build())
+                    .gateway(() -> new HttpMtp("127.0.0.1", targetHttp)).build();
+            concordTarget.startAgent("echo", new Echo());
+            targetName = "echo@httptarget";
+        }
+        driver.jade = new JadePlatform("httpsource", JadePlatform.freePort());
+        driver.rounds.expectReady(1);
+        driver.jadeStarter = driver.jade.start("requester", JadeHttpRequester.class, driver.rounds, targetName,
+                "http://127.0.0.1:" + targetHttp + "/acc", CONTENT);
+        driver.rounds.awaitReady();
+        driver.runBatch(2); // the first requests wait for the container's gateway and the HTTP paths
+    }
+
+    @Benchmark
+    @OperationsPerInvocation(ROUNDS)
+    public void requestReply() throws Exception {
+        driver.runBatch(ROUNDS);
+    }
+
+    @TearDown(Level.Trial)
+    public void stop() {
+        driver.close();
+        if (jadeTarget != null) {
+            jadeTarget.close();
+        }
+        if (concordTarget != null) {
+            concordTarget.close();
+        }
+    }
+}
