@@ -342,7 +342,7 @@ public final class BenchMain {
         StringBuilder md = new StringBuilder(header("JADE bridge over HTTP", "A JADE 4.3 agent REQUESTs an agent of another "
                 + "platform over FIPA's HTTP MTP and waits for its INFORM, 500 bytes each way, on 127.0.0.1. The other "
                 + "platform is Concord (class 7; its container serves the HTTP MTP and relays to the agent) or a second "
-                + "JADE platform in the same JVM. Time per request and reply."));
+                + "JADE platform, each in a JVM of its own. Time per request and reply."));
         md.append("| other platform | median µs |\n|---|---|\n");
         md.append(String.format(Locale.ROOT, "| Concord | %.1f |%n| JADE | %.1f |%n", c, j));
         md.append(String.format(Locale.ROOT, "%nJADE to Concord takes %.2f times the time of JADE to JADE.%n", c / j));

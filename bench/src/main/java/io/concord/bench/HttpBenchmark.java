@@ -25,7 +25,7 @@ import org.openjdk.jmh.annotations.TearDown;
 /**
  * The JADE bridge: a JADE agent REQUESTs an agent of another platform over FIPA's HTTP MTP and waits
  * for its INFORM (500 bytes each way). The other platform is Concord (class 7, its container serving
- * the HTTP MTP) or JADE itself, in the same run. Time per request and reply.
+ * the HTTP MTP) or JADE itself, in the same run; either runs in a JVM of its own. Time per request and reply.
  */
 @State(Scope.Benchmark)
 public class HttpBenchmark {
@@ -36,8 +36,6 @@ public class HttpBenchmark {
     public String target;
 
     private final RoundDriver driver = new RoundDriver();
-    private JadePlatform jadeTarget;
-    private Platform concordTarget;
 
     /** A Concord echo. */
     public static final class Echo extends Agent {
@@ -63,19 +61,9 @@ public class HttpBenchmark {
     @Setup(Level.Trial)
     public void start() throws Exception {
         int targetHttp = JadePlatform.freePort();
-        String targetName;
-        if (target.equals("jade")) {
-            jadeTarget = new JadePlatform("httptarget", targetHttp);
-            jadeTarget.start("echo", JadeHttpEcho.class);
-            targetName = "echo@httptarget";
-        } else {
-            concordTarget = Platform.builder().name("httptarget").ports(PortRange.of(7951, 7990)).network(null)
-                    .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(Platforms.KEY)
-                            .identities(IdentityStore.ephemeral()).build())
-                    .gateway(() -> new HttpMtp("127.0.0.1", targetHttp)).build();
-            concordTarget.startAgent("echo", new Echo());
-            targetName = "echo@httptarget";
-        }
+        // The other platform runs in a JVM of its own, JADE or Concord alike: a JVM holds one JADE platform.
+        driver.children.start(HttpTarget.class, target, Integer.toString(targetHttp));
+        String targetName = driver.children.awaitReady().get(0);
         driver.jade = new JadePlatform("httpsource", JadePlatform.freePort());
         driver.rounds.expectReady(1);
         driver.jadeStarter = driver.jade.start("requester", JadeHttpRequester.class, driver.rounds, targetName,
@@ -93,11 +81,5 @@ public class HttpBenchmark {
     @TearDown(Level.Trial)
     public void stop() {
         driver.close();
-        if (jadeTarget != null) {
-            jadeTarget.close();
-        }
-        if (concordTarget != null) {
-            concordTarget.close();
-        }
     }
 }

@@ -99,7 +99,10 @@ public final class HttpMtp implements Gateway {
                     + "); choose another port for the JADE bridge", e);
         }
         server.createContext("/", this::handle);
-        server.setExecutor(Executors.newSingleThreadExecutor(r -> daemon(r, "concord-http-in")));
+        // A thread per busy connection: JADE sends two stray bytes after each request, so the server
+        // reads the next request on a kept-alive connection while JADE is silent; one thread for
+        // all would stall the others. JADE keeps at most 10 sockets open.
+        server.setExecutor(Executors.newCachedThreadPool(r -> daemon(r, "concord-http-in")));
         server.start();
         out = Executors.newSingleThreadExecutor(r -> daemon(r, "concord-http-out"));
         LOG.info("HTTP MTP of platform {} at {}", ctx.platformName(), addresses());
@@ -119,7 +122,18 @@ public final class HttpMtp implements Gateway {
             server = null;
         }
         if (out != null) {
-            out.shutdown();
+            ExecutorService o = out;
+            o.execute(() -> {
+                for (Socket c : connections.values()) {
+                    try {
+                        c.close();
+                    } catch (IOException ignored) {
+                        // closing anyway
+                    }
+                }
+                connections.clear();
+            });
+            o.shutdown();
             out = null;
         }
     }
@@ -177,7 +191,8 @@ public final class HttpMtp implements Gateway {
             LOG.debug("HTTP MTP rejected a request ({}): {}", status, problem);
         }
         byte[] b = problem == null ? new byte[0] : (problem + "\n").getBytes(StandardCharsets.UTF_8);
-        x.getResponseHeaders().set("Connection", "close");
+        // Keep-alive for good requests: JADE then reuses its sockets (it keeps up to 10 per platform).
+        x.getResponseHeaders().set("Connection", status == 200 ? "Keep-Alive" : "close");
         x.getResponseHeaders().set("Content-Type", "text/plain; charset=utf-8");
         x.sendResponseHeaders(status, b.length == 0 ? -1 : b.length);
         if (b.length > 0) {
@@ -595,10 +610,49 @@ public final class HttpMtp implements Gateway {
         });
     }
 
-    /** One POST, as JADE reads it; returns the status. */
-    static int post(String url, AID receiver, AID sender, String payload) throws IOException {
+    // Kept-alive connections to other platforms' ACCs, by host:port; used by the out thread only.
+    private final Map<String, Socket> connections = new java.util.HashMap<>();
+
+    /** One POST, as JADE reads it, on a kept-alive connection when the peer allows; returns the status. */
+    int post(String url, AID receiver, AID sender, String payload) throws IOException {
         URI u = URI.create(url);
         int p = u.getPort() < 0 ? 80 : u.getPort();
+        byte[] request = request(url, u.getHost(), p, receiver, sender, payload);
+        String key = u.getHost() + ":" + p;
+        for (int attempt = 0; ; attempt++) {
+            Socket s = connections.remove(key);
+            boolean reused = s != null;
+            if (s == null) {
+                s = new Socket();
+                s.setTcpNoDelay(true); // one write, sent at once: no Nagle wait for a delayed ACK
+                s.connect(new InetSocketAddress(u.getHost(), p), 5_000);
+                s.setSoTimeout(10_000);
+            }
+            try {
+                OutputStream o = s.getOutputStream();
+                o.write(request);
+                o.flush();
+                Response r = readResponse(s.getInputStream(), url);
+                if (r.keepAlive()) {
+                    connections.put(key, s);
+                } else {
+                    s.close();
+                }
+                return r.status();
+            } catch (IOException e) {
+                s.close();
+                if (!reused || attempt > 0) {
+                    throw e;
+                }
+                // the peer closed a kept-alive connection meanwhile: once more on a new one
+            }
+        }
+    }
+
+    private record Response(int status, boolean keepAlive) {
+    }
+
+    private static byte[] request(String url, String host, int port, AID receiver, AID sender, String payload) {
         byte[] acl = payload.getBytes(StandardCharsets.UTF_8);
         FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length);
         byte[] rnd = new byte[16];
@@ -610,32 +664,74 @@ public final class HttpMtp implements Gateway {
                 + "\r\nContent-Type: application/text; charset=UTF-8\r\n\r\n").getBytes(StandardCharsets.UTF_8));
         body.writeBytes(acl);
         body.writeBytes(("\r\n--" + boundary + "--\r\n").getBytes(StandardCharsets.UTF_8));
-        String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + u.getHost()
-                + ":" + p + "\r\nContent-Type: multipart/mixed ; boundary=\"" + boundary + "\"\r\nContent-Length: "
-                + body.size() + "\r\nConnection: close\r\n\r\n";
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(u.getHost(), p), 5_000);
-            s.setSoTimeout(10_000);
-            OutputStream o = s.getOutputStream();
-            o.write(head.getBytes(StandardCharsets.US_ASCII));
-            body.writeTo(o);
-            o.flush();
-            InputStream in = s.getInputStream();
-            StringBuilder line = new StringBuilder();
-            int c;
-            while ((c = in.read()) >= 0) {
-                if (c == '\n') {
-                    String l = line.toString().trim();
-                    if (l.startsWith("HTTP/1.")) {
-                        String[] w = l.split(" ");
-                        return w.length > 1 ? Integer.parseInt(w[1]) : 500;
-                    }
-                    line.setLength(0);
-                } else {
-                    line.append((char) c);
-                }
+        String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + host
+                + ":" + port + "\r\nContent-Type: multipart/mixed ; boundary=\"" + boundary + "\"\r\nContent-Length: "
+                + body.size() + "\r\nConnection: Keep-Alive\r\n\r\n";
+        ByteArrayOutputStream all = new ByteArrayOutputStream(head.length() + body.size());
+        all.writeBytes(head.getBytes(StandardCharsets.US_ASCII));
+        all.writeBytes(body.toByteArray());
+        return all.toByteArray();
+    }
+
+    /**
+     * Reads a response: the status line (after any blank lines), the headers, and the body when the
+     * connection stays open: by Content-Length, or JADE's fixed HTML page, which has none.
+     */
+    private static Response readResponse(InputStream in, String url) throws IOException {
+        String line;
+        do {
+            line = readLine(in);
+            if (line == null) {
+                throw new IOException("no HTTP status from " + url);
             }
-            throw new IOException("no HTTP status from " + url);
+        } while (line.isEmpty());
+        if (!line.startsWith("HTTP/1.")) {
+            throw new IOException("not an HTTP response from " + url + ": " + line);
         }
+        String[] w = line.split(" ");
+        int status = w.length > 1 ? Integer.parseInt(w[1]) : 500;
+        boolean keepAlive = line.startsWith("HTTP/1.1");
+        int length = -1;
+        while ((line = readLine(in)) != null && !line.isEmpty()) {
+            String l = line.toLowerCase(Locale.ROOT);
+            if (l.startsWith("connection:")) {
+                keepAlive = l.substring(11).trim().equals("keep-alive");
+            } else if (l.startsWith("content-length:")) {
+                length = Integer.parseInt(l.substring(15).trim());
+            }
+        }
+        if (!keepAlive) {
+            return new Response(status, false);
+        }
+        if (length >= 0) {
+            in.readNBytes(length);
+            return new Response(status, true);
+        }
+        // JADE's page: <html><body><h1>200 OK</h1></body></html>, without a length.
+        StringBuilder b = new StringBuilder();
+        int c;
+        while (b.length() < 4096 && (c = in.read()) >= 0) {
+            b.append((char) c);
+            if (b.length() >= 7 && b.substring(b.length() - 7).equalsIgnoreCase("</html>")) {
+                return new Response(status, true);
+            }
+        }
+        return new Response(status, false);
+    }
+
+    private static String readLine(InputStream in) throws IOException {
+        StringBuilder b = new StringBuilder();
+        int c;
+        while ((c = in.read()) >= 0) {
+            if (c == '\n') {
+                int n = b.length();
+                return n > 0 && b.charAt(n - 1) == '\r' ? b.substring(0, n - 1) : b.toString();
+            }
+            b.append((char) c);
+            if (b.length() > 8192) {
+                throw new IOException("an HTTP header line longer than 8 KiB");
+            }
+        }
+        return b.length() == 0 ? null : b.toString();
     }
 }
