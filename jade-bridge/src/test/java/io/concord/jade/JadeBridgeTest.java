@@ -565,6 +565,31 @@ class JadeBridgeTest {
         assertEquals("(sold at 25)", o.result().getContent());
     }
 
+    @Test
+    void theDfAnswersWhatItDoesNotDoWithAClearFailure() throws Exception {
+        Object replies = onJade(a -> {
+            StringBuilder b = new StringBuilder();
+            String[] contents = {
+                    "((action (agent-identifier :name df@" + CONCORD + ") (modify (df-agent-description :name (agent-identifier :name x@y)))))",
+                    "((action (agent-identifier :name df@" + CONCORD + ") (search (df-agent-description"};
+            for (int i = 0; i < contents.length; i++) {
+                ACLMessage req = new ACLMessage(ACLMessage.REQUEST);
+                req.addReceiver(concordAid("df"));
+                req.setLanguage("fipa-sl0");
+                req.setOntology("FIPA-Agent-Management");
+                req.setContent(contents[i]);
+                req.setConversationId("sl" + i);
+                a.send(req);
+                ACLMessage r = a.blockingReceive(MessageTemplate.MatchConversationId("sl" + i), 30_000);
+                b.append(r == null ? "nothing" : ACLMessage.getPerformative(r.getPerformative()) + " " + r.getContent()).append('\n');
+            }
+            return b.toString();
+        });
+        String[] lines = replies.toString().split("\n");
+        assertTrue(lines[0].startsWith("FAILURE") && lines[0].contains("(unsupported-function modify)"), lines[0]);
+        assertTrue(lines[1].startsWith("NOT-UNDERSTOOD") && lines[1].contains("never closed"), lines[1]);
+    }
+
     private static int rawStatus(String request) throws Exception {
         try (Socket s = new Socket("127.0.0.1", concordHttp)) {
             s.setSoTimeout(10_000);

@@ -1,0 +1,90 @@
+package io.concord.jade;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.Performative;
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The HTTP MTP's wire pieces on their own: JADE's request as it sends it, the envelope, SL0. */
+class WireTest {
+    /** The request JADE 4.3 sends (JADE-INTEROP.md), with a message for bob. */
+    static final String JADE_BODY = "This is not part of the MIME multipart encoded message.\r\n"
+            + "--7b446481f5ae2c17c233efb80dd6246\r\nContent-Type: application/xml\r\n\r\n"
+            + "<?xml version=\"1.0\"?>\n<envelope><params index=\"1\"><to><agent-identifier><name>bob@foreignplat</name>"
+            + "<addresses><url>http://127.0.0.1:7779/acc</url></addresses></agent-identifier></to><from><agent-identifier>"
+            + "<name>echo@TestPlat</name><addresses><url>http://127.0.0.1:7778/acc</url></addresses></agent-identifier></from>"
+            + "<acl-representation>fipa.acl.rep.string.std</acl-representation><payload-length>120</payload-length>"
+            + "<date>20261121Z080444961</date><intended-receiver><agent-identifier><name>bob@foreignplat</name><addresses>"
+            + "<url>http://127.0.0.1:7779/acc</url></addresses></agent-identifier></intended-receiver></params></envelope>\r\n"
+            + "--7b446481f5ae2c17c233efb80dd6246\r\nContent-Type: application/text\r\n\r\n"
+            + "(REQUEST\n :sender  ( agent-identifier :name echo@TestPlat  :addresses (sequence http://127.0.0.1:7778/acc ))\n"
+            + " :receiver  (set ( agent-identifier :name bob@foreignplat ) )\n :content  \"ping\" )\r\n"
+            + "--7b446481f5ae2c17c233efb80dd6246--\r\n";
+
+    @Test
+    void readsTheRequestJadeSends() {
+        String boundary = HttpMtp.boundaryOf("multipart/mixed ; boundary=\"7b446481f5ae2c17c233efb80dd6246\"");
+        assertEquals("7b446481f5ae2c17c233efb80dd6246", boundary);
+        HttpMtp.Inbound in = HttpMtp.parse(JADE_BODY, boundary);
+        assertEquals(List.of(new AID("bob@foreignplat")), in.envelope().deliverTo());
+        assertEquals(Performative.REQUEST, in.message().getPerformative());
+        assertEquals("ping", in.message().getContent());
+        assertEquals("echo@TestPlat", in.message().getSender().name());
+        assertEquals(List.of("http://127.0.0.1:7778/acc"), in.message().getSender().addresses());
+    }
+
+    @Test
+    void rejectsWhatItCannotUseAndSaysWhy() {
+        assertEquals(null, HttpMtp.boundaryOf("text/plain"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HttpMtp.parse("no boundary here", "b"))
+                .getMessage().contains("boundary"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HttpMtp.parse(
+                JADE_BODY.replace("fipa.acl.rep.string.std", "fipa.acl.rep.bitefficient.std"), "7b446481f5ae2c17c233efb80dd6246"))
+                .getMessage().contains("only fipa.acl.rep.string.std"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HttpMtp.parse(
+                JADE_BODY.replace("<intended-receiver>", "<x>").replace("</intended-receiver>", "</x>")
+                        .replace("<to>", "<y>").replace("</to>", "</y>"), "7b446481f5ae2c17c233efb80dd6246"))
+                .getMessage().contains("names no receiver"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> FipaEnvelope.parse(
+                "<!DOCTYPE x [<!ENTITY e SYSTEM \"file:///etc/passwd\">]><envelope>&e;</envelope>"))
+                .getMessage().contains("not well-formed"));
+    }
+
+    @Test
+    void theEnvelopeItWritesReadsBack() {
+        AID bob = new AID("bob@j", "http://h:1/acc");
+        AID me = new AID("me@c&co", "http://h:2/acc");
+        FipaEnvelope e = FipaEnvelope.forOne(bob, me, 42);
+        String xml = e.toXml();
+        assertTrue(xml.contains("<intended-receiver>") && !xml.contains("\n<params") && xml.contains("me@c&amp;co"), xml);
+        assertTrue(e.date().matches("\\d{8}Z\\d{9}"), e.date());
+        FipaEnvelope back = FipaEnvelope.parse(xml);
+        assertEquals(List.of(bob), back.intendedReceivers());
+        assertEquals("me@c&co", back.from().name());
+        assertEquals(42, back.payloadLength());
+        assertEquals("UTF-8", back.payloadEncoding());
+    }
+
+    @Test
+    void sl0IsReadStrictly() {
+        Sl0.Expr e = Sl0.parse("((action (agent-identifier :name df@P) (search (df-agent-description :services (set "
+                + "(service-description :type \"my type\"))) (search-constraints :max-results -1))))");
+        Sl0.Expr action = (Sl0.Expr) e.items().get(0);
+        assertEquals("action", action.head());
+        assertEquals("df@P", ((Sl0.Expr) action.items().get(1)).text("name"));
+        assertTrue(e.toString().contains(":type \"my type\""), e.toString());
+        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("((action"));
+        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("(a) b"));
+        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("word"));
+        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("(\"open"));
+        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("(".repeat(100) + ")".repeat(100)));
+        assertEquals("plain", Sl0.word("plain"));
+        assertEquals("\"two words\"", Sl0.word("two words"));
+        assertEquals("\"-x\"", Sl0.word("-x"));
+    }
+}
