@@ -82,8 +82,11 @@ public final class Demo {
             OUT.println("Failover: kill -9 JVM " + letter + ", whose " + name + " is the container.");
             Jvm victim = jvms.remove(letter);
             victim.process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
-            String next = await(events, l -> l.contains("I am the container") && !l.startsWith("[" + letter + "]"), 30);
-            OUT.println(next == null ? "No new container within 30 s." : "A new container took over; the demo ends.");
+            int left = 4 - (letter.equals("A") ? 2 : 1); // JVM A runs two sellers, B and C one agent each
+            String next = await(events, l -> l.contains("I am the container") && !l.startsWith("[" + letter + "]")
+                    && l.contains(" " + left + " agents here"), 30);
+            OUT.println(next == null ? "No new container listing the " + left + " agents left within 30 s."
+                    : "A new container took over and lists the " + left + " agents left; the demo ends.");
         } finally {
             for (Jvm j : jvms.values()) {
                 j.process.destroy(); // SIGTERM: its agents leave the platform cleanly
