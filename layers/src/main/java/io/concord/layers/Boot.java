@@ -27,7 +27,8 @@ import java.util.Properties;
  * <pre>
  * java -cp app.jar io.concord.layers.Boot -agents "seller1:org.example.Seller(42);buyer:org.example.Buyer"
  *      [-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp]
- *      [-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-conf platform.properties] [-watch]
+ *      [-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port]
+ *      [-conf platform.properties] [-watch]
  * </pre>
  *
  * A configuration file holds the same settings as Java properties ({@code name}, {@code ports},
@@ -96,6 +97,9 @@ public final class Boot {
         } catch (IllegalArgumentException e) {
             throw new BootException("-seeds is written host[:port],... and -discovery-port a port number: " + e.getMessage(), e);
         }
+        if (s.containsKey("http")) {
+            b.gateway(httpGateway(s.get("http"), s.getOrDefault("host", "127.0.0.1")));
+        }
         List<Agent> agents = new ArrayList<>();
         for (AgentSpec spec : specs) {
             agents.add(instantiate(spec));
@@ -156,7 +160,7 @@ public final class Boot {
             String key = a.replaceFirst("^--?", "").toLowerCase(Locale.ROOT);
             switch (key) {
                 case "help", "h", "watch" -> cli.put(key.equals("h") ? "help" : key, "true");
-                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port" -> {
+                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port", "http" -> {
                     if (i + 1 >= args.length) {
                         throw new BootException("-" + key + " needs a value. " + usage());
                     }
@@ -176,9 +180,10 @@ public final class Boot {
             }
             for (String k : props.stringPropertyNames()) {
                 String key = k.toLowerCase(Locale.ROOT);
-                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port").contains(key)) {
+                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port", "http")
+                        .contains(key)) {
                     throw new BootException("unknown setting '" + k + "' in " + conf
-                            + "; known: name, ports, profile, transport, host, agents, watch, seeds, discovery-port");
+                            + "; known: name, ports, profile, transport, host, agents, watch, seeds, discovery-port, http");
                 }
                 all.put(key, props.getProperty(k).trim());
             }
@@ -270,6 +275,38 @@ public final class Boot {
         }
     }
 
+    /** {@code -http 7779} or {@code -http host:7779}: the JADE bridge's HTTP MTP, from concord-jade-bridge. */
+    private static java.util.function.Supplier<io.concord.layers.platform.Gateway> httpGateway(String spec, String host) {
+        String h = host;
+        String p = spec.trim();
+        int colon = p.lastIndexOf(':');
+        if (colon > 0) {
+            h = p.substring(0, colon);
+            p = p.substring(colon + 1);
+        }
+        int port;
+        try {
+            port = Integer.parseInt(p);
+        } catch (NumberFormatException e) {
+            throw new BootException("-http is written port or host:port, got '" + spec + "'");
+        }
+        java.lang.reflect.Constructor<?> ctor;
+        try {
+            ctor = Class.forName("io.concord.jade.HttpMtp").getConstructor(String.class, int.class);
+        } catch (ReflectiveOperationException e) {
+            throw new BootException("-http needs the JADE bridge: add concord-jade-bridge to the class path");
+        }
+        String fh = h;
+        int fp = port;
+        return () -> {
+            try {
+                return (io.concord.layers.platform.Gateway) ctor.newInstance(fh, fp);
+            } catch (ReflectiveOperationException e) {
+                throw new IllegalStateException("cannot create the HTTP MTP: " + e, e);
+            }
+        };
+    }
+
     private static PortRange range(String s) {
         try {
             return PortRange.parse(s);
@@ -298,6 +335,6 @@ public final class Boot {
     static String usage() {
         return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
                 + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
-                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-conf file.properties] [-watch]";
+                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-conf file.properties] [-watch]";
     }
 }

@@ -65,6 +65,11 @@ class BootTest {
         assertTrue(assertThrows(Boot.BootException.class,
                 () -> Boot.start(new String[]{"-agents", "a:java.lang.String"}, out))
                 .getMessage().contains("does not extend"));
+        // The layers module alone has no JADE bridge on its class path.
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-http", "7779"}, out))
+                .getMessage().contains("add concord-jade-bridge to the class path"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-http", "x:y"}, out))
+                .getMessage().contains("-http is written port or host:port"));
     }
 
     @Test
