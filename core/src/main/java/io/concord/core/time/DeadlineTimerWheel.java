@@ -42,6 +42,8 @@ public final class DeadlineTimerWheel {
     private long[][] sequences;
     private long currentTick;
     private long timerCount;
+    // Active timers per slot, so that a scan for the earliest deadline skips the empty slots.
+    private final int[] slotCounts;
     private long nextSequence;
 
     // scratch for ordered expiry within a poll
@@ -63,6 +65,7 @@ public final class DeadlineTimerWheel {
         this.tickNs = tickNs;
         this.ticksPerWheel = ticksPerWheel;
         this.mask = ticksPerWheel - 1;
+        this.slotCounts = new int[ticksPerWheel];
         this.deadlines = new long[ticksPerWheel][4];
         this.sequences = new long[ticksPerWheel][4];
         for (long[] slot : deadlines) {
@@ -109,6 +112,7 @@ public final class DeadlineTimerWheel {
         deadlines[slot][index] = deadlineNs;
         sequences[slot][index] = nextSequence++;
         timerCount++;
+        slotCounts[slot]++;
         return ((long) slot << 32) | index;
     }
 
@@ -127,6 +131,7 @@ public final class DeadlineTimerWheel {
         }
         deadlines[slot][index] = EMPTY;
         timerCount--;
+        slotCounts[slot]--;
         return true;
     }
 
@@ -153,8 +158,11 @@ public final class DeadlineTimerWheel {
             return knownMin;
         }
         long min = Long.MAX_VALUE;
-        for (long[] slot : deadlines) {
-            for (long d : slot) {
+        for (int i = 0; i < ticksPerWheel; i++) {
+            if (slotCounts[i] == 0) {
+                continue;
+            }
+            for (long d : deadlines[i]) {
                 if (d < min) {
                     min = d;
                 }
