@@ -7,6 +7,7 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
+import io.concord.core.proto.MtsFailure;
 import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.GatewayContext;
@@ -332,17 +333,7 @@ public final class HttpMtp implements Gateway {
 
     /** JADE's AMS FAILURE for an unknown receiver. */
     private static AclMessage notFound(GatewayContext ctx, AclMessage original, AID receiver) {
-        AclMessage f = new AclMessage(Performative.FAILURE);
-        f.setSender(AID.local("ams", ctx.platformName()));
-        f.addReceiver(original.getSender());
-        f.setConversationId(original.getConversationId());
-        f.setInReplyTo(original.getReplyWith());
-        f.setProtocol(original.getProtocol());
-        f.setLanguage("fipa-sl");
-        f.setContent("( (action ( agent-identifier :name " + original.getSender().name() + " ) (ACLMessage) ) (MTS-error "
-                + "( agent-identifier :name " + receiver.name() + " ) (internal-error \"Agent not found: "
-                + receiver.name() + "\")) )");
-        return f;
+        return MtsFailure.of(ctx.platformName(), original, receiver, "Agent not found: " + receiver.name());
     }
 
     // ---- FIPA-Agent-Management (fipa-sl0) ---------------------------------------------------------
@@ -594,16 +585,7 @@ public final class HttpMtp implements Gateway {
             if (message.getPerformative() != Performative.FAILURE && sender != null
                     && ctx.platformName().equalsIgnoreCase(sender.platform())) {
                 ctx.execute(() -> {
-                    AclMessage f = new AclMessage(Performative.FAILURE);
-                    f.setSender(AID.local("ams", ctx.platformName()));
-                    f.addReceiver(sender);
-                    f.setConversationId(message.getConversationId());
-                    f.setInReplyTo(message.getReplyWith());
-                    f.setProtocol(message.getProtocol());
-                    f.setLanguage("fipa-sl");
-                    f.setContent("( (action ( agent-identifier :name " + sender.name() + " ) (ACLMessage) ) (MTS-error "
-                            + "( agent-identifier :name " + receiver.name() + " ) (internal-error \"Foreign agent "
-                            + "unreachable: " + why.replace("\"", "'") + "\")) )");
+                    AclMessage f = MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: " + why);
                     ctx.deliver(f, sender);
                 });
             }

@@ -93,17 +93,8 @@ final class AgentNode implements StackHost {
      * protocols end instead of waiting.
      */
     private void returnFailure(AclMessage original, AID receiver) {
-        AclMessage failure = new AclMessage(Performative.FAILURE);
-        failure.setSender(AID.local("ams", runtime.platformName()));
-        failure.addReceiver(aid);
-        failure.setConversationId(original.getConversationId());
-        failure.setInReplyTo(original.getReplyWith());
-        failure.setProtocol(original.getProtocol());
-        failure.setLanguage("fipa-sl");
-        failure.setContent("( (action ( agent-identifier :name " + aid.name() + " ) (ACLMessage) ) (MTS-error "
-                + "( agent-identifier :name " + receiver.name() + " ) (internal-error \"Agent not found: "
-                + receiver.name() + "\")) )");
-        deliverMessage(failure);
+        deliverMessage(io.concord.core.proto.MtsFailure.of(runtime.platformName(), original, receiver,
+                "Agent not found: " + receiver.name()));
     }
 
     /** The bottom of the stack: to the network. */

@@ -1177,25 +1177,9 @@ public final class ContainerLayer extends Layer {
             pages.clear();
             pagesKey = key;
         }
-        String text = m.getContent();
-        int nl = text.indexOf('\n');
-        String[] got = pages.computeIfAbsent(key, k -> new String[n]);
-        if (got.length != n) {
-            throw new IllegalArgumentException("LAL pages disagree on their count");
-        }
-        got[page] = nl < 0 ? "" : text.substring(nl + 1);
-        for (String g : got) {
-            if (g == null) {
-                return;
-            }
-        }
-        List<AgentEntry> all = new ArrayList<>();
-        for (String g : got) {
-            if (!g.isEmpty()) {
-                for (String line : g.split("\n", -1)) {
-                    all.add(Lines.parseEntry(line));
-                }
-            }
+        List<AgentEntry> all = Lines.collect(pages.computeIfAbsent(key, k -> new String[n]), page, n, m.getContent());
+        if (all == null) {
+            return;
         }
         pages.clear();
         pagesKey = null;
@@ -1540,26 +1524,13 @@ public final class ContainerLayer extends Layer {
             galPages.clear();
             galPagesKey = key;
         }
-        String text = m.getContent();
-        int nl = text.indexOf('\n');
-        String[] got = galPages.computeIfAbsent(key, k -> new String[n]);
-        if (got.length != n) {
-            throw new IllegalArgumentException("GAL pages disagree on their count");
-        }
-        got[page] = nl < 0 ? "" : text.substring(nl + 1);
-        for (String x : got) {
-            if (x == null) {
-                return;
-            }
+        List<AgentEntry> all = Lines.collect(galPages.computeIfAbsent(key, k -> new String[n]), page, n, m.getContent());
+        if (all == null) {
+            return;
         }
         gal.clear();
-        for (String x : got) {
-            if (!x.isEmpty()) {
-                for (String line : x.split("\n", -1)) {
-                    AgentEntry e = Lines.parseEntry(line);
-                    gal.put(e.name(), e);
-                }
-            }
+        for (AgentEntry e : all) {
+            gal.put(e.name(), e);
         }
         galPages.clear();
         galPagesKey = null;

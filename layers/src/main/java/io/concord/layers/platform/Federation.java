@@ -426,25 +426,10 @@ final class Federation {
             ack(f, m);
             return;
         }
-        String text = m.getContent();
-        int nl = text.indexOf('\n');
-        String[] got = f.pages.computeIfAbsent(seq * 31 + term, k -> new String[n]);
-        if (got.length != n) {
-            throw new IllegalArgumentException("list pages disagree on their count");
-        }
-        got[page] = nl < 0 ? "" : text.substring(nl + 1);
-        for (String g : got) {
-            if (g == null) {
-                return;
-            }
-        }
-        List<AgentEntry> all = new ArrayList<>();
-        for (String g : got) {
-            if (!g.isEmpty()) {
-                for (String line : g.split("\n", -1)) {
-                    all.add(Lines.parseEntry(line));
-                }
-            }
+        List<AgentEntry> all = Lines.collect(f.pages.computeIfAbsent(seq * 31 + term, k -> new String[n]), page, n,
+                m.getContent());
+        if (all == null) {
+            return;
         }
         f.pages.clear();
         f.term = term;
