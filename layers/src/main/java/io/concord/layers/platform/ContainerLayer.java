@@ -131,6 +131,7 @@ public final class ContainerLayer extends Layer {
     private long pushTimer = -1;
     private int cycles;
     private long cycleStartNs;
+    private long cycleDueNs;
     private final Set<String> cycleAwaiting = new HashSet<>();
     private volatile long lastCycleNs = -1;
 
@@ -440,8 +441,17 @@ public final class ContainerLayer extends Layer {
         }
         String addrs = p.getOrDefault("addresses", "");
         AID receiver = new AID(name, addrs.isEmpty() ? new String[0] : addrs.split(","));
+        if (role == Role.CONTAINER && !gatewayStarted) {
+            startGateway();
+        }
         if (role != Role.CONTAINER || !gatewayStarted) {
+            // Nothing can carry it now: the sender hears so at once, and its protocol ends.
             host.drops().record(self, "no-gateway", "a message for " + name + " reached an agent that serves no gateway");
+            if (inner.getSender() != null && inner.getPerformative() != Performative.FAILURE) {
+                gatewayContext.deliver(io.concord.core.proto.MtsFailure.of(platform, inner, receiver,
+                        "Foreign agent unreachable: the platform's gateway is not serving (its container is changing)"),
+                        inner.getSender());
+            }
             return;
         }
         gateway.sendOut(inner, receiver);
@@ -858,6 +868,7 @@ public final class ContainerLayer extends Layer {
         periodMs = config.periodMs(lal.size());
         timeoutMs = config.timeoutMs(lal.size());
         cycleTimer = cancel(cycleTimer);
+        cycleDueNs = host.nowNs() + periodMs * 1_000_000L;
         cycleTimer = after(periodMs, this::cycle);
         if (federation != null) {
             federation.start();
@@ -1271,6 +1282,9 @@ public final class ContainerLayer extends Layer {
         }
         cycles++;
         long now = host.nowNs();
+        // A cycle that runs late (this loop stalled) removes nobody: the agents' confirmations may
+        // be waiting to be read.
+        boolean late = cycleDueNs > 0 && now - cycleDueNs > periodMs * 500_000L;
         boolean changed = false;
         List<String> dead = new ArrayList<>();
         for (String n : lal.keySet()) {
@@ -1280,7 +1294,7 @@ public final class ContainerLayer extends Layer {
             Long heard = lastHeard.get(n);
             if (heard == null) {
                 lastHeard.put(n, now);
-            } else if (now - heard > timeoutMs * 1_000_000L) {
+            } else if (!late && now - heard > timeoutMs * 1_000_000L) {
                 dead.add(n);
             }
         }
@@ -1323,6 +1337,7 @@ public final class ContainerLayer extends Layer {
                 }
             }
         }
+        cycleDueNs = now + periodMs * 1_000_000L;
         cycleTimer = after(periodMs, this::cycle);
         if (changed) {
             publish();
@@ -1368,13 +1383,27 @@ public final class ContainerLayer extends Layer {
     private void resetWatch() {
         watchTimer = cancel(watchTimer);
         long t = timeoutMs > 0 ? timeoutMs : config.timeoutMs(Math.max(1, lal.size()));
-        watchTimer = after(t, () -> {
-            watchTimer = -1;
-            if (role == Role.MEMBER && joinTarget == null && (container != null || successor != null)) {
-                failover("no word from " + (container != null ? "the container " + container.name()
-                        : "the expected successor " + successor.name()) + " for " + t + " ms");
-            }
-        });
+        long deadline = host.nowNs() + t * 1_000_000L;
+        watchTimer = after(t, () -> onWatch(deadline, t, false));
+    }
+
+    /**
+     * The container stayed silent until the deadline. If this loop itself ran late (a stall: GC,
+     * a starved CPU), the container's messages may be waiting to be read, or its own timers were
+     * as late: grant one more period before giving it up.
+     */
+    private void onWatch(long deadline, long t, boolean graced) {
+        watchTimer = -1;
+        if (role != Role.MEMBER || joinTarget != null || (container == null && successor == null)) {
+            return;
+        }
+        long period = Math.max(1, periodMs > 0 ? periodMs : config.periodMs(lal.size()));
+        if (!graced && host.nowNs() - deadline > period * 500_000L) {
+            watchTimer = after(period, () -> onWatch(deadline, t, true));
+            return;
+        }
+        failover("no word from " + (container != null ? "the container " + container.name()
+                : "the expected successor " + successor.name()) + " for " + t + " ms");
     }
 
     /** The container is gone: the eldest agent left in the list takes over. */
