@@ -1,18 +1,11 @@
 package io.concord.bench;
 
-import io.concord.bench.jade.JadeHttpEcho;
 import io.concord.bench.jade.JadeHttpRequester;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.CyclicBehaviour;
-import io.concord.core.agent.PortRange;
-import io.concord.jade.HttpMtp;
-import io.concord.layers.Profile;
-import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
-import io.concord.layers.security.IdentityStore;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;

@@ -1,5 +1,6 @@
 package io.concord.bench;
 
+import io.concord.core.testkit.NetnsHosts;
 import io.concord.layers.Boot;
 
 import java.io.BufferedReader;
@@ -67,53 +68,26 @@ final class NetworkHarness {
     private NetworkHarness() {
     }
 
-    private static void ip(String... args) throws IOException, InterruptedException {
-        List<String> cmd = new ArrayList<>();
-        cmd.add("ip");
-        cmd.addAll(List.of(args));
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        if (!p.waitFor(30, TimeUnit.SECONDS) || p.exitValue() != 0) {
-            throw new IOException(String.join(" ", cmd) + " failed: " + out.trim());
-        }
-    }
-
     static Result run(int hosts) throws Exception {
         String prefix = "cb" + (ProcessHandle.current().pid() % 100_000);
-        String sw = prefix + "sw";
-        List<String> made = new ArrayList<>();
         Map<Integer, Jvm> jvms = new LinkedHashMap<>();
         Path home = Files.createTempDirectory("concord-bench-net");
+        NetnsHosts net = null;
         try {
             try {
-                ip("netns", "add", sw);
+                net = new NetnsHosts(prefix, hosts);
             } catch (IOException e) {
                 return new Result(hosts, false, -1, -1, "cannot create network namespaces (needs root and iproute2): "
                         + e.getMessage());
             }
-            made.add(sw);
-            ip("-n", sw, "link", "add", "br0", "type", "bridge");
-            ip("-n", sw, "link", "set", "br0", "up");
-            for (int i = 1; i <= hosts; i++) {
-                String h = prefix + "h" + i;
-                ip("netns", "add", h);
-                made.add(h);
-                ip("-n", h, "link", "add", "eth0", "type", "veth", "peer", "name", "s" + i, "netns", sw);
-                ip("-n", sw, "link", "set", "s" + i, "master", "br0");
-                ip("-n", sw, "link", "set", "s" + i, "up");
-                ip("-n", h, "addr", "add", "10.200.0." + (10 + i) + "/24", "dev", "eth0");
-                ip("-n", h, "link", "set", "eth0", "up");
-                ip("-n", h, "link", "set", "lo", "up");
-                ip("-n", h, "route", "add", "255.255.255.255/32", "dev", "eth0");
-            }
             io.concord.layers.security.PlatformKey.loadOrCreate(home.resolve("platform.key"));
             for (int i = 1; i < hosts; i++) {
-                jvms.put(i, spawn(prefix, i, home));
+                jvms.put(i, spawn(net, i, home));
             }
             if (!await(jvms, j -> j.here == 1 && j.elsewhere == hosts - 2, 60)) {
                 return new Result(hosts, false, -1, -1, "the first hosts did not find each other");
             }
-            Jvm last = spawn(prefix, hosts, home);
+            Jvm last = spawn(net, hosts, home);
             jvms.put(hosts, last);
             if (!await(Map.of(hosts, last), j -> j.started, 60)) {
                 return new Result(hosts, false, -1, -1, "the last host's JVM did not start");
@@ -123,12 +97,12 @@ final class NetworkHarness {
                 return new Result(hosts, false, -1, -1, "the new host did not join");
             }
             double join = (System.nanoTime() - t0) / 1e6;
-            ip("-n", sw, "link", "set", "s" + hosts, "down");
+            net.link(hosts, false);
             if (!await(jvms, j -> j == last ? j.elsewhere == 0 : j.elsewhere == hosts - 2, 60)) {
                 return new Result(hosts, false, join, -1, "the others did not drop the cut-off host");
             }
             long t1 = System.nanoTime();
-            ip("-n", sw, "link", "set", "s" + hosts, "up");
+            net.link(hosts, true);
             if (!await(jvms, j -> j.here == 1 && j.elsewhere == hosts - 1, 60)) {
                 return new Result(hosts, false, join, -1, "the partition did not heal");
             }
@@ -141,23 +115,19 @@ final class NetworkHarness {
             for (Jvm j : jvms.values()) {
                 j.process.waitFor(10, TimeUnit.SECONDS);
             }
-            for (String ns : made) {
-                try {
-                    ip("netns", "del", ns);
-                } catch (IOException ignored) {
-                    // already gone
-                }
+            if (net != null) {
+                net.close();
             }
         }
     }
 
-    private static Jvm spawn(String prefix, int host, Path home) throws IOException {
+    private static Jvm spawn(NetnsHosts net, int host, Path home) throws IOException {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder("ip", "netns", "exec", prefix + "h" + host, java, "-Dconcord.home=" + home,
-                "-Dorg.slf4j.simpleLogger.defaultLogLevel=error", "-cp", System.getProperty("java.class.path"),
-                Boot.class.getName(), "-name", "netbench", "-host", "10.200.0." + (10 + host), "-watch",
-                "-agents", "a" + host + ":" + IdleAgent.class.getName())
-                .redirectErrorStream(true).start();
+        List<String> cmd = new ArrayList<>(net.exec(host));
+        cmd.addAll(List.of(java, "-Dconcord.home=" + home, "-Dorg.slf4j.simpleLogger.defaultLogLevel=error", "-cp",
+                System.getProperty("java.class.path"), Boot.class.getName(), "-name", "netbench", "-host",
+                NetnsHosts.address(host), "-watch", "-agents", "a" + host + ":" + IdleAgent.class.getName()));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         return new Jvm(p);
     }
 

@@ -2,7 +2,6 @@ package io.concord.core.agent;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
 import io.concord.core.layer.DropCounters;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.LayerStack;

@@ -1,12 +1,12 @@
 package io.concord.layers.platform;
 
 import io.concord.layers.security.PlatformKey;
+import io.concord.core.testkit.NetnsHosts;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -29,46 +29,21 @@ import static org.junit.jupiter.api.Assertions.fail;
 class NetnsHostsTest {
     static final String PLATFORM = "hosts";
     static final String PREFIX = "cc" + (ProcessHandle.current().pid() % 100_000);
-    static final String SWITCH = PREFIX + "sw";
 
     @TempDir
     Path home;
 
-    final List<String> namespaces = new ArrayList<>();
     final Map<String, PlatformProcessesTest.Child> children = new LinkedHashMap<>();
     final Map<String, String> hostOf = new LinkedHashMap<>();
 
-    private static String run(String... cmd) throws IOException, InterruptedException {
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        if (!p.waitFor(30, TimeUnit.SECONDS) || p.exitValue() != 0) {
-            throw new IOException(String.join(" ", cmd) + " failed (exit " + (p.isAlive() ? "timeout" : p.exitValue())
-                    + "): " + out.trim());
-        }
-        return out;
-    }
+    private NetnsHosts hosts;
 
     private void buildHosts(int n) throws Exception {
         try {
-            run("ip", "netns", "add", SWITCH);
+            hosts = new NetnsHosts(PREFIX, n);
         } catch (IOException e) {
             fail("cannot create network namespaces, so the hosts of this test cannot exist; it needs root and "
                     + "iproute2 ('ip'), as CI has: " + e.getMessage());
-        }
-        namespaces.add(SWITCH);
-        run("ip", "-n", SWITCH, "link", "add", "br0", "type", "bridge");
-        run("ip", "-n", SWITCH, "link", "set", "br0", "up");
-        for (int i = 1; i <= n; i++) {
-            String h = PREFIX + "h" + i;
-            run("ip", "netns", "add", h);
-            namespaces.add(h);
-            run("ip", "-n", h, "link", "add", "eth0", "type", "veth", "peer", "name", "s" + i, "netns", SWITCH);
-            run("ip", "-n", SWITCH, "link", "set", "s" + i, "master", "br0");
-            run("ip", "-n", SWITCH, "link", "set", "s" + i, "up");
-            run("ip", "-n", h, "addr", "add", "10.200.0." + (10 + i) + "/24", "dev", "eth0");
-            run("ip", "-n", h, "link", "set", "eth0", "up");
-            run("ip", "-n", h, "link", "set", "lo", "up");
-            run("ip", "-n", h, "route", "add", "255.255.255.255/32", "dev", "eth0");
         }
     }
 
@@ -80,21 +55,18 @@ class NetnsHostsTest {
         for (PlatformProcessesTest.Child c : children.values()) {
             c.process.waitFor(10, TimeUnit.SECONDS);
         }
-        for (String ns : namespaces) {
-            try {
-                run("ip", "netns", "del", ns);
-            } catch (IOException ignored) {
-                // already gone
-            }
+        if (hosts != null) {
+            hosts.close();
         }
     }
 
     private void spawn(int host, String name) throws Exception {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        Process p = new ProcessBuilder("ip", "netns", "exec", PREFIX + "h" + host, java, "-Dconcord.home=" + home,
-                "-XX:TieredStopAtLevel=1", "-Xss512k", "-cp", System.getProperty("java.class.path"),
-                PlatformChild.class.getName(), PLATFORM, "7001-7100", name, "10.200.0." + (10 + host))
-                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        List<String> cmd = new ArrayList<>(hosts.exec(host));
+        cmd.addAll(List.of(java, "-Dconcord.home=" + home, "-XX:TieredStopAtLevel=1", "-Xss512k", "-cp",
+                System.getProperty("java.class.path"), PlatformChild.class.getName(), PLATFORM, "7001-7100", name,
+                NetnsHosts.address(host)));
+        Process p = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT).start();
         children.put(name, new PlatformProcessesTest.Child(name, p));
         hostOf.put(name, "h" + host);
     }
@@ -183,13 +155,13 @@ class NetnsHostsTest {
                 ? settled(c, 1, 4) && c.field("role").equals("CONTAINER") : settled(c, 2, 3));
 
         // Host 2's link goes down (the others drop its agents), then up (they come back).
-        run("ip", "-n", SWITCH, "link", "set", "s2", "down");
+        hosts.link(2, false);
         await("host 2 is gone for the others", c -> switch (hostOf.get(c.name)) {
             case "h1" -> settled(c, 2, 1);
             case "h3" -> settled(c, 1, 2);
             default -> settled(c, 2, 0);
         });
-        run("ip", "-n", SWITCH, "link", "set", "s2", "up");
+        hosts.link(2, true);
         await("host 2 is back", c -> hostOf.get(c.name).equals("h3") ? settled(c, 1, 4) : settled(c, 2, 3));
         allPairsByName();
     }

@@ -4,7 +4,6 @@ import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
-import io.concord.core.layer.Tracer;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
 import io.concord.layers.Profile;
