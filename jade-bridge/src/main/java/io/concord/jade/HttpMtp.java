@@ -394,7 +394,7 @@ public final class HttpMtp implements Gateway {
     }
 
     private String searchDf(GatewayContext ctx, Sl0.Expr fn) {
-        Sl0.Expr dfd = fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
+        Sl0.Expr dfd = argument(fn);
         if (dfd == null || !dfd.head().equals("df-agent-description")) {
             throw new IllegalArgumentException("search needs a df-agent-description template");
         }
@@ -422,6 +422,11 @@ public final class HttpMtp implements Gateway {
                     .append(aid(new AID(e.name(), addresses().toArray(new String[0])))).append(" :state active)");
         }
         return b.toString();
+    }
+
+    /** The function's first argument, if it is an expression (the df-agent-description). */
+    private static Sl0.Expr argument(Sl0.Expr fn) {
+        return fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
     }
 
     private static long maxResults(Sl0.Expr fn) {
@@ -454,7 +459,7 @@ public final class HttpMtp implements Gateway {
     }
 
     private void register(Sl0.Expr fn) {
-        Sl0.Expr dfd = fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
+        Sl0.Expr dfd = argument(fn);
         if (dfd == null || !(dfd.slot("name") instanceof Sl0.Expr name)) {
             throw new IllegalArgumentException("register needs a df-agent-description with a :name");
         }
@@ -463,7 +468,7 @@ public final class HttpMtp implements Gateway {
     }
 
     private void deregister(Sl0.Expr fn) {
-        Sl0.Expr dfd = fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
+        Sl0.Expr dfd = argument(fn);
         if (dfd == null || !(dfd.slot("name") instanceof Sl0.Expr name)) {
             throw new IllegalArgumentException("deregister needs a df-agent-description with a :name");
         }

@@ -96,7 +96,6 @@ public final class ContainerLayer extends Layer {
     private final LinkedHashMap<String, Router.Route> recentRoutes = new LinkedHashMap<>(16, 0.75f, true);
     private final Map<String, Long> recentSince = new HashMap<>();
     static final long ROUTE_GRACE_NS = 5_000_000_000L;
-    private volatile Snapshot snapshot = Snapshot.EMPTY;
 
     // seeking
     private final Map<Address, Boolean> asked = new LinkedHashMap<>(); // neighbour -> answered
@@ -139,11 +138,6 @@ public final class ContainerLayer extends Layer {
     private long requestCounter;
     private final List<Consumer<ContainerLayer>> listeners = new ArrayList<>();
 
-    /** A thread-safe picture of what this agent knows of the platform. */
-    public record Snapshot(Role role, long term, long seq, String container, List<AgentEntry> agents) {
-        static final Snapshot EMPTY = new Snapshot(Role.SEEKING, 0, 0, null, List.of());
-    }
-
     public ContainerLayer(PlatformConfig config) {
         this(config, NetworkConfig.defaults());
     }
@@ -170,11 +164,6 @@ public final class ContainerLayer extends Layer {
     }
 
     // ---- views ------------------------------------------------------------------------------------
-
-    /** What this agent knows now; safe from any thread. */
-    public Snapshot snapshot() {
-        return snapshot;
-    }
 
     public Role role() {
         return role;
@@ -672,10 +661,7 @@ public final class ContainerLayer extends Layer {
     }
 
     private void onQuery(AclMessage m, Lines.Content c) {
-        AgentEntry asker = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (asker == null || !asker.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("a who-is-container query must carry its sender's entry");
-        }
+        AgentEntry asker = c.senderEntry(m);
         AclMessage reply = m.createReply();
         reply.setSender(selfAid);
         reply.setPerformative(Performative.INFORM);
@@ -769,13 +755,7 @@ public final class ContainerLayer extends Layer {
                     tellBetter(claimed.aid());
                 }
             }
-            case CONTAINER -> {
-                if (beats(t, claimed, term, selfEntry)) {
-                    yieldTo(claimed, t);
-                } else {
-                    tellBetter(claimed.aid());
-                }
-            }
+            case CONTAINER -> contest(claimed, t);
             default -> { }
         }
     }
@@ -961,10 +941,7 @@ public final class ContainerLayer extends Layer {
     }
 
     private void onJoin(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (e == null || !e.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("a join must carry its sender's entry");
-        }
+        AgentEntry e = c.senderEntry(m);
         if (role != Role.CONTAINER) {
             if (container != null && role == Role.MEMBER) {
                 sendQuietly(platformMessage(Performative.INFORM, P_DISCOVERY, e.aid(),
@@ -972,7 +949,7 @@ public final class ContainerLayer extends Layer {
             }
             return;
         }
-        AgentEntry old = lal.put(e.name(), keepServices(old(e.name()), e));
+        AgentEntry old = lal.put(e.name(), keepServices(lal.get(e.name()), e));
         lastHeard.put(e.name(), host.nowNs());
         if (old == null || !old.equals(lal.get(e.name()))) {
             seq++;
@@ -988,10 +965,6 @@ public final class ContainerLayer extends Layer {
         publish();
     }
 
-    private AgentEntry old(String name) {
-        return lal.get(name);
-    }
-
     /** A rejoining agent that lost its own copy keeps the services the list holds for it. */
     private static AgentEntry keepServices(AgentEntry known, AgentEntry joining) {
         if (known != null && joining.services().isEmpty() && !known.services().isEmpty()
@@ -1003,10 +976,7 @@ public final class ContainerLayer extends Layer {
 
     private void onJoined(AclMessage m, Lines.Content c) {
         long t = c.longParam("term");
-        AgentEntry by = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (by == null || !by.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("a joined confirmation must carry the container's entry");
-        }
+        AgentEntry by = c.senderEntry(m);
         if (joinTarget == null || !joinTarget.name().equals(by.name())) {
             return; // an old confirmation
         }
@@ -1163,11 +1133,7 @@ public final class ContainerLayer extends Layer {
             claimed = new AgentEntry(from, m.getSender().addresses().isEmpty() ? "" : m.getSender().addresses().get(0), Long.MAX_VALUE, List.of());
         }
         if (role == Role.CONTAINER) {
-            if (beats(t, claimed, term, selfEntry)) {
-                yieldTo(claimed, t);
-            } else if (!from.equals(self)) {
-                tellBetter(m.getSender());
-            }
+            contest(claimed, t);
             return;
         }
         boolean fromMine = container != null && container.name().equals(from) && term == t;
@@ -1346,16 +1312,9 @@ public final class ContainerLayer extends Layer {
 
     private void onAlive(AclMessage m, Lines.Content c) {
         long t = c.longParam("term");
-        AgentEntry by = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (by == null || !by.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("an alive message must carry the container's entry");
-        }
+        AgentEntry by = c.senderEntry(m);
         if (role == Role.CONTAINER) {
-            if (beats(t, by, term, selfEntry)) {
-                yieldTo(by, t);
-            } else {
-                tellBetter(m.getSender());
-            }
+            contest(by, t);
             return;
         }
         boolean mine = container != null && container.name().equals(by.name()) && term == t;
@@ -1443,10 +1402,7 @@ public final class ContainerLayer extends Layer {
     private void onAgentInfo(AclMessage m, Lines.Content c) {
         if (m.getPerformative() == Performative.REQUEST) {
             long t = c.longParam("term");
-            AgentEntry by = c.entries().isEmpty() ? null : c.entries().get(0);
-            if (by == null || !by.name().equals(m.getSender().name())) {
-                throw new IllegalArgumentException("an agent-info request must carry the container's entry");
-            }
+            AgentEntry by = c.senderEntry(m);
             if (role == Role.CONTAINER ? beats(t, by, term, selfEntry)
                     : container == null || container.name().equals(by.name()) || beats(t, by, term, container)
                     || suspects.contains(container.name())) {
@@ -1569,8 +1525,11 @@ public final class ContainerLayer extends Layer {
         publish();
     }
 
-    /** Another container announced itself from this host: the usual comparison decides. */
-    void sameHostContainer(AgentEntry other, long t) {
+    /**
+     * Another agent claims to be container while this one is: the better claim wins; the loser of
+     * the two yields, or is told of the winner.
+     */
+    void contest(AgentEntry other, long t) {
         if (role != Role.CONTAINER || other.name().equals(self)) {
             return;
         }
@@ -1815,7 +1774,6 @@ public final class ContainerLayer extends Layer {
 
     private void publish() {
         releaseWaitingRequests();
-        snapshot = new Snapshot(role, term, seq, container == null ? null : container.name(), List.copyOf(lal.values()));
         for (Consumer<ContainerLayer> l : listeners) {
             l.accept(this);
         }

@@ -220,16 +220,13 @@ final class Federation {
     }
 
     private void onAnnounce(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (e == null || !e.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("an announcement must carry its sender's entry");
-        }
+        AgentEntry e = c.senderEntry(m);
         if (!running || e.name().equals(layer.selfEntry().name())) {
             return;
         }
         String host = c.param("host");
         if (host.equals(ownHost())) {
-            layer.sameHostContainer(e, c.longParam("term"));
+            layer.contest(e, c.longParam("term"));
             return;
         }
         for (AgentEntry other : c.entries().subList(1, c.entries().size())) {
@@ -244,25 +241,36 @@ final class Federation {
 
     /** A facilitator heard (or heard of): known from now on; contacted by the smaller name. */
     private void learn(AgentEntry e, String host, long term) {
+        Facilitator f = facilitator(e, host, term);
+        if (!f.contacted && f.contactTimer < 0) {
+            if (layer.selfEntry().name().compareTo(e.name()) < 0) {
+                contact(f);
+            } else {
+                askForContact(e);
+            }
+        }
+    }
+
+    /** The facilitator of that name, made (replacing its host's old one) if new; heard from now. */
+    private Facilitator facilitator(AgentEntry e, String host, long term) {
         Facilitator f = fal.get(e.name());
         if (f == null) {
             replaceHost(host, e.name());
             f = new Facilitator(e, host);
             f.term = term;
             fal.put(e.name(), f);
-            layer.trace("facilitator", "heard of " + e.name() + " of host " + host);
+            layer.trace("facilitator", e.name() + " of host " + host);
         }
         f.entry = e;
         f.lastHeardNs = layer.host().nowNs();
-        if (!f.contacted && f.contactTimer < 0) {
-            if (layer.selfEntry().name().compareTo(e.name()) < 0) {
-                contact(f);
-            } else {
-                layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, e.aid(),
-                        Lines.content("contact-me", Lines.params("term", layer.term(), "host", ownHost()),
-                                List.of(layer.selfEntry()))));
-            }
-        }
+        return f;
+    }
+
+    /** Asks a facilitator with a smaller name, which opens contacts, to open one with us. */
+    private void askForContact(AgentEntry e) {
+        layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, e.aid(),
+                Lines.content("contact-me", Lines.params("term", layer.term(), "host", ownHost()),
+                        List.of(layer.selfEntry()))));
     }
 
     /** A new container for a host replaces the old one: no stale container lingers. */
@@ -303,28 +311,16 @@ final class Federation {
     }
 
     private void onWhoIs(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (e == null || !e.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("who-is-facilitator must carry its sender's entry");
-        }
+        AgentEntry e = c.senderEntry(m);
         if (!running) {
             layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM,
                     Lines.content("is-not-facilitator", Lines.params(), List.of())));
             return;
         }
-        String host = c.param("host");
-        Facilitator f = fal.get(e.name());
-        if (f == null) {
-            replaceHost(host, e.name());
-            f = new Facilitator(e, host);
-            fal.put(e.name(), f);
-            layer.trace("facilitator", "contacted by " + e.name() + " of host " + host);
-        }
-        f.entry = e;
+        Facilitator f = facilitator(e, c.param("host"), c.longParam("term"));
         f.term = c.longParam("term");
         f.secret = c.param("secret");
         f.contacted = true;
-        f.lastHeardNs = layer.host().nowNs();
         layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM, Lines.content("is-facilitator",
                 Lines.params("secret", f.secret, "term", layer.term(), "host", ownHost()), List.of(layer.selfEntry()))));
         sendLal(f);
@@ -346,22 +342,11 @@ final class Federation {
 
     /** A facilitator with a larger name has no contact with us: open a new one. */
     private void onContactMe(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.entries().isEmpty() ? null : c.entries().get(0);
-        if (e == null || !e.name().equals(m.getSender().name())) {
-            throw new IllegalArgumentException("contact-me must carry its sender's entry");
-        }
+        AgentEntry e = c.senderEntry(m);
         if (!running || layer.selfEntry().name().compareTo(e.name()) >= 0) {
             return;
         }
-        String host = c.param("host");
-        Facilitator f = fal.get(e.name());
-        if (f == null) {
-            replaceHost(host, e.name());
-            f = new Facilitator(e, host);
-            fal.put(e.name(), f);
-        }
-        f.entry = e;
-        f.lastHeardNs = layer.host().nowNs();
+        Facilitator f = facilitator(e, c.param("host"), c.longParam("term"));
         if (f.contactTimer >= 0) {
             return; // a contact is under way
         }

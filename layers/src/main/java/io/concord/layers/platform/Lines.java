@@ -34,6 +34,19 @@ final class Lines {
             return v;
         }
 
+        /**
+         * The first entry, which must be the sender's own (every platform message that carries one
+         * starts with it).
+         *
+         * @throws IllegalArgumentException if it is missing or names another agent
+         */
+        AgentEntry senderEntry(io.concord.core.acl.AclMessage m) {
+            if (entries.isEmpty() || !entries.get(0).name().equals(m.getSender().name())) {
+                throw new IllegalArgumentException("a '" + command + "' message must carry its sender's entry first");
+            }
+            return entries.get(0);
+        }
+
         long longParam(String key) {
             try {
                 return Long.parseLong(param(key));
