@@ -162,6 +162,11 @@ final class AgentNode implements StackHost {
     }
 
     @Override
+    public boolean inMemoryTo(Address to) {
+        return endpoint.inMemoryTo(to);
+    }
+
+    @Override
     public Transport transport() {
         return transport;
     }

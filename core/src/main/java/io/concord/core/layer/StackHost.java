@@ -21,6 +21,14 @@ public interface StackHost {
     default void setPlatformTime(java.util.function.LongSupplier epochMillis) {
     }
 
+    /**
+     * True when frames to this address are handed over in memory (an agent of the same runtime),
+     * where nothing is lost: the communication layer then sends no repeated copies.
+     */
+    default boolean inMemoryTo(io.concord.core.net.Address to) {
+        return false;
+    }
+
     /** The node's transport. */
     default io.concord.core.net.Transport transport() {
         return io.concord.core.net.Transport.UDP;

@@ -14,6 +14,14 @@ public interface Endpoint {
      */
     boolean send(Address to, byte[] data, int offset, int length);
 
+    /**
+     * True when a datagram to this address is handed over in memory, within this process: it
+     * cannot be lost, so repeating it against loss would only cost work. False by default.
+     */
+    default boolean inMemoryTo(Address to) {
+        return false;
+    }
+
     /** Releases the port. Idempotent. */
     void close();
 

@@ -354,6 +354,15 @@ public final class SocketNetwork implements Network {
         }
 
         @Override
+        public boolean inMemoryTo(Address to) {
+            if (!localDelivery) {
+                return false;
+            }
+            UdpEndpoint peer = localUdp.get(to);
+            return peer != null && peer.isOpen();
+        }
+
+        @Override
         public void close() {
             closeQuietly(channel);
             localUdp.remove(local, this);

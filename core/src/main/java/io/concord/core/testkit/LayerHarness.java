@@ -33,6 +33,7 @@ public final class LayerHarness implements StackHost {
     private final TraceRecorder trace = new TraceRecorder();
     private final LayerStack stack;
     private final String name;
+    private java.util.function.Predicate<io.concord.core.net.Address> inMemory = a -> false;
 
     /** A started stack of the given layers, top first, named {@code "harness"}. */
     public LayerHarness(Layer... topFirst) {
@@ -45,6 +46,16 @@ public final class LayerHarness implements StackHost {
         this.wheel = DeadlineTimerWheel.forAgents(clock.nanoTime());
         this.stack = new LayerStack(List.of(topFirst), this, up::add, down::add, events::add);
         stack.start();
+    }
+
+    /** Says which destinations the stack is to take for agents of its own runtime (none by default). */
+    public void setInMemory(java.util.function.Predicate<io.concord.core.net.Address> inMemory) {
+        this.inMemory = inMemory;
+    }
+
+    @Override
+    public boolean inMemoryTo(io.concord.core.net.Address to) {
+        return inMemory.test(to);
     }
 
     /** Sends an envelope into the top of the stack. */

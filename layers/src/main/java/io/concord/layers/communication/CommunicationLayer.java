@@ -8,7 +8,8 @@ import io.concord.core.net.Transport;
 
 /**
  * The communication layer, at the bottom: enforces the frame size limit both ways (8 KiB on UDP
- * and 16 KiB on TCP by default) and sends each frame {@code copies} times on UDP against loss. A message too large is refused to the caller
+ * and 16 KiB on TCP by default) and sends each frame {@code copies} times on UDP against loss (once
+ * to an agent of the same runtime, whose frames are handed over in memory). A message too large is refused to the caller
  * with a {@link SendRejectedException} (it never half-leaves); an arriving frame too large is
  * dropped ({@code too-large}), so that no peer can make the agent buffer more than the limit.
  * Copies are filtered above, cheaply: the security layer recognises a frame it accepted by its
@@ -73,7 +74,9 @@ public final class CommunicationLayer extends Layer {
                     + " bytes, over the limit of " + config.maxFrameBytes() + " bytes; shorten its content, or raise "
                     + "maxFrameBytes in the communication settings (up to 65507 on UDP)");
         }
-        for (int i = 0; i < config.copies(); i++) {
+        // Repetition is against loss on the network; a frame handed over in memory cannot be lost.
+        int copies = config.copies() == 1 || ctx.host().inMemoryTo(env.destination()) ? 1 : config.copies();
+        for (int i = 0; i < copies; i++) {
             ctx.passDown(env);
         }
     }

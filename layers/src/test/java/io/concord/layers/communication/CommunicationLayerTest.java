@@ -24,6 +24,18 @@ class CommunicationLayerTest {
     }
 
     @Test
+    void sendsAFrameHandedOverInMemoryOnceAndOthersStillRepeated() {
+        LayerHarness h = new LayerHarness(new CommunicationLayer(new CommunicationLayer.Config(8192, 2)));
+        Address local = new Address("h", 1);
+        h.setInMemory(local::equals);
+        h.sendDown(frame(100));
+        assertEquals(1, h.downCount(), "nothing to repeat against in memory");
+        h.pollDown();
+        h.sendDown(Envelope.control(1, new Address("h", 2), new byte[100], 0, 100));
+        assertEquals(2, h.downCount(), "a frame that goes through the network is still repeated");
+    }
+
+    @Test
     void refusesToSendAFrameOverTheLimitAndTellsTheCaller() {
         LayerHarness h = new LayerHarness(new CommunicationLayer(new CommunicationLayer.Config(8192, 2)));
         SendRejectedException e = assertThrows(SendRejectedException.class, () -> h.sendDown(frame(8193)));
