@@ -117,8 +117,8 @@ public final class AgentRuntime implements AutoCloseable {
         private Tracer tracer = Tracer.NONE;
         private Supplier<List<Layer>> stackFactory;
         private int mailboxCapacity = 100_000;
-        private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 300);
-        private int idleYieldIterations = Integer.getInteger("concord.idle.yield", 0);
+        private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 0);
+        private int idleYieldIterations = Integer.getInteger("concord.idle.yield", 200);
         private Transport transport = Transport.UDP;
 
         private Builder() {
@@ -189,8 +189,9 @@ public final class AgentRuntime implements AutoCloseable {
         }
 
         /**
-         * How many empty work cycles the loop spins before it starts yielding the CPU. Spinning
-         * catches a reply that comes within microseconds without a kernel wake-up.
+         * How many empty work cycles the loop spins before it starts yielding the CPU (default 0).
+         * Spinning catches a reply that comes within microseconds without a kernel wake-up, but
+         * holds the core while it waits; yielding catches it nearly as fast and lets others run.
          */
         public Builder idleSpinIterations(int iterations) {
             this.idleSpinIterations = iterations;
@@ -199,7 +200,8 @@ public final class AgentRuntime implements AutoCloseable {
 
         /**
          * How many further empty cycles it yields the CPU (so that other processes on a busy machine
-         * run) before it parks on the network until a datagram, a task or a timer.
+         * run) before it parks on the network until a datagram, a task or a timer (default 200).
+         * The loop adapts how much of spin and yield it uses to how often waiting awake pays.
          */
         public Builder idleYieldIterations(int iterations) {
             this.idleYieldIterations = iterations;
@@ -567,13 +569,17 @@ public final class AgentRuntime implements AutoCloseable {
 
     private void loop() {
         int idle = 0;
-        // The spin budget adapts between 0 and idleSpinIterations: spinning pays when work comes
-        // back within the spin window (a quick reply), and only wastes a shared CPU when it does
-        // not (more busy processes than cores). Count both outcomes; halve or double the budget.
-        int spinBudget = idleSpinIterations;
+        // The idle budget (spinning first, then yielding) adapts between 0 and its configured
+        // length: waiting awake pays when work comes back within the window (a quick reply, no
+        // kernel wake-up), and only wastes a CPU when it does not. Count both outcomes; halve or
+        // double the budget. Yielding rather than spinning lets other processes of a busy machine
+        // run meanwhile: with more agent processes than cores, a spinning one holds a core that a
+        // peer needs to answer it.
+        final int maxBudget = idleSpinIterations + idleYieldIterations;
+        int budget = maxBudget;
         int wins = 0;
         int losses = 0;
-        long spinWindowNs = 0;
+        long windowNs = 0;
         long idleSinceNs = 0;
         while (running) {
             int work;
@@ -585,7 +591,7 @@ public final class AgentRuntime implements AutoCloseable {
             }
             if (work > 0) {
                 if (idle > 0) {
-                    wins++; // work came while spinning
+                    wins++; // work came while waiting awake
                 }
                 idle = 0;
                 continue;
@@ -593,18 +599,17 @@ public final class AgentRuntime implements AutoCloseable {
             if (idle == 0) {
                 idleSinceNs = clock.nanoTime();
             }
-            if (idle < spinBudget) {
+            if (idle < budget) {
+                if (idle < idleSpinIterations) {
+                    Thread.onSpinWait();
+                } else {
+                    Thread.yield();
+                }
                 idle++;
-                Thread.onSpinWait();
                 continue;
             }
-            if (idle < spinBudget + idleYieldIterations) {
-                idle++;
-                Thread.yield();
-                continue;
-            }
-            if (spinBudget == idleSpinIterations && idle > 0) {
-                spinWindowNs = clock.nanoTime() - idleSinceNs; // how long a full spin lasts here
+            if (budget == maxBudget && idle > 0) {
+                windowNs = clock.nanoTime() - idleSinceNs; // how long a full wait lasts here
             }
             parked = true;
             long parkedAtNs = clock.nanoTime();
@@ -616,15 +621,14 @@ public final class AgentRuntime implements AutoCloseable {
                 }
             }
             parked = false;
-            // Woken sooner than a full spin would have lasted: spinning would have caught it.
-            if (clock.nanoTime() - parkedAtNs < Math.max(spinWindowNs, 20_000)) {
+            // Woken sooner than a full wait would have lasted: waiting awake would have caught it.
+            if (clock.nanoTime() - parkedAtNs < Math.max(windowNs, 20_000)) {
                 wins++;
             } else {
                 losses++;
             }
             if (wins + losses >= 32) {
-                spinBudget = wins * 4 < wins + losses ? spinBudget / 2
-                        : Math.min(idleSpinIterations, Math.max(1, spinBudget * 2));
+                budget = wins * 4 < wins + losses ? budget / 2 : Math.min(maxBudget, Math.max(1, budget * 2));
                 wins = 0;
                 losses = 0;
             }
