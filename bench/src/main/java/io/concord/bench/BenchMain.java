@@ -99,7 +99,7 @@ public final class BenchMain {
                 .jvmArgsAppend("-Djava.awt.headless=true", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error")
                 // The JIT needs about three seconds of rounds before a round's time settles.
                 .warmupIterations(full ? 5 : 3).warmupTime(TimeValue.seconds(full ? 3 : 1))
-                .measurementIterations(full ? 10 : 2).measurementTime(TimeValue.seconds(full ? 3 : 1));
+                .measurementIterations(full ? 10 : 1).measurementTime(TimeValue.seconds(full ? 3 : 1));
     }
 
     private static double median(RunResult r) {
@@ -116,7 +116,9 @@ public final class BenchMain {
     }
 
     private void udp() throws RunnerException, IOException {
-        Collection<RunResult> results = new Runner(options(UdpBaselineBenchmark.class).build()).run();
+        // Raw sockets: little code to compile.
+        Collection<RunResult> results = new Runner(options(UdpBaselineBenchmark.class).warmupIterations(full ? 3 : 1)
+                .build()).run();
         StringBuilder md = new StringBuilder(header("UDP baseline", "A 500-byte datagram ping-pong on loopback, per hop: "
                 + "the physical floor Concord's hops are measured against."));
         md.append("| mode | median µs per hop | p90 |\n|---|---|---|\n");
@@ -219,16 +221,18 @@ public final class BenchMain {
         // Quick mode keeps within its five minutes; full mode adds the closed profile.
         List<String> platforms = full ? List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE)
                 : List.of(Platforms.CONCORD_CLASS7, Platforms.JADE);
-        // A child JVM sees a few hundred messages a second, so it takes about ten seconds of rounds to
-        // compile its hot paths (a round of the book buyer at S = 5 goes from 28 ms to 0.3 ms): warm
-        // up that long, on both platforms.
-        ChainedOptionsBuilder o = options(benchmark).warmupIterations(full ? 8 : 10)
-                .param("platform", platforms.toArray(new String[0]))
-                .param(param, sizes.stream().map(String::valueOf).toArray(String[]::new));
-        Collection<RunResult> results = new Runner(o.build()).run();
+        // With two processes a child sees thousands of messages a second and compiles its hot paths
+        // within the usual warm-up; from six processes on it sees a few hundred, and takes about ten
+        // seconds of rounds (the book buyer at S = 5 goes from 28 ms a round to 0.3 ms): warm those up
+        // that long, on both platforms.
         Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(platforms);
-        for (RunResult r : results) {
-            byPlatform.get(r.getParams().getParam("platform")).put(Integer.parseInt(r.getParams().getParam(param)), median(r));
+        for (int size : sizes) {
+            int warmups = size <= 2 ? (full ? 5 : 3) : (full ? 8 : 10);
+            ChainedOptionsBuilder o = options(benchmark).warmupIterations(warmups)
+                    .param("platform", platforms.toArray(new String[0])).param(param, String.valueOf(size));
+            for (RunResult r : new Runner(o.build()).run()) {
+                byPlatform.get(r.getParams().getParam("platform")).put(size, median(r));
+            }
         }
         StringBuilder md = new StringBuilder("\n## One process per agent\n\n")
                 .append("The first agent (link 0, or the buyer) runs in the benchmark's JVM, every other agent in a JVM ")
@@ -409,9 +413,9 @@ public final class BenchMain {
         Files.writeString(reportDir.resolve("network.md"), md.toString());
     }
 
-    /** Experiment 3: 15 s a transport in quick mode, 10 min in full mode ({@code -Dconcord.stress.seconds} to change). */
+    /** Experiment 3: 10 s a transport in quick mode, 10 min in full mode ({@code -Dconcord.stress.seconds} to change). */
     private void stress() throws IOException {
-        int seconds = Integer.getInteger("concord.stress.seconds", full ? 600 : 15);
+        int seconds = Integer.getInteger("concord.stress.seconds", full ? 600 : 10);
         StringBuilder md = new StringBuilder(header("Stress (experiment 3)", "A sender and a receiver in two runtimes (real "
                 + "sockets, class 7): four 500-byte messages every 2 ms for " + seconds + " s per transport; in the second "
                 + "half, a message of growing size too, from 64 bytes to twice the frame limit (those over it are refused "

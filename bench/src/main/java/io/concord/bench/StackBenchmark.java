@@ -48,6 +48,9 @@ public class StackBenchmark {
         b = new LayerHarness("b@bench", clock, builder.build().get().toArray(new io.concord.core.layer.Layer[0]));
         aAid = new AID("a@bench", A_AT.toUri());
         bAid = new AID("b@bench", B_AT.toUri());
+        // A runtime traces only when given a tracer: leave the harness's test tracer out of the figures.
+        a.setTracing(false);
+        b.setTracing(false);
         content = "s".repeat(500);
         // The first message runs the handshake (class 7); carry frames until it arrives.
         a.sendDown(Envelope.outgoing(message(), bAid, B_AT));

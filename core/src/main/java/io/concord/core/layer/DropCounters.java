@@ -28,9 +28,20 @@ public final class DropCounters {
 
     /** Counts one drop, and logs it if it is the first of its reason for this node. */
     public void record(String node, String reason, String detail) {
+        record(node, null, reason, detail);
+    }
+
+    /**
+     * Counts one drop by a layer; the detail is joined to the layer's name only if it is logged,
+     * so that a counted drop (a copy, many times a second) allocates nothing.
+     */
+    public void record(String node, String layer, String reason, String detail) {
         LongAdder a = counts.get(reason);
         if (a == null) {
             a = counts.computeIfAbsent(reason, r -> new LongAdder());
+            if (layer != null) {
+                detail = layer + ": " + detail;
+            }
             if (EXPECTED.contains(reason)) {
                 LOG.debug("{} dropped a message ({}): {}", node, reason, detail);
             } else {

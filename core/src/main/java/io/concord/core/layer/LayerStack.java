@@ -137,7 +137,7 @@ public final class LayerStack {
 
     /** Counts and traces a drop on behalf of a layer. */
     void drop(String layer, Envelope env, String reason, String detail) {
-        host.drops().record(host.nodeName(), reason, layer + ": " + detail);
+        host.drops().record(host.nodeName(), layer, reason, detail);
         Tracer t = host.tracer();
         if (t.enabled()) {
             t.trace(host.nowNs(), host.nodeName(), "drop", layer + " " + reason + ": " + detail + " " + env);

@@ -34,6 +34,7 @@ public final class LayerHarness implements StackHost {
     private final LayerStack stack;
     private final String name;
     private java.util.function.Predicate<io.concord.core.net.Address> inMemory = a -> false;
+    private boolean tracing = true;
 
     /** A started stack of the given layers, top first, named {@code "harness"}. */
     public LayerHarness(Layer... topFirst) {
@@ -56,6 +57,14 @@ public final class LayerHarness implements StackHost {
     @Override
     public boolean inMemoryTo(io.concord.core.net.Address to) {
         return inMemory.test(to);
+    }
+
+    /**
+     * Turns tracing off (it is on, into {@link #trace()}), as in a runtime without a tracer: for
+     * benchmarks, where building every drop's trace line would be measured too.
+     */
+    public void setTracing(boolean on) {
+        this.tracing = on;
     }
 
     /** Sends an envelope into the top of the stack. */
@@ -149,7 +158,7 @@ public final class LayerHarness implements StackHost {
 
     @Override
     public Tracer tracer() {
-        return trace;
+        return tracing ? trace : Tracer.NONE;
     }
 
     @Override

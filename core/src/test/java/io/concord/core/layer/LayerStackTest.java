@@ -13,6 +13,7 @@ import java.util.List;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertSame;
 
 class LayerStackTest {
@@ -112,6 +113,11 @@ class LayerStackTest {
         assertEquals(1, h.drops().get("too-old"));
         assertEquals(1, h.drops().total());
         assertEquals(1, h.trace().count());
+        assertTrue(h.trace().lastLines().get(0).contains("timestamp 5 s in the past"), "the trace says why");
+        h.setTracing(false);
+        h.receiveUp(Envelope.incoming(new Address("h", 2), new byte[3], 0, 3, 0));
+        assertEquals(2, h.drops().get("too-old"), "counted with tracing off too");
+        assertEquals(1, h.trace().count(), "not traced with tracing off");
     }
 
     @Test
