@@ -157,12 +157,16 @@ public final class BenchMain {
         // at the largest size only, to keep within its time with a warm-up long enough for the JIT.
         List<String> targets = List.of(Platforms.CONCORD_CLASS7, Platforms.JADE);
         List<String> others = List.of(Platforms.CONCORD_CLASS7_SOCKETS, Platforms.CONCORD_CLOSED);
+        // One size at a time, the platforms back to back: this machine's speed drifts over minutes,
+        // and a ratio of two figures taken minutes apart would measure the drift too.
         List<Collection<RunResult>> results = new ArrayList<>();
-        results.add(new Runner(options(benchmark).param("platform", (full ? PLATFORMS : targets).toArray(new String[0]))
-                .param(param, sizes.stream().map(String::valueOf).toArray(String[]::new)).build()).run());
-        if (!full) {
-            results.add(new Runner(options(benchmark).param("platform", others.toArray(new String[0]))
-                    .param(param, String.valueOf(sizes.get(sizes.size() - 1))).build()).run());
+        for (int size : sizes) {
+            List<String> platforms = new ArrayList<>(full ? PLATFORMS : targets);
+            if (!full && size == sizes.get(sizes.size() - 1)) {
+                platforms.addAll(others);
+            }
+            results.add(new Runner(options(benchmark).param("platform", platforms.toArray(new String[0]))
+                    .param(param, String.valueOf(size)).build()).run());
         }
         Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(PLATFORMS);
         for (Collection<RunResult> rs : results) {
