@@ -255,6 +255,12 @@ public final class BenchMain {
             md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s | %s |%n", size, fmt(c7), fmt(closed), fmt(jade),
                     c7 != null && jade != null ? String.format(Locale.ROOT, "%.2f", jade / c7) : "-"));
         }
+        Double c7at2 = byPlatform.get(Platforms.CONCORD_CLASS7).get(2);
+        if (name.equals("chain") && c7at2 != null && udpHopUs.containsKey("processes")) {
+            md.append(String.format(Locale.ROOT, "%nPer hop at N=2: %.2f µs, %.2f times the two-process UDP baseline of "
+                    + "%.2f µs measured in this run (each class-7 frame goes twice, against loss).%n", c7at2 / 2,
+                    c7at2 / 2 / udpHopUs.get("processes"), udpHopUs.get("processes")));
+        }
         String png = name + "-processes.png";
         Charts.line(reportDir.resolve(png), (name.equals("chain") ? "Chain" : "Book buyer")
                 + ": time per round, one process per agent", label, "µs per round", byPlatform);
