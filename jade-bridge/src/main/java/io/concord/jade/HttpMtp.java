@@ -93,6 +93,11 @@ public final class HttpMtp implements Gateway {
     @Override
     public void start(GatewayContext ctx) {
         this.context = ctx;
+        // The JDK's server leaves Nagle's algorithm on unless told otherwise, so a response could wait
+        // for the client's delayed ACK; the setting is read when the first server of the JVM starts.
+        if (System.getProperty("sun.net.httpserver.nodelay") == null) {
+            System.setProperty("sun.net.httpserver.nodelay", "true");
+        }
         try {
             server = HttpServer.create(new InetSocketAddress(host, port), 64);
         } catch (IOException e) {
@@ -125,9 +130,9 @@ public final class HttpMtp implements Gateway {
         if (out != null) {
             ExecutorService o = out;
             o.execute(() -> {
-                for (Socket c : connections.values()) {
+                for (Connection c : connections.values()) {
                     try {
-                        c.close();
+                        c.socket().close();
                     } catch (IOException ignored) {
                         // closing anyway
                     }
@@ -598,7 +603,23 @@ public final class HttpMtp implements Gateway {
     }
 
     // Kept-alive connections to other platforms' ACCs, by host:port; used by the out thread only.
-    private final Map<String, Socket> connections = new java.util.HashMap<>();
+    private final Map<String, Connection> connections = new java.util.HashMap<>();
+
+    /** A socket and its buffered input: a response is read a buffer at a time, not a byte a system call. */
+    private record Connection(Socket socket, InputStream in) {
+        static Connection open(String host, int port) throws IOException {
+            Socket s = new Socket();
+            try {
+                s.setTcpNoDelay(true); // one write, sent at once: no Nagle wait for a delayed ACK
+                s.connect(new InetSocketAddress(host, port), 5_000);
+                s.setSoTimeout(10_000);
+                return new Connection(s, new java.io.BufferedInputStream(s.getInputStream(), 4096));
+            } catch (IOException e) {
+                s.close();
+                throw e;
+            }
+        }
+    }
 
     /** One POST, as JADE reads it, on a kept-alive connection when the peer allows; returns the status. */
     int post(String url, AID receiver, AID sender, String payload) throws IOException {
@@ -607,27 +628,24 @@ public final class HttpMtp implements Gateway {
         byte[] request = request(url, u.getHost(), p, receiver, sender, payload);
         String key = u.getHost() + ":" + p;
         for (int attempt = 0; ; attempt++) {
-            Socket s = connections.remove(key);
-            boolean reused = s != null;
-            if (s == null) {
-                s = new Socket();
-                s.setTcpNoDelay(true); // one write, sent at once: no Nagle wait for a delayed ACK
-                s.connect(new InetSocketAddress(u.getHost(), p), 5_000);
-                s.setSoTimeout(10_000);
+            Connection c = connections.remove(key);
+            boolean reused = c != null;
+            if (c == null) {
+                c = Connection.open(u.getHost(), p);
             }
             try {
-                OutputStream o = s.getOutputStream();
+                OutputStream o = c.socket().getOutputStream();
                 o.write(request);
                 o.flush();
-                Response r = readResponse(s.getInputStream(), url);
+                Response r = readResponse(c.in(), url);
                 if (r.keepAlive()) {
-                    connections.put(key, s);
+                    connections.put(key, c);
                 } else {
-                    s.close();
+                    c.socket().close();
                 }
                 return r.status();
             } catch (IOException e) {
-                s.close();
+                c.socket().close();
                 if (!reused || attempt > 0) {
                     throw e;
                 }
