@@ -436,7 +436,7 @@ public final class BenchMain {
     private void stress(boolean byName) throws IOException {
         int seconds = Integer.getInteger("concord.stress.seconds", full ? 600 : byName ? 90 : 10);
         StringBuilder md = new StringBuilder(header("Stress (experiment 3)", "A sender and a receiver in two runtimes (real "
-                + "sockets, class 7): four 500-byte messages every 2 ms for " + seconds + " s per transport; in the second "
+                + "sockets, class 7): four 500-byte messages every 2 ms (2000 a second if every tick is on time) for " + seconds + " s per transport; in the second "
                 + "half, a message of growing size too, from 64 bytes to twice the frame limit (those over it are refused "
                 + "to the sender, which goes on). Rate of the small messages and heap after GC, per window. The heap "
                 + "grows while the sequence layer's retransmission buffer (1024 frames a peer) fills with the large "
