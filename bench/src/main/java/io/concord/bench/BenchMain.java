@@ -162,20 +162,13 @@ public final class BenchMain {
         List<String> others = List.of(Platforms.CONCORD_CLASS7_SOCKETS, Platforms.CONCORD_CLOSED);
         // One size at a time, the platforms back to back: this machine's speed drifts over minutes,
         // and a ratio of two figures taken minutes apart would measure the drift too.
-        List<Collection<RunResult>> results = new ArrayList<>();
+        Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(PLATFORMS);
         for (int size : sizes) {
             List<String> platforms = new ArrayList<>(full ? PLATFORMS : targets);
             if (!full && size == sizes.get(sizes.size() - 1)) {
                 platforms.addAll(others);
             }
-            results.add(new Runner(options(benchmark).param("platform", platforms.toArray(new String[0]))
-                    .param(param, String.valueOf(size)).build()).run());
-        }
-        Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(PLATFORMS);
-        for (Collection<RunResult> rs : results) {
-            for (RunResult r : rs) {
-                byPlatform.get(r.getParams().getParam("platform")).put(Integer.parseInt(r.getParams().getParam(param)), median(r));
-            }
+            measure(options(benchmark), platforms, param, size, byPlatform);
         }
         StringBuilder md = new StringBuilder(header(name.equals("chain") ? "Chain (pass the secret), one JVM"
                         : "Book buyer, one JVM",
@@ -222,6 +215,15 @@ public final class BenchMain {
         Files.writeString(reportDir.resolve(name + ".md"), md.toString());
     }
 
+    /** Runs the platforms at one size, back to back, and puts each one's median round into its series. */
+    private static void measure(ChainedOptionsBuilder options, List<String> platforms, String param, int size,
+                                Map<String, TreeMap<Integer, Double>> byPlatform) throws RunnerException {
+        options.param("platform", platforms.toArray(new String[0])).param(param, String.valueOf(size));
+        for (RunResult r : new Runner(options.build()).run()) {
+            byPlatform.get(r.getParams().getParam("platform")).put(size, median(r));
+        }
+    }
+
     /** Chain or books with one process per agent: Concord class 7 and JADE. */
     private void processes(String name, Class<?> benchmark, String param, String label, List<Integer> sizes)
             throws RunnerException, IOException {
@@ -235,11 +237,7 @@ public final class BenchMain {
         Map<String, TreeMap<Integer, Double>> byPlatform = Charts.series(platforms);
         for (int size : sizes) {
             int warmups = size <= 2 ? (full ? 5 : 3) : (full ? 8 : 10);
-            ChainedOptionsBuilder o = options(benchmark).warmupIterations(warmups)
-                    .param("platform", platforms.toArray(new String[0])).param(param, String.valueOf(size));
-            for (RunResult r : new Runner(o.build()).run()) {
-                byPlatform.get(r.getParams().getParam("platform")).put(size, median(r));
-            }
+            measure(options(benchmark).warmupIterations(warmups), platforms, param, size, byPlatform);
         }
         StringBuilder md = new StringBuilder("\n## One process per agent\n\n")
                 .append("The first agent (link 0, or the buyer) runs in the benchmark's JVM, every other agent in a JVM ")

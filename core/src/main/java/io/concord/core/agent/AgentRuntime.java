@@ -567,9 +567,6 @@ public final class AgentRuntime implements AutoCloseable {
         return this;
     }
 
-    /** The shortest park: the network waits in whole milliseconds. */
-    private static final long PARK_GRANULARITY_NS = 1_000_000;
-
     private void loop() {
         int idle = 0;
         // The idle budget (spinning first, then yielding) adapts between 0 and its configured
@@ -612,7 +609,8 @@ public final class AgentRuntime implements AutoCloseable {
                 continue;
             }
             long nextTimerNs = wheel.earliestDeadline();
-            if (nextTimerNs != Long.MAX_VALUE && nextTimerNs - clock.nanoTime() < PARK_GRANULARITY_NS && tasks.isEmpty()) {
+            if (nextTimerNs != Long.MAX_VALUE && nextTimerNs - clock.nanoTime() < network.awaitResolutionNs()
+                    && tasks.isEmpty()) {
                 // A timer is due sooner than a park can end (select() counts whole milliseconds):
                 // wait for it awake, or it fires up to a millisecond late.
                 Thread.yield();

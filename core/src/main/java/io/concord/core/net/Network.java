@@ -81,6 +81,14 @@ public interface Network extends AutoCloseable {
      */
     void await(long timeoutNs);
 
+    /**
+     * The shortest wait {@link #await} can make: a loop waits awake for anything due sooner, or it
+     * would wake late. 0 by default.
+     */
+    default long awaitResolutionNs() {
+        return 0;
+    }
+
     /** Makes a pending or the next {@link #await} return. Thread-safe. */
     void wakeup();
 

@@ -228,6 +228,12 @@ public final class SocketNetwork implements Network {
         return Long.MAX_VALUE;
     }
 
+    /** {@code select()} counts whole milliseconds. */
+    @Override
+    public long awaitResolutionNs() {
+        return 1_000_000;
+    }
+
     @Override
     public void await(long timeoutNs) {
         if (!localQueue.isEmpty()) {
