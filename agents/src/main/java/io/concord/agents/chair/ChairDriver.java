@@ -1,0 +1,40 @@
+package io.concord.agents.chair;
+
+/**
+ * The one interface between a chair and the agent that drives it. Motor powers go in; state
+ * reports (encoders, range sensors, bumper, battery, faults, odometry) come out at the chair's
+ * rate. The simulated chair of {@code io.concord.sim} implements it, and so does the serial
+ * driver of a real chair, so the control agent does not know which it drives.
+ *
+ * <p>Confined to one thread: call it, and receive its callbacks, on the loop of the runtime it
+ * was attached to. A driver never blocks.
+ */
+public interface ChairDriver {
+
+    /** The chair's name, unique in its world ("chair1"). */
+    String name();
+
+    /** What the chair is: body, wheels, encoders, sensors (in the order of the readings). */
+    ChairLayout layout();
+
+    /**
+     * Sets each wheel's motor power, in percent of full power, -100 (full reverse) to 100 (full
+     * forward). The wheels follow with the chair's acceleration curve; the powers hold until the
+     * next call. Values outside the range are clamped; NaN counts as 0.
+     */
+    void drive(double leftPercent, double rightPercent);
+
+    /** Both powers to 0: the chair brakes to a stand. */
+    default void stop() {
+        drive(0, 0);
+    }
+
+    /** The latest state report, or null before the first. */
+    ChairReadings latest();
+
+    /** True while the link to the chair is up. A simulated chair is always online. */
+    boolean online();
+
+    /** Sets the one listener told of every report (replacing any before); null removes it. */
+    void setListener(ChairListener listener);
+}

@@ -1,0 +1,244 @@
+package io.concord.sim.map;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+/**
+ * A hospital floor: walls, named areas (wards, rooms, corridors, halls), doors in gaps of the
+ * walls, and the route graph (nodes and edges, each edge naming the door it passes through).
+ * Read from the JSON format of {@code docs/hospital-map.md}, checked whole, immutable.
+ *
+ * <pre>{@code
+ * HospitalMap map = HospitalMap.defaultHospital();
+ * HospitalMap mine = HospitalMap.load(Path.of("floor2.json"));   // MapException if anything is wrong
+ * }</pre>
+ */
+public final class HospitalMap {
+    /** The resource of the default hospital. */
+    public static final String DEFAULT_RESOURCE = "/io/concord/sim/map/hospital.json";
+
+    private final String name;
+    private final double clearanceM;
+    private final List<Wall> walls;
+    private final List<Area> areas;
+    private final Map<String, Door> doors;
+    private final Map<Integer, Node> nodes;
+    private final List<Edge> edges;
+    private final Map<Integer, List<Edge>> adjacency;
+
+    HospitalMap(String name, double clearanceM, List<Wall> walls, List<Area> areas, List<Door> doors, List<Node> nodes,
+                List<Edge> edges) {
+        this.name = name;
+        this.clearanceM = clearanceM;
+        this.walls = List.copyOf(walls);
+        this.areas = List.copyOf(areas);
+        Map<String, Door> d = new LinkedHashMap<>();
+        for (Door door : doors) {
+            d.put(door.id(), door);
+        }
+        this.doors = Collections.unmodifiableMap(d);
+        Map<Integer, Node> n = new LinkedHashMap<>();
+        for (Node node : nodes) {
+            n.put(node.id(), node);
+        }
+        this.nodes = Collections.unmodifiableMap(n);
+        this.edges = List.copyOf(edges);
+        Map<Integer, List<Edge>> adj = new HashMap<>();
+        for (Node node : nodes) {
+            adj.put(node.id(), new ArrayList<>());
+        }
+        for (Edge e : edges) {
+            adj.get(e.a()).add(e);
+            adj.get(e.b()).add(e);
+        }
+        adj.replaceAll((k, v) -> List.copyOf(v));
+        this.adjacency = Collections.unmodifiableMap(adj);
+    }
+
+    /** The default hospital shipped with Concord: two wards joined by a corridor and a lobby. */
+    public static HospitalMap defaultHospital() {
+        try (InputStream in = HospitalMap.class.getResourceAsStream(DEFAULT_RESOURCE)) {
+            if (in == null) {
+                throw new IllegalStateException("the default hospital " + DEFAULT_RESOURCE + " is missing from the class path");
+            }
+            return parse(new String(in.readAllBytes(), StandardCharsets.UTF_8), "resource " + DEFAULT_RESOURCE);
+        } catch (IOException e) {
+            throw new IllegalStateException("cannot read " + DEFAULT_RESOURCE, e);
+        }
+    }
+
+    /**
+     * Reads a map file.
+     *
+     * @throws MapException if the file is missing, unreadable, malformed or inconsistent
+     */
+    public static HospitalMap load(Path file) {
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new MapException(file.toString(), List.of("no such file; give the path of a map in the format of docs/hospital-map.md"));
+        } catch (IOException e) {
+            throw new MapException(file.toString(), List.of("cannot be read: " + e));
+        }
+        return parse(text, file.toString());
+    }
+
+    /**
+     * Reads a map from its JSON text.
+     *
+     * @param source where it came from, for messages
+     * @throws MapException if it is malformed or inconsistent
+     */
+    public static HospitalMap parse(String json, String source) {
+        return new MapReader(source).read(json);
+    }
+
+    /** The map's name. */
+    public String name() {
+        return name;
+    }
+
+    /** The least distance in metres a node keeps from a wall's face. */
+    public double clearanceM() {
+        return clearanceM;
+    }
+
+    /** Every wall. */
+    public List<Wall> walls() {
+        return walls;
+    }
+
+    /** Every area. */
+    public List<Area> areas() {
+        return areas;
+    }
+
+    /** Every door, in map order. */
+    public List<Door> doors() {
+        return List.copyOf(doors.values());
+    }
+
+    /** The door with this id. */
+    public Door door(String id) {
+        Door d = doors.get(id);
+        if (d == null) {
+            throw new IllegalArgumentException("map '" + name + "' has no door '" + id + "'");
+        }
+        return d;
+    }
+
+    /** Every node, in map order. */
+    public List<Node> nodes() {
+        return List.copyOf(nodes.values());
+    }
+
+    /** True if the map has a node with this id. */
+    public boolean hasNode(int id) {
+        return nodes.containsKey(id);
+    }
+
+    /** The node with this id. */
+    public Node node(int id) {
+        Node n = nodes.get(id);
+        if (n == null) {
+            throw new IllegalArgumentException("map '" + name + "' has no node " + id);
+        }
+        return n;
+    }
+
+    /** Every edge. */
+    public List<Edge> edges() {
+        return edges;
+    }
+
+    /** The edges at a node. */
+    public List<Edge> edgesAt(int node) {
+        List<Edge> e = adjacency.get(node);
+        if (e == null) {
+            throw new IllegalArgumentException("map '" + name + "' has no node " + node);
+        }
+        return e;
+    }
+
+    /** The edge between two nodes, if any. */
+    public Optional<Edge> edge(int a, int b) {
+        for (Edge e : edgesAt(a)) {
+            if (e.other(a) == b) {
+                return Optional.of(e);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** The area with this id. */
+    public Area area(String id) {
+        for (Area a : areas) {
+            if (a.id().equals(id)) {
+                return a;
+            }
+        }
+        throw new IllegalArgumentException("map '" + name + "' has no area '" + id + "'");
+    }
+
+    /** The smallest area (room before ward) containing the point, if any. */
+    public Optional<Area> areaAt(Point p) {
+        Area best = null;
+        for (Area a : areas) {
+            if (a.contains(p) && (best == null || a.kind() != Area.Kind.WARD)) {
+                best = a;
+            }
+        }
+        return Optional.ofNullable(best);
+    }
+
+    /** The ward a point lies in, if any. */
+    public Optional<Area> wardAt(Point p) {
+        for (Area a : areas) {
+            if (a.kind() == Area.Kind.WARD && a.contains(p)) {
+                return Optional.of(a);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** The bounding box of the walls: {minX, minY, maxX, maxY}. */
+    public double[] bounds() {
+        double minX = Double.MAX_VALUE;
+        double minY = Double.MAX_VALUE;
+        double maxX = -Double.MAX_VALUE;
+        double maxY = -Double.MAX_VALUE;
+        for (Wall w : walls) {
+            for (Point p : List.of(w.from(), w.to())) {
+                minX = Math.min(minX, p.x());
+                minY = Math.min(minY, p.y());
+                maxX = Math.max(maxX, p.x());
+                maxY = Math.max(maxY, p.y());
+            }
+        }
+        for (Node n : nodes.values()) {
+            minX = Math.min(minX, n.at().x());
+            minY = Math.min(minY, n.at().y());
+            maxX = Math.max(maxX, n.at().x());
+            maxY = Math.max(maxY, n.at().y());
+        }
+        return new double[] {minX, minY, maxX, maxY};
+    }
+
+    @Override
+    public String toString() {
+        return "HospitalMap[" + name + ": " + walls.size() + " walls, " + areas.size() + " areas, " + doors.size()
+                + " doors, " + nodes.size() + " nodes, " + edges.size() + " edges]";
+    }
+}
