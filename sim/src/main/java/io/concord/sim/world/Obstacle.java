@@ -16,7 +16,7 @@ public final class Obstacle {
     /** The kinds of obstacle. */
     public enum Kind { BOX, ROUND, PERSON }
 
-    private static final double PERSON_FORCE_N = 400;
+    private static final double PERSON_FORCE_N = 250;
 
     private final HospitalWorld world;
     private final String name;

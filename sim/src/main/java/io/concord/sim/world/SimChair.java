@@ -187,6 +187,11 @@ public final class SimChair implements ChairDriver {
         return odometry.pose();
     }
 
+    /** Metres the odometry has counted (the centre's path, by the encoders). */
+    public double odometry() {
+        return odometry.distanceM();
+    }
+
     /** The motor powers last set, {left, right}. */
     public double[] powers() {
         return new double[] {powerLeft, powerRight};
@@ -301,13 +306,17 @@ public final class SimChair implements ChairDriver {
         double vf = vel.x * c + vel.y * s;
         double vl = -vel.x * s + vel.y * c;
         double m = body.getMass();
-        double jf = clamp(m * (v - vf), forceMax * dt);
-        double jl = clamp(-m * vl, GRIP * m * GRAVITY * dt);
+        // A chair whose wheels stand holds with its brakes, up to the tyres' grip; a driving one
+        // with its motors' force.
+        boolean braked = wheelLeft == 0 && wheelRight == 0;
+        double grip = GRIP * m * GRAVITY;
+        double jf = clamp(m * (v - vf), (braked ? grip : forceMax) * dt);
+        double jl = clamp(-m * vl, grip * dt);
         if (jf != 0 || jl != 0) {
             tmp.set((float) (jf * c - jl * s), (float) (jf * s + jl * c));
             body.applyLinearImpulse(tmp, body.getWorldCenter());
         }
-        double ja = clamp(inertia * (w - body.getAngularVelocity()), torqueMax * dt);
+        double ja = clamp(inertia * (w - body.getAngularVelocity()), (braked ? torqueMax * grip / forceMax : torqueMax) * dt);
         if (ja != 0) {
             body.applyAngularImpulse((float) ja);
         }
