@@ -28,7 +28,8 @@ import io.concord.core.net.Transport;
  * {@code books}, {@code udp}.
  */
 public final class BenchMain {
-    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http");
+    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http",
+            "sim");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -86,6 +87,7 @@ public final class BenchMain {
                     case "bootstrap", "failover" -> { }
                     case "network" -> b.network();
                     case "http" -> b.http();
+                    case "sim" -> b.sim();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -459,6 +461,36 @@ public final class BenchMain {
                     o.delivered(), o.outOfOrder(), o.refused(), o.maxSizeDelivered(), o.drops()));
         }
         Files.writeString(reportDir.resolve("stress.md"), md.toString());
+    }
+
+    private void sim() throws IOException {
+        double seconds = Double.parseDouble(System.getProperty("concord.sim.seconds", full ? "600" : "20"));
+        StringBuilder md = new StringBuilder(header("Hospital simulation", "The default hospital (31 nodes, 18 doors, "
+                + "87 wall fixtures) stepped at 60 Hz on the test kit's virtual clock, as fast as one core allows, with "
+                + "chairs that drive from node to node at random with every sensor on (8 sonars of 5 rays at 10 Hz, 4 "
+                + "infrared at 20 Hz, reports at 20 Hz) and doors that open as a chair comes near and close behind it. "
+                + "Beside it, in the same run, the bare physics engine with the same walls and as many boxes driven by "
+                + "velocity: what the world adds is the difference. Targets: 1,000 times real time with one chair, 50 with "
+                + "ten. " + seconds + " s a size, in windows, each with the bytes allocated a step and the heap after a "
+                + "collection (`-Dconcord.sim.seconds=600` for the 10-minute run).", "Wall-clock windows"));
+        md.append("| chairs | steps/s | times real time | bare engine steps/s | world / engine | bytes a step | heap MB first / last window | collisions | metres driven | door commands |\n");
+        md.append("|---|---|---|---|---|---|---|---|---|---|\n");
+        StringBuilder windows = new StringBuilder();
+        for (int chairs : List.of(1, 10)) {
+            SimHarness.Outcome o = SimHarness.run(chairs, seconds, full ? 10 : 4);
+            System.out.println(SimHarness.describe(o));
+            md.append(String.format(Locale.ROOT, "| %d | %.0f | %.0f | %.0f | %.2f | %.0f | %.1f / %.1f | %d | %.0f | %d |%n",
+                    chairs, o.stepsPerS(), o.realtimeX(), o.engineStepsPerS(), o.stepsPerS() / o.engineStepsPerS(),
+                    o.windows().get(o.windows().size() - 1).bytesPerStep(), o.windows().get(0).heapMb(),
+                    o.windows().get(o.windows().size() - 1).heapMb(), o.collisions(), o.metresDriven(), o.doorMoves()));
+            windows.append("\n### ").append(chairs).append(chairs == 1 ? " chair" : " chairs").append("\n\n| window | steps/s | bytes a step | heap MB after GC |\n|---|---|---|---|\n");
+            for (int w = 0; w < o.windows().size(); w++) {
+                SimHarness.Window x = o.windows().get(w);
+                windows.append(String.format(Locale.ROOT, "| %d | %.0f | %.0f | %.1f |%n", w + 1, x.stepsPerS(), x.bytesPerStep(), x.heapMb()));
+            }
+        }
+        md.append("\n## Windows\n").append(windows);
+        Files.writeString(reportDir.resolve("sim.md"), md.toString());
     }
 
     private static String fmt(Double v) {

@@ -401,11 +401,19 @@ public final class SimChair implements ChairDriver {
         double oy = p.y + s.x() * sn + s.y() * c;
         int rays = s.kind() == SensorMount.Kind.SONAR ? config.sonarRays() : 1;
         double nearest = Double.POSITIVE_INFINITY;
+        // The first ray's direction, then each next one turned by the rays' spacing: two sines a
+        // sensor, not two a ray.
+        double first = a + s.direction() - (rays == 1 ? 0 : s.coneRad() / 2);
+        double dx = StrictMath.cos(first);
+        double dy = StrictMath.sin(first);
+        double stepCos = rays == 1 ? 1 : StrictMath.cos(s.coneRad() / (rays - 1));
+        double stepSin = rays == 1 ? 0 : StrictMath.sin(s.coneRad() / (rays - 1));
         for (int r = 0; r < rays; r++) {
-            double off = rays == 1 ? 0 : -s.coneRad() / 2 + s.coneRad() * r / (rays - 1);
-            double dir = a + s.direction() + off;
-            double d = world.castRay(this, ox, oy, StrictMath.cos(dir), StrictMath.sin(dir), s.maxRangeM(), hit, rayFrom, rayTo);
+            double d = world.castRay(this, ox, oy, dx, dy, s.maxRangeM(), hit, rayFrom, rayTo);
             nearest = Math.min(nearest, d);
+            double nx = dx * stepCos - dy * stepSin;
+            dy = dx * stepSin + dy * stepCos;
+            dx = nx;
         }
         if (nearest == Double.POSITIVE_INFINITY) {
             return s.maxRangeM();

@@ -236,6 +236,10 @@ public final class WorldDoor {
     }
 
     void beforeStep() {
+        if (motion == Motion.STILL && motorSpeed == 0 && !leaf.isAwake()) {
+            // At rest and asleep: nothing pushes the leaf, nothing to correct.
+            return;
+        }
         double err = target - position();
         double max = slide != null ? SLIDE_SPEED_M_S
                 : spec.kind() == Door.Kind.ROTATING ? REVOLVE_SPEED_RAD_S : SWING_SPEED_RAD_S;
