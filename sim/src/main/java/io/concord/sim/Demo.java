@@ -18,7 +18,8 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 
 /**
- * The platform demo: three JVMs on this machine, started with the {@link Boot} command line and
+ * The demo jar's entry: {@code hospital} (the default) runs {@link HospitalDemo}; {@code platform}
+ * runs the platform demo: three JVMs on this machine, started with the {@link Boot} command line and
  * nothing configured but the agents. They find each other by port binding (7001 and up), elect
  * a container, and build the white and yellow pages; a buyer finds three book sellers in the DF,
  * asks them by name with a contract net and buys from the cheapest. Then the container's JVM is
@@ -46,6 +47,12 @@ public final class Demo {
     }
 
     public static void main(String[] args) throws Exception {
+        // The hospital is the default; "platform" runs the three-JVM platform demo.
+        if (args.length == 0 || !args[0].equals("platform")) {
+            String[] rest = args.length > 0 && args[0].equals("hospital") ? java.util.Arrays.copyOfRange(args, 1, args.length) : args;
+            HospitalDemo.main(rest);
+            return;
+        }
         String platform = "demo";
         OUT.println("Concord platform demo: three JVMs, no main container, nothing configured but the agents.");
         OUT.println("Each agent binds the first free UDP port from 7001 on 127.0.0.1, finds the others by the ports");

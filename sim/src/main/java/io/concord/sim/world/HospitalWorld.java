@@ -692,16 +692,20 @@ public final class HospitalWorld {
         public void beginContact(Contact c) {
             Thing a = (Thing) c.getFixtureA().getBody().getUserData();
             Thing b = (Thing) c.getFixtureB().getBody().getUserData();
+            // Both chairs feel a contact between two chairs; it is one collision.
             if (a.kind == Thing.Kind.CHAIR) {
+                ((SimChair) a.owner).contactBegan();
                 touched(c, (SimChair) a.owner, b, c.getFixtureB());
             }
             if (b.kind == Thing.Kind.CHAIR) {
-                touched(c, (SimChair) b.owner, a, c.getFixtureA());
+                ((SimChair) b.owner).contactBegan();
+                if (a.kind != Thing.Kind.CHAIR) {
+                    touched(c, (SimChair) b.owner, a, c.getFixtureA());
+                }
             }
         }
 
         private void touched(Contact c, SimChair chair, Thing other, Fixture otherFixture) {
-            chair.contactBegan();
             c.getWorldManifold(manifold);
             int n = c.getManifold().pointCount;
             Point at = n > 0 ? new Point(manifold.points[0].x, manifold.points[0].y)
