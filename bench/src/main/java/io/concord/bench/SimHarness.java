@@ -1,13 +1,14 @@
 package io.concord.bench;
 
+import io.concord.agents.door.DoorDriver;
 import io.concord.agents.chair.PoseController;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
 import io.concord.sim.internal.EngineBaseline;
-import io.concord.sim.map.Edge;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Point;
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Point;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
@@ -158,10 +159,10 @@ final class SimHarness {
             for (Walker w : walkers) {
                 near |= w.chair.truePose().distanceTo(c.x(), c.y()) < 3;
             }
-            if (near && door.motion() != WorldDoor.Motion.OPENING && !door.isOpen()) {
+            if (near && door.motion() != DoorDriver.Motion.OPENING && !door.isOpen()) {
                 door.open();
                 moves++;
-            } else if (!near && door.motion() != WorldDoor.Motion.CLOSING && !door.isClosed() && !door.doorwayOccupied()) {
+            } else if (!near && door.motion() != DoorDriver.Motion.CLOSING && !door.isClosed() && !door.doorwayOccupied()) {
                 door.close();
                 moves++;
             }

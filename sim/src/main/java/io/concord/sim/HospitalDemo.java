@@ -1,5 +1,6 @@
 package io.concord.sim;
 
+import io.concord.agents.door.DoorDriver;
 import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Pose;
@@ -8,12 +9,12 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
-import io.concord.sim.map.Area;
-import io.concord.sim.map.Edge;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.MapException;
-import io.concord.sim.map.Node;
-import io.concord.sim.map.Point;
+import io.concord.agents.map.Area;
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.MapException;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Point;
 import io.concord.sim.render.HospitalPicture;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
@@ -326,7 +327,7 @@ public final class HospitalDemo {
                 Point c = door.spec().centre();
                 double d = pose.distanceTo(c.x(), c.y());
                 boolean ahead = d < map.node(fromId).at().distanceTo(c) + 0.3 && d < 3.5;
-                if (ahead && !door.isOpen() && door.motion() != WorldDoor.Motion.OPENING) {
+                if (ahead && !door.isOpen() && door.motion() != DoorDriver.Motion.OPENING) {
                     door.open();
                     say("opens door " + door.id() + " (" + door.spec().kind().toString().toLowerCase(Locale.ROOT) + ")");
                 }

@@ -1,6 +1,6 @@
 package io.concord.sim;
 
-import io.concord.sim.map.HospitalMap;
+import io.concord.agents.map.HospitalMap;
 
 import org.junit.jupiter.api.Test;
 

@@ -18,9 +18,11 @@ import java.util.Set;
  * @param emergencyStop true while the chair's e-stop is pressed
  * @param faults       active faults, empty when healthy
  * @param odometry     the pose integrated from the encoders
+ * @param fix          a position fix from a floor marker under the chair (a marker at each node
+ *                     of the route graph, as guided vehicles use), or null when none is read
  */
 public record ChairReadings(long timeNs, long seq, long leftTicks, long rightTicks, double[] ranges, boolean bumper,
-                            double batteryVolts, boolean emergencyStop, Set<ChairFault> faults, Pose odometry) {
+                            double batteryVolts, boolean emergencyStop, Set<ChairFault> faults, Pose odometry, Pose fix) {
 
     /** Copies the arrays and sets, so that the record stays immutable. */
     public ChairReadings {
@@ -49,7 +51,7 @@ public record ChairReadings(long timeNs, long seq, long leftTicks, long rightTic
         return o instanceof ChairReadings r && r.timeNs == timeNs && r.seq == seq && r.leftTicks == leftTicks
                 && r.rightTicks == rightTicks && Arrays.equals(r.ranges, ranges) && r.bumper == bumper
                 && Double.compare(r.batteryVolts, batteryVolts) == 0 && r.emergencyStop == emergencyStop
-                && r.faults.equals(faults) && r.odometry.equals(odometry);
+                && r.faults.equals(faults) && r.odometry.equals(odometry) && java.util.Objects.equals(r.fix, fix);
     }
 
     @Override
@@ -61,6 +63,6 @@ public record ChairReadings(long timeNs, long seq, long leftTicks, long rightTic
     public String toString() {
         return "ChairReadings[seq=" + seq + " ticks=" + leftTicks + "/" + rightTicks + " ranges=" + Arrays.toString(ranges)
                 + " bumper=" + bumper + " battery=" + batteryVolts + "V estop=" + emergencyStop + " faults=" + faults
-                + " odometry=" + odometry + "]";
+                + " odometry=" + odometry + (fix == null ? "" : " fix=" + fix) + "]";
     }
 }

@@ -1,8 +1,8 @@
 package io.concord.sim.internal;
 
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Node;
-import io.concord.sim.map.Wall;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Wall;
 
 import org.jbox2d.collision.shapes.PolygonShape;
 import org.jbox2d.common.Vec2;

@@ -1,13 +1,14 @@
 package io.concord.sim.render;
 
+import io.concord.agents.door.DoorDriver;
 import io.concord.agents.chair.Pose;
-import io.concord.sim.map.Area;
-import io.concord.sim.map.Door;
-import io.concord.sim.map.Edge;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Node;
-import io.concord.sim.map.Point;
-import io.concord.sim.map.Wall;
+import io.concord.agents.map.Area;
+import io.concord.agents.map.Door;
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Point;
+import io.concord.agents.map.Wall;
 import io.concord.sim.world.Collision;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.Obstacle;
@@ -213,7 +214,7 @@ public final class HospitalPicture {
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 10));
         for (Door d : map.doors()) {
             WorldDoor wd = world == null || world.doors().isEmpty() ? null : world.door(d.id());
-            Color c = wd == null ? CLOSED : wd.mechanismFailed() ? FAILED : wd.motion() != WorldDoor.Motion.STILL ? MOVING
+            Color c = wd == null ? CLOSED : wd.mechanismFailed() ? FAILED : wd.motion() != DoorDriver.Motion.STILL ? MOVING
                     : wd.isOpen() ? OPEN : wd.isClosed() ? CLOSED : MOVING;
             // Where the leaf moves, thin and dashed.
             g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 120));

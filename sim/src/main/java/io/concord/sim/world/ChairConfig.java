@@ -19,10 +19,12 @@ import io.concord.agents.chair.ChairLayout;
  * @param slipSigma         wheel slip, metres per square root of metre travelled: the random part
  * @param stateRateHz       state reports a second
  * @param batteryWh         battery capacity
+ * @param markerFixes       whether the chair reads floor markers at the map's nodes (a position
+ *                          fix within 0.3 m of a node, 1 cm and 0.5° of noise)
  */
 public record ChairConfig(ChairLayout layout, double massKg, double accelMps2, double decelMps2, int sonarRays,
                           double rangeNoiseM, double rangeNoiseRel, double wheelScaleSigma, double slipSigma,
-                          double stateRateHz, double batteryWh) {
+                          double stateRateHz, double batteryWh, boolean markerFixes) {
 
     /** Validates every setting, naming the wrong one. */
     public ChairConfig {
@@ -52,44 +54,50 @@ public record ChairConfig(ChairLayout layout, double massKg, double accelMps2, d
     /**
      * The dissertation's chair ({@link ChairLayout#standard()}), 100 kg, 1 m/s² up and 1.5 m/s²
      * down, five rays a sonar, 1 cm + 1 % range noise, 0.2 % wheel size error, 2 mm/√m slip,
-     * 20 reports a second, a 500 Wh battery.
+     * 20 reports a second, a 500 Wh battery, floor markers read at the nodes.
      */
     public static ChairConfig standard() {
-        return new ChairConfig(ChairLayout.standard(), 100, 1.0, 1.5, 5, 0.01, 0.01, 0.002, 0.002, 20, 500);
+        return new ChairConfig(ChairLayout.standard(), 100, 1.0, 1.5, 5, 0.01, 0.01, 0.002, 0.002, 20, 500, true);
     }
 
     /** The same chair with perfect sensors and wheels: no range noise, no wheel error, no slip. */
     public ChairConfig noiseless() {
-        return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, 0, 0, 0, 0, stateRateHz, batteryWh);
+        return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, 0, 0, 0, 0, stateRateHz, batteryWh, markerFixes);
     }
 
     /** The same chair with other odometry errors. */
     public ChairConfig withWheelErrors(double wheelScaleSigma, double slipSigma) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
     }
 
     /** The same chair with other range noise. */
     public ChairConfig withRangeNoise(double metres, double relative) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, metres, relative, wheelScaleSigma,
-                slipSigma, stateRateHz, batteryWh);
+                slipSigma, stateRateHz, batteryWh, markerFixes);
     }
 
     /** The same chair with another layout. */
     public ChairConfig withLayout(ChairLayout layout) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
+    }
+
+    /** The same chair with floor markers read (true) or not. */
+    public ChairConfig withMarkerFixes(boolean on) {
+        return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, on);
     }
 
     /** The same chair with another mass. */
     public ChairConfig withMassKg(double massKg) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
     }
 
     /** The same chair with another acceleration curve. */
     public ChairConfig withAcceleration(double accelMps2, double decelMps2) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
     }
 }

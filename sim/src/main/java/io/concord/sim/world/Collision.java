@@ -1,6 +1,6 @@
 package io.concord.sim.world;
 
-import io.concord.sim.map.Point;
+import io.concord.agents.map.Point;
 
 /**
  * A chair touched something: a wall, a door leaf, another chair or an obstacle.

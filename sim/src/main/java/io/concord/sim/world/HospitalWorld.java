@@ -3,11 +3,11 @@ package io.concord.sim.world;
 import io.concord.agents.chair.Pose;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.layer.Tracer;
-import io.concord.sim.map.Door;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Node;
-import io.concord.sim.map.Point;
-import io.concord.sim.map.Wall;
+import io.concord.agents.map.Door;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Point;
+import io.concord.agents.map.Wall;
 
 import org.jbox2d.callbacks.ContactImpulse;
 import org.jbox2d.callbacks.ContactListener;

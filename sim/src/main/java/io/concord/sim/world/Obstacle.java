@@ -1,6 +1,6 @@
 package io.concord.sim.world;
 
-import io.concord.sim.map.Point;
+import io.concord.agents.map.Point;
 
 import org.jbox2d.common.Vec2;
 import org.jbox2d.dynamics.Body;

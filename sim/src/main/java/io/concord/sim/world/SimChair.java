@@ -36,6 +36,7 @@ public final class SimChair implements ChairDriver {
     private static final double LOW_VOLTS = 22.0;
     private static final double MOTOR_WATTS = 450;
     private static final double IDLE_WATTS = 15;
+    private static final double MARKER_RANGE_M = 0.3;
 
     private final HospitalWorld world;
     private final String name;
@@ -382,13 +383,28 @@ public final class SimChair implements ChairDriver {
         if (volts < LOW_VOLTS && !faults.contains(ChairFault.BATTERY_LOW)) {
             faults.add(ChairFault.BATTERY_LOW);
         }
-        latest = new ChairReadings(nowNs, seq++, lt, rt, ranges, bumperLatch || contacts > 0, volts, emergencyStop, f, odo);
+        latest = new ChairReadings(nowNs, seq++, lt, rt, ranges, bumperLatch || contacts > 0, volts, emergencyStop, f, odo,
+                config.markerFixes() ? markerFix() : null);
         bumperLatch = false;
         truth.offer(body.getPosition().x, body.getPosition().y);
         dead.offer(odo.x(), odo.y());
         if (listener != null) {
             listener.onReadings(latest);
         }
+    }
+
+    /** The pose a floor marker under the chair gives, with its noise, or null if none is within reach. */
+    private Pose markerFix() {
+        Vec2 p = body.getPosition();
+        for (io.concord.agents.map.Node n : world.map().nodes()) {
+            double dx = n.at().x() - p.x;
+            double dy = n.at().y() - p.y;
+            if (dx * dx + dy * dy <= MARKER_RANGE_M * MARKER_RANGE_M) {
+                return new Pose(p.x + 0.01 * random.nextGaussian(), p.y + 0.01 * random.nextGaussian(),
+                        body.getAngle() + Math.toRadians(0.5) * random.nextGaussian());
+            }
+        }
+        return null;
     }
 
     /** One range reading: the nearest hit of the sensor's rays, with noise, within its range. */

@@ -1,6 +1,6 @@
 package io.concord.sim.world;
 
-import io.concord.sim.map.Point;
+import io.concord.agents.map.Point;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,7 +1,9 @@
 package io.concord.sim.world;
 
-import io.concord.sim.map.Door;
-import io.concord.sim.map.Point;
+import io.concord.agents.door.DoorDriver;
+import io.concord.agents.door.DoorListener;
+import io.concord.agents.map.Door;
+import io.concord.agents.map.Point;
 
 import org.jbox2d.collision.WorldManifold;
 import org.jbox2d.collision.shapes.CircleShape;
@@ -25,9 +27,7 @@ import java.util.List;
  *
  * <p>Confined to the thread that steps the world.
  */
-public final class WorldDoor {
-    /** What the leaf is doing. */
-    public enum Motion { STILL, OPENING, CLOSING }
+public final class WorldDoor implements DoorDriver {
 
     /** Half the depth of the doorway zone, each side of the wall, metres. */
     static final double DOORWAY_DEPTH_M = 0.7;
@@ -81,6 +81,7 @@ public final class WorldDoor {
     // ---- commands -------------------------------------------------------------------------------
 
     /** Starts opening (or keeps opening); a revolving door turns on the same way. Ignored while the mechanism has failed. */
+    @Override
     public void open() {
         if (mechanismFailed) {
             return;
@@ -96,6 +97,7 @@ public final class WorldDoor {
     }
 
     /** Starts closing. Ignored while the mechanism has failed. */
+    @Override
     public void close() {
         if (mechanismFailed) {
             return;
@@ -107,6 +109,7 @@ public final class WorldDoor {
     }
 
     /** Stops the leaf where it is, and holds it there. */
+    @Override
     public void halt() {
         target = position();
         motion = Motion.STILL;
@@ -124,6 +127,7 @@ public final class WorldDoor {
     }
 
     /** Sets the one listener told of contacts and arrivals (replacing any before); null removes it. */
+    @Override
     public void setListener(DoorListener listener) {
         this.listener = listener;
     }
@@ -131,21 +135,25 @@ public final class WorldDoor {
     // ---- sensing --------------------------------------------------------------------------------
 
     /** The door of the map this is. */
+    @Override
     public Door spec() {
         return spec;
     }
 
     /** The door's id. */
+    @Override
     public String id() {
         return spec.id();
     }
 
     /** What the leaf is doing now. */
+    @Override
     public Motion motion() {
         return motion;
     }
 
     /** How open the door is: 0 closed, 1 fully open. */
+    @Override
     public double openFraction() {
         if (spec.kind() == Door.Kind.ROTATING) {
             double a = Math.abs(Math.IEEEremainder(position(), Math.PI));
@@ -155,21 +163,25 @@ public final class WorldDoor {
     }
 
     /** True if the door is open far enough to pass (at least 95 %). */
+    @Override
     public boolean isOpen() {
         return openFraction() >= 0.95;
     }
 
     /** True if the leaf closes the opening (within 1 %). */
+    @Override
     public boolean isClosed() {
         return openFraction() <= 0.01;
     }
 
     /** True if the leaf stopped because it met something, until the next command. */
+    @Override
     public boolean blocked() {
         return blocked;
     }
 
     /** The name of what the leaf last met, or null. */
+    @Override
     public String lastContact() {
         return lastContact;
     }
@@ -180,26 +192,31 @@ public final class WorldDoor {
     }
 
     /** True while the mechanism has failed. */
+    @Override
     public boolean mechanismFailed() {
         return mechanismFailed;
     }
 
     /** True if a chair or an obstacle is in the doorway (the opening, 0.7 m each side of the wall). */
+    @Override
     public boolean doorwayOccupied() {
         return !world.overlapping(doorwayShape, null).isEmpty();
     }
 
     /** The chairs and obstacles in the doorway, by name. */
+    @Override
     public List<String> inDoorway() {
         return world.overlapping(doorwayShape, null);
     }
 
     /** True if a chair or an obstacle is where the leaf moves (a swing's quarter circle, a revolving door's circle, a sliding leaf's line). */
+    @Override
     public boolean sweepOccupied() {
         return !world.overlapping(sweepShape, null).isEmpty();
     }
 
     /** The chairs and obstacles in the leaf's sweep, by name. */
+    @Override
     public List<String> inSweep() {
         return world.overlapping(sweepShape, null);
     }

@@ -1,8 +1,8 @@
 package io.concord.sim.render;
 
 import io.concord.agents.chair.PoseController;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Point;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Point;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;

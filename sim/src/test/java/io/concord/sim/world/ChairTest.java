@@ -3,7 +3,7 @@ package io.concord.sim.world;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.chair.PoseController;
-import io.concord.sim.map.HospitalMap;
+import io.concord.agents.map.HospitalMap;
 
 import org.junit.jupiter.api.Test;
 
@@ -186,5 +186,19 @@ class ChairTest {
         world.run(6);
         assertTrue(b.truePose().x() - a.truePose().x() >= 1.2 - 0.02, "a: " + a.truePose() + " b: " + b.truePose());
         assertTrue(world.collisions().stream().anyMatch(c -> c.chair().equals("chair1") && c.other().equals("chair2")));
+    }
+
+    @Test
+    void aFloorMarkerAtANodeGivesAFixAndNowhereElse() {
+        SimChair c = world.addChair("chair1", ChairConfig.standard(), world.poseAt(19, 90));
+        world.run(0.2);
+        Pose fix = c.latest().fix();
+        assertTrue(fix != null && fix.distanceTo(24, 4) < 0.05, "at node 19: " + fix);
+        SimChair away = world.addChair("chair2", ChairConfig.standard(), new Pose(25, 6, 0));
+        world.run(0.2);
+        assertEquals(null, away.latest().fix(), "no marker 1 m from any node");
+        SimChair blind = world.addChair("chair3", ChairConfig.standard().withMarkerFixes(false), world.poseAt(23, 90));
+        world.run(0.2);
+        assertEquals(null, blind.latest().fix(), "markers off");
     }
 }

@@ -1,7 +1,9 @@
 package io.concord.sim.world;
 
+import io.concord.agents.door.DoorListener;
+import io.concord.agents.door.DoorDriver;
 import io.concord.agents.chair.Pose;
-import io.concord.sim.map.HospitalMap;
+import io.concord.agents.map.HospitalMap;
 
 import org.junit.jupiter.api.Test;
 
@@ -26,12 +28,12 @@ class DoorTest {
         WorldDoor d = world.door(id);
         d.setListener(new DoorListener() {
             @Override
-            public void onContact(WorldDoor door, String what) {
+            public void onContact(DoorDriver door, String what) {
                 events.add("contact " + door.id() + " " + what);
             }
 
             @Override
-            public void onArrived(WorldDoor door) {
+            public void onArrived(DoorDriver door) {
                 events.add("arrived " + door.id() + " " + (door.isOpen() ? "open" : door.isClosed() ? "closed" : "between"));
             }
         });
@@ -42,13 +44,13 @@ class DoorTest {
         WorldDoor d = door(id);
         assertTrue(d.isClosed(), id + " starts closed");
         d.open();
-        assertEquals(WorldDoor.Motion.OPENING, d.motion());
+        assertEquals(DoorDriver.Motion.OPENING, d.motion());
         world.run(0.5);
         assertFalse(d.isClosed(), "moving: " + d);
         assertFalse(d.isOpen(), "not there yet: " + d);
         world.run(6);
         assertTrue(d.isOpen(), "open: " + d);
-        assertEquals(WorldDoor.Motion.STILL, d.motion());
+        assertEquals(DoorDriver.Motion.STILL, d.motion());
         d.close();
         world.run(8);
         assertTrue(d.isClosed(), "closed: " + d);
@@ -111,7 +113,7 @@ class DoorTest {
         }
         world.run(8);
         assertTrue(d.blocked(), "stopped: " + d);
-        assertEquals(WorldDoor.Motion.STILL, d.motion());
+        assertEquals(DoorDriver.Motion.STILL, d.motion());
         assertEquals("chair1", d.lastContact());
         assertEquals(List.of("contact " + id + " chair1"), events);
         assertFalse(d.isOpen() || d.isClosed(), "stopped between: " + d);
@@ -155,7 +157,7 @@ class DoorTest {
         assertFalse(d.doorwayOccupied());
         world.addChair("chair1", ChairConfig.standard().noiseless(), new Pose(19.5, 10.8, 0));
         assertEquals(List.of("chair1"), d.inDoorway());
-        world.addPerson("visitor", List.of(new io.concord.sim.map.Point(20.4, 12.0)), 1.0, false);
+        world.addPerson("visitor", List.of(new io.concord.agents.map.Point(20.4, 12.0)), 1.0, false);
         assertEquals(2, d.inDoorway().size());
     }
 

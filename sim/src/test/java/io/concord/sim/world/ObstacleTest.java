@@ -1,8 +1,8 @@
 package io.concord.sim.world;
 
 import io.concord.agents.chair.Pose;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Point;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Point;
 
 import org.junit.jupiter.api.Test;
 

@@ -1,7 +1,7 @@
 package io.concord.sim.world;
 
 import io.concord.agents.chair.Pose;
-import io.concord.sim.map.HospitalMap;
+import io.concord.agents.map.HospitalMap;
 
 import org.junit.jupiter.api.Test;
 

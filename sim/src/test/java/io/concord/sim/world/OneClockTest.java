@@ -11,8 +11,8 @@ import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
-import io.concord.sim.map.HospitalMap;
-import io.concord.sim.map.Point;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Point;
 
 import org.junit.jupiter.api.Test;
 

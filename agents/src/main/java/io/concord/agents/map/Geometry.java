@@ -1,4 +1,4 @@
-package io.concord.sim.map;
+package io.concord.agents.map;
 
 /** Plane geometry on segments, for the map's checks and the world's zones. */
 public final class Geometry {

@@ -1,4 +1,4 @@
-package io.concord.sim.map;
+package io.concord.agents.map;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -26,7 +26,7 @@ import java.util.Optional;
  */
 public final class HospitalMap {
     /** The resource of the default hospital. */
-    public static final String DEFAULT_RESOURCE = "/io/concord/sim/map/hospital.json";
+    public static final String DEFAULT_RESOURCE = "/io/concord/agents/map/hospital.json";
 
     private final String name;
     private final double clearanceM;

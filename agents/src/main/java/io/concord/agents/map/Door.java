@@ -1,4 +1,4 @@
-package io.concord.sim.map;
+package io.concord.agents.map;
 
 /**
  * A door in a gap of the walls. Its opening runs from one jamb ({@code from}) to the other

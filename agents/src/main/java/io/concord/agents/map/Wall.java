@@ -1,4 +1,4 @@
-package io.concord.sim.map;
+package io.concord.agents.map;
 
 /**
  * A straight wall: its centre line from one point to another, and its thickness.

@@ -1,4 +1,4 @@
-package io.concord.sim.map;
+package io.concord.agents.map;
 
 /**
  * An edge of the route graph, drivable both ways on a straight line between two nodes.

@@ -1,4 +1,4 @@
-package io.concord.sim.map;
+package io.concord.agents.map;
 
 /**
  * A node of the route graph: a place a chair can stand and plan from.
