@@ -87,7 +87,22 @@ public class ContractNetResponder extends CyclicBehaviour {
         }
     }
 
-    /** Answers a CFP with PROPOSE, or throws {@link RefuseException}; {@code null} sends nothing. */
+    /**
+     * Answers a CFP later: for a responder whose {@code handleCfp} returned {@code null} because
+     * it must first ask others (a planner, a stock check). Completes {@code reply} (a PROPOSE or a
+     * REFUSE) as the reply to the CFP and sends it; a PROPOSE opens the session, so that the
+     * ACCEPT-PROPOSAL or REJECT-PROPOSAL comes back to this responder. Call on the agent's loop.
+     */
+    public final void respond(AclMessage cfp, AclMessage reply) {
+        Replies.complete(reply, cfp);
+        if (reply.getPerformative() == Performative.PROPOSE) {
+            open.put(Replies.sessionKey(cfp), new Session(cfp, reply));
+        }
+        myAgent.send(reply);
+        restart();
+    }
+
+    /** Answers a CFP with PROPOSE, or throws {@link RefuseException}; {@code null} sends nothing (see {@link #respond}). */
     protected AclMessage handleCfp(AclMessage cfp) throws RefuseException, FailureException, NotUnderstoodException {
         throw new RefuseException("not implemented");
     }

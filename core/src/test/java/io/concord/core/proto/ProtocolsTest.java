@@ -493,6 +493,42 @@ class ProtocolsTest {
         }
 
         @Test
+        void aResponderMayProposeLaterAndStillReceiveTheAcceptance() throws Exception {
+            // The responder asks someone first (here: a timer) and proposes 300 ms after the CFP.
+            AID slow = start("slow", a -> a.addBehaviour(new ContractNetResponder(a,
+                    ContractNetResponder.createMessageTemplate(FipaProtocols.CONTRACT_NET)) {
+                @Override
+                protected AclMessage handleCfp(AclMessage cfp) {
+                    a.addBehaviour(new io.concord.core.agent.WakerBehaviour(a, 300) {
+                        @Override
+                        protected void onWake() {
+                            respond(cfp, cfp.createReply().setPerformative(Performative.PROPOSE).setContent("7"));
+                        }
+                    });
+                    return null;
+                }
+
+                @Override
+                protected AclMessage handleAcceptProposal(AclMessage cfp, AclMessage propose, AclMessage accept) {
+                    return accept.createReply().setPerformative(Performative.INFORM).setContent("done late");
+                }
+            }));
+            CompletableFuture<CompletableFuture<Conversations.ContractNetOutcome>> outer = new CompletableFuture<>();
+            start("chooser", a -> a.addBehaviour(new OneShotBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage cfp = msg(Performative.CFP, "job", slow);
+                    cfp.setReplyByEpochMs(sim.clock().epochMillis() + 1_000);
+                    outer.complete(Conversations.contractNet(myAgent, cfp, ps -> ps.get(0)));
+                }
+            }));
+            sim.runUntil(() -> outer.isDone() && outer.join().isDone(), 2_000);
+            Conversations.ContractNetOutcome out = result(outer.join());
+            assertEquals("7", out.proposal().getContent());
+            assertEquals("done late", out.result().getContent());
+        }
+
+        @Test
         void aSubscriptionHandleDeliversNotificationsToAConsumer() throws Exception {
             SubscriptionResponder[] resp = new SubscriptionResponder[1];
             AID pub = start("pub", a -> {

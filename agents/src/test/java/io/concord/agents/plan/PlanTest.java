@@ -1,0 +1,135 @@
+package io.concord.agents.plan;
+
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.proto.Content;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import java.util.SplittableRandom;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** A* on the route graph, and the agents' content format. */
+class PlanTest {
+    private final HospitalMap map = HospitalMap.defaultHospital();
+    private final AStar astar = new AStar(RouteGraph.of(map), 0);
+
+    @Test
+    void theScenarioRoutesPassTheirDoors() {
+        Route r = astar.find(19, 3);
+        assertEquals(List.of(19, 22, 7, 6, 5, 4, 2, 3), r.nodes());
+        assertEquals(List.of("WA", "A2"), r.doors());
+        Route r2 = astar.find(3, 9);
+        assertEquals(List.of("A2", "WA", "WB", "B7"), r2.doors());
+        assertEquals(r2.lengthM(), sum(r2), 1e-9);
+    }
+
+    private double sum(Route r) {
+        double s = 0;
+        for (int i = 1; i < r.nodes().size(); i++) {
+            s += map.node(r.nodes().get(i - 1)).at().distanceTo(map.node(r.nodes().get(i)).at());
+        }
+        return s;
+    }
+
+    @Test
+    void aBlockedEdgeOrARefusingDoorIsAvoidedOrThereIsNoRoute() {
+        // The lobby has a triangle: block 22-19 and the route goes round by 23.
+        Route r = astar.find(22, 19, Set.of(AStar.edgeKey(19, 22)), d -> true);
+        assertEquals(List.of(22, 23, 19), r.nodes());
+        // Ward B is reached only through WB.
+        assertNull(astar.find(19, 9, Set.of(), d -> !d.equals("WB")));
+        assertThrows(IllegalArgumentException.class, () -> astar.find(19, 99));
+    }
+
+    @Test
+    void aStarFindsTheShortestRouteOnAGeneratedGraph() {
+        RouteGraph g = grid(32, 32, 0.2, 5);
+        AStar a = new AStar(g, 0);
+        // Against Dijkstra by brute force (A* with a zero heuristic is Dijkstra: compare lengths).
+        SplittableRandom r = new SplittableRandom(1);
+        for (int k = 0; k < 50; k++) {
+            int s = r.nextInt(1024);
+            int t = r.nextInt(1024);
+            Route route = a.find(s, t);
+            double d = dijkstra(g, s, t);
+            if (route == null) {
+                assertEquals(Double.MAX_VALUE, d);
+            } else {
+                assertEquals(d, route.lengthM(), 1e-9);
+            }
+        }
+    }
+
+    /** A w x h grid with 1 m spacing, jittered, with a fraction of edges removed. */
+    public static RouteGraph grid(int w, int h, double removed, long seed) {
+        SplittableRandom r = new SplittableRandom(seed);
+        int n = w * h;
+        int[] ids = new int[n];
+        double[] xs = new double[n];
+        double[] ys = new double[n];
+        for (int i = 0; i < n; i++) {
+            ids[i] = i;
+            xs[i] = i % w + 0.3 * r.nextDouble();
+            ys[i] = i / w + 0.3 * r.nextDouble();
+        }
+        List<int[]> edges = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            if (i % w < w - 1 && r.nextDouble() >= removed) {
+                edges.add(new int[] {i, i + 1});
+            }
+            if (i / w < h - 1 && r.nextDouble() >= removed) {
+                edges.add(new int[] {i, i + w});
+            }
+        }
+        return RouteGraph.of(ids, xs, ys, edges.toArray(new int[0][]));
+    }
+
+    /** Plain Dijkstra in O(n²) over the graph's arrays, as the reference. */
+    private static double dijkstra(RouteGraph g, int s, int t) {
+        int n = g.size();
+        double[] d = new double[n];
+        boolean[] done = new boolean[n];
+        java.util.Arrays.fill(d, Double.MAX_VALUE);
+        d[g.indexOf(s)] = 0;
+        for (int k = 0; k < n; k++) {
+            int u = -1;
+            for (int i = 0; i < n; i++) {
+                if (!done[i] && d[i] != Double.MAX_VALUE && (u < 0 || d[i] < d[u])) {
+                    u = i;
+                }
+            }
+            if (u < 0) {
+                break;
+            }
+            done[u] = true;
+            for (int e = g.firstEdge[u]; e < g.firstEdge[u + 1]; e++) {
+                int v = g.edgeTo[e];
+                d[v] = Math.min(d[v], d[u] + g.edgeLength[e]);
+            }
+        }
+        return d[g.indexOf(t)];
+    }
+
+    @Test
+    void contentRoundTripsAndSaysWhatIsWrong() {
+        Content c = Content.of("transport").with("task", "T1").with("from", 3).with("to", 9).with("priority", 1.5);
+        assertEquals("transport; task=T1; from=3; to=9; priority=1.50", c.toString());
+        Content back = Content.parse(c.toString());
+        assertTrue(back.is("transport"));
+        assertEquals(9, back.integer("to"));
+        assertEquals(1.5, back.number("priority"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> back.integer("unload")).getMessage()
+                .contains("needs a field 'unload'"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> Content.parse("transport; from=x").integer("from"))
+                .getMessage().contains("whole number"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> Content.parse("transport; nonsense")).getMessage()
+                .contains("key=value"));
+    }
+}
