@@ -8,7 +8,8 @@ import java.util.Set;
  * range sensor's latest distance (in the layout's order), the bumper, the battery, the e-stop
  * and the faults, with the odometry the driver integrated from the encoders. Immutable.
  *
- * @param timeNs       platform time of the report
+ * @param timeNs       the chair's clock at the report (a board's own clock; a simulated chair's world time):
+ *                     measure the chair's waits and stalls on it, not on the platform's clock
  * @param seq          report number, from 0
  * @param leftTicks    left encoder, ticks since start (signed)
  * @param rightTicks   right encoder, ticks since start (signed)
@@ -18,8 +19,8 @@ import java.util.Set;
  * @param emergencyStop true while the chair's e-stop is pressed
  * @param faults       active faults, empty when healthy
  * @param odometry     the pose integrated from the encoders
- * @param fix          a position fix from a floor marker under the chair (a marker at each node
- *                     of the route graph, as guided vehicles use), or null when none is read
+ * @param fix          a position fix from a floor marker near the chair (a marker at each node
+ *                     of the route graph, read by a camera, as guided vehicles use), or null when none is read
  */
 public record ChairReadings(long timeNs, long seq, long leftTicks, long rightTicks, double[] ranges, boolean bumper,
                             double batteryVolts, boolean emergencyStop, Set<ChairFault> faults, Pose odometry, Pose fix) {

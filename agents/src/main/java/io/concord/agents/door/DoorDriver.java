@@ -24,6 +24,9 @@ public interface DoorDriver {
         return spec().id();
     }
 
+    /** The mechanism's clock, nanoseconds: the door agent times the door's motion and its closing on it. */
+    long nowNs();
+
     /** Starts opening; ignored while the mechanism has failed. */
     void open();
 

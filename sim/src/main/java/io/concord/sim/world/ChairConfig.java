@@ -20,11 +20,13 @@ import io.concord.agents.chair.ChairLayout;
  * @param stateRateHz       state reports a second
  * @param batteryWh         battery capacity
  * @param markerFixes       whether the chair reads floor markers at the map's nodes (a position
- *                          fix within 0.3 m of a node, 1 cm and 0.5° of noise)
+ *                          fix within 0.8 m of a node, read by a camera, 1 cm and 0.5° of noise)
+ * @param watchdogS         the board's watchdog: a chair not commanded for this long while its
+ *                          motors run stops and reports {@code WATCHDOG}; 0 turns it off
  */
 public record ChairConfig(ChairLayout layout, double massKg, double accelMps2, double decelMps2, int sonarRays,
                           double rangeNoiseM, double rangeNoiseRel, double wheelScaleSigma, double slipSigma,
-                          double stateRateHz, double batteryWh, boolean markerFixes) {
+                          double stateRateHz, double batteryWh, boolean markerFixes, double watchdogS) {
 
     /** Validates every setting, naming the wrong one. */
     public ChairConfig {
@@ -43,6 +45,7 @@ public record ChairConfig(ChairLayout layout, double massKg, double accelMps2, d
         check("slipSigma", slipSigma >= 0 && slipSigma < 1, slipSigma);
         check("stateRateHz", stateRateHz > 0 && stateRateHz <= 1000, stateRateHz);
         check("batteryWh", batteryWh > 0, batteryWh);
+        check("watchdogS", watchdogS >= 0 && watchdogS <= 10, watchdogS);
     }
 
     private static void check(String name, boolean ok, double value) {
@@ -54,50 +57,60 @@ public record ChairConfig(ChairLayout layout, double massKg, double accelMps2, d
     /**
      * The dissertation's chair ({@link ChairLayout#standard()}), 100 kg, 1 m/s² up and 1.5 m/s²
      * down, five rays a sonar, 1 cm + 1 % range noise, 0.2 % wheel size error, 2 mm/√m slip,
-     * 20 reports a second, a 500 Wh battery, floor markers read at the nodes.
+     * 20 reports a second, a 500 Wh battery, floor markers read at the nodes, no watchdog (a test
+     * drives with one command; the hospital's chairs run with {@link #withWatchdog}).
      */
     public static ChairConfig standard() {
-        return new ChairConfig(ChairLayout.standard(), 100, 1.0, 1.5, 5, 0.01, 0.01, 0.002, 0.002, 20, 500, true);
+        return new ChairConfig(ChairLayout.standard(), 100, 1.0, 1.5, 5, 0.01, 0.01, 0.002, 0.002, 20, 500, true, 0);
     }
 
     /** The same chair with perfect sensors and wheels: no range noise, no wheel error, no slip. */
     public ChairConfig noiseless() {
-        return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, 0, 0, 0, 0, stateRateHz, batteryWh, markerFixes);
+        return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, 0, 0, 0, 0, stateRateHz, batteryWh, markerFixes, watchdogS);
     }
 
     /** The same chair with other odometry errors. */
     public ChairConfig withWheelErrors(double wheelScaleSigma, double slipSigma) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes, watchdogS);
     }
 
     /** The same chair with other range noise. */
     public ChairConfig withRangeNoise(double metres, double relative) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, metres, relative, wheelScaleSigma,
-                slipSigma, stateRateHz, batteryWh, markerFixes);
+                slipSigma, stateRateHz, batteryWh, markerFixes, watchdogS);
     }
 
     /** The same chair with another layout. */
     public ChairConfig withLayout(ChairLayout layout) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes, watchdogS);
     }
 
     /** The same chair with floor markers read (true) or not. */
     public ChairConfig withMarkerFixes(boolean on) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, on);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, on, watchdogS);
+    }
+
+    /**
+     * The same chair with the board's watchdog at this many seconds (0.3 is what the control
+     * agent's 20 commands a second need; the real chair's board uses 0.2).
+     */
+    public ChairConfig withWatchdog(double seconds) {
+        return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes, seconds);
     }
 
     /** The same chair with another mass. */
     public ChairConfig withMassKg(double massKg) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes, watchdogS);
     }
 
     /** The same chair with another acceleration curve. */
     public ChairConfig withAcceleration(double accelMps2, double decelMps2) {
         return new ChairConfig(layout, massKg, accelMps2, decelMps2, sonarRays, rangeNoiseM, rangeNoiseRel,
-                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes);
+                wheelScaleSigma, slipSigma, stateRateHz, batteryWh, markerFixes, watchdogS);
     }
 }

@@ -482,7 +482,7 @@ public final class HospitalWorld {
                 return;
             }
             tracer = runtime.tracer() == null ? Tracer.NONE : runtime.tracer();
-            startNs = runtime.nowNs();
+            startNs = runtime.clock().nanoTime();
             k = 0;
             timer = runtime.schedule(due(), this::tick);
         }

@@ -36,7 +36,7 @@ public final class SimChair implements ChairDriver {
     private static final double LOW_VOLTS = 22.0;
     private static final double MOTOR_WATTS = 450;
     private static final double IDLE_WATTS = 15;
-    private static final double MARKER_RANGE_M = 0.3;
+    private static final double MARKER_RANGE_M = 0.8;
 
     private final HospitalWorld world;
     private final String name;
@@ -76,6 +76,7 @@ public final class SimChair implements ChairDriver {
     private boolean emergencyStop;
     private final Set<ChairFault> faults = EnumSet.noneOf(ChairFault.class);
     private double usedWh;
+    private long lastDriveStep;
     private final Odometry odometry;
     private ChairReadings latest;
     private ChairListener listener;
@@ -146,6 +147,8 @@ public final class SimChair implements ChairDriver {
     public void drive(double leftPercent, double rightPercent) {
         powerLeft = clampPower(leftPercent);
         powerRight = clampPower(rightPercent);
+        lastDriveStep = world.stepCount();
+        faults.remove(ChairFault.WATCHDOG);
     }
 
     private static double clampPower(double p) {
@@ -290,6 +293,13 @@ public final class SimChair implements ChairDriver {
     // ---- the step -------------------------------------------------------------------------------
 
     void beforeStep(double dt) {
+        // The board's watchdog: a host that stops commanding a moving chair stops it.
+        if (config.watchdogS() > 0 && (powerLeft != 0 || powerRight != 0)
+                && world.stepCount() - lastDriveStep > config.watchdogS() * world.stepHz()) {
+            powerLeft = 0;
+            powerRight = 0;
+            faults.add(ChairFault.WATCHDOG);
+        }
         boolean dead = emergencyStop || batteryVolts() <= EMPTY_VOLTS;
         double top = layout.topSpeedMps();
         double targetLeft = dead || faults.contains(ChairFault.MOTOR_LEFT) ? 0 : powerLeft / 100 * top;
@@ -365,7 +375,7 @@ public final class SimChair implements ChairDriver {
         }
         if (step >= nextReportStep) {
             nextReportStep = step + reportPeriodSteps;
-            report(nowNs);
+            report(world.worldTimeNs());
         }
     }
 

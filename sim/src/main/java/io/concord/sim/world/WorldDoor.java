@@ -80,6 +80,12 @@ public final class WorldDoor implements DoorDriver {
 
     // ---- commands -------------------------------------------------------------------------------
 
+    /** The world's time. */
+    @Override
+    public long nowNs() {
+        return world.worldTimeNs();
+    }
+
     /** Starts opening (or keeps opening); a revolving door turns on the same way. Ignored while the mechanism has failed. */
     @Override
     public void open() {

@@ -1,0 +1,650 @@
+package io.concord.agents.control;
+
+import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairListener;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.Localiser;
+import io.concord.agents.chair.Pose;
+import io.concord.agents.chair.PoseController;
+import io.concord.agents.map.Area;
+import io.concord.agents.map.Door;
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Point;
+import io.concord.agents.proto.Asks;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.proto.ContractNetResponder;
+import io.concord.core.proto.FipaProtocols;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+
+/**
+ * The reactive agent, one per chair, on the chair's {@link ChairDriver} (simulated or real).
+ *
+ * <ul>
+ *   <li>Answers the Medical agent's CFP ({@code transport; task; from; to; priority; unload}) after
+ *       asking its planner for two plans (from where its queue ends to the patient, and from the
+ *       patient to the destination): PROPOSE {@code proposal; task; cost; path; unload}, or REFUSE
+ *       with the reason (no route, a node unknown, no planner).</li>
+ *   <li>Queues accepted tasks and executes them in order: drives to the patient, waits the load
+ *       time, drives to the destination, waits the unload time, and answers the ACCEPT with
+ *       INFORM {@code done}, or FAILURE with why.</li>
+ *   <li>Drives on its odometry corrected by floor markers: to each node of the plan, keeping right
+ *       on long corridor edges; asks each door on the plan to open (REQUEST {@code open}) ahead of
+ *       it and waits in front until it is open for the chair, and tells it once past (INFORM
+ *       {@code passed}); stops for anything close ahead and slows down for anything nearer than
+ *       1.2 m, whatever the plan says; reports an edge blocked for 15 s to its planner and drives
+ *       a new plan around it.</li>
+ * </ul>
+ */
+public class ControlAgent extends Agent implements ChairListener {
+    /** Metres a second the estimates assume (cruise power, turns and slowing included). */
+    static final double EST_SPEED_MPS = 0.7;
+    /** Seconds each door adds to an estimate. */
+    static final double EST_DOOR_S = 6;
+    private static final double KEEP_RIGHT_M = 0.6;
+    private static final double STOP_M = 0.45;
+    private static final double STOP_IR_M = 0.3;
+    private static final double SLOW_M = 1.2;
+    private static final double ANNOUNCE_M = 4.0;
+    private static final double WAIT_AT_DOOR_M = 2.3;
+    private static final long BLOCKED_AFTER_MS = 15_000;
+    /** How often it tells the doors ahead that it still means to pass (their sessions lapse after 60 s). */
+    static final long KEEPALIVE_MS = 20_000;
+
+    private final ChairDriver chair;
+    private final HospitalMap map;
+    private final Consumer<String> log;
+    private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
+    private final Localiser localiser = new Localiser();
+    private final List<Task> tasks = new ArrayList<>();
+    private Asks asks;
+    private ContractNetResponder responder;
+
+    // driving
+    private Task active;
+    private List<Integer> route;
+    private int index;
+    private long pauseUntilMs = -1;
+    private String doorAsked;
+    private String doorGranted;
+    private String doorPassing;
+    private long stoppedSinceMs = -1;
+    private boolean replanning;
+    private int lastNode = -1;
+    private String stopReason;
+
+    /**
+     * @param chair the chair it drives
+     * @param map   the map its plans are on
+     * @param log   told of what the chair does (tasks, doors, stops)
+     */
+    public ControlAgent(ChairDriver chair, HospitalMap map, Consumer<String> log) {
+        this.chair = chair;
+        this.map = map;
+        this.log = log;
+    }
+
+    @Override
+    protected void setup() {
+        Platform.of(this).register(ServiceDescription.of(Services.TRANSPORT, getLocalName()).withProperty("chair", chair.name()));
+        asks = new Asks(this);
+        addBehaviour(asks);
+        responder = new ContractNetResponder(this, ContractNetResponder.createMessageTemplate(FipaProtocols.CONTRACT_NET)) {
+            @Override
+            protected AclMessage handleCfp(AclMessage cfp) {
+                evaluate(cfp);
+                return null;
+            }
+
+            @Override
+            protected AclMessage handleAcceptProposal(AclMessage cfp, AclMessage propose, AclMessage accept) {
+                Task t = find(cfp);
+                if (t != null) {
+                    t.accept = accept;
+                    t.state = TaskView.State.QUEUED;
+                    say("task " + t.id + " accepted, queued (" + queued() + " in the queue)");
+                }
+                return null;
+            }
+
+            @Override
+            protected void handleRejectProposal(AclMessage cfp, AclMessage propose, AclMessage reject) {
+                Task t = find(cfp);
+                if (t != null) {
+                    tasks.remove(t);
+                }
+            }
+        };
+        addBehaviour(responder);
+        // A chair that waits (loading, queued) is not silent: it keeps its doors' sessions alive.
+        addBehaviour(new io.concord.core.agent.TickerBehaviour(this, KEEPALIVE_MS) {
+            @Override
+            protected void onTick() {
+                keepDoorsAlive();
+            }
+        });
+        chair.setListener(this);
+    }
+
+    private void keepDoorsAlive() {
+        java.util.Set<String> ahead = new java.util.LinkedHashSet<>();
+        if (route != null) {
+            doorsOn(route.subList(Math.max(0, index - 1), route.size()), ahead);
+        }
+        for (Task t : tasks) {
+            if (t.state == TaskView.State.QUEUED || t == active) {
+                if (t.state.compareTo(TaskView.State.TO_PICKUP) <= 0 && t.toPickup != null) {
+                    doorsOn(t.toPickup, ahead);
+                }
+                if (t.toDropoff != null && t.state.compareTo(TaskView.State.TO_DROPOFF) <= 0) {
+                    doorsOn(t.toDropoff, ahead);
+                }
+            }
+        }
+        for (String id : ahead) {
+            AID agent = doorAgent(id);
+            if (agent != null) {
+                AclMessage m = new AclMessage(Performative.INFORM);
+                m.addReceiver(agent);
+                m.setOntology(Services.ONTOLOGY);
+                m.setContent(Content.of("here").with("body", chair.name()).toString());
+                send(m);
+            }
+        }
+    }
+
+    private void doorsOn(List<Integer> nodes, java.util.Set<String> out) {
+        for (int i = 1; i < nodes.size(); i++) {
+            map.edge(nodes.get(i - 1), nodes.get(i)).map(Edge::door).ifPresent(out::add);
+        }
+    }
+
+    /** The tasks it holds, in order, with their states. */
+    public List<TaskView> tasks() {
+        return tasks.stream().map(Task::view).toList();
+    }
+
+    /** Where it believes the chair is. */
+    public Pose pose() {
+        return localiser.pose();
+    }
+
+    /** The plan it is driving now (node ids), or an empty list. */
+    public List<Integer> route() {
+        return route == null ? List.of() : List.copyOf(route);
+    }
+
+    private void say(String s) {
+        log.accept(getLocalName() + ": " + s);
+    }
+
+    private Task find(AclMessage cfp) {
+        for (Task t : tasks) {
+            if (t.cfp.getConversationId() != null && t.cfp.getConversationId().equals(cfp.getConversationId())) {
+                return t;
+            }
+        }
+        return null;
+    }
+
+    private int queued() {
+        int n = 0;
+        for (Task t : tasks) {
+            if (t.state == TaskView.State.QUEUED) {
+                n++;
+            }
+        }
+        return n;
+    }
+
+    // ---- evaluation -----------------------------------------------------------------------------
+
+    private void evaluate(AclMessage cfp) {
+        Content c;
+        Task t;
+        try {
+            c = Content.parse(cfp.getContent());
+            t = new Task(c.text("task"), c.integer("from"), c.integer("to"), c.number("priority", 0), c.number("unload", 0), cfp);
+        } catch (IllegalArgumentException e) {
+            responder.respond(cfp, cfp.createReply().setPerformative(Performative.REFUSE)
+                    .setContent(Content.of("refuse").with("reason", e.getMessage()).toString()));
+            return;
+        }
+        tasks.add(t);
+        AID planner = planner();
+        if (planner == null) {
+            refuse(t, "no planner for " + chair.name() + " in the yellow pages");
+            return;
+        }
+        int start = queueEnd();
+        t.start = start;
+        plan(planner, t.id + "/pickup", start, t.from).thenAccept(first -> {
+            if (first.getPerformative() != Performative.INFORM_REF) {
+                refuse(t, reason(first, "no plan from node " + start + " to node " + t.from));
+                return;
+            }
+            plan(planner, t.id + "/dropoff", t.from, t.to).thenAccept(second -> {
+                if (second.getPerformative() != Performative.INFORM_REF) {
+                    refuse(t, reason(second, "no plan from node " + t.from + " to node " + t.to));
+                    return;
+                }
+                Content p1 = Content.parse(first.getContent());
+                Content p2 = Content.parse(second.getContent());
+                t.toPickup = nodes(p1);
+                t.toDropoff = nodes(p2);
+                double approach = p1.number("length") / EST_SPEED_MPS + EST_DOOR_S * p1.list("doors").size();
+                t.pathS = p2.number("length") / EST_SPEED_MPS + EST_DOOR_S * p2.list("doors").size();
+                t.estimateS = approach + t.unloadS + t.pathS + t.unloadS;
+                t.costS = queueSeconds() + t.estimateS;
+                t.state = TaskView.State.PROPOSED;
+                say(String.format(Locale.ROOT, "proposes for %s: cost %.1f s, path %.1f s, unload %.0f s", t.id, t.costS,
+                        t.pathS, t.unloadS));
+                responder.respond(t.cfp, t.cfp.createReply().setPerformative(Performative.PROPOSE).setContent(
+                        Content.of("proposal").with("task", t.id).with("cost", t.costS).with("path", t.pathS)
+                                .with("unload", t.unloadS).toString()));
+            });
+        });
+    }
+
+    private static String reason(AclMessage m, String dflt) {
+        if (m == null) {
+            return "the planner did not answer";
+        }
+        try {
+            String r = Content.parse(m.getContent()).get("reason");
+            return r != null ? r : dflt;
+        } catch (IllegalArgumentException e) {
+            return dflt;
+        }
+    }
+
+    private static List<Integer> nodes(Content plan) {
+        List<Integer> out = new ArrayList<>();
+        for (String s : plan.list("nodes")) {
+            out.add(Integer.parseInt(s));
+        }
+        return out;
+    }
+
+    private void refuse(Task t, String why) {
+        t.state = TaskView.State.REFUSED;
+        t.reason = why;
+        tasks.remove(t);
+        say("refuses " + t.id + ": " + why);
+        responder.respond(t.cfp, t.cfp.createReply().setPerformative(Performative.REFUSE)
+                .setContent(Content.of("refuse").with("task", t.id).with("reason", why).toString()));
+    }
+
+    /** A plan, as the planner's final answer (never null: no answer becomes a FAILURE). */
+    private CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to) {
+        AclMessage req = new AclMessage(Performative.REQUEST);
+        req.addReceiver(planner);
+        req.setProtocol(FipaProtocols.REQUEST);
+        req.setOntology(Services.ONTOLOGY);
+        req.setContent(Content.of("plan").with("task", task).with("from", from).with("to", to).toString());
+        return asks.ask(req, 10_000, null).thenApply(a -> a != null ? a
+                : new AclMessage(Performative.FAILURE).setContent(Content.of("no-route")
+                        .with("reason", "the planner did not answer within 10 s").toString()));
+    }
+
+    private AID planner() {
+        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.PLANNER))) {
+            for (ServiceDescription s : e.services()) {
+                if (s.type().equals(Services.PLANNER) && chair.name().equals(s.properties().get("chair"))) {
+                    return e.aid();
+                }
+            }
+        }
+        return null;
+    }
+
+    /** The node the queue ends at: the last queued task's destination, or the node nearest the chair. */
+    private int queueEnd() {
+        for (int i = tasks.size() - 1; i >= 0; i--) {
+            Task t = tasks.get(i);
+            if (t.toDropoff != null && t.state.compareTo(TaskView.State.QUEUED) >= 0 && t.state.compareTo(TaskView.State.UNLOADING) <= 0) {
+                return t.to;
+            }
+        }
+        return nearestNode();
+    }
+
+    private double queueSeconds() {
+        double s = 0;
+        for (Task t : tasks) {
+            if (t.state.compareTo(TaskView.State.QUEUED) >= 0 && t.state.compareTo(TaskView.State.UNLOADING) <= 0) {
+                s += t.estimateS;
+            }
+        }
+        return s;
+    }
+
+    private int nearestNode() {
+        Pose p = localiser.pose();
+        if (p == null) {
+            ChairReadings r = chair.latest();
+            p = r == null ? null : r.fix() != null ? r.fix() : r.odometry();
+        }
+        int best = -1;
+        double bd = Double.MAX_VALUE;
+        for (Node n : map.nodes()) {
+            double d = p == null ? 0 : p.distanceTo(n.at().x(), n.at().y());
+            if (d < bd) {
+                bd = d;
+                best = n.id();
+            }
+        }
+        return best;
+    }
+
+    // ---- execution ------------------------------------------------------------------------------
+
+    @Override
+    public void onReadings(ChairReadings r) {
+        Pose pose = localiser.update(r);
+        // Loading, unloading and stalls are timed on the chair's clock.
+        long now = r.timeNs() / 1_000_000;
+        if (active == null) {
+            startNext(now);
+            if (active == null) {
+                chair.stop();
+                return;
+            }
+        }
+        if (now < pauseUntilMs) {
+            chair.stop();
+            return;
+        }
+        switch (active.state) {
+            case LOADING -> {
+                active.state = TaskView.State.TO_DROPOFF;
+                follow(active.toDropoff);
+                say("drives " + active.id + " to node " + active.to + " by " + active.toDropoff);
+            }
+            case UNLOADING -> {
+                finish(active, null);
+                return;
+            }
+            default -> { }
+        }
+        if (replanning) {
+            chair.stop();
+            return;
+        }
+        if (!faultsAllowDriving(r)) {
+            return;
+        }
+        drive(r, pose, now);
+    }
+
+    private boolean faultsAllowDriving(ChairReadings r) {
+        if (r.emergencyStop() || !r.faults().isEmpty()) {
+            chair.stop();
+            if (stopReason == null) {
+                stopReason = r.emergencyStop() ? "the e-stop is pressed" : "the chair reports " + r.faults();
+                say("stops: " + stopReason);
+            }
+            if (!r.faults().isEmpty() && r.faults().stream().anyMatch(f -> f != io.concord.agents.chair.ChairFault.BATTERY_LOW)) {
+                finish(active, stopReason);
+            }
+            return false;
+        }
+        stopReason = null;
+        return true;
+    }
+
+    private void startNext(long now) {
+        for (Task t : tasks) {
+            if (t.state == TaskView.State.QUEUED) {
+                active = t;
+                t.state = TaskView.State.TO_PICKUP;
+                follow(t.toPickup);
+                say("starts " + t.id + ": to node " + t.from + " by " + t.toPickup);
+                return;
+            }
+        }
+    }
+
+    private void follow(List<Integer> nodes) {
+        route = new ArrayList<>(nodes);
+        index = 1;
+        doorAsked = null;
+        doorGranted = null;
+        stoppedSinceMs = -1;
+        lastNode = nodes.get(0);
+    }
+
+    private void drive(ChairReadings r, Pose pose, long now) {
+        if (index >= route.size()) {
+            arrived(now);
+            return;
+        }
+        int fromId = route.get(index - 1);
+        int toId = route.get(index);
+        Edge edge = map.edge(fromId, toId).orElse(null);
+        if (edge == null) {
+            replan(fromId, "the plan has no edge " + fromId + "-" + toId);
+            return;
+        }
+        Point target = waypoint(edge, fromId, toId);
+        if (control.reached(pose, target.x(), target.y())) {
+            if (edge.door() != null && edge.door().equals(doorPassing)) {
+                tellPassed(edge.door());
+            }
+            lastNode = toId;
+            index++;
+            stoppedSinceMs = -1;
+            if (index >= route.size()) {
+                arrived(now);
+            }
+            return;
+        }
+        if (edge.door() != null && !door(edge, fromId, pose)) {
+            chair.stop();
+            return;
+        }
+        double front = r.range(chair.layout().sensorIndex("front"));
+        double irl = r.range(chair.layout().sensorIndex("ir-front-left"));
+        double irr = r.range(chair.layout().sensorIndex("ir-front-right"));
+        if (front < STOP_M || irl < STOP_IR_M || irr < STOP_IR_M) {
+            chair.stop();
+            if (stoppedSinceMs < 0) {
+                stoppedSinceMs = now;
+                say(String.format(Locale.ROOT, "stops: something %.2f m ahead", Math.min(front, Math.min(irl, irr))));
+            } else if (now - stoppedSinceMs > BLOCKED_AFTER_MS) {
+                stoppedSinceMs = -1;
+                blocked(fromId, toId);
+            }
+            return;
+        }
+        stoppedSinceMs = -1;
+        PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
+        double scale = front < SLOW_M ? 0.35 : 1;
+        chair.drive(p.left() * scale, p.right() * scale);
+    }
+
+    /** Handles the door of the edge being driven; true if the chair may go on. */
+    private boolean door(Edge edge, int fromId, Pose pose) {
+        String id = edge.door();
+        if (id.equals(doorGranted) || id.equals(doorPassing)) {
+            doorPassing = id;
+            return true;
+        }
+        Door d = map.door(id);
+        double dist = pose.distanceTo(d.centre().x(), d.centre().y());
+        if (dist > ANNOUNCE_M) {
+            return true;
+        }
+        if (!id.equals(doorAsked)) {
+            AID agent = doorAgent(id);
+            if (agent == null) {
+                replan(fromId, "door " + id + " has no agent");
+                return false;
+            }
+            doorAsked = id;
+            AclMessage req = new AclMessage(Performative.REQUEST);
+            req.addReceiver(agent);
+            req.setProtocol(FipaProtocols.REQUEST);
+            req.setOntology(Services.ONTOLOGY);
+            req.setContent(Content.of("open").with("body", chair.name()).toString());
+            say("asks door " + id + " to open");
+            asks.ask(req, 60_000, agree -> { }).thenAccept(a -> {
+                if (!id.equals(doorAsked)) {
+                    return;
+                }
+                if (a != null && a.getPerformative() == Performative.INFORM) {
+                    doorGranted = id;
+                    say("door " + id + " is open for it");
+                } else {
+                    doorAsked = null;
+                    replan(fromId, "door " + id + (a == null ? " did not open within 60 s" : " answered " + a.getPerformative()
+                            + ": " + reason(a, "")));
+                }
+            });
+        }
+        return dist > WAIT_AT_DOOR_M;
+    }
+
+    private void tellPassed(String id) {
+        AID agent = doorAgent(id);
+        if (agent != null) {
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(agent);
+            m.setOntology(Services.ONTOLOGY);
+            m.setContent(Content.of("passed").with("body", chair.name()).toString());
+            send(m);
+        }
+        doorPassing = null;
+        doorGranted = null;
+        doorAsked = null;
+    }
+
+    private AID doorAgent(String id) {
+        for (AgentEntry e : Platform.of(this).search(ServiceDescription.of(Services.DOOR, id))) {
+            return e.aid();
+        }
+        return null;
+    }
+
+    private void blocked(int fromId, int toId) {
+        AID planner = planner();
+        say("edge " + fromId + "-" + toId + " blocked for " + BLOCKED_AFTER_MS / 1000 + " s: tells the planner and drives around");
+        if (planner != null) {
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(planner);
+            m.setOntology(Services.ONTOLOGY);
+            m.setContent(Content.of("blocked").with("from", fromId).with("to", toId).toString());
+            send(m);
+        }
+        replan(fromId, null);
+    }
+
+    /** Asks for a new plan from a node to the end of the current route; fails the task if none comes. */
+    private void replan(int fromId, String why) {
+        if (replanning) {
+            return;
+        }
+        if (why != null) {
+            say("replans: " + why);
+        }
+        AID planner = planner();
+        Task t = active;
+        int goal = route.get(route.size() - 1);
+        if (planner == null) {
+            finish(t, "no planner to replan with");
+            return;
+        }
+        replanning = true;
+        chair.stop();
+        plan(planner, t.id + "/replan", fromId, goal).thenAccept(a -> {
+            replanning = false;
+            if (active != t) {
+                return;
+            }
+            if (a.getPerformative() != Performative.INFORM_REF) {
+                finish(t, reason(a, "no new plan from " + fromId + " to " + goal) + (why == null ? "" : " (" + why + ")"));
+                return;
+            }
+            List<Integer> nodes = nodes(Content.parse(a.getContent()));
+            // Drive back to the node the new plan starts from first, if the chair left it.
+            follow(nodes);
+            say("new plan " + nodes);
+        });
+    }
+
+    private void arrived(long now) {
+        chair.stop();
+        if (active.state == TaskView.State.TO_PICKUP) {
+            active.state = TaskView.State.LOADING;
+            pauseUntilMs = now + (long) (active.unloadS * 1000);
+            say("at node " + active.from + ": the patient gets on (" + (long) active.unloadS + " s)");
+        } else if (active.state == TaskView.State.TO_DROPOFF) {
+            active.state = TaskView.State.UNLOADING;
+            pauseUntilMs = now + (long) (active.unloadS * 1000);
+            say("at node " + active.to + ": the patient gets off (" + (long) active.unloadS + " s)");
+        }
+    }
+
+    private void finish(Task t, String failure) {
+        if (t == null) {
+            return;
+        }
+        chair.stop();
+        t.state = failure == null ? TaskView.State.DONE : TaskView.State.FAILED;
+        t.reason = failure;
+        if (t.accept != null) {
+            AclMessage reply = t.accept.createReply();
+            if (failure == null) {
+                reply.setPerformative(Performative.INFORM).setContent(Content.of("done").with("task", t.id)
+                        .with("node", t.to).toString());
+                say("done: " + t.id);
+            } else {
+                reply.setPerformative(Performative.FAILURE).setContent(Content.of("failed").with("task", t.id)
+                        .with("reason", failure).toString());
+                say("fails " + t.id + ": " + failure);
+            }
+            send(reply);
+        }
+        if (active == t) {
+            active = null;
+            route = null;
+            stopReason = null;
+        }
+    }
+
+    /** The node to drive to, moved right of the edge's line on long corridor edges with no door. */
+    private Point waypoint(Edge edge, int fromId, int toId) {
+        Point a = map.node(fromId).at();
+        Point b = map.node(toId).at();
+        double len = a.distanceTo(b);
+        Area ka = map.areaAt(a).orElse(null);
+        Area kb = map.areaAt(b).orElse(null);
+        boolean last = route != null && toId == route.get(route.size() - 1);
+        boolean corridor = !last && edge.door() == null && len > 2.5 && ka != null && kb != null
+                && ka.kind() != Area.Kind.ROOM && kb.kind() != Area.Kind.ROOM;
+        if (!corridor) {
+            return b;
+        }
+        return new Point(b.x() + (b.y() - a.y()) / len * KEEP_RIGHT_M, b.y() - (b.x() - a.x()) / len * KEEP_RIGHT_M);
+    }
+
+    @Override
+    public String toString() {
+        return "ControlAgent[" + getLocalName() + " on " + chair.name() + " tasks " + Arrays.toString(tasks().toArray()) + "]";
+    }
+}

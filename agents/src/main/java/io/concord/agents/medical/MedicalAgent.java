@@ -1,0 +1,261 @@
+package io.concord.agents.medical;
+
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.proto.ContractNetInitiator;
+import io.concord.core.proto.FipaProtocols;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+
+/**
+ * The Medical agent: takes patient transports (from code, {@link #transport}, or by ACL REQUEST
+ * {@code transport; from; to; priority; unload}), and gives each to a chair by FIPA Contract Net:
+ * a CFP to every chair in the yellow pages with a deadline, the best proposal by the utility
+ * U = 100 (3 + TP) / (3 Cost + TP (Path + Unload)), ACCEPT-PROPOSAL to it and REJECT-PROPOSAL to
+ * the others. Several auctions run at once, each with its own deadline. A task whose chair fails,
+ * or sends no result by the time its proposal's cost allows (three times it, and two minutes), is
+ * auctioned again, up to three times.
+ */
+public class MedicalAgent extends Agent {
+    /** The priorities of the dissertation: routine, urgent, emergency. */
+    public static final double[] PRIORITIES = {0, 1.5, 3};
+
+    /**
+     * How a transport ended.
+     *
+     * @param task     its id
+     * @param done     true if a chair reported it done
+     * @param chair    the chair that did it or failed it last, or null
+     * @param reason   why it failed, or null
+     * @param auctions how many auctions it took
+     */
+    public record Outcome(String task, boolean done, String chair, String reason, int auctions) {
+    }
+
+    /** Settings: how long chairs have to propose, and how many auctions a task gets. */
+    public record Settings(long auctionMs, int maxAuctions) {
+        /** Two seconds to propose, three auctions. */
+        public static Settings standard() {
+            return new Settings(2_000, 3);
+        }
+    }
+
+    private final Settings settings;
+    private final Consumer<String> log;
+    private final Map<String, CompletableFuture<Outcome>> open = new LinkedHashMap<>();
+    private long next;
+
+    /** A Medical agent with the standard settings. */
+    public MedicalAgent(Consumer<String> log) {
+        this(Settings.standard(), log);
+    }
+
+    public MedicalAgent(Settings settings, Consumer<String> log) {
+        this.settings = settings;
+        this.log = log;
+    }
+
+    /** The utility of a proposal (the dissertation's equation 6.1). */
+    public static double utility(double cost, double path, double unload, double priority) {
+        return 100 * (3 + priority) / (3 * cost + priority * (path + unload));
+    }
+
+    @Override
+    protected void setup() {
+        Platform.of(this).register(ServiceDescription.of(Services.MEDICAL, getLocalName()));
+        MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST)
+                .and(m -> m.getContent() != null && m.getContent().startsWith("transport"));
+        addBehaviour(new CyclicBehaviour(this) {
+            @Override
+            public void action() {
+                AclMessage m = receive(requests);
+                if (m == null) {
+                    block();
+                    return;
+                }
+                Content c;
+                try {
+                    c = Content.parse(m.getContent());
+                    int from = c.integer("from");
+                    int to = c.integer("to");
+                    double tp = c.number("priority", 0);
+                    double unload = c.number("unload", 60);
+                    send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));
+                    transportOnLoop(from, to, tp, unload).thenAccept(o -> send(m.createReply()
+                            .setPerformative(o.done() ? Performative.INFORM : Performative.FAILURE)
+                            .setContent(Content.of(o.done() ? "done" : "failed").with("task", o.task())
+                                    .with("chair", o.chair()).with("reason", o.reason() == null ? "" : o.reason()).toString())));
+                } catch (IllegalArgumentException e) {
+                    send(m.createReply().setPerformative(Performative.REFUSE).setContent(
+                            Content.of("refuse").with("reason", e.getMessage()).toString()));
+                }
+            }
+        });
+    }
+
+    /**
+     * Asks for a patient to be taken from one node to another. Thread-safe: from another thread
+     * the auction starts on the agent's loop.
+     *
+     * @param priority TP: 0, 1.5 or 3
+     * @param unloadS  seconds to load and to unload the patient
+     */
+    public CompletableFuture<Outcome> transport(int from, int to, double priority, double unloadS) {
+        if (runtime().inLoop()) {
+            return transportOnLoop(from, to, priority, unloadS);
+        }
+        CompletableFuture<Outcome> f = new CompletableFuture<>();
+        runtime().execute(() -> transportOnLoop(from, to, priority, unloadS).whenComplete((o, e) -> {
+            if (e != null) {
+                f.completeExceptionally(e);
+            } else {
+                f.complete(o);
+            }
+        }));
+        return f;
+    }
+
+    private CompletableFuture<Outcome> transportOnLoop(int from, int to, double priority, double unloadS) {
+        if (priority < 0) {
+            throw new IllegalArgumentException("priority must be 0 or more (0, 1.5 or 3), got " + priority);
+        }
+        String id = "T" + (++next);
+        CompletableFuture<Outcome> f = new CompletableFuture<>();
+        open.put(id, f);
+        f.whenComplete((o, e) -> open.remove(id));
+        log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
+                getLocalName(), id, from, to, priority, unloadS));
+        auction(id, from, to, priority, unloadS, 1, f);
+        return f;
+    }
+
+    /** Transports not ended yet. */
+    public int openTransports() {
+        return open.size();
+    }
+
+    private void auction(String id, int from, int to, double tp, double unload, int round, CompletableFuture<Outcome> f) {
+        List<AID> chairs = new ArrayList<>();
+        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.TRANSPORT))) {
+            chairs.add(e.aid());
+        }
+        if (chairs.isEmpty()) {
+            f.complete(new Outcome(id, false, null, "no chair in the yellow pages", round));
+            log.accept(getLocalName() + ": " + id + " cannot be done: no chair in the yellow pages");
+            return;
+        }
+        AclMessage cfp = new AclMessage(Performative.CFP);
+        chairs.forEach(cfp::addReceiver);
+        cfp.setProtocol(FipaProtocols.CONTRACT_NET);
+        cfp.setOntology(Services.ONTOLOGY);
+        cfp.setConversationId(id + "-" + round);
+        cfp.setReplyByEpochMs(currentTimeMillis() + settings.auctionMs());
+        cfp.setContent(Content.of("transport").with("task", id).with("from", from).with("to", to)
+                .with("priority", tp).with("unload", unload).toString());
+        log.accept(getLocalName() + ": CFP " + id + (round > 1 ? " (auction " + round + ")" : "") + " to " + chairs.size() + " chairs");
+        addBehaviour(new ContractNetInitiator(this, cfp) {
+            private AclMessage winner;
+
+            @Override
+            protected void handleAllResponses(List<AclMessage> responses, List<AclMessage> acceptances) {
+                double best = -1;
+                for (AclMessage r : responses) {
+                    if (r.getPerformative() == Performative.PROPOSE) {
+                        try {
+                            Content p = Content.parse(r.getContent());
+                            double u = utility(p.number("cost"), p.number("path"), p.number("unload"), tp);
+                            log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f, path %.1f: U = %.3f",
+                                    getLocalName(), r.getSender().localName(), p.number("cost"), p.number("path"), u));
+                            if (u > best) {
+                                best = u;
+                                winner = r;
+                            }
+                        } catch (IllegalArgumentException e) {
+                            log.accept(getLocalName() + ": ignores a malformed proposal from " + r.getSender().name() + ": " + e.getMessage());
+                        }
+                    } else if (r.getPerformative() == Performative.REFUSE) {
+                        log.accept(getLocalName() + ": " + r.getSender().localName() + " refuses " + id + ": " + reasonOf(r));
+                    }
+                }
+                for (AclMessage r : responses) {
+                    if (r.getPerformative() != Performative.PROPOSE) {
+                        continue;
+                    }
+                    AclMessage reply = r.createReply();
+                    if (r == winner) {
+                        reply.setPerformative(Performative.ACCEPT_PROPOSAL);
+                        double cost = Content.parse(r.getContent()).number("cost");
+                        reply.setReplyByEpochMs(currentTimeMillis() + (long) (cost * 3_000) + 120_000);
+                        log.accept(getLocalName() + ": ACCEPT " + r.getSender().localName() + " for " + id);
+                    } else {
+                        reply.setPerformative(Performative.REJECT_PROPOSAL);
+                    }
+                    reply.setContent(Content.of("transport").with("task", id).toString());
+                    acceptances.add(reply);
+                }
+                if (winner == null) {
+                    f.complete(new Outcome(id, false, null, "no chair proposed", round));
+                    log.accept(getLocalName() + ": nobody can do " + id);
+                }
+            }
+
+            @Override
+            protected void handleInform(AclMessage inform) {
+                log.accept(getLocalName() + ": " + inform.getSender().localName() + " reports " + id + " done");
+                f.complete(new Outcome(id, true, inform.getSender().localName(), null, round));
+            }
+
+            @Override
+            protected void handleFailure(AclMessage failure) {
+                if (winner != null && failure.getSender().equals(winner.getSender())) {
+                    String why = reasonOf(failure);
+                    log.accept(getLocalName() + ": " + failure.getSender().localName() + " failed " + id + ": " + why);
+                    again(failure.getSender().localName() + " failed: " + why);
+                }
+            }
+
+            @Override
+            protected void handleAllResultNotifications(List<AclMessage> results) {
+                if (winner != null && !f.isDone() && results.stream().noneMatch(r -> r.getPerformative() == Performative.FAILURE)) {
+                    log.accept(getLocalName() + ": " + winner.getSender().localName() + " went silent on " + id);
+                    again(winner.getSender().localName() + " went silent");
+                }
+            }
+
+            private void again(String why) {
+                if (f.isDone()) {
+                    return;
+                }
+                if (round >= settings.maxAuctions()) {
+                    f.complete(new Outcome(id, false, winner.getSender().localName(), why, round));
+                } else {
+                    auction(id, from, to, tp, unload, round + 1, f);
+                }
+            }
+        });
+    }
+
+    private static String reasonOf(AclMessage m) {
+        try {
+            String r = Content.parse(m.getContent()).get("reason");
+            return r == null ? m.getContent() : r;
+        } catch (IllegalArgumentException e) {
+            return String.valueOf(m.getContent());
+        }
+    }
+}

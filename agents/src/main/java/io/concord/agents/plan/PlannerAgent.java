@@ -1,0 +1,250 @@
+package io.concord.agents.plan;
+
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.proto.Asks;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.TickerBehaviour;
+import io.concord.core.proto.Conversations;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+
+/**
+ * The cognitive agent, one per chair: plans routes with A* on the map's graph, and gives out only
+ * plans that every door on them confirmed for the chair.
+ *
+ * <ul>
+ *   <li>REQUEST {@code plan; task=T; from=19; to=3}: REFUSE (unknown node), or AGREE and then
+ *       INFORM-REF {@code plan; task=T; nodes=19,22,...; doors=WA,A2; length=..} or FAILURE
+ *       {@code no-route; reason=..}.</li>
+ *   <li>It finds the doors in the DF and subscribes to each (position and state); an OFFLINE door
+ *       is planned around. Before giving a plan out it asks every door on it to let the chair
+ *       pass (REQUEST {@code pass}); a door that refuses is planned around, up to three times.</li>
+ *   <li>INFORM {@code blocked; from=a; to=b} from its chair: that edge is avoided for a minute.</li>
+ * </ul>
+ */
+public class PlannerAgent extends Agent {
+    /** A door as the planner knows it. */
+    public record KnownDoor(String id, AID agent, String state) {
+    }
+
+    private static final long BLOCKED_MS = 60_000;
+    private static final int ATTEMPTS = 3;
+    private static final double DOOR_PENALTY_M = 4;
+
+    private final HospitalMap map;
+    private final String chair;
+    private final Consumer<String> log;
+    private final AStar astar;
+    private final Map<String, KnownDoor> doors = new LinkedHashMap<>();
+    private final Map<String, Long> blocked = new HashMap<>();
+    private Asks asks;
+    private long plans;
+
+    /**
+     * @param map   the map to plan on
+     * @param chair the name of the control agent it plans for (its yellow-pages property)
+     * @param log   told of every plan given out and refused
+     */
+    public PlannerAgent(HospitalMap map, String chair, Consumer<String> log) {
+        this.map = map;
+        this.chair = chair;
+        this.log = log;
+        this.astar = new AStar(RouteGraph.of(map), DOOR_PENALTY_M);
+    }
+
+    @Override
+    protected void setup() {
+        Platform.of(this).register(ServiceDescription.of(Services.PLANNER, getLocalName()).withProperty("chair", chair));
+        asks = new Asks(this);
+        addBehaviour(asks);
+        addBehaviour(new TickerBehaviour(this, 1_000) {
+            @Override
+            protected void onTick() {
+                discoverDoors();
+            }
+        });
+        discoverDoors();
+        MessageTemplate mine = MessageTemplate.matchPerformative(Performative.REQUEST)
+                .or(MessageTemplate.matchPerformative(Performative.INFORM).and(m -> m.getContent() != null
+                        && m.getContent().startsWith("blocked")));
+        addBehaviour(new CyclicBehaviour(this) {
+            @Override
+            public void action() {
+                AclMessage m = receive(mine);
+                if (m == null) {
+                    block();
+                    return;
+                }
+                handle(m);
+            }
+        });
+    }
+
+    /** The doors it knows, with their last state. */
+    public List<KnownDoor> knownDoors() {
+        return new ArrayList<>(doors.values());
+    }
+
+    /** Plans given out so far. */
+    public long plansGiven() {
+        return plans;
+    }
+
+    private void discoverDoors() {
+        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.DOOR))) {
+            for (ServiceDescription s : e.services()) {
+                if (!s.type().equals(Services.DOOR) || doors.containsKey(s.name())) {
+                    continue;
+                }
+                String id = s.name();
+                AID agent = e.aid();
+                doors.put(id, new KnownDoor(id, agent, "unknown"));
+                AclMessage sub = new AclMessage(Performative.SUBSCRIBE);
+                sub.addReceiver(agent);
+                sub.setProtocol("fipa-subscribe");
+                sub.setOntology(Services.ONTOLOGY);
+                sub.setContent(Content.of("state").toString());
+                var handle = Conversations.subscribe(this, sub, n -> update(id, agent, n));
+                handle.agreed().thenAccept(agree -> update(id, agent, agree));
+            }
+        }
+    }
+
+    private void update(String id, AID agent, AclMessage m) {
+        try {
+            Content c = Content.parse(m.getContent());
+            if (c.is("state")) {
+                doors.put(id, new KnownDoor(id, agent, c.text("state")));
+            }
+        } catch (IllegalArgumentException e) {
+            // a door that says something else keeps its last state
+        }
+    }
+
+    private void handle(AclMessage m) {
+        Content c;
+        try {
+            c = Content.parse(m.getContent());
+        } catch (IllegalArgumentException e) {
+            send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent(e.getMessage()));
+            return;
+        }
+        if (m.getPerformative() == Performative.INFORM) {
+            try {
+                String key = AStar.edgeKey(c.integer("from"), c.integer("to"));
+                blocked.put(key, currentTimeMillis() + BLOCKED_MS);
+                log.accept(getLocalName() + ": edge " + key + " blocked, planned around for " + BLOCKED_MS / 1000 + " s");
+            } catch (IllegalArgumentException e) {
+                // ignore a malformed report
+            }
+            return;
+        }
+        if (!c.is("plan")) {
+            send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("a planner knows 'plan'"));
+            return;
+        }
+        int from;
+        int to;
+        String task;
+        try {
+            from = c.integer("from");
+            to = c.integer("to");
+            task = c.text("task");
+        } catch (IllegalArgumentException e) {
+            send(m.createReply().setPerformative(Performative.REFUSE).setContent(
+                    Content.of("refuse").with("reason", e.getMessage()).toString()));
+            return;
+        }
+        for (int n : new int[] {from, to}) {
+            if (!map.hasNode(n)) {
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(Content.of("refuse")
+                        .with("task", task).with("reason", "unknown node " + n).toString()));
+                return;
+            }
+        }
+        send(m.createReply().setPerformative(Performative.AGREE).setContent(Content.of("plan").with("task", task).toString()));
+        String forChair = c.get("chair") != null ? c.get("chair") : m.getSender().name();
+        plan(m, task, from, to, forChair, new HashSet<>(), ATTEMPTS);
+    }
+
+    private void plan(AclMessage request, String task, int from, int to, String forChair, Set<String> refused, int attempts) {
+        long now = currentTimeMillis();
+        blocked.values().removeIf(until -> until <= now);
+        Route r = astar.find(from, to, blocked.keySet(), d -> !refused.contains(d) && doorUsable(d));
+        if (r == null) {
+            String why = "no route from " + from + " to " + to + (refused.isEmpty() ? "" : " avoiding doors " + refused)
+                    + (blocked.isEmpty() ? "" : " and blocked edges " + blocked.keySet());
+            log.accept(getLocalName() + ": " + task + " " + why);
+            send(request.createReply().setPerformative(Performative.FAILURE).setContent(
+                    Content.of("no-route").with("task", task).with("reason", why).toString()));
+            return;
+        }
+        // Every door on the plan must let the chair pass.
+        List<CompletableFuture<AclMessage>> answers = new ArrayList<>();
+        for (String d : r.doors()) {
+            KnownDoor k = doors.get(d);
+            AclMessage ask = new AclMessage(Performative.REQUEST);
+            ask.addReceiver(k.agent());
+            ask.setProtocol("fipa-request");
+            ask.setOntology(Services.ONTOLOGY);
+            ask.setContent(Content.of("pass").with("chair", forChair).with("task", task).toString());
+            answers.add(asks.ask(ask, 2_000, null));
+        }
+        CompletableFuture.allOf(answers.toArray(new CompletableFuture[0])).thenRun(() -> {
+            Set<String> now2 = new HashSet<>(refused);
+            for (int i = 0; i < answers.size(); i++) {
+                AclMessage a = answers.get(i).join();
+                if (a == null || a.getPerformative() != Performative.CONFIRM) {
+                    now2.add(r.doors().get(i));
+                }
+            }
+            if (now2.size() == refused.size()) {
+                plans++;
+                log.accept(getLocalName() + ": " + task + " plan " + r.nodes() + " through " + r.doors() + " confirmed");
+                AclMessage inform = request.createReply().setPerformative(Performative.INFORM_REF);
+                inform.setContent(Content.of("plan").with("task", task).with("nodes", join(r.nodes()))
+                        .with("doors", String.join(",", r.doors())).with("length", r.lengthM()).toString());
+                send(inform);
+            } else if (attempts > 1) {
+                plan(request, task, from, to, forChair, now2, attempts - 1);
+            } else {
+                send(request.createReply().setPerformative(Performative.FAILURE).setContent(Content.of("no-route")
+                        .with("task", task).with("reason", "doors " + now2 + " refused the chair").toString()));
+            }
+        });
+    }
+
+    private boolean doorUsable(String id) {
+        KnownDoor k = doors.get(id);
+        return k != null && !k.state().equals("offline");
+    }
+
+    private static String join(List<Integer> nodes) {
+        StringBuilder b = new StringBuilder();
+        for (int n : nodes) {
+            if (b.length() > 0) {
+                b.append(',');
+            }
+            b.append(n);
+        }
+        return b.toString();
+    }
+}

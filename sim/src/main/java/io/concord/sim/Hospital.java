@@ -1,0 +1,84 @@
+package io.concord.sim;
+
+import io.concord.agents.control.ControlAgent;
+import io.concord.agents.door.DoorAgent;
+import io.concord.agents.plan.PlannerAgent;
+import io.concord.layers.platform.Platform;
+import io.concord.sim.world.HospitalWorld;
+import io.concord.sim.world.SimChair;
+import io.concord.sim.world.WorldDoor;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Consumer;
+
+/**
+ * The hospital's agents on a platform: a door agent for every door of the world
+ * ({@code door-<id>}), and for every chair a planner ({@code planner-<chair>}) and a control agent
+ * ({@code control-<chair>}). The Medical agent runs wherever the staff are, on any runtime of the
+ * same platform.
+ */
+public final class Hospital {
+    private final Map<String, DoorAgent> doors = new LinkedHashMap<>();
+    private final Map<String, PlannerAgent> planners = new LinkedHashMap<>();
+    private final Map<String, ControlAgent> controls = new LinkedHashMap<>();
+
+    private Hospital() {
+    }
+
+    /** Starts the door agents and every chair's agents on the platform; call on its loop. */
+    public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log) {
+        Hospital h = new Hospital();
+        for (WorldDoor d : world.doors()) {
+            DoorAgent a = new DoorAgent(d, DoorAgent.Settings.standard(), log);
+            platform.startAgent("door-" + d.id(), a);
+            h.doors.put(d.id(), a);
+        }
+        for (SimChair c : world.chairs()) {
+            h.addChair(platform, world, c, log);
+        }
+        return h;
+    }
+
+    /** Starts the planner and the control agent of a chair. */
+    public void addChair(Platform platform, HospitalWorld world, SimChair c, Consumer<String> log) {
+        PlannerAgent p = new PlannerAgent(world.map(), c.name(), log);
+        platform.startAgent("planner-" + c.name(), p);
+        planners.put(c.name(), p);
+        ControlAgent a = new ControlAgent(c, world.map(), log);
+        platform.startAgent("control-" + c.name(), a);
+        controls.put(c.name(), a);
+    }
+
+    /** The door agent of a door. */
+    public DoorAgent door(String id) {
+        return doors.get(id);
+    }
+
+    /** The planner of a chair. */
+    public PlannerAgent planner(String chair) {
+        return planners.get(chair);
+    }
+
+    /** The control agent of a chair. */
+    public ControlAgent control(String chair) {
+        return controls.get(chair);
+    }
+
+    /** Every control agent. */
+    public List<ControlAgent> controls() {
+        return new ArrayList<>(controls.values());
+    }
+
+    /** True once every planner knows every door (the yellow pages have spread). */
+    public boolean ready() {
+        for (PlannerAgent p : planners.values()) {
+            if (p.knownDoors().size() < doors.size() || p.knownDoors().stream().anyMatch(k -> k.state().equals("unknown"))) {
+                return false;
+            }
+        }
+        return true;
+    }
+}
