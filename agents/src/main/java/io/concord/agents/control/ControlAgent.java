@@ -174,6 +174,12 @@ public class ControlAgent extends Agent implements ChairListener {
         }
     }
 
+    @Override
+    protected void takeDown() {
+        chair.stop();
+        chair.setListener(null);
+    }
+
     /** The tasks it holds, in order, with their states. */
     public List<TaskView> tasks() {
         return tasks.stream().map(Task::view).toList();
@@ -356,6 +362,9 @@ public class ControlAgent extends Agent implements ChairListener {
 
     @Override
     public void onReadings(ChairReadings r) {
+        if (getState() != State.ACTIVE) {
+            return;
+        }
         Pose pose = localiser.update(r);
         // Loading, unloading and stalls are timed on the chair's clock.
         long now = r.timeNs() / 1_000_000;

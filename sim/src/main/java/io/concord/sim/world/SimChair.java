@@ -83,6 +83,8 @@ public final class SimChair implements ChairDriver {
     private final Track truth;
     private final Track dead;
     private boolean removed;
+    private long listenerFailures;
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(SimChair.class);
 
     // scratch, so that a step allocates nothing
     private final Vec2 tmp = new Vec2();
@@ -216,6 +218,11 @@ public final class SimChair implements ChairDriver {
     /** True while the body touches anything. */
     public boolean touching() {
         return contacts > 0;
+    }
+
+    /** Reports on which the listener threw (each counted, the first logged). */
+    public long listenerFailures() {
+        return listenerFailures;
     }
 
     /** Contacts begun since the chair was added. */
@@ -399,7 +406,14 @@ public final class SimChair implements ChairDriver {
         truth.offer(body.getPosition().x, body.getPosition().y);
         dead.offer(odo.x(), odo.y());
         if (listener != null) {
-            listener.onReadings(latest);
+            try {
+                listener.onReadings(latest);
+            } catch (RuntimeException e) {
+                // One driver's fault must not stop the world: count it, say it once, go on.
+                if (listenerFailures++ == 0) {
+                    LOG.warn("the listener of chair {} failed on a report; the world goes on", name, e);
+                }
+            }
         }
     }
 

@@ -56,6 +56,7 @@ public final class WorldDoor implements DoorDriver {
     private long contacts;
     private boolean mechanismFailed;
     private DoorListener listener;
+    private long listenerFailures;
 
     private final Shape doorwayShape;
     private final Shape sweepShape;
@@ -290,7 +291,11 @@ public final class WorldDoor implements DoorDriver {
         if (Math.abs(err) <= (slide != null ? ARRIVED_M : ARRIVED_RAD)) {
             motion = Motion.STILL;
             if (listener != null) {
-                listener.onArrived(this);
+                try {
+                    listener.onArrived(this);
+                } catch (RuntimeException e) {
+                    listenerFailures++;
+                }
             }
             return;
         }
@@ -301,7 +306,11 @@ public final class WorldDoor implements DoorDriver {
             lastContact = met;
             contacts++;
             if (listener != null) {
-                listener.onContact(this, met);
+                try {
+                    listener.onContact(this, met);
+                } catch (RuntimeException e) {
+                    listenerFailures++;
+                }
             }
         }
     }

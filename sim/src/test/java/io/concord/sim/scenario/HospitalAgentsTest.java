@@ -1,0 +1,243 @@
+package io.concord.sim.scenario;
+
+import io.concord.agents.door.DoorAgent;
+import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.proto.Asks;
+import io.concord.agents.proto.Content;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.testkit.FaultPlan;
+import io.concord.sim.world.ChairConfig;
+import io.concord.sim.world.WorldDoor;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.concurrent.CompletableFuture;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The agents' rules one by one, in the default hospital on the virtual clock. */
+class HospitalAgentsTest {
+
+    /** Sends what a test asks it to and keeps the answers. */
+    static final class Probe extends Agent {
+        Asks asks;
+
+        @Override
+        protected void setup() {
+            asks = new Asks(this);
+            addBehaviour(asks);
+        }
+
+        CompletableFuture<AclMessage> ask(String to, String content) {
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(AID.local(to, "hospital"));
+            m.setContent(content);
+            return asks.ask(m, 30_000, null);
+        }
+
+        void tell(String to, String content) {
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(AID.local(to, "hospital"));
+            m.setContent(content);
+            send(m);
+        }
+    }
+
+    private static AclMessage await(ScenarioTest.Run r, CompletableFuture<AclMessage> f) {
+        assertTrue(r.sim.runUntil(f::isDone, 60_000), "an answer");
+        return f.join();
+    }
+
+    @Test
+    void theMedicalAgentPicksTheChairOfBestUtility() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
+            r.world.addChair("far", ChairConfig.standard().withWatchdog(0.3), r.world.poseAt(31, 90));
+            r.world.addChair("near", ChairConfig.standard().withWatchdog(0.3), r.world.poseAt(19, 90));
+            r.hospital.addChair(r.platform, r.world, r.world.chair("far"), r.log::add);
+            r.hospital.addChair(r.platform, r.world, r.world.chair("near"), r.log::add);
+            assertTrue(r.sim.runUntil(r.hospital::ready, 60_000));
+            var f = r.medical.transport(3, 9, 3, 30);
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertTrue(f.join().done(), f.join().toString());
+            assertEquals("control-near", f.join().chair(), "the chair in the lobby is nearer node 3");
+            assertTrue(r.log.stream().anyMatch(l -> l.startsWith("medical: control-far proposes")), "both proposed");
+        }
+    }
+
+    @Test
+    void aTaskToAnUnknownNodeIsRefusedWithTheReason() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
+            var f = r.medical.transport(3, 99, 0, 30);
+            assertTrue(r.sim.runUntil(f::isDone, 60_000));
+            assertFalse(f.join().done());
+            assertEquals("no chair proposed", f.join().reason());
+            assertTrue(r.log.contains("medical: control-chair1 refuses T1: unknown node 99"), String.join("\n", r.log));
+        }
+    }
+
+    @Test
+    void aWardBehindAnOfflineDoorIsUnreachableAndTheChairSaysSo() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
+            r.world.door("WB").setMechanismFailed(true);
+            assertTrue(r.sim.runUntil(() -> r.hospital.planner("chair1").knownDoors().stream()
+                    .anyMatch(d -> d.id().equals("WB") && d.state().equals("offline")), 5_000), "the planner heard WB go offline");
+            var f = r.medical.transport(3, 9, 0, 30);
+            assertTrue(r.sim.runUntil(f::isDone, 60_000));
+            assertFalse(f.join().done());
+            assertTrue(r.log.stream().anyMatch(l -> l.startsWith("medical: control-chair1 refuses T1: no route from 3 to 9")),
+                    String.join("\n", r.log));
+        }
+    }
+
+    @Test
+    void aDoorOpensOnlyForAChairItConfirmedAndClosesAfterItsTimeout() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
+            Probe p = new Probe();
+            r.platform.startAgent("stranger", p);
+            r.sim.runFor(2_000);
+            AclMessage refused = await(r, p.ask("door-A1", "open; body=nobody"));
+            assertEquals(Performative.REFUSE, refused.getPerformative());
+            assertTrue(refused.getContent().contains("not confirmed"), refused.getContent());
+            DoorAgent door = r.hospital.door("A1");
+            assertEquals(DoorAgent.State.CLOSED, door.state());
+            // A planner confirms the stranger; now it may ask.
+            assertEquals(Performative.CONFIRM, await(r, p.ask("door-A1", "pass; chair=stranger@hospital")).getPerformative());
+            AclMessage open = await(r, p.ask("door-A1", "open; body=nobody"));
+            assertEquals(Performative.INFORM, open.getPerformative());
+            assertEquals(DoorAgent.State.OPEN, door.state());
+            assertTrue(r.world.door("A1").isOpen());
+            p.tell("door-A1", "passed");
+            // Five seconds with nobody in the doorway, then it closes.
+            r.sim.runFor(4_000);
+            assertEquals(DoorAgent.State.OPEN, door.state());
+            r.sim.runFor(5_000);
+            assertEquals(DoorAgent.State.CLOSED, door.state(), r.log.toString());
+            assertTrue(r.world.door("A1").isClosed());
+        }
+    }
+
+    @Test
+    void aClosingDoorThatMeetsAChairStopsAndOpensAgain() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
+            Probe p = new Probe();
+            r.platform.startAgent("stranger", p);
+            r.sim.runFor(2_000);
+            await(r, p.ask("door-A1", "pass; chair=stranger@hospital"));
+            await(r, p.ask("door-A1", "open; body=nobody"));
+            p.tell("door-A1", "passed");
+            DoorAgent door = r.hospital.door("A1");
+            assertTrue(r.sim.runUntil(() -> door.state() == DoorAgent.State.CLOSING, 10_000));
+            // A chair rolls into the leaf's way in the room as it closes.
+            r.world.addChair("chair1", ChairConfig.standard().noiseless(), new io.concord.agents.chair.Pose(2.9, 13.9, 0));
+            assertTrue(r.sim.runUntil(() -> r.log.contains("A1: stopped closing on chair1, opens again"), 10_000), r.log.toString());
+            assertTrue(r.sim.runUntil(() -> door.state() == DoorAgent.State.OPEN, 10_000));
+            assertEquals(0, r.world.chair("chair1").truePose().distanceTo(2.9, 13.9), 0.03, "not pushed");
+            // While the chair stays in the sweep, the door does not close on it.
+            r.sim.runFor(20_000);
+            assertEquals(DoorAgent.State.OPEN, door.state());
+        }
+    }
+
+    @Test
+    void aDoorWhoseMechanismFailsIsOfflineAndRefusesPassage() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
+            Probe p = new Probe();
+            r.platform.startAgent("stranger", p);
+            r.sim.runFor(2_000);
+            WorldDoor d = r.world.door("B2");
+            d.setMechanismFailed(true);
+            assertTrue(r.sim.runUntil(() -> r.hospital.door("B2").state() == DoorAgent.State.OFFLINE, 1_000));
+            AclMessage refused = await(r, p.ask("door-B2", "pass; chair=stranger@hospital"));
+            assertEquals(Performative.REFUSE, refused.getPerformative());
+            assertEquals("offline", Content.parse(refused.getContent()).get("reason"));
+            d.setMechanismFailed(false);
+            assertTrue(r.sim.runUntil(() -> r.hospital.door("B2").state() == DoorAgent.State.CLOSED, 1_000));
+            assertEquals(Performative.CONFIRM, await(r, p.ask("door-B2", "pass; chair=stranger@hospital")).getPerformative());
+        }
+    }
+
+    @Test
+    void aDoorLetsOneChairThroughAtATime() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
+            Probe a = new Probe();
+            Probe b = new Probe();
+            r.platform.startAgent("a", a);
+            r.platform.startAgent("b", b);
+            r.sim.runFor(2_000);
+            await(r, a.ask("door-WA", "pass; chair=a@hospital"));
+            await(r, b.ask("door-WA", "pass; chair=b@hospital"));
+            var first = a.ask("door-WA", "open; body=ca");
+            assertEquals(Performative.INFORM, await(r, first).getPerformative());
+            // Chair a stands in the doorway, now open.
+            r.world.addChair("ca", ChairConfig.standard().noiseless(), new io.concord.agents.chair.Pose(19.5, 10.8, 0));
+            var second = b.ask("door-WA", "open; body=cb");
+            r.sim.runFor(10_000);
+            assertFalse(second.isDone(), "b waits while a is in the doorway");
+            assertEquals(java.util.List.of("b@hospital"), r.hospital.door("WA").waiting());
+            a.tell("door-WA", "passed");
+            r.sim.runFor(2_000);
+            assertFalse(second.isDone(), "a said it passed, but its chair is still in the doorway");
+            r.world.removeChair("ca");
+            assertEquals(Performative.INFORM, await(r, second).getPerformative());
+        }
+    }
+
+    @Test
+    void aSessionLapsesWhenTheChairGoesSilent() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
+            Probe p = new Probe();
+            r.platform.startAgent("stranger", p);
+            r.sim.runFor(2_000);
+            await(r, p.ask("door-A3", "pass; chair=stranger@hospital"));
+            assertEquals(java.util.List.of("stranger@hospital"), r.hospital.door("A3").sessions());
+            r.sim.runFor(50_000);
+            p.tell("door-A3", "here");
+            r.sim.runFor(50_000);
+            assertEquals(java.util.List.of("stranger@hospital"), r.hospital.door("A3").sessions(), "kept alive");
+            r.sim.runFor(70_000);
+            assertTrue(r.hospital.door("A3").sessions().isEmpty(), "lapsed after 60 s of silence");
+            assertEquals(Performative.REFUSE, await(r, p.ask("door-A3", "open; body=x")).getPerformative());
+        }
+    }
+
+    @Test
+    void aTaskWhoseChairCrashesIsAuctionedAgainAndDone() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(11, FaultPlan.NONE, 2)) {
+            var f = r.medical.transport(3, 9, 3, 30);
+            // chair1 (parked at 19, a little nearer) wins and sets off; its agent dies at once, leaving the
+            // chair where it stood, off chair2's way.
+            assertTrue(r.sim.runUntil(() -> r.log.stream().anyMatch(l -> l.startsWith("control-chair1: starts T1")), 60_000),
+                    String.join("\n", r.log));
+            AID c1 = r.rt.agents().stream().filter(a -> a.localName().equals("control-chair1")).findFirst().orElseThrow();
+            r.rt.crashAgent(c1);
+            boolean ended = r.sim.runUntil(f::isDone, 1_800_000);
+            r.writeLogs("crash");
+            assertTrue(ended, String.join("\n", ScenarioTest.tail(r.log, 30)));
+            MedicalAgent.Outcome o = f.join();
+            assertTrue(o.done(), o.toString());
+            assertEquals("control-chair2", o.chair());
+            assertEquals(2, o.auctions());
+            assertTrue(r.log.contains("medical: control-chair1 went silent on T1"));
+            assertNotNull(r.world.chair("chair1").latest());
+            assertTrue(r.world.chair("chair1").latest().faults().contains(io.concord.agents.chair.ChairFault.WATCHDOG),
+                    "the abandoned chair's watchdog stopped it");
+        }
+    }
+
+    @Test
+    void theScenarioSurvivesALossyNetwork() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(5, FaultPlan.lossy(0.2, 0.1, 0.1, 0.02), 1)) {
+            var f = r.medical.transport(3, 9, 3, 60);
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertTrue(r.world.chair("chair1").truePose().distanceTo(40.5, 6) < 0.2);
+        }
+    }
+
+}
