@@ -240,4 +240,45 @@ class HospitalAgentsTest {
         }
     }
 
+
+    @Test
+    void theContainersHostDiesMidTaskAndTheTaskIsStillDone() {
+        io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(13, FaultPlan.NONE);
+        sim.platformName("hospital");
+        try (sim) {
+            java.util.function.Function<io.concord.core.agent.AgentRuntime, io.concord.layers.platform.Platform> platformOn =
+                    rt -> io.concord.layers.platform.Platform.builder().runtime(rt)
+                            .ports(new io.concord.core.agent.PortRange(7001, 200, 10))
+                            .safetyStack(io.concord.layers.SafetyStack.builder().profile(io.concord.layers.Profile.CLOSED).build())
+                            .build();
+            // The oldest agent becomes the container: it runs in a process of its own.
+            var infra = sim.newRuntime("h1");
+            var registry = new Agent() { };
+            platformOn.apply(infra).startAgent("registry", registry);
+            sim.runFor(2_000);
+            var ward = sim.newRuntime("h1");
+            var wardPlatform = platformOn.apply(ward);
+            var world = io.concord.sim.world.HospitalWorld.builder(ScenarioTest.MAP).seed(13).build();
+            world.addChair("chair1", ChairConfig.standard().withWatchdog(0.3), world.poseAt(19, 90));
+            world.attach(ward);
+            java.util.List<String> log = new java.util.ArrayList<>();
+            var hospital = io.concord.sim.Hospital.start(wardPlatform, world, log::add);
+            var staff = sim.newRuntime("h1");
+            MedicalAgent medical = new MedicalAgent(log::add);
+            platformOn.apply(staff).startAgent("medical", medical);
+            assertTrue(sim.runUntil(hospital::ready, 60_000));
+            assertTrue(sim.runUntil(() -> io.concord.layers.platform.Platform.of(medical).agents().size() >= 22, 30_000));
+            assertEquals("registry@hospital", io.concord.layers.platform.Platform.of(medical).container(), "the registry is container");
+            var f = medical.transport(3, 9, 3, 30);
+            assertTrue(sim.runUntil(() -> log.stream().anyMatch(l -> l.startsWith("control-chair1: starts T1")), 60_000));
+            sim.runFor(20_000);
+            sim.crash(infra);
+            assertTrue(sim.runUntil(() -> !"registry@hospital".equals(io.concord.layers.platform.Platform.of(medical).container())
+                    && io.concord.layers.platform.Platform.of(medical).container() != null, 30_000), "a new container");
+            assertTrue(sim.runUntil(f::isDone, 900_000), String.join("\n", ScenarioTest.tail(log, 30)));
+            assertTrue(f.join().done(), f.join().toString());
+            assertEquals(1, f.join().auctions(), "the same chair finished it");
+            assertTrue(world.chair("chair1").truePose().distanceTo(40.5, 6) < 0.2);
+        }
+    }
 }
