@@ -1,397 +1,407 @@
 package io.concord.sim;
 
-import io.concord.agents.door.DoorDriver;
-import io.concord.agents.chair.ChairListener;
-import io.concord.agents.chair.ChairReadings;
-import io.concord.agents.chair.Pose;
-import io.concord.agents.chair.PoseController;
-import io.concord.core.agent.Agent;
-import io.concord.core.agent.AgentRuntime;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
 import io.concord.agents.map.Area;
-import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.MapException;
 import io.concord.agents.map.Node;
-import io.concord.agents.map.Point;
+import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.proto.Services;
+import io.concord.core.agent.AgentRuntime;
+import io.concord.core.agent.PortRange;
+import io.concord.core.testkit.FaultPlan;
+import io.concord.core.testkit.Simulation;
+import io.concord.layers.Profile;
+import io.concord.layers.SafetyStack;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
 import io.concord.sim.render.HospitalPicture;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
-import io.concord.sim.world.SimChair;
-import io.concord.sim.world.WorldDoor;
 
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
-import java.util.PriorityQueue;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.function.Consumer;
 
 /**
- * The hospital world demo: the dissertation's route (the chair waits at node 19, fetches the
- * patient from node 3 in Ward A and takes them to node 9 in Ward B) driven by a pilot agent on a
- * Concord runtime, with the world stepping on the runtime's clock, N times faster than real time
- * (or on the test kit's virtual clock, as fast as the CPU allows). A second chair crosses the
- * same corridor to room A8 and back, and a visitor walks up and down Ward B's corridor. The
- * pilot opens each door on its route as it comes near, keeps right in corridors, and stops for
- * anything its front sonar or infrared sees close ahead. A picture of the run is written at the
- * end. The wheelchair agents (control, planner, doors, medical staff) replace the pilot in a
- * later issue.
+ * The hospital demo: the dissertation's scenario run by the wheelchair's agents on a Concord
+ * platform with no main container. By default two JVMs on this machine: the ward (the world, a
+ * door agent for every door, a planner and a control agent for every chair) and the staff's
+ * terminal (the Medical agent), which find each other by port binding and agree on a container
+ * among themselves. The Medical agent asks for a patient to be taken from node 3 to node 9; the
+ * chairs' agents plan, ask the doors, propose; the best proposal wins and its chair drives the
+ * route through the doors. The conversation is printed as it happens and a picture of the run is
+ * written at the end. {@code --virtual} runs it all in one JVM on the test kit's virtual clock.
  */
 public final class HospitalDemo {
     private static final PrintStream OUT = System.out;
+    /** Where chairs wait, in the order they are added. */
+    static final int[] PARKING = {19, 23, 24, 22, 1};
 
     private HospitalDemo() {
     }
 
+    /**
+     * A transport to ask for.
+     *
+     * @param from     node where the patient is
+     * @param to       node where the patient goes
+     * @param priority TP
+     * @param unloadS  seconds to load and to unload
+     */
+    record TaskSpec(int from, int to, double priority, double unloadS) {
+        static TaskSpec parse(String s) {
+            String[] p = s.trim().split("[-:]");
+            if (p.length < 2 || p.length > 4) {
+                throw new IllegalArgumentException("a task is from-to[:priority[:unload]], e.g. 3-9:3:60; got '" + s + "'");
+            }
+            try {
+                return new TaskSpec(Integer.parseInt(p[0]), Integer.parseInt(p[1]), p.length > 2 ? Double.parseDouble(p[2]) : 0,
+                        p.length > 3 ? Double.parseDouble(p[3]) : 60);
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("a task is from-to[:priority[:unload]] with numbers, e.g. 3-9:3:60; got '" + s + "'");
+            }
+        }
+
+        @Override
+        public String toString() {
+            return from + "-" + to + ":" + priority + ":" + unloadS;
+        }
+    }
+
     /** Settings of a run. */
-    record Options(long seed, double speedup, boolean virtual, Path map, Path picture, double maxSeconds) {
+    record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
+                   double maxSeconds) {
+        List<String> childArgs() {
+            List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
+                    "--chairs", Integer.toString(chairs), "--picture", picture.toAbsolutePath().toString(),
+                    "--max-seconds", Double.toString(maxSeconds), "--tasks", String.join(",", tasks.stream().map(TaskSpec::toString).toList())));
+            if (map != null) {
+                a.addAll(List.of("--map", map.toAbsolutePath().toString()));
+            }
+            return a;
+        }
     }
 
     public static void main(String[] args) throws Exception {
+        String role = args.length > 0 && (args[0].equals("ward") || args[0].equals("staff")) ? args[0] : null;
         Options o;
-        try {
-            o = parse(args);
-        } catch (IllegalArgumentException e) {
-            System.err.println(e.getMessage());
-            System.err.println("usage: java -jar concord-demo.jar hospital [--seed N] [--speedup X | --virtual] [--map file.json]"
-                    + " [--picture file.png] [--max-seconds S]");
-            System.exit(2);
-            return;
-        }
         HospitalMap map;
         try {
+            o = parse(role == null ? args : java.util.Arrays.copyOfRange(args, 1, args.length));
             map = o.map() == null ? HospitalMap.defaultHospital() : HospitalMap.load(o.map());
-        } catch (MapException e) {
+            check(map, o);
+        } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
+            System.err.println("usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
+                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]");
             System.exit(2);
             return;
         }
-        System.exit(run(map, o) ? 0 : 1);
+        boolean ok;
+        if ("ward".equals(role)) {
+            ward(map, o);
+            return;
+        } else if ("staff".equals(role)) {
+            ok = staff(o);
+        } else if (o.virtual()) {
+            ok = runVirtual(map, o);
+        } else {
+            ok = runProcesses(o);
+        }
+        System.exit(ok ? 0 : 1);
     }
 
     static Options parse(String[] args) {
         long seed = 2010;
-        double speedup = 20;
+        double speed = 10;
         boolean virtual = false;
         Path map = null;
-        Path picture = Path.of("target", "hospital-demo.png");
-        double max = 600;
+        Path picture = Path.of("hospital.png");
+        int chairs = 1;
+        List<TaskSpec> tasks = new ArrayList<>(List.of(new TaskSpec(3, 9, 3, 60)));
+        double max = 1800;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
-            String v = i + 1 < args.length ? args[i + 1] : null;
-            switch (a) {
-                case "--seed" -> seed = Long.parseLong(need(a, v));
-                case "--speedup" -> speedup = Double.parseDouble(need(a, v));
-                case "--virtual" -> {
-                    virtual = true;
-                    i--;
-                }
-                case "--map" -> map = Path.of(need(a, v));
-                case "--picture" -> picture = Path.of(need(a, v));
-                case "--max-seconds" -> max = Double.parseDouble(need(a, v));
-                default -> throw new IllegalArgumentException("unknown option '" + a + "'");
+            if (a.equals("--virtual")) {
+                virtual = true;
+                continue;
             }
-            i++;
-        }
-        if (!(speedup > 0 && speedup <= 1000)) {
-            throw new IllegalArgumentException("--speedup must be in (0, 1000], got " + speedup);
-        }
-        return new Options(seed, speedup, virtual, map, picture, max);
-    }
-
-    private static String need(String option, String value) {
-        if (value == null) {
-            throw new IllegalArgumentException(option + " needs a value");
-        }
-        return value;
-    }
-
-    /** Runs the demo; true if the patient reached node 9. */
-    static boolean run(HospitalMap map, Options o) throws InterruptedException {
-        for (int n : new int[] {19, 3, 9}) {
-            if (!map.hasNode(n)) {
-                OUT.println("The map has no node " + n + "; the scenario needs nodes 19, 3 and 9.");
-                return false;
+            if (i + 1 >= args.length) {
+                throw new IllegalArgumentException(a.startsWith("--") ? a + " needs a value" : "unknown argument '" + a + "'");
             }
-        }
-        OUT.println("Concord hospital demo: " + map);
-        OUT.println("The dissertation's scenario: chair1 waits at node 19, fetches the patient from node 3 ("
-                + area(map, 3) + ") and takes them to node 9 (" + area(map, 9) + ").");
-        OUT.println(o.virtual() ? "The world steps on the test kit's virtual clock, as fast as the CPU allows."
-                : String.format(Locale.ROOT, "The world steps at 60 Hz on the runtime's clock, %.0f times faster than real time.",
-                o.speedup()));
-        HospitalWorld world = HospitalWorld.builder(map).seed(o.seed()).build();
-        SimChair chair1 = world.addChair("chair1", ChairConfig.standard(), world.poseAt(19, 90));
-        List<Pilot> pilots = new ArrayList<>();
-        Pilot p1 = new Pilot(world, chair1, List.of(leg(map, 19, 3), leg(map, 3, 9)), 3.0);
-        pilots.add(p1);
-        if (map.hasNode(24) && map.hasNode(21)) {
-            SimChair chair2 = world.addChair("chair2", ChairConfig.standard(), world.poseAt(24, 90));
-            Pilot p2 = new Pilot(world, chair2, List.of(leg(map, 24, 21), leg(map, 21, 24)), 2.0);
-            // The pilots know no right of way (the control agents will): chair2 lets chair1 go first.
-            p2.pauseUntilNs = 6_000_000_000L;
-            pilots.add(p2);
-        }
-        if (map.hasNode(11) && map.hasNode(13)) {
-            Point a = map.node(11).at();
-            Point b = map.node(13).at();
-            world.addPerson("visitor", List.of(new Point(a.x(), a.y() + 0.7), new Point(b.x(), b.y() + 0.7)), 0.9, true);
-        }
-        CountDownLatch done = new CountDownLatch(1);
-        long t0 = System.nanoTime();
-        if (o.virtual()) {
-            try (Simulation sim = new Simulation(o.seed(), FaultPlan.NONE)) {
-                AgentRuntime rt = sim.newRuntime("hospital");
-                world.attach(rt);
-                for (Pilot p : pilots) {
-                    rt.startAgent("pilot-" + p.chair.name(), p);
-                }
-                sim.runUntil(() -> pilots.stream().allMatch(Pilot::finished), (long) (o.maxSeconds() * 1000));
-            }
-        } else {
-            try (AgentRuntime rt = AgentRuntime.builder().platformName("hospital").seed(o.seed()).build().start()) {
-                world.attach(rt, o.speedup());
-                for (Pilot p : pilots) {
-                    p.onFinish = () -> {
-                        if (pilots.stream().allMatch(Pilot::finished)) {
-                            done.countDown();
+            String v = args[++i];
+            try {
+                switch (a) {
+                    case "--seed" -> seed = Long.parseLong(v);
+                    case "--speed" -> speed = Double.parseDouble(v);
+                    case "--map" -> map = Path.of(v);
+                    case "--picture" -> picture = Path.of(v);
+                    case "--chairs" -> chairs = Integer.parseInt(v);
+                    case "--max-seconds" -> max = Double.parseDouble(v);
+                    case "--tasks" -> {
+                        tasks = new ArrayList<>();
+                        for (String t : v.split(",")) {
+                            tasks.add(TaskSpec.parse(t));
                         }
-                    };
-                    rt.startAgent("pilot-" + p.chair.name(), p);
+                    }
+                    default -> throw new IllegalArgumentException("unknown option '" + a + "'");
                 }
-                done.await((long) (o.maxSeconds() / o.speedup() * 1000) + 1000, TimeUnit.MILLISECONDS);
-                CountDownLatch drawn = new CountDownLatch(1);
-                rt.execute(() -> {
-                    HospitalPicture.write(world, o.picture(), String.format(Locale.ROOT,
-                            "%s: the scenario 19 -> 3 -> 9, seed %d, t = %.1f s", map.name(), o.seed(), world.worldTimeNs() / 1e9));
-                    drawn.countDown();
-                });
-                drawn.await(10, TimeUnit.SECONDS);
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(a + " needs a number, got '" + v + "'");
             }
         }
-        if (o.virtual()) {
-            HospitalPicture.write(world, o.picture(), String.format(Locale.ROOT,
-                    "%s: the scenario 19 -> 3 -> 9, seed %d, t = %.1f s", map.name(), o.seed(), world.worldTimeNs() / 1e9));
+        if (!(speed > 0 && speed <= 1000)) {
+            throw new IllegalArgumentException("--speed must be in (0, 1000], got " + speed);
         }
-        double wall = (System.nanoTime() - t0) / 1e9;
-        double simSeconds = world.worldTimeNs() / 1e9;
-        OUT.println();
-        OUT.printf(Locale.ROOT, "%.1f s of hospital in %.1f s of wall time (%.0f times real time); %d steps; "
-                        + "chair1 drove %.1f m; %d collisions.%n", simSeconds, wall, simSeconds / wall, world.stepCount(),
-                chair1.distanceTravelled(), world.collisionCount());
-        OUT.println("Picture: " + o.picture().toAbsolutePath());
-        if (!p1.finished()) {
-            OUT.println("chair1 did not finish the scenario within " + o.maxSeconds() + " s of hospital time.");
-            return false;
+        if (chairs < 1 || chairs > PARKING.length) {
+            throw new IllegalArgumentException("--chairs must be 1 to " + PARKING.length + ", got " + chairs);
         }
-        return true;
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max);
+    }
+
+    private static void check(HospitalMap map, Options o) {
+        for (int i = 0; i < o.chairs(); i++) {
+            if (!map.hasNode(PARKING[i])) {
+                throw new MapException("--map", List.of("the demo parks its chairs at nodes " + java.util.Arrays.toString(PARKING)
+                        + "; node " + PARKING[i] + " is missing"));
+            }
+        }
     }
 
     private static String area(HospitalMap map, int node) {
+        if (!map.hasNode(node)) {
+            return "no such node";
+        }
         Node n = map.node(node);
         String room = map.areaAt(n.at()).map(Area::name).orElse("no area");
         String ward = map.wardAt(n.at()).map(Area::name).orElse(null);
         return ward == null || ward.equals(room) ? room : room + ", " + ward;
     }
 
-    /** The shortest path between two nodes by edge length (Dijkstra), as nodes. */
-    static List<Integer> leg(HospitalMap map, int from, int to) {
-        Map<Integer, Double> dist = new HashMap<>();
-        Map<Integer, Integer> prev = new HashMap<>();
-        PriorityQueue<double[]> q = new PriorityQueue<>((a, b) -> Double.compare(a[0], b[0]));
-        dist.put(from, 0.0);
-        q.add(new double[] {0, from});
-        while (!q.isEmpty()) {
-            double[] e = q.poll();
-            int n = (int) e[1];
-            if (e[0] > dist.get(n)) {
-                continue;
-            }
-            if (n == to) {
-                break;
-            }
-            for (Edge edge : map.edgesAt(n)) {
-                int m = edge.other(n);
-                double d = e[0] + edge.length(map);
-                if (d < dist.getOrDefault(m, Double.MAX_VALUE)) {
-                    dist.put(m, d);
-                    prev.put(m, n);
-                    q.add(new double[] {d, m});
-                }
-            }
+    private static void intro(HospitalMap map, Options o) {
+        OUT.println("Concord hospital demo: " + map);
+        for (TaskSpec t : o.tasks()) {
+            OUT.printf(Locale.ROOT, "Task: a patient from node %d (%s) to node %d (%s), priority %.1f, %.0f s to load and unload.%n",
+                    t.from(), area(map, t.from()), t.to(), area(map, t.to()), t.priority(), t.unloadS());
         }
-        if (!dist.containsKey(to)) {
-            throw new IllegalArgumentException("no route from node " + from + " to node " + to);
-        }
-        List<Integer> path = new ArrayList<>();
-        for (Integer n = to; n != null; n = prev.get(n)) {
-            path.add(0, n);
-        }
-        return path;
+        OUT.println(o.chairs() + (o.chairs() == 1 ? " chair waits" : " chairs wait") + " in the lobby (node 19 first).");
     }
 
-    /**
-     * Drives one chair along its legs on every report of the chair (so at any speed-up): to each
-     * node in turn, keeping 0.6 m right of the centre line on long corridor edges, opening the
-     * door of an edge when 3.5 m from it and waiting until it is open, closing it behind, and
-     * stopping while something is close ahead. It drives on the chair's true pose: localisation
-     * is the control agent's job (a later issue).
-     */
-    static final class Pilot extends Agent implements ChairListener {
-        private static final double KEEP_RIGHT_M = 0.6;
-        final SimChair chair;
-        private final HospitalWorld world;
-        private final HospitalMap map;
-        private final List<List<Integer>> legs;
-        private final double pauseS;
-        private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
-        private int leg;
-        private int index = 1;
-        private long pauseUntilNs = -1;
-        private boolean finished;
-        private WorldDoor openedBehind;
-        private String waitingFor;
-        Runnable onFinish = () -> { };
+    // ---- one JVM on the virtual clock ----------------------------------------------------------
 
-        Pilot(HospitalWorld world, SimChair chair, List<List<Integer>> legs, double pauseS) {
-            this.world = world;
-            this.map = world.map();
-            this.chair = chair;
-            this.legs = legs;
-            this.pauseS = pauseS;
-        }
-
-        boolean finished() {
-            return finished;
-        }
-
-        @Override
-        protected void setup() {
-            chair.setListener(this);
-            say("starts at node " + legs.get(0).get(0) + "; route " + legs);
-        }
-
-        private void say(String s) {
-            OUT.printf(Locale.ROOT, "  t=%6.1f s  %s: %s%n", world.worldTimeNs() / 1e9, chair.name(), s);
-        }
-
-        @Override
-        public void onReadings(ChairReadings r) {
-            if (finished) {
-                return;
+    /** Everything in one JVM on the test kit's virtual clock: deterministic from the seed. */
+    static boolean runVirtual(HospitalMap map, Options o) {
+        intro(map, o);
+        OUT.println("The platform, the agents and the world run on the test kit's virtual clock and network, as fast as the CPU allows.");
+        try (Simulation sim = new Simulation(o.seed(), FaultPlan.NONE)) {
+            sim.platformName("hospital");
+            AgentRuntime rt = sim.newRuntime("h1");
+            Platform platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 200, 10))
+                    .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
+            HospitalWorld world = world(map, o);
+            world.attach(rt);
+            Consumer<String> log = line -> OUT.printf(Locale.ROOT, "  t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
+            Hospital hospital = Hospital.start(platform, world, log);
+            MedicalAgent medical = new MedicalAgent(log);
+            platform.startAgent("medical", medical);
+            sim.runUntil(hospital::ready, 60_000);
+            List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
+            for (TaskSpec t : o.tasks()) {
+                fs.add(medical.transport(t.from(), t.to(), t.priority(), t.unloadS()));
             }
-            long now = world.worldTimeNs();
-            if (now < pauseUntilNs) {
-                chair.stop();
-                return;
+            long t0 = System.nanoTime();
+            sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), (long) (o.maxSeconds() * 1000));
+            double wall = (System.nanoTime() - t0) / 1e9;
+            writePicture(world, o);
+            OUT.printf(Locale.ROOT, "%n%.1f s of hospital in %.1f s of wall time; %d collisions.%n", world.worldTimeNs() / 1e9, wall,
+                    world.collisionCount());
+            return report(fs);
+        }
+    }
+
+    static HospitalWorld world(HospitalMap map, Options o) {
+        HospitalWorld world = HospitalWorld.builder(map).seed(o.seed()).build();
+        for (int i = 0; i < o.chairs(); i++) {
+            world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(PARKING[i], 90));
+        }
+        return world;
+    }
+
+    private static void writePicture(HospitalWorld world, Options o) {
+        HospitalPicture.write(world, o.picture(), String.format(Locale.ROOT, "%s: seed %d, t = %.1f s", world.map().name(),
+                o.seed(), world.worldTimeNs() / 1e9));
+        OUT.println("Picture: " + o.picture().toAbsolutePath());
+    }
+
+    private static boolean report(List<CompletableFuture<MedicalAgent.Outcome>> fs) {
+        boolean all = true;
+        for (CompletableFuture<MedicalAgent.Outcome> f : fs) {
+            if (!f.isDone()) {
+                OUT.println("A transport did not end in time.");
+                all = false;
+                continue;
             }
-            List<Integer> route = legs.get(leg);
-            int fromId = route.get(index - 1);
-            int toId = route.get(index);
-            Edge edge = map.edge(fromId, toId).orElseThrow();
-            Pose pose = chair.truePose();
-            Point target = waypoint(edge, fromId, toId);
-            if (control.reached(pose, target.x(), target.y())) {
-                closeBehind();
-                if (edge.door() != null) {
-                    openedBehind = world.door(edge.door());
-                }
-                index++;
-                if (index == route.size()) {
-                    leg++;
-                    index = 1;
-                    chair.stop();
-                    if (leg == legs.size()) {
-                        finished = true;
-                        say("arrived at node " + toId + (chair.name().equals("chair1") ? ": the patient is delivered" : ""));
-                        closeBehind();
-                        onFinish.run();
-                        return;
+            MedicalAgent.Outcome out = f.join();
+            OUT.println(out.done() ? out.task() + ": done by " + out.chair() + (out.auctions() > 1 ? " after " + out.auctions() + " auctions" : "")
+                    : out.task() + ": not done: " + out.reason());
+            all &= out.done();
+        }
+        return all;
+    }
+
+    // ---- two JVMs on real sockets ----------------------------------------------------------------
+
+    /** The ward and the staff's terminal as two JVMs; true if every transport was done. */
+    static boolean runProcesses(Options o) throws Exception {
+        HospitalMap map = o.map() == null ? HospitalMap.defaultHospital() : HospitalMap.load(o.map());
+        intro(map, o);
+        OUT.printf(Locale.ROOT, "Two JVMs on this machine: the ward (world, doors' and chairs' agents) and the staff's terminal "
+                + "(the Medical agent). No address is configured: they find each other by port binding on 127.0.0.1 "
+                + "(7001 and up) and elect a container. The world runs %.0f times faster than real time.%n%n", o.speed());
+        Process ward = spawn("ward", o);
+        CountDownLatch wardReady = new CountDownLatch(1);
+        pump(ward, "ward ", line -> {
+            if (line.contains("ward ready")) {
+                wardReady.countDown();
+            }
+        });
+        if (!wardReady.await(60, TimeUnit.SECONDS)) {
+            OUT.println("The ward did not start within 60 s.");
+            ward.destroyForcibly();
+            return false;
+        }
+        Process staff = spawn("staff", o);
+        pump(staff, "staff", line -> { });
+        boolean ended = staff.waitFor((long) (o.maxSeconds() / o.speed()) + 120, TimeUnit.SECONDS);
+        int code = ended ? staff.exitValue() : -1;
+        if (!ended) {
+            staff.destroyForcibly();
+        }
+        ward.destroy();   // its shutdown hook writes the picture
+        if (!ward.waitFor(20, TimeUnit.SECONDS)) {
+            ward.destroyForcibly();
+        }
+        OUT.println(code == 0 ? "Every transport was done." : "Not every transport was done (staff exit " + code + ").");
+        return code == 0;
+    }
+
+    private static Process spawn(String role, Options o) throws Exception {
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn",
+                Demo.class.getName(), role));
+        cmd.addAll(o.childArgs());
+        return new ProcessBuilder(cmd).redirectErrorStream(true).start();
+    }
+
+    private static void pump(Process p, String prefix, Consumer<String> watch) {
+        Thread t = new Thread(() -> {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+                String line;
+                while ((line = r.readLine()) != null) {
+                    synchronized (OUT) {
+                        OUT.println("[" + prefix + "] " + line);
                     }
-                    say("at node " + toId + (chair.name().equals("chair1") ? ": the patient gets on" : "")
-                            + String.format(Locale.ROOT, " (%.0f s)", pauseS));
-                    pauseUntilNs = now + (long) (pauseS * 1e9);
+                    watch.accept(line);
                 }
-                return;
+            } catch (java.io.IOException e) {
+                // the process ended
             }
-            // The door of this edge: open it on approach, wait in front of it until it is open.
-            if (edge.door() != null) {
-                WorldDoor door = world.door(edge.door());
-                Point c = door.spec().centre();
-                double d = pose.distanceTo(c.x(), c.y());
-                boolean ahead = d < map.node(fromId).at().distanceTo(c) + 0.3 && d < 3.5;
-                if (ahead && !door.isOpen() && door.motion() != DoorDriver.Motion.OPENING) {
-                    door.open();
-                    say("opens door " + door.id() + " (" + door.spec().kind().toString().toLowerCase(Locale.ROOT) + ")");
+        }, "demo-" + prefix.trim());
+        t.setDaemon(true);
+        t.start();
+    }
+
+    /** The ward's JVM: the world, the doors' and the chairs' agents, until it is stopped. */
+    static void ward(HospitalMap map, Options o) throws Exception {
+        Platform platform = Platform.builder().name("hospital").build();
+        AgentRuntime rt = platform.runtime();
+        HospitalWorld world = world(map, o);
+        Consumer<String> log = line -> OUT.printf(Locale.ROOT, "t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
+        Hospital hospital = Hospital.start(platform, world, log);
+        world.attach(rt, o.speed());
+        CountDownLatch stopped = new CountDownLatch(1);
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            CountDownLatch drawn = new CountDownLatch(1);
+            rt.execute(() -> {
+                try {
+                    writePicture(world, o);
+                    OUT.printf(Locale.ROOT, "%.1f s of hospital; %d collisions.%n", world.worldTimeNs() / 1e9, world.collisionCount());
+                } finally {
+                    drawn.countDown();
                 }
-                if (ahead && !door.isOpen() && d < 2.2) {
-                    waiting("door " + door.id());
-                    chair.stop();
-                    return;
+            });
+            try {
+                drawn.await(10, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            platform.close();
+            stopped.countDown();
+        }));
+        AtomicInteger ready = new AtomicInteger();
+        while (ready.get() == 0) {
+            CountDownLatch asked = new CountDownLatch(1);
+            rt.execute(() -> {
+                if (hospital.ready()) {
+                    ready.set(1);
                 }
-            }
-            // The stop zone, whatever the plan: something within 0.45 m ahead, or 0.3 m on an infrared.
-            double front = r.range(chair.layout().sensorIndex("front"));
-            double irl = r.range(chair.layout().sensorIndex("ir-front-left"));
-            double irr = r.range(chair.layout().sensorIndex("ir-front-right"));
-            if (front < 0.45 || irl < 0.3 || irr < 0.3) {
-                waiting("something ahead (" + String.format(Locale.ROOT, "%.2f m", Math.min(front, Math.min(irl, irr))) + ")");
-                chair.stop();
-                return;
-            }
-            if (waitingFor != null) {
-                waitingFor = null;
-            }
-            PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
-            // The slow-down zone: under 1.2 m, at most a third of the power.
-            double scale = front < 1.2 ? 0.35 : 1;
-            chair.drive(p.left() * scale, p.right() * scale);
+                asked.countDown();
+            });
+            asked.await();
+            Thread.sleep(100);   // a person's patience, not a test's timing: the ward waits for its own agents
         }
+        OUT.println("ward ready: " + world.doors().size() + " door agents, " + o.chairs() + " chairs with a planner and a control agent each");
+        stopped.await();
+    }
 
-        private void waiting(String what) {
-            if (!what.equals(waitingFor) && !(waitingFor != null && waitingFor.startsWith("something") && what.startsWith("something"))) {
-                say("waits for " + what);
+    /** The staff's JVM: the Medical agent asks for the transports and waits for them. */
+    static boolean staff(Options o) throws Exception {
+        Platform platform = Platform.builder().name("hospital").build();
+        AgentRuntime rt = platform.runtime();
+        long start = System.nanoTime();
+        MedicalAgent medical = new MedicalAgent(line -> OUT.printf(Locale.ROOT, "%6.1f s  %s%n", (System.nanoTime() - start) / 1e9, line));
+        platform.startAgent("medical", medical);
+        // Wait until the yellow pages list every chair.
+        while (true) {
+            CompletableFuture<Integer> n = new CompletableFuture<>();
+            rt.execute(() -> n.complete(Platform.of(medical).search(ServiceDescription.ofType(Services.TRANSPORT)).size()));
+            if (n.get(10, TimeUnit.SECONDS) >= o.chairs()) {
+                break;
             }
-            waitingFor = what;
-        }
-
-        private void closeBehind() {
-            if (openedBehind != null) {
-                Point c = openedBehind.spec().centre();
-                if (chair.truePose().distanceTo(c.x(), c.y()) > 1.5 && !openedBehind.doorwayOccupied()) {
-                    openedBehind.close();
-                    openedBehind = null;
-                }
+            if (System.nanoTime() - start > 60e9) {
+                OUT.println("No chair appeared in the yellow pages within 60 s: is the ward running, with the same platform key?");
+                platform.close();
+                return false;
             }
+            Thread.sleep(100);   // a person's patience: the staff waits for the chairs to be listed
         }
-
-        /** The node to drive to, moved right of the edge's line on long corridor edges with no door. */
-        private Point waypoint(Edge edge, int fromId, int toId) {
-            Point a = map.node(fromId).at();
-            Point b = map.node(toId).at();
-            double len = a.distanceTo(b);
-            Area ka = map.areaAt(a).orElse(null);
-            Area kb = map.areaAt(b).orElse(null);
-            boolean corridor = edge.door() == null && len > 2.5 && ka != null && kb != null
-                    && ka.kind() != Area.Kind.ROOM && kb.kind() != Area.Kind.ROOM;
-            if (!corridor) {
-                return b;
-            }
-            double rx = (b.y() - a.y()) / len * KEEP_RIGHT_M;
-            double ry = -(b.x() - a.x()) / len * KEEP_RIGHT_M;
-            return new Point(b.x() + rx, b.y() + ry);
+        CompletableFuture<Void> container = new CompletableFuture<>();
+        rt.execute(() -> {
+            OUT.println("staff: the chairs are in the yellow pages; container: " + Platform.of(medical).container());
+            container.complete(null);
+        });
+        container.get(10, TimeUnit.SECONDS);
+        List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
+        for (TaskSpec t : o.tasks()) {
+            fs.add(medical.transport(t.from(), t.to(), t.priority(), t.unloadS()));
         }
-
-        @Override
-        public String toString() {
-            return "Pilot[" + chair.name() + " leg " + leg + " " + Arrays.toString(legs.toArray()) + "]";
+        try {
+            CompletableFuture.allOf(fs.toArray(new CompletableFuture[0])).get((long) (o.maxSeconds() / o.speed()) + 60, TimeUnit.SECONDS);
+        } catch (java.util.concurrent.TimeoutException e) {
+            OUT.println("staff: not every transport ended in time");
         }
+        boolean ok = report(fs);
+        platform.close();
+        return ok;
     }
 }

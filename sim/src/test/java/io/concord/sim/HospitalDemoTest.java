@@ -6,13 +6,12 @@ import org.junit.jupiter.api.Test;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** The hospital demo delivers the patient on the virtual clock, and refuses bad options. */
+/** The hospital demo: on the virtual clock, across two JVMs on real sockets, and its options. */
 class HospitalDemoTest {
 
     @Test
@@ -20,24 +19,34 @@ class HospitalDemoTest {
         Path png = Path.of("target", "pictures", "hospital-demo.png");
         Files.deleteIfExists(png);
         HospitalDemo.Options o = HospitalDemo.parse(new String[] {"--virtual", "--picture", png.toString()});
-        assertTrue(HospitalDemo.run(HospitalMap.defaultHospital(), o), "the patient reached node 9");
+        assertTrue(HospitalDemo.runVirtual(HospitalMap.defaultHospital(), o), "the patient reached node 9");
         assertTrue(Files.size(png) > 10_000);
     }
 
+    /** The demo's agents across two JVMs on loopback (real sockets, class 7), the world 20 times faster. */
     @Test
-    void theRouteIsTheShortestByLength() {
-        HospitalMap map = HospitalMap.defaultHospital();
-        assertEquals(List.of(19, 22, 7, 6, 5, 4, 2, 3), HospitalDemo.leg(map, 19, 3));
-        assertEquals(List.of(3, 2, 4, 5, 6, 7, 8, 10, 11, 12, 9), HospitalDemo.leg(map, 3, 9));
+    void theScenarioRunsAcrossTwoJvmsOnRealSockets() throws Exception {
+        Path png = Path.of("target", "pictures", "hospital-processes.png");
+        Files.deleteIfExists(png);
+        HospitalDemo.Options o = HospitalDemo.parse(new String[] {"--speed", "20", "--picture", png.toString()});
+        assertTrue(HospitalDemo.runProcesses(o), "the patient reached node 9");
+        assertTrue(Files.exists(png), "the ward drew the run");
     }
 
     @Test
-    void badOptionsSayWhatIsWrong() {
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--speed", "3"}))
-                .getMessage().contains("unknown option '--speed'"));
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--speedup", "0"}))
+    void optionsAreReadAndBadOnesSayWhatIsWrong() {
+        HospitalDemo.Options o = HospitalDemo.parse(new String[] {"--chairs", "3", "--tasks", "3-9:3:60,14-31:1.5"});
+        assertEquals(3, o.chairs());
+        assertEquals(new HospitalDemo.TaskSpec(14, 31, 1.5, 60), o.tasks().get(1));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--speeed", "3"}))
+                .getMessage().contains("unknown option '--speeed'"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--speed", "0"}))
                 .getMessage().contains("(0, 1000]"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--seed"}))
                 .getMessage().contains("needs a value"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "3to9"}))
+                .getMessage().contains("from-to"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "9"}))
+                .getMessage().contains("1 to 5"));
     }
 }
