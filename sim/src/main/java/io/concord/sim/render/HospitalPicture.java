@@ -369,8 +369,8 @@ public final class HospitalPicture {
         x += 115;
         g.setStroke(new BasicStroke(1.4f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10, new float[] {6, 4}, 0));
         g.drawLine(x, y - 3, x + 24, y - 3);
-        g.drawString("odometry's belief", x + 28, y + 1);
-        x += 130;
+        g.drawString("raw odometry (corrected at floor markers)", x + 28, y + 1);
+        x += 265;
         g.setColor(new Color(0xd50000));
         g.setStroke(new BasicStroke(2f));
         g.drawLine(x, y - 8, x + 10, y + 2);
