@@ -216,6 +216,7 @@ class HospitalAgentsTest {
                     String.join("\n", r.log));
             AID c1 = r.rt.agents().stream().filter(a -> a.localName().equals("control-chair1")).findFirst().orElseThrow();
             r.rt.crashAgent(c1);
+            double before = r.world.chair("chair1").distanceTravelled();
             boolean ended = r.sim.runUntil(f::isDone, 1_800_000);
             r.writeLogs("crash");
             assertTrue(ended, String.join("\n", ScenarioTest.tail(r.log, 30)));
@@ -224,9 +225,7 @@ class HospitalAgentsTest {
             assertEquals("control-chair2", o.chair());
             assertEquals(2, o.auctions());
             assertTrue(r.log.contains("medical: control-chair1 went silent on T1"));
-            assertNotNull(r.world.chair("chair1").latest());
-            assertTrue(r.world.chair("chair1").latest().faults().contains(io.concord.agents.chair.ChairFault.WATCHDOG),
-                    "the abandoned chair's watchdog stopped it");
+            assertTrue(r.world.chair("chair1").distanceTravelled() - before < 0.3, "the abandoned chair does not drive on");
         }
     }
 

@@ -201,4 +201,18 @@ class ChairTest {
         world.run(0.2);
         assertEquals(null, blind.latest().fix(), "markers off");
     }
+
+    @Test
+    void theWatchdogStopsAChairItsHostStoppedCommanding() {
+        SimChair c = world.addChair("chair1", ChairConfig.standard().noiseless().withWatchdog(0.3), new Pose(3, 10.8, 0));
+        c.drive(50, 50);
+        world.run(0.2);
+        assertTrue(c.forwardSpeed() > 0.1, "moving while commanded");
+        world.run(1.5);
+        assertEquals(0, c.forwardSpeed(), 1e-3, "stopped 0.3 s after the last command");
+        assertTrue(c.latest().faults().contains(io.concord.agents.chair.ChairFault.WATCHDOG));
+        c.drive(50, 50);
+        world.run(0.2);
+        assertFalse(c.latest().faults().contains(io.concord.agents.chair.ChairFault.WATCHDOG), "a command clears it");
+    }
 }
