@@ -443,6 +443,17 @@ public class ControlAgent extends Agent implements ChairListener {
             arrived(now);
             return;
         }
+        if (index == 0) {
+            Point first = map.node(route.get(0)).at();
+            if (control.reached(pose, first.x(), first.y())) {
+                index = 1;
+                lastNode = route.get(0);
+            } else {
+                PoseController.Powers p = control.toPoint(pose, first.x(), first.y());
+                chair.drive(p.left() * 0.5, p.right() * 0.5);
+            }
+            return;
+        }
         int fromId = route.get(index - 1);
         int toId = route.get(index);
         Edge edge = map.edge(fromId, toId).orElse(null);
@@ -470,7 +481,10 @@ public class ControlAgent extends Agent implements ChairListener {
         double front = r.range(chair.layout().sensorIndex("front"));
         double irl = r.range(chair.layout().sensorIndex("ir-front-left"));
         double irr = r.range(chair.layout().sensorIndex("ir-front-right"));
-        if (front < STOP_M || irl < STOP_IR_M || irr < STOP_IR_M) {
+        PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
+        // A turn on the spot moves nothing forward: the stop zone lets it turn away from what is ahead.
+        boolean spotTurn = Math.abs(p.left() + p.right()) < 1e-9 && p.left() != 0;
+        if (!spotTurn && (front < STOP_M || irl < STOP_IR_M || irr < STOP_IR_M)) {
             chair.stop();
             if (stoppedSinceMs < 0) {
                 stoppedSinceMs = now;
@@ -482,8 +496,7 @@ public class ControlAgent extends Agent implements ChairListener {
             return;
         }
         stoppedSinceMs = -1;
-        PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
-        double scale = front < SLOW_M ? 0.35 : 1;
+        double scale = front < SLOW_M && !spotTurn ? 0.35 : 1;
         chair.drive(p.left() * scale, p.right() * scale);
     }
 
@@ -590,8 +603,10 @@ public class ControlAgent extends Agent implements ChairListener {
                 return;
             }
             List<Integer> nodes = nodes(Content.parse(a.getContent()));
-            // Drive back to the node the new plan starts from first, if the chair left it.
+            // Back along the edge it was on to the node the new plan starts from (the last one it
+            // reached), then along the new plan: never across the floor off the graph.
             follow(nodes);
+            index = 0;
             say("new plan " + nodes);
         });
     }

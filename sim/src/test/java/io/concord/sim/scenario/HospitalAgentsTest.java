@@ -280,4 +280,45 @@ class HospitalAgentsTest {
             assertTrue(world.chair("chair1").truePose().distanceTo(40.5, 6) < 0.2);
         }
     }
+
+    @Test
+    void aTransportAskedForByAclIsAgreedAndReportedDone() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(3, FaultPlan.NONE, 1)) {
+            Probe ward = new Probe();
+            r.platform.startAgent("ward-nurse", ward);
+            r.sim.runFor(2_000);
+            java.util.List<AclMessage> agreed = new java.util.ArrayList<>();
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(AID.local("medical", "hospital"));
+            m.setContent("transport; from=3; to=9; priority=1.5; unload=30");
+            var answer = ward.asks.ask(m, 900_000, agreed::add);
+            assertTrue(r.sim.runUntil(answer::isDone, 900_000), String.join("\n", ScenarioTest.tail(r.log, 20)));
+            assertEquals(1, agreed.size(), "AGREE first");
+            assertEquals(Performative.INFORM, answer.join().getPerformative());
+            Content done = Content.parse(answer.join().getContent());
+            assertTrue(done.is("done"));
+            assertEquals("control-chair1", done.get("chair"));
+            AclMessage bad = await(r, ward.ask("medical", "transport; from=3"));
+            assertEquals(Performative.REFUSE, bad.getPerformative());
+            assertTrue(bad.getContent().contains("needs a field 'to'"), bad.getContent());
+        }
+    }
+
+    @Test
+    void aChairBlockedOnAnEdgeTellsItsPlannerAndDrivesAroundIt() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(4, FaultPlan.NONE, 0)) {
+            r.world.addChair("chair1", ChairConfig.standard().withWatchdog(0.3), r.world.poseAt(22, -90));
+            r.hospital.addChair(r.platform, r.world, r.world.chair("chair1"), r.log::add);
+            assertTrue(r.sim.runUntil(r.hospital::ready, 60_000));
+            // A trolley left on the lobby's edge 22-19.
+            r.world.addBox("trolley", new io.concord.agents.map.Point(24, 5.0), 0.8, 0.5, 0);
+            var f = r.medical.transport(19, 21, 0, 10);
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertTrue(r.log.stream().anyMatch(l -> l.startsWith("control-chair1: edge 22-19 blocked")), String.join("\n", r.log));
+            assertTrue(r.log.stream().anyMatch(l -> l.startsWith("planner-chair1: edge 19-22 blocked")));
+            assertTrue(r.log.stream().anyMatch(l -> l.startsWith("control-chair1: new plan [22, 23, 19]")), String.join("\n", r.log));
+            assertEquals(0, r.world.collisionCount(), "stopped short of the trolley: " + r.world.collisions());
+        }
+    }
 }
