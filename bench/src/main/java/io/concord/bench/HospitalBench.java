@@ -48,7 +48,7 @@ final class HospitalBench {
     static Outcome run(boolean full) throws Exception {
         HospitalMap map = HospitalMap.defaultHospital();
         double planUs = astar(RouteGraph.of(map), new int[][] {{19, 3}, {3, 9}, {14, 31}, {30, 15}}, full);
-        RouteGraph grid = grid(32, 32, 0.15, 9);
+        RouteGraph grid = RouteGraph.grid(32, 32, 0.15, 9);
         SplittableRandom r = new SplittableRandom(3);
         int[][] pairs = new int[64][];
         for (int i = 0; i < pairs.length; i++) {
@@ -87,29 +87,6 @@ final class HospitalBench {
             System.out.println();
         }
         return (t - t0) / 1e3 / n;
-    }
-
-    static RouteGraph grid(int w, int h, double removed, long seed) {
-        SplittableRandom r = new SplittableRandom(seed);
-        int n = w * h;
-        int[] ids = new int[n];
-        double[] xs = new double[n];
-        double[] ys = new double[n];
-        for (int i = 0; i < n; i++) {
-            ids[i] = i;
-            xs[i] = i % w + 0.3 * r.nextDouble();
-            ys[i] = i / w + 0.3 * r.nextDouble();
-        }
-        List<int[]> edges = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            if (i % w < w - 1 && r.nextDouble() >= removed) {
-                edges.add(new int[] {i, i + 1});
-            }
-            if (i / w < h - 1 && r.nextDouble() >= removed) {
-                edges.add(new int[] {i, i + w});
-            }
-        }
-        return RouteGraph.of(ids, xs, ys, edges.toArray(new int[0][]));
     }
 
     /**

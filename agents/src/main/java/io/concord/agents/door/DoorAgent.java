@@ -1,12 +1,12 @@
 package io.concord.agents.door;
 
 import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.proto.RefuseException;
 import io.concord.core.proto.SubscriptionResponder;
@@ -94,17 +94,7 @@ public class DoorAgent extends Agent {
         addBehaviour(subscriptions);
         MessageTemplate mine = MessageTemplate.matchPerformative(Performative.REQUEST)
                 .or(MessageTemplate.matchPerformative(Performative.INFORM));
-        addBehaviour(new CyclicBehaviour(this) {
-            @Override
-            public void action() {
-                AclMessage m = receive(mine);
-                if (m == null) {
-                    block();
-                    return;
-                }
-                handle(m);
-            }
-        });
+        Inbox.each(this, mine, this::handle);
         addBehaviour(new TickerBehaviour(this, 100) {
             @Override
             protected void onTick() {

@@ -1,13 +1,13 @@
 package io.concord.agents.medical;
 
 import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.proto.ContractNetInitiator;
 import io.concord.core.proto.FipaProtocols;
 import io.concord.layers.platform.AgentEntry;
@@ -80,30 +80,22 @@ public class MedicalAgent extends Agent {
         Platform.of(this).register(ServiceDescription.of(Services.MEDICAL, getLocalName()));
         MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST)
                 .and(m -> m.getContent() != null && m.getContent().startsWith("transport"));
-        addBehaviour(new CyclicBehaviour(this) {
-            @Override
-            public void action() {
-                AclMessage m = receive(requests);
-                if (m == null) {
-                    block();
-                    return;
-                }
-                Content c;
-                try {
-                    c = Content.parse(m.getContent());
-                    int from = c.integer("from");
-                    int to = c.integer("to");
-                    double tp = c.number("priority", 0);
-                    double unload = c.number("unload", 60);
-                    send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));
-                    transportOnLoop(from, to, tp, unload).thenAccept(o -> send(m.createReply()
-                            .setPerformative(o.done() ? Performative.INFORM : Performative.FAILURE)
-                            .setContent(Content.of(o.done() ? "done" : "failed").with("task", o.task())
-                                    .with("chair", o.chair()).with("reason", o.reason() == null ? "" : o.reason()).toString())));
-                } catch (IllegalArgumentException e) {
-                    send(m.createReply().setPerformative(Performative.REFUSE).setContent(
-                            Content.of("refuse").with("reason", e.getMessage()).toString()));
-                }
+        Inbox.each(this, requests, m -> {
+            Content c;
+            try {
+                c = Content.parse(m.getContent());
+                int from = c.integer("from");
+                int to = c.integer("to");
+                double tp = c.number("priority", 0);
+                double unload = c.number("unload", 60);
+                send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));
+                transportOnLoop(from, to, tp, unload).thenAccept(o -> send(m.createReply()
+                        .setPerformative(o.done() ? Performative.INFORM : Performative.FAILURE)
+                        .setContent(Content.of(o.done() ? "done" : "failed").with("task", o.task())
+                                .with("chair", o.chair()).with("reason", o.reason() == null ? "" : o.reason()).toString())));
+            } catch (IllegalArgumentException e) {
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(
+                        Content.of("refuse").with("reason", e.getMessage()).toString()));
             }
         });
     }

@@ -3,13 +3,13 @@ package io.concord.agents.plan;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Asks;
 import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.proto.Conversations;
 import io.concord.layers.platform.AgentEntry;
@@ -85,17 +85,7 @@ public class PlannerAgent extends Agent {
         MessageTemplate mine = MessageTemplate.matchPerformative(Performative.REQUEST)
                 .or(MessageTemplate.matchPerformative(Performative.INFORM).and(m -> m.getContent() != null
                         && m.getContent().startsWith("blocked")));
-        addBehaviour(new CyclicBehaviour(this) {
-            @Override
-            public void action() {
-                AclMessage m = receive(mine);
-                if (m == null) {
-                    block();
-                    return;
-                }
-                handle(m);
-            }
-        });
+        Inbox.each(this, mine, this::handle);
     }
 
     /** The doors it knows, with their last state. */

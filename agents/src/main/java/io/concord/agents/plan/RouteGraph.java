@@ -105,6 +105,33 @@ public final class RouteGraph {
         return new RouteGraph(ids, xs, ys, edges, ls, new String[edges.length]);
     }
 
+    /**
+     * A generated graph for tests and benchmarks: a {@code w} x {@code h} grid with 1 m spacing,
+     * each node jittered by up to 0.3 m, each edge removed with probability {@code removed}.
+     */
+    public static RouteGraph grid(int w, int h, double removed, long seed) {
+        java.util.SplittableRandom r = new java.util.SplittableRandom(seed);
+        int n = w * h;
+        int[] ids = new int[n];
+        double[] xs = new double[n];
+        double[] ys = new double[n];
+        for (int i = 0; i < n; i++) {
+            ids[i] = i;
+            xs[i] = i % w + 0.3 * r.nextDouble();
+            ys[i] = i / w + 0.3 * r.nextDouble();
+        }
+        java.util.List<int[]> edges = new java.util.ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            if (i % w < w - 1 && r.nextDouble() >= removed) {
+                edges.add(new int[] {i, i + 1});
+            }
+            if (i / w < h - 1 && r.nextDouble() >= removed) {
+                edges.add(new int[] {i, i + w});
+            }
+        }
+        return of(ids, xs, ys, edges.toArray(new int[0][]));
+    }
+
     /** Nodes in the graph. */
     public int size() {
         return ids.length;

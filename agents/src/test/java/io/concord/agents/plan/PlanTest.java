@@ -50,7 +50,7 @@ class PlanTest {
 
     @Test
     void aStarFindsTheShortestRouteOnAGeneratedGraph() {
-        RouteGraph g = grid(32, 32, 0.2, 5);
+        RouteGraph g = RouteGraph.grid(32, 32, 0.2, 5);
         AStar a = new AStar(g, 0);
         // Against Dijkstra by brute force (A* with a zero heuristic is Dijkstra: compare lengths).
         SplittableRandom r = new SplittableRandom(1);
@@ -65,30 +65,6 @@ class PlanTest {
                 assertEquals(d, route.lengthM(), 1e-9);
             }
         }
-    }
-
-    /** A w x h grid with 1 m spacing, jittered, with a fraction of edges removed. */
-    public static RouteGraph grid(int w, int h, double removed, long seed) {
-        SplittableRandom r = new SplittableRandom(seed);
-        int n = w * h;
-        int[] ids = new int[n];
-        double[] xs = new double[n];
-        double[] ys = new double[n];
-        for (int i = 0; i < n; i++) {
-            ids[i] = i;
-            xs[i] = i % w + 0.3 * r.nextDouble();
-            ys[i] = i / w + 0.3 * r.nextDouble();
-        }
-        List<int[]> edges = new ArrayList<>();
-        for (int i = 0; i < n; i++) {
-            if (i % w < w - 1 && r.nextDouble() >= removed) {
-                edges.add(new int[] {i, i + 1});
-            }
-            if (i / w < h - 1 && r.nextDouble() >= removed) {
-                edges.add(new int[] {i, i + w});
-            }
-        }
-        return RouteGraph.of(ids, xs, ys, edges.toArray(new int[0][]));
     }
 
     /** Plain Dijkstra in O(n²) over the graph's arrays, as the reference. */

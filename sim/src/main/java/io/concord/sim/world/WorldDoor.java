@@ -353,10 +353,15 @@ public final class WorldDoor implements DoorDriver {
     // ---- zones ----------------------------------------------------------------------------------
 
     private static Shape doorwayZone(Door d) {
+        return strip(d, DOORWAY_DEPTH_M);
+    }
+
+    /** The opening widened by {@code halfDepth} metres each side of the wall's line. */
+    private static Shape strip(Door d, double halfDepth) {
         double ux = (d.to().x() - d.from().x()) / d.width();
         double uy = (d.to().y() - d.from().y()) / d.width();
-        double nx = -uy * DOORWAY_DEPTH_M;
-        double ny = ux * DOORWAY_DEPTH_M;
+        double nx = -uy * halfDepth;
+        double ny = ux * halfDepth;
         Point a = d.from();
         Point b = d.to();
         PolygonShape s = new PolygonShape();
@@ -375,17 +380,7 @@ public final class WorldDoor implements DoorDriver {
                 return c;
             }
             case SLIDING -> {
-                double ux = (d.to().x() - d.from().x()) / d.width();
-                double uy = (d.to().y() - d.from().y()) / d.width();
-                double nx = -uy * 0.15;
-                double ny = ux * 0.15;
-                Point a = d.from();
-                Point b = d.to();
-                PolygonShape s = new PolygonShape();
-                s.set(new Vec2[] {
-                    v(a.x() - nx, a.y() - ny), v(b.x() - nx, b.y() - ny), v(b.x() + nx, b.y() + ny), v(a.x() + nx, a.y() + ny)
-                }, 4);
-                return s;
+                return strip(d, 0.15);
             }
             default -> {
                 Point h = d.hingePoint();
