@@ -195,6 +195,10 @@ public final class HospitalDemo {
                     t.from(), area(map, t.from()), t.to(), area(map, t.to()), t.priority(), t.unloadS());
         }
         OUT.println(o.chairs() + (o.chairs() == 1 ? " chair waits" : " chairs wait") + " in the lobby (node 19 first).");
+        if (o.chairs() > 1) {
+            OUT.println("Note: the chairs have no traffic management yet: they stop for each other and may give up a task"
+                    + " (with its reason) where two meet head-on (docs/design.md, 'Not yet: traffic between chairs').");
+        }
     }
 
     // ---- one JVM on the virtual clock ----------------------------------------------------------
