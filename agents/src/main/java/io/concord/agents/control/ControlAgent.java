@@ -439,6 +439,10 @@ public class ControlAgent extends Agent implements ChairListener {
     }
 
     private void drive(ChairReadings r, Pose pose, long now) {
+        if (route == null) {
+            chair.stop();
+            return;
+        }
         if (index >= route.size()) {
             arrived(now);
             return;
@@ -539,7 +543,9 @@ public class ControlAgent extends Agent implements ChairListener {
                 }
             });
         }
-        return dist > WAIT_AT_DOOR_M;
+        // Wait out of the leaf's way: beyond a revolving door's sweep.
+        double wait = d.kind() == Door.Kind.ROTATING ? Math.max(WAIT_AT_DOOR_M, d.width() / 2 + 0.8) : WAIT_AT_DOOR_M;
+        return dist > wait;
     }
 
     private void tellPassed(String id) {
