@@ -71,6 +71,8 @@ public final class HospitalWorld {
     private final SplittableRandom random;
     private final World world;
     private final Body ground;
+    /** The floor the chairs' brakes hold on to: a body of its own, since a joint stops its bodies colliding. */
+    private final Body floor;
     private final Map<String, WorldDoor> doors = new LinkedHashMap<>();
     private final List<WorldDoor> doorList = new ArrayList<>();
     private final Map<String, SimChair> chairs = new LinkedHashMap<>();
@@ -104,6 +106,7 @@ public final class HospitalWorld {
         BodyDef gd = new BodyDef();
         gd.type = BodyType.STATIC;
         this.ground = world.createBody(gd);
+        this.floor = world.createBody(gd);
         ground.setUserData(new Thing(Thing.Kind.WALL, "wall", null));
         for (Wall w : map.walls()) {
             PolygonShape s = new PolygonShape();
@@ -236,7 +239,14 @@ public final class HospitalWorld {
         fd.filter.categoryBits = Thing.CHAIR_BIT;
         fd.filter.maskBits = Thing.WALL_BIT | Thing.LEAF_BIT | Thing.CHAIR_BIT | Thing.OBSTACLE_BIT;
         body.createFixture(fd);
-        SimChair chair = new SimChair(this, name, config, body, start, random.split());
+        // The brakes: friction against the floor, solved inside the step (an impulse before it would
+        // let a push creep the chair along); its force is set each step, grip while the wheels stand.
+        org.jbox2d.dynamics.joints.FrictionJointDef brake = new org.jbox2d.dynamics.joints.FrictionJointDef();
+        brake.initialize(floor, body, body.getWorldCenter());
+        brake.maxForce = 0;
+        brake.maxTorque = 0;
+        var brakeJoint = (org.jbox2d.dynamics.joints.FrictionJoint) world.createJoint(brake);
+        SimChair chair = new SimChair(this, name, config, body, brakeJoint, start, random.split());
         body.setUserData(new Thing(Thing.Kind.CHAIR, name, chair));
         chairs.put(name, chair);
         chairList.add(chair);

@@ -43,6 +43,8 @@ public final class SimChair implements ChairDriver {
     private final ChairConfig config;
     private final ChairLayout layout;
     final Body body;
+    private final org.jbox2d.dynamics.joints.FrictionJoint brake;
+    private boolean brakeOn;
     private final SplittableRandom random;
     private final double scaleLeft;
     private final double scaleRight;
@@ -92,8 +94,10 @@ public final class SimChair implements ChairDriver {
     private final Vec2 rayTo = new Vec2();
     private final RayHit hit = new RayHit();
 
-    SimChair(HospitalWorld world, String name, ChairConfig config, Body body, Pose start, SplittableRandom random) {
+    SimChair(HospitalWorld world, String name, ChairConfig config, Body body, org.jbox2d.dynamics.joints.FrictionJoint brake,
+             Pose start, SplittableRandom random) {
         this.world = world;
+        this.brake = brake;
         this.name = name;
         this.config = config;
         this.layout = config.layout();
@@ -324,17 +328,22 @@ public final class SimChair implements ChairDriver {
         double vf = vel.x * c + vel.y * s;
         double vl = -vel.x * s + vel.y * c;
         double m = body.getMass();
-        // A chair whose wheels stand holds with its brakes, up to the tyres' grip; a driving one
-        // with its motors' force.
+        // A chair whose wheels stand holds with its brakes (a friction joint to the floor, solved inside
+        // the step), up to the tyres' grip; a driving one pushes with its motors' force.
         boolean braked = wheelLeft == 0 && wheelRight == 0;
         double grip = GRIP * m * GRAVITY;
-        double jf = clamp(m * (v - vf), (braked ? grip : forceMax) * dt);
+        if (braked != brakeOn) {
+            brakeOn = braked;
+            brake.setMaxForce(braked ? (float) grip : 0f);
+            brake.setMaxTorque(braked ? (float) (torqueMax * grip / forceMax) : 0f);
+        }
+        double jf = clamp(m * (v - vf), forceMax * dt);
         double jl = clamp(-m * vl, grip * dt);
         if (jf != 0 || jl != 0) {
             tmp.set((float) (jf * c - jl * s), (float) (jf * s + jl * c));
             body.applyLinearImpulse(tmp, body.getWorldCenter());
         }
-        double ja = clamp(inertia * (w - body.getAngularVelocity()), (braked ? torqueMax * grip / forceMax : torqueMax) * dt);
+        double ja = clamp(inertia * (w - body.getAngularVelocity()), torqueMax * dt);
         if (ja != 0) {
             body.applyAngularImpulse((float) ja);
         }

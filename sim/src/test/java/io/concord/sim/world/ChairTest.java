@@ -215,4 +215,30 @@ class ChairTest {
         world.run(0.2);
         assertFalse(c.latest().faults().contains(io.concord.agents.chair.ChairFault.WATCHDOG), "a command clears it");
     }
+
+    @Test
+    void aBrakedChairHoldsWithItsTyresAgainstAPushItsMotorsCouldNotHold() {
+        // A braked chair's motors hold 300 N; its tyres 785 N. A 200 kg chair pushes with 600 N.
+        SimChair braked = chair(new Pose(10, 10.8, 0));
+        SimChair pusher = world.addChair("pusher", ChairConfig.standard().noiseless().withMassKg(200), new Pose(8.5, 10.8, 0));
+        pusher.drive(100, 100);
+        world.run(6);
+        assertTrue(pusher.touching() || world.collisions().stream().anyMatch(c -> c.other().equals("chair1")), "they met");
+        assertEquals(10, braked.truePose().x(), 0.1, "the braked chair held: " + braked.truePose());
+    }
+
+    @Test
+    void aListenerThatThrowsDoesNotStopTheWorld() {
+        SimChair bad = chair(new Pose(3, 10.8, 0));
+        SimChair good = world.addChair("chair2", ChairConfig.standard(), new Pose(10, 10.8, 0));
+        bad.setListener(r -> {
+            throw new IllegalStateException("a dead agent's code");
+        });
+        List<ChairReadings> reports = new ArrayList<>();
+        good.setListener(reports::add);
+        world.run(1);
+        assertEquals(20, reports.size(), "the other chair still reports");
+        assertEquals(20, bad.listenerFailures(), "every failure counted");
+        assertEquals(60, world.stepCount());
+    }
 }
