@@ -35,7 +35,7 @@ final class SimHarness {
     }
 
     record Outcome(int chairs, double stepsPerS, double engineStepsPerS, List<Window> windows, long collisions,
-                   double metresDriven, long doorMoves) {
+                   double metresDriven, long doorMoves, long resets, double worldSeconds) {
         double realtimeX() {
             return stepsPerS / 60;
         }
@@ -52,6 +52,8 @@ final class SimHarness {
         int to;
         double lastProgressM;
         long lastProgressStep;
+        boolean turnedBack;
+        long resets;
 
         Walker(SimChair chair, int start, SplittableRandom random) {
             this.chair = chair;
@@ -61,7 +63,7 @@ final class SimHarness {
         }
     }
 
-    static Outcome run(int chairs, double seconds, int windows) {
+    static Outcome run(int chairs, double seconds, int windows, java.nio.file.Path picture) {
         HospitalMap map = HospitalMap.defaultHospital();
         double engine = EngineBaseline.stepsPerSecond(map, chairs, Math.min(5, seconds / 4));
         try (Simulation sim = new Simulation(chairs, FaultPlan.NONE)) {
@@ -81,6 +83,12 @@ final class SimHarness {
                 }
                 if (world.stepCount() % 15 == 0) {
                     doorMoves[0] += doors(world, walkers);
+                }
+                // Hours of world time empty a 500 Wh battery (5 km): the chairs are kept charged.
+                if (world.stepCount() % 3600 == 0) {
+                    for (Walker w : walkers) {
+                        w.chair.setBatteryUsed(0);
+                    }
                 }
             });
             world.attach(rt);
@@ -113,10 +121,17 @@ final class SimHarness {
                 out.add(new Window(steps / ((t - t0) / 1e9), (double) bytes / steps, heap / 1048576.0));
             }
             double metres = 0;
+            long resets = 0;
             for (Walker w : walkers) {
                 metres += w.chair.distanceTravelled();
+                resets += w.resets;
             }
-            return new Outcome(chairs, totalSteps / (totalNs / 1e9), engine, out, world.collisionCount(), metres, doorMoves[0]);
+            if (picture != null) {
+                io.concord.sim.render.HospitalPicture.write(world, picture, String.format(Locale.ROOT,
+                        "bench sim, %d chairs: %.0f s of world time, %.0f m driven", chairs, world.worldTimeNs() / 1e9, metres));
+            }
+            return new Outcome(chairs, totalSteps / (totalNs / 1e9), engine, out, world.collisionCount(), metres, doorMoves[0],
+                    resets, world.worldTimeNs() / 1e9);
         }
     }
 
@@ -139,11 +154,20 @@ final class SimHarness {
         if (d - w.lastProgressM > 0.2) {
             w.lastProgressM = d;
             w.lastProgressStep = world.stepCount();
-        } else if (world.stepCount() - w.lastProgressStep > 300) {
+            w.turnedBack = false;
+        } else if (world.stepCount() - w.lastProgressStep > 600) {
+            // Wedged for 10 s (a chair half through a door that met it, two chairs nose to nose):
+            // a workload keeps its chairs driving, so it is lifted back onto the node it came from.
+            w.chair.place(world.poseAt(w.at, w.random.nextInt(360)));
+            w.to = w.at;
+            w.lastProgressStep = world.stepCount();
+            w.resets++;
+            target = map.node(w.to).at();
+        } else if (world.stepCount() - w.lastProgressStep > 300 && !w.turnedBack) {
             int back = w.at;
             w.at = w.to;
             w.to = back;
-            w.lastProgressStep = world.stepCount();
+            w.turnedBack = true;
             target = map.node(w.to).at();
         }
         PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
@@ -172,8 +196,9 @@ final class SimHarness {
 
     static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT sim %d steps_per_s=%.0f realtime_x=%.0f engine_steps_per_s=%.0f "
-                        + "engine_share=%.2f bytes_per_step=%.0f heap_mb_first=%.1f heap_mb_last=%.1f",
+                        + "engine_share=%.2f speed_mps=%.2f resets=%d bytes_per_step=%.0f heap_mb_first=%.1f heap_mb_last=%.1f",
                 o.chairs(), o.stepsPerS(), o.realtimeX(), o.engineStepsPerS(), o.stepsPerS() / o.engineStepsPerS(),
+                o.metresDriven() / o.worldSeconds() / o.chairs(), o.resets(),
                 o.windows().get(o.windows().size() - 1).bytesPerStep(), o.windows().get(0).heapMb(),
                 o.windows().get(o.windows().size() - 1).heapMb());
     }
