@@ -33,7 +33,9 @@ public final class HospitalMap {
     private final List<Wall> walls;
     private final List<Area> areas;
     private final Map<String, Door> doors;
+    private final List<Door> doorList;
     private final Map<Integer, Node> nodes;
+    private final List<Node> nodeList;
     private final List<Edge> edges;
     private final Map<Integer, List<Edge>> adjacency;
 
@@ -48,11 +50,13 @@ public final class HospitalMap {
             d.put(door.id(), door);
         }
         this.doors = Collections.unmodifiableMap(d);
+        this.doorList = List.copyOf(d.values());
         Map<Integer, Node> n = new LinkedHashMap<>();
         for (Node node : nodes) {
             n.put(node.id(), node);
         }
         this.nodes = Collections.unmodifiableMap(n);
+        this.nodeList = List.copyOf(n.values());
         this.edges = List.copyOf(edges);
         Map<Integer, List<Edge>> adj = new HashMap<>();
         for (Node node : nodes) {
@@ -127,7 +131,7 @@ public final class HospitalMap {
 
     /** Every door, in map order. */
     public List<Door> doors() {
-        return List.copyOf(doors.values());
+        return doorList;
     }
 
     /** The door with this id. */
@@ -141,7 +145,7 @@ public final class HospitalMap {
 
     /** Every node, in map order. */
     public List<Node> nodes() {
-        return List.copyOf(nodes.values());
+        return nodeList;
     }
 
     /** True if the map has a node with this id. */

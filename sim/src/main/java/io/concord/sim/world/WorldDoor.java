@@ -193,6 +193,11 @@ public final class WorldDoor implements DoorDriver {
         return lastContact;
     }
 
+    /** Callbacks on which the listener threw (each counted; the world goes on). */
+    public long listenerFailures() {
+        return listenerFailures;
+    }
+
     /** How many times the leaf has met something while moving. */
     public long contacts() {
         return contacts;
