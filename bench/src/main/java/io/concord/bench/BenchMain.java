@@ -479,7 +479,9 @@ public final class BenchMain {
                 + "record, so bytes a step follow the contacts while the heap stays flat. A chair wedged for 10 s (half "
                 + "through a door that met it, nose to nose with another) is lifted back onto the node it came from, so "
                 + "that the chairs keep driving, and batteries are recharged every minute of world time (a 500 Wh battery "
-                + "lasts about 5 km); the mean speed and the lifts are in the table, and `sim-N.png` shows the paths.",
+                + "lasts about 5 km); the mean speed and the lifts are in the table, and `sim-N.png` shows the paths. "
+                + "The walker opens doors on approach but does not wait for them: it touches the revolving door now "
+                + "and then (the red crosses).",
                 "Wall-clock windows"));
         md.append("| chairs | steps/s | times real time | bare engine steps/s | world / engine | mean speed m/s a chair | lifted out of a jam | bytes a step | heap MB first / last window | collisions | metres driven | door commands |\n");
         md.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
