@@ -565,6 +565,18 @@ public final class ContainerLayer extends Layer {
         return false;
     }
 
+    /**
+     * The message with its time of arrival on this host's clock, as a delivered message has it: a
+     * reply's reply-with is made from it (without it, from a counter shared by the whole JVM, which
+     * made two runs of one seed in one JVM differ).
+     */
+    private AclMessage stamped(AclMessage m) {
+        if (m.getReceivedAtEpochMs() == Long.MIN_VALUE) {
+            m.setReceivedAtEpochMs(host.clock().epochMillis());
+        }
+        return m;
+    }
+
     private void onPlatformMessage(Envelope env, AclMessage m) {
         String text = m.getContent();
         if (text != null && (text.startsWith(RELAY_OUT) || text.startsWith(RELAY_IN))) {
@@ -662,7 +674,7 @@ public final class ContainerLayer extends Layer {
 
     private void onQuery(AclMessage m, Lines.Content c) {
         AgentEntry asker = c.senderEntry(m);
-        AclMessage reply = m.createReply();
+        AclMessage reply = stamped(m).createReply();
         reply.setSender(selfAid);
         reply.setPerformative(Performative.INFORM);
         if (container != null && role != Role.SEEKING) {
@@ -1627,7 +1639,7 @@ public final class ContainerLayer extends Layer {
     }
 
     private AclMessage serviceReply(AclMessage m, Performative p, String content) {
-        AclMessage r = m.createReply();
+        AclMessage r = stamped(m).createReply();
         r.setPerformative(p);
         // Sent as the container itself: the frame is authenticated as the container's, and the
         // receiver's identification check holds the sender's name to that.
@@ -1746,7 +1758,7 @@ public final class ContainerLayer extends Layer {
     }
 
     private AclMessage platformReply(AclMessage to, Performative p, String content) {
-        AclMessage r = to.createReply();
+        AclMessage r = stamped(to).createReply();
         r.setPerformative(p);
         r.setSender(selfAid);
         r.setOntology(ONTOLOGY);
