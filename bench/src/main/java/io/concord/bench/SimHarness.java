@@ -29,7 +29,7 @@ import java.util.SplittableRandom;
  */
 final class SimHarness {
     /** Nodes the chairs start from, far enough apart. */
-    private static final int[] STARTS = {19, 23, 24, 22, 1, 5, 11, 13, 2, 12};
+    private static final int[] STARTS = io.concord.sim.Hospital.STARTS;
 
     record Window(double stepsPerS, double bytesPerStep, double heapMb) {
     }

@@ -3,6 +3,7 @@ package io.concord.sim;
 import io.concord.agents.control.ControlAgent;
 import io.concord.agents.door.DoorAgent;
 import io.concord.agents.plan.PlannerAgent;
+import io.concord.agents.traffic.TrafficAgent;
 import io.concord.layers.platform.Platform;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
@@ -15,12 +16,16 @@ import java.util.Map;
 import java.util.function.Consumer;
 
 /**
- * The hospital's agents on a platform: a door agent for every door of the world
- * ({@code door-<id>}), and for every chair a planner ({@code planner-<chair>}) and a control agent
- * ({@code control-<chair>}). The Medical agent runs wherever the staff are, on any runtime of the
- * same platform.
+ * The hospital's agents on a platform: the traffic agent ({@code traffic}), a door agent for every
+ * door of the world ({@code door-<id>}), and for every chair a planner ({@code planner-<chair>})
+ * and a control agent ({@code control-<chair>}). The Medical agent runs wherever the staff are, on
+ * any runtime of the same platform.
  */
 public final class Hospital {
+    /** Nodes of the default hospital where chairs start, in the order they are added: the lobby first. */
+    public static final int[] STARTS = {19, 23, 24, 22, 1, 5, 11, 13, 2, 12};
+
+    private TrafficAgent traffic;
     private final Map<String, DoorAgent> doors = new LinkedHashMap<>();
     private final Map<String, PlannerAgent> planners = new LinkedHashMap<>();
     private final Map<String, ControlAgent> controls = new LinkedHashMap<>();
@@ -28,9 +33,22 @@ public final class Hospital {
     private Hospital() {
     }
 
-    /** Starts the door agents and every chair's agents on the platform; call on its loop. */
+    /** Starts the traffic agent, the door agents and every chair's agents on the platform. */
     public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log) {
+        return start(platform, world, log, true);
+    }
+
+    /**
+     * As {@link #start(Platform, HospitalWorld, Consumer)}; with {@code traffic} false there is no
+     * traffic agent, and chairs keep apart by their range sensors alone (for one chair, or to show
+     * what the traffic agent does).
+     */
+    public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log, boolean traffic) {
         Hospital h = new Hospital();
+        if (traffic) {
+            h.traffic = new TrafficAgent(world.map(), log);
+            platform.startAgent("traffic", h.traffic);
+        }
         for (WorldDoor d : world.doors()) {
             DoorAgent a = new DoorAgent(d, DoorAgent.Settings.standard(), log);
             platform.startAgent("door-" + d.id(), a);
@@ -50,6 +68,11 @@ public final class Hospital {
         ControlAgent a = new ControlAgent(c, world.map(), log);
         platform.startAgent("control-" + c.name(), a);
         controls.put(c.name(), a);
+    }
+
+    /** The traffic agent, or null if started without one. */
+    public TrafficAgent traffic() {
+        return traffic;
     }
 
     /** The door agent of a door. */

@@ -45,7 +45,7 @@ import java.util.function.Consumer;
 public final class HospitalDemo {
     private static final PrintStream OUT = System.out;
     /** Where chairs wait, in the order they are added. */
-    static final int[] PARKING = {19, 23, 24, 22, 1};
+    static final int[] PARKING = java.util.Arrays.copyOf(Hospital.STARTS, 5);
 
     private HospitalDemo() {
     }

@@ -14,9 +14,11 @@ import io.concord.agents.map.Node;
 import io.concord.agents.map.Point;
 import io.concord.agents.proto.Asks;
 import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.proto.ContractNetResponder;
@@ -87,6 +89,13 @@ public class ControlAgent extends Agent implements ChairListener {
     private boolean replanning;
     private int lastNode = -1;
     private String stopReason;
+    /** The node the chair drives to on the edge it is on, or -1 at a node. */
+    private int edgeTo = -1;
+
+    // traffic: the routes it drives are granted by the traffic agent, if there is one
+    private TrafficClient traffic;
+    /** The node it steps aside to for another chair (the traffic agent's order), or -1. */
+    private int asideTo = -1;
 
     /**
      * @param chair the chair it drives
@@ -131,11 +140,16 @@ public class ControlAgent extends Agent implements ChairListener {
             }
         };
         addBehaviour(responder);
+        traffic = new TrafficClient(this, asks, this::refusedByTraffic);
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
+                .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), this::makeWay);
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.CANCEL), this::cancelled);
         // A chair that waits (loading, queued) is not silent: it keeps its doors' sessions alive.
         addBehaviour(new io.concord.core.agent.TickerBehaviour(this, KEEPALIVE_MS) {
             @Override
             protected void onTick() {
                 keepDoorsAlive();
+                traffic.alive(standsOn());
             }
         });
         chair.setListener(this);
@@ -368,10 +382,13 @@ public class ControlAgent extends Agent implements ChairListener {
         Pose pose = localiser.update(r);
         // Loading, unloading and stalls are timed on the chair's clock.
         long now = r.timeNs() / 1_000_000;
-        if (active == null) {
+        if (active == null && asideTo < 0) {
             startNext(now);
             if (active == null) {
                 chair.stop();
+                if (!replanning) {
+                    traffic.idle(here());
+                }
                 return;
             }
         }
@@ -379,7 +396,7 @@ public class ControlAgent extends Agent implements ChairListener {
             chair.stop();
             return;
         }
-        switch (active.state) {
+        switch (active == null ? TaskView.State.QUEUED : active.state) {
             case LOADING -> {
                 active.state = TaskView.State.TO_DROPOFF;
                 follow(active.toDropoff);
@@ -422,11 +439,34 @@ public class ControlAgent extends Agent implements ChairListener {
             if (t.state == TaskView.State.QUEUED) {
                 active = t;
                 t.state = TaskView.State.TO_PICKUP;
+                int here = here();
+                if (here != t.toPickup.get(0)) {
+                    // It was planned from where the queue was to end; the chair stands elsewhere.
+                    say("starts " + t.id + ": to node " + t.from + " from node " + here);
+                    route = List.of(here);
+                    replanTo(here, t.from, null);
+                    return;
+                }
                 follow(t.toPickup);
                 say("starts " + t.id + ": to node " + t.from + " by " + t.toPickup);
                 return;
             }
         }
+    }
+
+    /** The node the chair stands at or last reached. */
+    private int here() {
+        return lastNode >= 0 ? lastNode : nearestNode();
+    }
+
+    /** The nodes the chair stands on: the last it reached, and the one it drives to if it is on an edge. */
+    private List<Integer> standsOn() {
+        List<Integer> at = new ArrayList<>();
+        at.add(here());
+        if (edgeTo >= 0 && edgeTo != at.get(0)) {
+            at.add(edgeTo);
+        }
+        return at;
     }
 
     private void follow(List<Integer> nodes) {
@@ -447,11 +487,17 @@ public class ControlAgent extends Agent implements ChairListener {
             arrived(now);
             return;
         }
+        if (!traffic.mayDrive(route, standsOn(), asideTo >= 0)) {
+            chair.stop();
+            return;
+        }
         if (index == 0) {
             Point first = map.node(route.get(0)).at();
             if (control.reached(pose, first.x(), first.y())) {
                 index = 1;
                 lastNode = route.get(0);
+                edgeTo = -1;
+                traffic.keepOnly(route);
             } else {
                 PoseController.Powers p = control.toPoint(pose, first.x(), first.y());
                 chair.drive(p.left() * 0.5, p.right() * 0.5);
@@ -471,8 +517,10 @@ public class ControlAgent extends Agent implements ChairListener {
                 tellPassed(edge.door());
             }
             lastNode = toId;
+            edgeTo = -1;
             index++;
             stoppedSinceMs = -1;
+            traffic.keepOnly(route.subList(index - 1, route.size()));
             if (index >= route.size()) {
                 arrived(now);
             }
@@ -481,6 +529,10 @@ public class ControlAgent extends Agent implements ChairListener {
         if (edge.door() != null && !door(edge, fromId, pose)) {
             chair.stop();
             return;
+        }
+        if (edgeTo != toId) {
+            edgeTo = toId;
+            traffic.alive(standsOn()); // sets off along the edge: its body now takes both ends
         }
         double front = r.range(chair.layout().sensorIndex("front"));
         double irl = r.range(chair.layout().sensorIndex("ir-front-left"));
@@ -543,8 +595,10 @@ public class ControlAgent extends Agent implements ChairListener {
                 }
             });
         }
-        // Wait out of the leaf's way: beyond a revolving door's sweep.
-        double wait = d.kind() == Door.Kind.ROTATING ? Math.max(WAIT_AT_DOOR_M, d.width() / 2 + 0.8) : WAIT_AT_DOOR_M;
+        // Wait out of the leaf's way: beyond a revolving door's sweep by the chair's half length and
+        // its braking distance (at 2.2 m from a 3.2 m door the nose of a chair that braked there was
+        // inside the circle, and the leaf hit it).
+        double wait = d.kind() == Door.Kind.ROTATING ? Math.max(WAIT_AT_DOOR_M, d.width() / 2 + 1.2) : WAIT_AT_DOOR_M;
         return dist > wait;
     }
 
@@ -570,8 +624,13 @@ public class ControlAgent extends Agent implements ChairListener {
     }
 
     private void blocked(int fromId, int toId) {
-        AID planner = planner();
         say("edge " + fromId + "-" + toId + " blocked for " + BLOCKED_AFTER_MS / 1000 + " s: tells the planner and drives around");
+        tellBlocked(fromId, toId);
+        replan(fromId, null);
+    }
+
+    private void tellBlocked(int fromId, int toId) {
+        AID planner = planner();
         if (planner != null) {
             AclMessage m = new AclMessage(Performative.INFORM);
             m.addReceiver(planner);
@@ -579,12 +638,118 @@ public class ControlAgent extends Agent implements ChairListener {
             m.setContent(Content.of("blocked").with("from", fromId).with("to", toId).toString());
             send(m);
         }
-        replan(fromId, null);
+    }
+
+    // ---- traffic --------------------------------------------------------------------------------
+
+    /** The traffic agent cannot grant the route (a silent chair stands on it): plan around that node. */
+    private void refusedByTraffic(int node, String why) {
+        if (route == null) {
+            return;
+        }
+        if (asideTo >= 0) {
+            say("cannot make way to node " + asideTo + ": " + why);
+            asideTo = -1;
+            route = null;
+            return;
+        }
+        if (active == null) {
+            return;
+        }
+        int at = route.indexOf(node);
+        if (at > 0) {
+            tellBlocked(route.get(at - 1), node);
+        }
+        route = new ArrayList<>(route.subList(Math.max(0, index - 1), route.size()));
+        replan(here(), "the traffic agent cannot grant the route (" + why + ")");
+    }
+
+    /** The traffic agent's order to step aside for another chair: a plan to the node it names, then on from there. */
+    private void makeWay(AclMessage m) {
+        int from;
+        int to;
+        try {
+            Content c = Content.parse(m.getContent());
+            from = c.integer("from");
+            to = c.integer("to");
+            if (!map.hasNode(to)) {
+                throw new IllegalArgumentException("no node " + to);
+            }
+        } catch (IllegalArgumentException e) {
+            say("ignores a malformed order to make way: " + e.getMessage());
+            return;
+        }
+        boolean driving = route != null && index < route.size() && traffic.mayDriveNow(route);
+        if (driving || replanning || asideTo >= 0 || here() != from) {
+            say("cannot make way from node " + from + " to node " + to + (here() != from ? ": it is at node " + here()
+                    : ": it is under way"));
+            traffic.release(to);
+            if (!driving) {
+                traffic.reset(); // its wait was dropped for the order: asks again, or says again where it idles
+            }
+            return;
+        }
+        AID planner = planner();
+        if (planner == null) {
+            traffic.release(to);
+            return;
+        }
+        traffic.reset();
+        asideTo = to;
+        replanning = true;
+        chair.stop();
+        plan(planner, "make-way", from, to).thenAccept(a -> {
+            replanning = false;
+            if (asideTo != to) {
+                return;
+            }
+            if (a.getPerformative() != Performative.INFORM_REF) {
+                say("cannot make way to node " + to + ": " + reason(a, "no plan"));
+                asideTo = -1;
+                traffic.release(to);
+                if (active == null) {
+                    route = null;
+                }
+                return;
+            }
+            List<Integer> nodes = nodes(Content.parse(a.getContent()));
+            say("makes way for another chair: to node " + to + " by " + nodes);
+            follow(nodes);
+        });
+    }
+
+    /** The Medical agent withdrew a task (it gave it to another chair): dropped, and the chair stops if it was driving it. */
+    private void cancelled(AclMessage m) {
+        Task t = null;
+        for (Task x : tasks) {
+            if (x.accept != null && m.getConversationId() != null && m.getConversationId().equals(x.cfp.getConversationId())) {
+                t = x;
+            }
+        }
+        if (t == null || t.state.compareTo(TaskView.State.DONE) >= 0) {
+            return;
+        }
+        say("task " + t.id + " withdrawn by " + m.getSender().localName());
+        t.state = TaskView.State.CANCELLED;
+        t.reason = "withdrawn by " + m.getSender().localName();
+        if (active == t) {
+            chair.stop();
+            active = null;
+            route = null;
+            asideTo = -1;
+            pauseUntilMs = -1;
+            traffic.reset();
+        }
     }
 
     /** Asks for a new plan from a node to the end of the current route; fails the task if none comes. */
     private void replan(int fromId, String why) {
-        if (replanning) {
+        replanTo(fromId, route.get(route.size() - 1), why);
+    }
+
+    /** Asks for a new plan from a node to {@code goal} for the active task; fails the task if none comes. */
+    private void replanTo(int fromId, int goal, String why) {
+        if (replanning || active == null) {
             return;
         }
         if (why != null) {
@@ -592,7 +757,6 @@ public class ControlAgent extends Agent implements ChairListener {
         }
         AID planner = planner();
         Task t = active;
-        int goal = route.get(route.size() - 1);
         if (planner == null) {
             finish(t, "no planner to replan with");
             return;
@@ -619,6 +783,24 @@ public class ControlAgent extends Agent implements ChairListener {
 
     private void arrived(long now) {
         chair.stop();
+        if (asideTo >= 0) {
+            int here = asideTo;
+            asideTo = -1;
+            route = null;
+            say("has made way at node " + here);
+            if (active == null) {
+                return; // idle here: said on the next reading
+            }
+            int goal = active.state == TaskView.State.TO_PICKUP ? active.from : active.to;
+            if (goal != here) {
+                route = List.of(here);
+                replanTo(here, goal, null);
+                return;
+            }
+        }
+        if (active == null) {
+            return;
+        }
         if (active.state == TaskView.State.TO_PICKUP) {
             active.state = TaskView.State.LOADING;
             pauseUntilMs = now + (long) (active.unloadS * 1000);
@@ -654,6 +836,7 @@ public class ControlAgent extends Agent implements ChairListener {
             active = null;
             route = null;
             stopReason = null;
+            asideTo = -1;
         }
     }
 
@@ -665,7 +848,11 @@ public class ControlAgent extends Agent implements ChairListener {
         Area ka = map.areaAt(a).orElse(null);
         Area kb = map.areaAt(b).orElse(null);
         boolean last = route != null && toId == route.get(route.size() - 1);
-        boolean corridor = !last && edge.door() == null && len > 2.5 && ka != null && kb != null
+        // Before a doorway the chair lines up on the node itself: the door's edge starts there, and a
+        // revolving leaf standing open along the corridor leaves room beside it only on that line.
+        int after = route == null ? -1 : route.indexOf(toId) + 1;
+        boolean doorNext = after > 0 && after < route.size() && map.edge(toId, route.get(after)).map(e -> e.door() != null).orElse(false);
+        boolean corridor = !last && !doorNext && edge.door() == null && len > 2.5 && ka != null && kb != null
                 && ka.kind() != Area.Kind.ROOM && kb.kind() != Area.Kind.ROOM;
         if (!corridor) {
             return b;

@@ -17,5 +17,5 @@ public record TaskView(String id, int from, int to, double priority, double unlo
                        double pathS, String reason) {
 
     /** The states of a task, in order. */
-    public enum State { EVALUATING, PROPOSED, REFUSED, QUEUED, TO_PICKUP, LOADING, TO_DROPOFF, UNLOADING, DONE, FAILED }
+    public enum State { EVALUATING, PROPOSED, REFUSED, QUEUED, TO_PICKUP, LOADING, TO_DROPOFF, UNLOADING, DONE, FAILED, CANCELLED }
 }

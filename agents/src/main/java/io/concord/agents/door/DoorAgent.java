@@ -1,5 +1,6 @@
 package io.concord.agents.door;
 
+import io.concord.agents.map.Door;
 import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Inbox;
 import io.concord.agents.proto.Services;
@@ -283,6 +284,10 @@ public class DoorAgent extends Agent {
             return;
         }
         if (state == State.CLOSED || state == State.CLOSING) {
+            // A revolving leaf sweeps both sides: it does not start while anything stands in its way.
+            if (door.spec().kind() == Door.Kind.ROTATING && door.sweepOccupied()) {
+                return;
+            }
             door.open();
             state = State.OPENING;
             return;

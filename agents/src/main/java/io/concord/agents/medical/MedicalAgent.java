@@ -225,6 +225,14 @@ public class MedicalAgent extends Agent {
             protected void handleAllResultNotifications(List<AclMessage> results) {
                 if (winner != null && !f.isDone() && results.stream().noneMatch(r -> r.getPerformative() == Performative.FAILURE)) {
                     log.accept(getLocalName() + ": " + winner.getSender().localName() + " went silent on " + id);
+                    // Withdrawn from that chair, in case it still drives it: nobody carries the patient twice.
+                    AclMessage cancel = new AclMessage(Performative.CANCEL);
+                    cancel.addReceiver(winner.getSender());
+                    cancel.setProtocol(FipaProtocols.CONTRACT_NET);
+                    cancel.setOntology(Services.ONTOLOGY);
+                    cancel.setConversationId(winner.getConversationId());
+                    cancel.setContent(Content.of("transport").with("task", id).toString());
+                    send(cancel);
                     again(winner.getSender().localName() + " went silent");
                 }
             }

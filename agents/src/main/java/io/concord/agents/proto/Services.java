@@ -8,6 +8,8 @@ public final class Services {
     public static final String PLANNER = "wheelchair-planner";
     /** A control agent that takes patient transports; property: chair. */
     public static final String TRANSPORT = "wheelchair-transport";
+    /** The traffic agent: grants chairs their routes node by node so that they never meet. */
+    public static final String TRAFFIC = "wheelchair-traffic";
     /** The Medical agent: takes transport requests. */
     public static final String MEDICAL = "medical-transport";
     /** The ontology every wheelchair message carries. */

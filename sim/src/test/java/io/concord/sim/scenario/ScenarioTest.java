@@ -42,15 +42,18 @@ class ScenarioTest {
         final List<String> delivered = new ArrayList<>();
 
         Run(long seed, FaultPlan plan, int chairs) {
+            this(seed, plan, chairs, true);
+        }
+
+        Run(long seed, FaultPlan plan, int chairs, boolean traffic) {
             sim = new Simulation(seed, plan);
             sim.platformName("hospital");
             rt = sim.newRuntime("h1");
             platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 200, 10))
                     .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
             world = HospitalWorld.builder(MAP).seed(seed).build();
-            int[] starts = {19, 23, 24, 22, 1};
             for (int i = 0; i < chairs; i++) {
-                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(starts[i], 90));
+                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(Hospital.STARTS[i], 90));
             }
             world.attach(rt);
             sim.trace().addListener((ns, node, event, detail) -> {
@@ -58,7 +61,7 @@ class ScenarioTest {
                     delivered.add(node.substring(0, node.indexOf('@')) + " <- " + detail.substring(0, detail.indexOf(" conv=")));
                 }
             });
-            hospital = Hospital.start(platform, world, log::add);
+            hospital = Hospital.start(platform, world, log::add, traffic);
             medical = new MedicalAgent(log::add);
             platform.startAgent("medical", medical);
             assertTrue(sim.runUntil(hospital::ready, 60_000), "every planner knows every door");

@@ -1,0 +1,197 @@
+package io.concord.agents.control;
+
+import io.concord.agents.proto.Asks;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.proto.FipaProtocols;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.BiConsumer;
+
+/**
+ * A control agent's side of the traffic agent (see {@code TrafficAgent}): before it drives a
+ * route it asks for all of it, and drives once granted; it gives back each node it leaves, says
+ * when it is idle and where, and that it is alive. With no traffic agent in the yellow pages
+ * every route may be driven at once (one chair alone needs none).
+ */
+final class TrafficClient {
+    /** How long a reservation may wait before it is asked again. */
+    private static final long WAIT_MS = 1_800_000;
+
+    private final Agent agent;
+    private final Asks asks;
+    /** Told of a route that cannot be granted: the node in the way and why. */
+    private final BiConsumer<Integer, String> onRefused;
+    private final Set<Integer> held = new LinkedHashSet<>();
+    private List<Integer> granted;
+    private List<Integer> asked;
+    private long seq;
+    private int idleAt = -1;
+
+    TrafficClient(Agent agent, Asks asks, BiConsumer<Integer, String> onRefused) {
+        this.agent = agent;
+        this.asks = asks;
+        this.onRefused = onRefused;
+    }
+
+    private AID traffic() {
+        for (AgentEntry e : Platform.of(agent).search(ServiceDescription.ofType(Services.TRAFFIC))) {
+            return e.aid();
+        }
+        return null;
+    }
+
+    /**
+     * True if the chair may drive {@code route} (this very list): granted, or no traffic agent.
+     * Otherwise asks for it once, from where the chair stands ({@code at}), and answers false
+     * until the grant comes.
+     */
+    boolean mayDrive(List<Integer> route, List<Integer> at, boolean aside) {
+        if (route == granted) {
+            return true;
+        }
+        AID traffic = traffic();
+        if (traffic == null) {
+            return true;
+        }
+        if (route == asked) {
+            return false;
+        }
+        asked = route;
+        idleAt = -1;
+        long mine = ++seq;
+        held.clear();
+        held.addAll(at);
+        AclMessage req = new AclMessage(Performative.REQUEST);
+        req.addReceiver(traffic);
+        req.setProtocol(FipaProtocols.REQUEST);
+        req.setOntology(Services.ONTOLOGY);
+        Content c = Content.of("reserve").with("at", join(at)).with("path", join(route));
+        req.setContent((aside ? c.with("aside", "true") : c).toString());
+        asks.ask(req, WAIT_MS, null).thenAccept(a -> {
+            if (seq != mine) {
+                return;
+            }
+            asked = null;
+            if (a == null) {
+                return; // asked again on the next reading
+            }
+            if (a.getPerformative() == Performative.INFORM) {
+                granted = route;
+                held.addAll(route);
+                return;
+            }
+            String why = reasonOf(a);
+            if (why.equals("make-way") || why.startsWith("superseded")) {
+                return;
+            }
+            int node = -1;
+            try {
+                node = (int) Content.parse(a.getContent()).number("node", -1);
+            } catch (IllegalArgumentException e) {
+                // no node named
+            }
+            onRefused.accept(node, a.getPerformative() + ": " + why);
+        });
+        return false;
+    }
+
+    /** True if {@code route} (this very list) is granted or needs no grant. */
+    boolean mayDriveNow(List<Integer> route) {
+        return route == granted || traffic() == null;
+    }
+
+    /** Forgets any grant and question (a step aside ordered, a task cancelled): the next route is asked anew. */
+    void reset() {
+        seq++;
+        granted = null;
+        asked = null;
+        idleAt = -1;
+    }
+
+    /** The chair has reached a node of its route: gives back every node not in {@code still} (the route's rest). */
+    void keepOnly(List<Integer> still) {
+        AID traffic = traffic();
+        for (int n : new ArrayList<>(held)) {
+            if (!still.contains(n)) {
+                held.remove(n);
+                if (traffic != null) {
+                    inform(traffic, Content.of("release").with("node", n));
+                }
+            }
+        }
+    }
+
+    /** Gives back one node the chair was given and will not use. */
+    void release(int node) {
+        held.remove(node);
+        AID traffic = traffic();
+        if (traffic != null) {
+            inform(traffic, Content.of("release").with("node", node));
+        }
+    }
+
+    /** The chair has nothing to do at {@code node}: said once until it asks for a route again. */
+    void idle(int node) {
+        if (idleAt == node) {
+            return;
+        }
+        AID traffic = traffic();
+        if (traffic == null) {
+            return;
+        }
+        reset();
+        idleAt = node;
+        held.clear();
+        held.add(node);
+        inform(traffic, Content.of("idle").with("at", node));
+    }
+
+    /** The chair is alive and stands on {@code at} (a silent chair keeps only where it stands). */
+    void alive(List<Integer> at) {
+        AID traffic = traffic();
+        if (traffic != null) {
+            inform(traffic, Content.of("here").with("at", join(at)));
+        }
+    }
+
+    /** The nodes it holds, where it stands first. */
+    List<Integer> held() {
+        return List.copyOf(held);
+    }
+
+    private void inform(AID traffic, Content c) {
+        AclMessage m = new AclMessage(Performative.INFORM);
+        m.addReceiver(traffic);
+        m.setOntology(Services.ONTOLOGY);
+        m.setContent(c.toString());
+        agent.send(m);
+    }
+
+    private static String reasonOf(AclMessage m) {
+        try {
+            String r = Content.parse(m.getContent()).get("reason");
+            return r == null ? "" : r;
+        } catch (IllegalArgumentException e) {
+            return "";
+        }
+    }
+
+    static String join(List<Integer> nodes) {
+        StringBuilder b = new StringBuilder();
+        for (int n : nodes) {
+            b.append(b.length() == 0 ? "" : ",").append(n);
+        }
+        return b.toString();
+    }
+}

@@ -1,0 +1,212 @@
+package io.concord.sim.scenario;
+
+import io.concord.agents.proto.Asks;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.agents.traffic.TrafficAgent;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.testkit.FaultPlan;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The traffic agent's rules one by one, with probes in place of the chairs' control agents, on
+ * the virtual clock. Each test that shows a rule fails with {@link TrafficAgent#enabled(boolean)}
+ * false (every route granted at once).
+ */
+class TrafficTest {
+
+    /** A chair's control agent as far as the traffic agent can tell: asks, tells, and keeps its orders. */
+    static final class Chair extends Agent {
+        Asks asks;
+        final List<AclMessage> agrees = new ArrayList<>();
+        final List<Content> orders = new ArrayList<>();
+
+        @Override
+        protected void setup() {
+            asks = new Asks(this);
+            addBehaviour(asks);
+            io.concord.agents.proto.Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM)
+                    .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), m -> orders.add(Content.parse(m.getContent())));
+        }
+
+        CompletableFuture<AclMessage> reserve(String at, String path, boolean aside) {
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(AID.local("traffic", "hospital"));
+            m.setOntology(Services.ONTOLOGY);
+            Content c = Content.of("reserve").with("at", at).with("path", path);
+            m.setContent((aside ? c.with("aside", "true") : c).toString());
+            return asks.ask(m, 600_000, agrees::add);
+        }
+
+        void tell(Content c) {
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(AID.local("traffic", "hospital"));
+            m.setOntology(Services.ONTOLOGY);
+            m.setContent(c.toString());
+            send(m);
+        }
+
+        void release(int... nodes) {
+            for (int n : nodes) {
+                tell(Content.of("release").with("node", n));
+            }
+        }
+    }
+
+    private static Chair chair(ScenarioTest.Run r, String name) {
+        Chair c = new Chair();
+        r.platform.startAgent(name, c);
+        r.sim.runFor(200);
+        return c;
+    }
+
+    private static AclMessage answer(ScenarioTest.Run r, CompletableFuture<AclMessage> f) {
+        assertTrue(r.sim.runUntil(f::isDone, 30_000), "an answer");
+        return f.join();
+    }
+
+    private static String reason(AclMessage m) {
+        return Content.parse(m.getContent()).get("reason");
+    }
+
+    @Test
+    void aRouteIsGrantedWholeAndACrossingRouteWaitsUntilEveryNodeOfItIsGivenBack() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
+            Chair a = chair(r, "a");
+            Chair b = chair(r, "b");
+            AclMessage ga = answer(r, a.reserve("19", "19,22,7,8", false));
+            assertEquals(Performative.INFORM, ga.getPerformative());
+            assertEquals("19,22,7,8", Content.parse(ga.getContent()).get("path"));
+            CompletableFuture<AclMessage> gb = b.reserve("6", "6,7,22,23", false);
+            r.sim.runFor(5_000);
+            assertFalse(gb.isDone(), "b's route crosses a's at 7 and 22: it waits");
+            assertEquals(1, b.agrees.size());
+            assertEquals("a", Content.parse(b.agrees.get(0).getContent()).get("held-by"));
+            a.release(19, 22);
+            r.sim.runFor(5_000);
+            assertFalse(gb.isDone(), "7 is still a's");
+            a.release(7);
+            assertEquals(Performative.INFORM, answer(r, gb).getPerformative(), "granted once 7 is given back");
+            assertEquals(java.util.Set.of("b@hospital"), r.hospital.traffic().holders().get(22));
+        }
+    }
+
+    @Test
+    void anIdleChairInTheWayMakesWayToANodeNobodyNeeds() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
+            Chair a = chair(r, "a");
+            Chair b = chair(r, "b");
+            a.tell(Content.of("idle").with("at", 7));
+            r.sim.runFor(500);
+            CompletableFuture<AclMessage> gb = b.reserve("19", "19,22,7,6,5,21", false);
+            assertTrue(r.sim.runUntil(() -> !a.orders.isEmpty(), 10_000), "a is told to make way");
+            Content order = a.orders.get(0);
+            assertEquals(7, order.integer("from"));
+            int to = order.integer("to");
+            assertFalse(List.of(19, 22, 7, 6, 5, 21).contains(to), "not onto b's route: " + to);
+            assertFalse(gb.isDone(), "b waits while a stands on 7");
+            // a asks for the way there (stepping aside goes first), drives it, and leaves 7.
+            String path = "7," + order.get("path");
+            assertEquals(Performative.INFORM, answer(r, a.reserve("7", path, true)).getPerformative());
+            a.release(7);
+            assertEquals(Performative.INFORM, answer(r, gb).getPerformative());
+            assertEquals(1, r.hospital.traffic().moves());
+        }
+    }
+
+    @Test
+    void twoChairsEachWantingTheOthersRoomIsADeadlockBrokenByOneMakingWay() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
+            Chair a = chair(r, "a");
+            Chair b = chair(r, "b");
+            // Each stands in its room (a route of one node), busy (not idle), then asks for the other's.
+            assertEquals(Performative.INFORM, answer(r, a.reserve("3", "3", false)).getPerformative());
+            assertEquals(Performative.INFORM, answer(r, b.reserve("16", "16", false)).getPerformative());
+            CompletableFuture<AclMessage> ga = a.reserve("3", "3,2,16", false);
+            r.sim.runFor(3_000);
+            assertFalse(ga.isDone(), "a waits for b, who is busy: no deadlock yet");
+            assertEquals(0, r.hospital.traffic().deadlocks());
+            CompletableFuture<AclMessage> gb = b.reserve("16", "16,2,3", false);
+            assertTrue(r.sim.runUntil(() -> !a.orders.isEmpty() || !b.orders.isEmpty(), 10_000), "one of them is told to make way");
+            assertEquals(1, r.hospital.traffic().deadlocks());
+            // The first by name goes: its wait is answered FAILURE make-way.
+            assertEquals(1, a.orders.size());
+            assertTrue(b.orders.isEmpty());
+            assertEquals(Performative.FAILURE, answer(r, ga).getPerformative());
+            assertEquals("make-way", reason(ga.join()));
+            Content order = a.orders.get(0);
+            assertEquals(3, order.integer("from"));
+            assertEquals(Performative.INFORM, answer(r, a.reserve("3", "3," + order.get("path"), true)).getPerformative());
+            assertFalse(gb.isDone(), "b waits until a has left its room and the corridor");
+            a.release(3, 2);
+            assertEquals(Performative.INFORM, answer(r, gb).getPerformative());
+        }
+    }
+
+    @Test
+    void aSilentChairKeepsOnlyWhereItStandsAndWhoWaitsForThatIsToldWhy() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
+            Chair a = chair(r, "a");
+            Chair b = chair(r, "b");
+            assertEquals(Performative.INFORM, answer(r, a.reserve("19", "19,22,7,6", false)).getPerformative());
+            // a sets off along 19-22 and says so; then nothing more is heard of it.
+            a.tell(Content.of("here").with("at", "19,22"));
+            CompletableFuture<AclMessage> gb = b.reserve("23", "23,22,7,8", false);
+            for (int i = 0; i < 4; i++) {
+                r.sim.runFor(TrafficAgent.SILENT_MS / 4);
+                b.tell(Content.of("here"));
+            }
+            AclMessage m = answer(r, gb);
+            assertEquals(Performative.FAILURE, m.getPerformative());
+            assertEquals("a is silent and stands on the route", reason(m));
+            assertEquals(22, Content.parse(m.getContent()).integer("node"));
+            var held = r.hospital.traffic().holders();
+            assertTrue(held.get(19).contains("a@hospital") && held.get(22).contains("a@hospital"), "its body: " + held);
+            assertFalse(held.containsKey(7) || held.containsKey(6), "the rest of its route is given back: " + held);
+            assertTrue(r.log.contains("traffic: a is silent; it keeps [19, 22] where it stands"), String.join("\n", r.log));
+        }
+    }
+
+    @Test
+    void aChairSilentBeforeItSetOffKeepsOnlyTheNodeItStandsOn() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
+            Chair a = chair(r, "a");
+            Chair b = chair(r, "b");
+            assertEquals(Performative.INFORM, answer(r, a.reserve("19", "19,22,7,6", false)).getPerformative());
+            CompletableFuture<AclMessage> gb = b.reserve("23", "23,22,7,8", false);
+            for (int i = 0; i < 4; i++) {
+                r.sim.runFor(TrafficAgent.SILENT_MS / 4);
+                b.tell(Content.of("here"));
+            }
+            assertEquals(Performative.INFORM, answer(r, gb).getPerformative(), "22 is free: a never left 19");
+            assertEquals(java.util.Set.of("a@hospital"), r.hospital.traffic().holders().get(19));
+        }
+    }
+
+    @Test
+    void aRouteOffTheMapIsRefusedWithTheReason() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
+            Chair a = chair(r, "a");
+            AclMessage m = answer(r, a.reserve("19", "19,99", false));
+            assertEquals(Performative.REFUSE, m.getPerformative());
+            assertEquals("path: there is no node 99 on " + ScenarioTest.MAP.name(), reason(m));
+            m = answer(r, a.reserve("1", "1,3", false));
+            assertEquals(Performative.REFUSE, m.getPerformative());
+            assertEquals("the route has no edge 1-3", reason(m));
+            assertTrue(r.hospital.traffic().holders().isEmpty(), "nothing held for a refused route");
+        }
+    }
+}
