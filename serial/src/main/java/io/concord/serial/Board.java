@@ -1,0 +1,241 @@
+package io.concord.serial;
+
+import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.ChairReadings;
+
+import java.util.EnumSet;
+import java.util.Set;
+import java.util.function.Consumer;
+
+/**
+ * The chair's board, as docs/chair-protocol.md specifies it, over any byte transport and any
+ * motors and sensors (a {@link ChairDriver}: the simulated chair in the emulator). Single-threaded:
+ * feed it bytes ({@link #onBytes}) and time ({@link #tick}) from one thread.
+ *
+ * <p>Its safety rules, which no host frame can override:
+ * <ul>
+ *   <li>the watchdog: no valid host frame for {@link #WATCHDOG_MS} and the motors go to zero,
+ *       WATCHDOG is reported, and driving needs a neutral command again;</li>
+ *   <li>switch-on: until a STOP or a DRIVE of 0, 0 arrives, a non-neutral DRIVE is refused (NAK
+ *       not-neutral) and the motors stay at zero;</li>
+ *   <li>the e-stop wins over everything: while pressed the motors are at zero, DRIVE is refused
+ *       (NAK e-stop), and driving needs a neutral command after its release.</li>
+ * </ul>
+ */
+public final class Board {
+    /** Silence from the host after which the board stops the motors. */
+    public static final long WATCHDOG_MS = 200;
+    /** Host frames older than this are stale. */
+    public static final long HOST_MAX_AGE_MS = 200;
+
+    private final ChairDriver chair;
+    private final FrameCodec codec;
+    private final String firmware;
+    private final Consumer<byte[]> wire;
+    private final Deframer deframer;
+    private final SequenceCheck check = new SequenceCheck(HOST_MAX_AGE_MS);
+    private final Drops drops = new Drops();
+    private long nowMs;
+    private int seq;
+    private long lastHostMs = -1;
+    private boolean armed;
+    private boolean tripped;
+    private boolean estop;
+    private int stateHz = 20;
+    private long nextStateMs;
+    private int leftPermille;
+    private int rightPermille;
+    private long accepted;
+
+    /**
+     * @param chair    the motors and sensors
+     * @param codec    the frame codec (with the pairing key, if any)
+     * @param firmware the version sent in HELLO
+     * @param wire     takes the bytes to send to the host
+     */
+    public Board(ChairDriver chair, FrameCodec codec, String firmware, Consumer<byte[]> wire) {
+        this.chair = chair;
+        this.codec = codec;
+        this.firmware = firmware;
+        this.wire = wire;
+        this.deframer = new Deframer(FrameCodec.MAX_FRAME * 2, this::onStuffed, () -> drops.count("oversized"));
+    }
+
+    /** Switches on at {@code nowMs} on the board's clock: sends HELLO, motors at zero, not armed. */
+    public void switchOn(long nowMs) {
+        this.nowMs = nowMs;
+        chair.stop();
+        send(Frame.Type.HELLO, 0, BoardProtocol.hello(firmware, chair.layout()));
+        nextStateMs = nowMs;
+    }
+
+    /** Bytes from the host, in any chunks. */
+    public void onBytes(byte[] b, int off, int len, long nowMs) {
+        this.nowMs = nowMs;
+        deframer.feed(b, off, len);
+    }
+
+    /** Presses (true) or releases the e-stop. */
+    public void estop(boolean pressed, long nowMs) {
+        this.nowMs = nowMs;
+        estop = pressed;
+        if (pressed) {
+            halt();
+        }
+    }
+
+    /** Time passes: the watchdog, and the STATE frames at the configured rate. */
+    public void tick(long nowMs) {
+        this.nowMs = nowMs;
+        if (!tripped && armed && lastHostMs >= 0 && nowMs - lastHostMs > WATCHDOG_MS) {
+            tripped = true;
+            halt();
+        }
+        if (estop) {
+            chair.stop();
+        }
+        if (nowMs >= nextStateMs) {
+            nextStateMs = Math.max(nextStateMs + 1000 / stateHz, nowMs);
+            sendState();
+        }
+    }
+
+    private void halt() {
+        armed = false;
+        leftPermille = 0;
+        rightPermille = 0;
+        chair.stop();
+    }
+
+    private void onStuffed(byte[] stuffed) {
+        Frame f;
+        try {
+            f = codec.decode(stuffed, 0, stuffed.length);
+        } catch (FrameException e) {
+            drops.count(e.reason());
+            return;
+        }
+        if (f.type() >= 0x80) {
+            drops.count("wrong-direction");
+            return;
+        }
+        String bad = check.check(f, nowMs);
+        if (bad != null) {
+            drops.count(bad);
+            return;
+        }
+        lastHostMs = nowMs;
+        accepted++;
+        if (tripped) {
+            tripped = false;
+        }
+        try {
+            switch (f.type()) {
+                case Frame.Type.DRIVE -> {
+                    int[] p = BoardProtocol.readDrive(f);
+                    boolean neutral = p[0] == 0 && p[1] == 0;
+                    if (estop) {
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_ESTOP));
+                    } else if (neutral) {
+                        armed = true;
+                        motors(0, 0);
+                    } else if (!armed) {
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_NOT_NEUTRAL));
+                    } else {
+                        motors(p[0], p[1]);
+                    }
+                }
+                case Frame.Type.STOP -> {
+                    armed = !estop;
+                    motors(0, 0);
+                }
+                case Frame.Type.CONFIGURE -> {
+                    Frame.Fields r = f.fields();
+                    int hz = r.u8();
+                    r.end();
+                    if (hz < 1 || hz > 100) {
+                        throw new FrameException("malformed", "a state rate of " + hz + " Hz is outside 1..100");
+                    }
+                    stateHz = hz;
+                    send(Frame.Type.ACK, 0, BoardProtocol.ack(f.seq(), 0));
+                }
+                case Frame.Type.PING -> {
+                    Frame.Fields r = f.fields();
+                    long nonce = r.u32();
+                    r.end();
+                    if ((f.flags() & Frame.SYNC) != 0) {
+                        // A new host session: it learns the layout again.
+                        send(Frame.Type.HELLO, 0, BoardProtocol.hello(firmware, chair.layout()));
+                    }
+                    send(Frame.Type.ACK, 0, BoardProtocol.ack(f.seq(), nonce));
+                }
+                default -> {
+                    drops.count("unknown-type");
+                    send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_UNKNOWN));
+                }
+            }
+        } catch (FrameException e) {
+            drops.count(e.reason());
+            send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_MALFORMED));
+        }
+    }
+
+    private void motors(int l, int r) {
+        leftPermille = l;
+        rightPermille = r;
+        chair.drive(l / 10.0, r / 10.0);
+    }
+
+    private void sendState() {
+        ChairReadings r = chair.latest();
+        if (r == null) {
+            return;
+        }
+        int[] mm = new int[r.rangeCount()];
+        for (int i = 0; i < mm.length; i++) {
+            mm[i] = (int) Math.round(r.range(i) * 1000);
+        }
+        Set<ChairFault> faults = EnumSet.noneOf(ChairFault.class);
+        faults.addAll(r.faults());
+        faults.remove(ChairFault.LINK);
+        if (tripped) {
+            faults.add(ChairFault.WATCHDOG);
+        } else {
+            faults.remove(ChairFault.WATCHDOG);
+        }
+        send(Frame.Type.STATE, 0, BoardProtocol.state(new BoardProtocol.State(r.leftTicks(), r.rightTicks(), mm, r.bumper(),
+                estop || r.emergencyStop(), (int) Math.round(r.batteryVolts() * 1000), faults, r.fix())));
+    }
+
+    private void send(int type, int flags, byte[] body) {
+        Frame f = new Frame(type, flags, seq, nowMs & 0xFFFFFFFFL, body);
+        seq = (seq + 1) & 0xFFFF;
+        wire.accept(codec.encode(f));
+    }
+
+    /** Host frames dropped, by reason. */
+    public Drops drops() {
+        return drops;
+    }
+
+    /** Host frames taken. */
+    public long accepted() {
+        return accepted;
+    }
+
+    /** The motor powers it applies, per mille. */
+    public int[] motors() {
+        return new int[] {leftPermille, rightPermille};
+    }
+
+    /** True if the watchdog has stopped the motors and no valid host frame has come since. */
+    public boolean tripped() {
+        return tripped;
+    }
+
+    /** True once a neutral command has been taken since switch-on, a trip or the e-stop. */
+    public boolean armed() {
+        return armed;
+    }
+}

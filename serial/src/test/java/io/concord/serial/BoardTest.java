@@ -1,0 +1,201 @@
+package io.concord.serial;
+
+import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.ChairLayout;
+import io.concord.agents.chair.ChairListener;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.Pose;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The board's safety rules, frame by frame, on the board's own clock. */
+class BoardTest {
+
+    /** Motors that remember what they were told. */
+    static final class Motors implements ChairDriver {
+        double left;
+        double right;
+
+        @Override
+        public String name() {
+            return "chair";
+        }
+
+        @Override
+        public ChairLayout layout() {
+            return ChairLayout.standard();
+        }
+
+        @Override
+        public void drive(double l, double r) {
+            left = l;
+            right = r;
+        }
+
+        @Override
+        public ChairReadings latest() {
+            return new ChairReadings(0, 0, 0, 0, new double[ChairLayout.standard().sensors().size()], false, 24, false, Set.of(),
+                    new Pose(0, 0, 0), null);
+        }
+
+        @Override
+        public boolean online() {
+            return true;
+        }
+
+        @Override
+        public void setListener(ChairListener l) {
+        }
+    }
+
+    /** A board with a host that speaks to it; the board's frames are kept. */
+    static final class Bench {
+        final Motors motors = new Motors();
+        final FrameCodec codec = new FrameCodec();
+        final List<Frame> fromBoard = new ArrayList<>();
+        final Deframer deframer = new Deframer(2048, s -> fromBoard.add(codec.decode(s, 0, s.length)), () -> { });
+        final Board board = new Board(motors, codec, "test", b -> deframer.feed(b, 0, b.length));
+        int seq;
+        long now;
+
+        Bench() {
+            board.switchOn(0);
+        }
+
+        void host(int type, int flags, byte[] body) {
+            byte[] b = codec.encode(new Frame(type, flags, seq++, now, body));
+            board.onBytes(b, 0, b.length, now);
+        }
+
+        void drive(int l, int r) {
+            host(Frame.Type.DRIVE, 0, BoardProtocol.drive(l, r));
+        }
+
+        void at(long ms) {
+            now = ms;
+            board.tick(ms);
+        }
+
+        List<Integer> naks() {
+            List<Integer> out = new ArrayList<>();
+            for (Frame f : fromBoard) {
+                if (f.type() == Frame.Type.NAK) {
+                    Frame.Fields r = f.fields();
+                    r.u16();
+                    out.add(r.u8());
+                }
+            }
+            return out;
+        }
+
+        BoardProtocol.State lastState() {
+            for (int i = fromBoard.size() - 1; i >= 0; i--) {
+                if (fromBoard.get(i).type() == Frame.Type.STATE) {
+                    return BoardProtocol.readState(fromBoard.get(i));
+                }
+            }
+            throw new AssertionError("no STATE");
+        }
+    }
+
+    @Test
+    void atSwitchOnANonNeutralDriveIsRefusedUntilAStop() {
+        Bench b = new Bench();
+        assertEquals(Frame.Type.HELLO, b.fromBoard.get(0).type(), "HELLO at switch-on");
+        b.drive(500, 500);
+        assertEquals(0.0, b.motors.left);
+        assertEquals(List.of(BoardProtocol.NAK_NOT_NEUTRAL), b.naks());
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(500, 400);
+        assertEquals(50.0, b.motors.left);
+        assertEquals(40.0, b.motors.right);
+    }
+
+    @Test
+    void theWatchdogStopsTheMotorsAfter200MsOfSilenceAndDrivingNeedsNeutralAgain() {
+        Bench b = new Bench();
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(300, 300);
+        b.at(150);
+        assertEquals(30.0, b.motors.left, "still within 200 ms");
+        b.drive(300, 300);
+        b.at(350);
+        assertEquals(30.0, b.motors.left, "200 ms after the last frame, not more");
+        b.at(351);
+        assertEquals(0.0, b.motors.left, "stopped 201 ms after the last frame");
+        assertTrue(b.board.tripped());
+        b.at(400);
+        assertTrue(b.lastState().faults().contains(ChairFault.WATCHDOG));
+        b.drive(300, 300);
+        assertFalse(b.board.tripped(), "a valid frame clears the trip");
+        assertEquals(0.0, b.motors.left, "but driving needs a neutral command first");
+        b.drive(0, 0);
+        b.drive(300, 300);
+        assertEquals(30.0, b.motors.left);
+        b.at(450);
+        assertFalse(b.lastState().faults().contains(ChairFault.WATCHDOG));
+    }
+
+    @Test
+    void theEstopWinsOverEverything() {
+        Bench b = new Bench();
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(600, 600);
+        assertEquals(60.0, b.motors.left);
+        b.board.estop(true, 10);
+        assertEquals(0.0, b.motors.left);
+        b.drive(600, 600);
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(600, 600);
+        assertEquals(0.0, b.motors.left, "no command moves it while the e-stop is pressed");
+        assertTrue(b.naks().contains(BoardProtocol.NAK_ESTOP));
+        b.at(60);
+        assertTrue(b.lastState().estop());
+        b.board.estop(false, 70);
+        b.drive(600, 600);
+        assertEquals(0.0, b.motors.left, "released: neutral first");
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(600, 600);
+        assertEquals(60.0, b.motors.left);
+    }
+
+    @Test
+    void aStaleOrRepeatedHostFrameDoesNotDrive() {
+        Bench b = new Bench();
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.at(100);
+        // A DRIVE stamped 300 ms before the host's clock says now: delayed on the way.
+        byte[] late = b.codec.encode(new Frame(Frame.Type.DRIVE, 0, b.seq++, -200 & 0xFFFFFFFFL, BoardProtocol.drive(800, 800)));
+        b.board.onBytes(late, 0, late.length, 100);
+        assertEquals(0.0, b.motors.left);
+        assertEquals(1, b.board.drops().get("stale"));
+        byte[] once = b.codec.encode(new Frame(Frame.Type.DRIVE, 0, b.seq++, 100, BoardProtocol.drive(200, 200)));
+        b.board.onBytes(once, 0, once.length, 100);
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.board.onBytes(once, 0, once.length, 100);
+        assertEquals(0.0, b.motors.left, "the replayed DRIVE after the STOP is not taken");
+        assertEquals(1, b.board.drops().get("out-of-order"));
+    }
+
+    @Test
+    void aMalformedDriveIsRefusedAndChangesNothing() {
+        Bench b = new Bench();
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(100, 100);
+        b.host(Frame.Type.DRIVE, 0, new byte[] {1, 2, 3});
+        assertEquals(10.0, b.motors.left);
+        assertEquals(List.of(BoardProtocol.NAK_MALFORMED), b.naks());
+        assertEquals(1, b.board.drops().get("malformed"));
+        assertArrayEquals(new int[] {100, 100}, b.board.motors());
+    }
+}

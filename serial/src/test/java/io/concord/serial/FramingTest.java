@@ -1,0 +1,138 @@
+package io.concord.serial;
+
+import org.junit.jupiter.api.Test;
+
+import java.io.ByteArrayOutputStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+/** Frames survive any chunking and garbage; every frame not taken is counted by its reason. */
+class FramingTest {
+
+    /** A receiver as the host and the board have one: deframer, codec, sequence check, drops. */
+    static final class Receiver {
+        final Drops drops = new Drops();
+        final List<Frame> taken = new ArrayList<>();
+        final FrameCodec codec;
+        final SequenceCheck check = new SequenceCheck(200);
+        long nowMs;
+        final Deframer deframer;
+
+        Receiver(FrameCodec codec) {
+            this.codec = codec;
+            this.deframer = new Deframer(FrameCodec.MAX_FRAME * 2, this::frame, () -> drops.count("oversized"));
+        }
+
+        void frame(byte[] stuffed) {
+            try {
+                Frame f = codec.decode(stuffed, 0, stuffed.length);
+                String bad = check.check(f, nowMs);
+                if (bad != null) {
+                    drops.count(bad);
+                } else {
+                    taken.add(f);
+                }
+            } catch (FrameException e) {
+                drops.count(e.reason());
+            }
+        }
+    }
+
+    private static byte[] frames(FrameCodec c, int from, int n, long t0) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        for (int i = from; i < from + n; i++) {
+            out.writeBytes(c.encode(new Frame(Frame.Type.DRIVE, 0, i, t0 + i, BoardProtocol.drive(i % 1000, -(i % 1000)))));
+        }
+        return out.toByteArray();
+    }
+
+    @Test
+    void anyChunkingGivesTheSameFrames() {
+        FrameCodec c = new FrameCodec();
+        byte[] wire = frames(c, 0, 200, 0);
+        SplittableRandom r = new SplittableRandom(5);
+        for (int round = 0; round < 50; round++) {
+            Receiver rx = new Receiver(c);
+            for (int i = 0; i < wire.length; ) {
+                int n = Math.min(wire.length - i, 1 + r.nextInt(40));
+                rx.deframer.feed(wire, i, n);
+                i += n;
+            }
+            assertEquals(200, rx.taken.size());
+            assertEquals(0, rx.drops.total());
+        }
+    }
+
+    @Test
+    void garbageCostsAtMostTheFrameItLandsIn() {
+        FrameCodec c = new FrameCodec();
+        Receiver rx = new Receiver(c);
+        rx.deframer.feed(new byte[] {0x13, 0x37, (byte) 0xFF, 0x42}, 0, 4);
+        byte[] wire = frames(c, 0, 10, 0);
+        rx.deframer.feed(wire, 0, wire.length);
+        // The garbage joins the first frame's bytes: that frame is lost as corrupt, the rest are taken.
+        assertEquals(9, rx.taken.size());
+        assertEquals(1, rx.drops.get("corrupt"));
+    }
+
+    @Test
+    void aFlippedBitIsCorruptAnotherKeyIsAMacDropAndAnOverlongRunIsOversized() {
+        FrameCodec plain = new FrameCodec();
+        byte[] one = plain.encode(new Frame(Frame.Type.STOP, 0, 1, 5, new byte[0]));
+        one[5] ^= 0x04;
+        Receiver rx = new Receiver(plain);
+        rx.deframer.feed(one, 0, one.length);
+        assertEquals(1, rx.drops.get("corrupt"));
+
+        FrameCodec a = new FrameCodec(new byte[16]);
+        byte[] k = new byte[16];
+        k[0] = 1;
+        Receiver other = new Receiver(new FrameCodec(k));
+        byte[] signed = a.encode(new Frame(Frame.Type.STOP, 0, 1, 5, new byte[0]));
+        other.deframer.feed(signed, 0, signed.length);
+        assertEquals(1, other.drops.get("mac"));
+        Receiver unpaired = new Receiver(plain);
+        unpaired.deframer.feed(signed, 0, signed.length);
+        assertEquals(1, unpaired.drops.get("mac"), "a MAC this end cannot check is not taken");
+
+        byte[] junk = new byte[3000];
+        java.util.Arrays.fill(junk, (byte) 7);
+        rx.deframer.feed(junk, 0, junk.length);
+        rx.deframer.feed(new byte[] {0}, 0, 1);
+        assertEquals(1, rx.drops.get("oversized"));
+        byte[] after = frames(plain, 2, 1, 0);
+        rx.deframer.feed(after, 0, after.length);
+        assertEquals(1, rx.taken.size(), "the next frame is taken");
+    }
+
+    @Test
+    void repeatedReorderedAndStaleFramesAreDropped() {
+        FrameCodec c = new FrameCodec();
+        Receiver rx = new Receiver(c);
+        byte[] f1 = frames(c, 1, 1, 1000);
+        byte[] f2 = frames(c, 2, 1, 1000);
+        byte[] f3 = frames(c, 3, 1, 1000);
+        rx.nowMs = 5000;
+        rx.deframer.feed(f1, 0, f1.length);
+        rx.deframer.feed(f1, 0, f1.length);
+        rx.deframer.feed(f3, 0, f3.length);
+        rx.deframer.feed(f2, 0, f2.length);
+        assertEquals(1, rx.drops.get("repeated"));
+        assertEquals(1, rx.drops.get("out-of-order"));
+        rx.nowMs = 5000 + 201 + 3;
+        byte[] f4 = frames(c, 4, 1, 1000);
+        rx.deframer.feed(f4, 0, f4.length);
+        assertEquals(1, rx.drops.get("stale"), "sent 1 ms after frame 3, arrived 204 ms later than the least delayed");
+        assertEquals(2, rx.taken.size());
+        // Sequence numbers wrap: 65535 then 0 is in order.
+        Receiver w = new Receiver(c);
+        byte[] a = c.encode(new Frame(Frame.Type.STOP, 0, 65_535, 0, new byte[0]));
+        byte[] b = c.encode(new Frame(Frame.Type.STOP, 0, 0, 1, new byte[0]));
+        w.deframer.feed(a, 0, a.length);
+        w.deframer.feed(b, 0, b.length);
+        assertEquals(2, w.taken.size());
+    }
+}
