@@ -58,6 +58,8 @@ public class MedicalAgent extends Agent {
     private final Settings settings;
     private final Consumer<String> log;
     private final Map<String, CompletableFuture<Outcome>> open = new LinkedHashMap<>();
+    /** task -> the accepted proposal of its current auction. */
+    private final Map<String, AclMessage> awarded = new LinkedHashMap<>();
     private long next;
 
     /** A Medical agent with the standard settings. */
@@ -129,11 +131,54 @@ public class MedicalAgent extends Agent {
         String id = "T" + (++next);
         CompletableFuture<Outcome> f = new CompletableFuture<>();
         open.put(id, f);
-        f.whenComplete((o, e) -> open.remove(id));
+        f.whenComplete((o, e) -> {
+            open.remove(id);
+            awarded.remove(id);
+        });
         log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
                 getLocalName(), id, from, to, priority, unloadS));
         auction(id, from, to, priority, unloadS, 1, f);
         return f;
+    }
+
+    /**
+     * Withdraws a transport (the staff changed their mind): the chair it was given to gets a
+     * CANCEL and stops driving it; the transport ends, not done, with the reason. False if it has
+     * ended already. Thread-safe.
+     */
+    public CompletableFuture<Boolean> cancel(String task, String why) {
+        CompletableFuture<Boolean> r = new CompletableFuture<>();
+        Runnable run = () -> {
+            CompletableFuture<Outcome> f = open.get(task);
+            if (f == null) {
+                r.complete(false);
+                return;
+            }
+            AclMessage winner = awarded.get(task);
+            if (winner != null) {
+                withdraw(task, winner);
+            }
+            log.accept(getLocalName() + ": " + task + " withdrawn: " + why);
+            f.complete(new Outcome(task, false, winner == null ? null : winner.getSender().localName(), "withdrawn: " + why, 0));
+            r.complete(true);
+        };
+        if (runtime().inLoop()) {
+            run.run();
+        } else {
+            runtime().execute(run);
+        }
+        return r;
+    }
+
+    /** Tells the chair whose proposal was accepted that the task is no longer its. */
+    private void withdraw(String task, AclMessage winner) {
+        AclMessage cancel = new AclMessage(Performative.CANCEL);
+        cancel.addReceiver(winner.getSender());
+        cancel.setProtocol(FipaProtocols.CONTRACT_NET);
+        cancel.setOntology(Services.ONTOLOGY);
+        cancel.setConversationId(winner.getConversationId());
+        cancel.setContent(Content.of("transport").with("task", task).toString());
+        send(cancel);
     }
 
     /** Transports not ended yet. */
@@ -191,6 +236,7 @@ public class MedicalAgent extends Agent {
                     AclMessage reply = r.createReply();
                     if (r == winner) {
                         reply.setPerformative(Performative.ACCEPT_PROPOSAL);
+                        awarded.put(id, r);
                         double cost = Content.parse(r.getContent()).number("cost");
                         reply.setReplyByEpochMs(currentTimeMillis() + (long) (cost * 3_000) + 120_000);
                         log.accept(getLocalName() + ": ACCEPT " + r.getSender().localName() + " for " + id);
@@ -226,13 +272,7 @@ public class MedicalAgent extends Agent {
                 if (winner != null && !f.isDone() && results.stream().noneMatch(r -> r.getPerformative() == Performative.FAILURE)) {
                     log.accept(getLocalName() + ": " + winner.getSender().localName() + " went silent on " + id);
                     // Withdrawn from that chair, in case it still drives it: nobody carries the patient twice.
-                    AclMessage cancel = new AclMessage(Performative.CANCEL);
-                    cancel.addReceiver(winner.getSender());
-                    cancel.setProtocol(FipaProtocols.CONTRACT_NET);
-                    cancel.setOntology(Services.ONTOLOGY);
-                    cancel.setConversationId(winner.getConversationId());
-                    cancel.setContent(Content.of("transport").with("task", id).toString());
-                    send(cancel);
+                    withdraw(id, winner);
                     again(winner.getSender().localName() + " went silent");
                 }
             }

@@ -1,5 +1,6 @@
 package io.concord.sim.scenario;
 
+import io.concord.agents.control.TaskView;
 import io.concord.agents.door.DoorAgent;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.agents.proto.Asks;
@@ -203,6 +204,39 @@ class HospitalAgentsTest {
             r.sim.runFor(70_000);
             assertTrue(r.hospital.door("A3").sessions().isEmpty(), "lapsed after 60 s of silence");
             assertEquals(Performative.REFUSE, await(r, p.ask("door-A3", "open; body=x")).getPerformative());
+        }
+    }
+
+    @Test
+    void aTaskWithdrawnByTheStaffStopsItsChairAndNobodyElseCanWithdrawIt() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(12, FaultPlan.NONE, 1)) {
+            var f = r.medical.transport(3, 9, 3, 30);
+            assertTrue(r.sim.runUntil(() -> r.log.stream().anyMatch(l -> l.startsWith("control-chair1: starts T1")), 60_000));
+            r.sim.runFor(5_000);
+            // A stranger's CANCEL in the task's conversation changes nothing.
+            Probe p = new Probe();
+            r.platform.startAgent("stranger", p);
+            r.sim.runFor(1_000);
+            AclMessage cancel = new AclMessage(Performative.CANCEL);
+            cancel.addReceiver(AID.local("control-chair1", "hospital"));
+            cancel.setConversationId("T1-1");
+            cancel.setContent("transport; task=T1");
+            p.send(cancel);
+            r.sim.runFor(2_000);
+            assertTrue(r.log.contains("control-chair1: ignores a CANCEL of T1 from stranger@hospital: only medical@hospital, who gave it, "
+                    + "may withdraw it"), String.join("\n", ScenarioTest.tail(r.log, 10)));
+            assertEquals(TaskView.State.TO_PICKUP, r.hospital.control("chair1").tasks().get(0).state());
+            // The staff withdraw it: the chair stops and drops it.
+            var withdrawn = r.medical.cancel("T1", "the patient went home");
+            assertTrue(r.sim.runUntil(withdrawn::isDone, 1_000) && withdrawn.join());
+            r.sim.runFor(3_000);
+            double at = r.world.chair("chair1").distanceTravelled();
+            r.sim.runFor(30_000);
+            assertTrue(f.isDone() && !f.join().done());
+            assertEquals("withdrawn: the patient went home", f.join().reason());
+            assertEquals(TaskView.State.CANCELLED, r.hospital.control("chair1").tasks().get(0).state());
+            assertTrue(r.world.chair("chair1").distanceTravelled() - at < 0.05, "the chair stands");
+            assertTrue(r.log.contains("control-chair1: task T1 withdrawn by medical"));
         }
     }
 
