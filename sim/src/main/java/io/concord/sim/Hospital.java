@@ -60,12 +60,21 @@ public final class Hospital {
         return h;
     }
 
-    /** Starts the planner and the control agent of a chair. */
+    /** Starts the planner and the control agent of a chair of the world. */
     public void addChair(Platform platform, HospitalWorld world, SimChair c, Consumer<String> log) {
-        PlannerAgent p = new PlannerAgent(world.map(), c.name(), log);
+        addChair(platform, world.map(), c, log);
+    }
+
+    /**
+     * Starts the planner and the control agent of any chair: a simulated one, or a real or
+     * emulated one over its serial link ({@code io.concord.serial.SerialChair}).
+     */
+    public void addChair(Platform platform, io.concord.agents.map.HospitalMap map, io.concord.agents.chair.ChairDriver c,
+                         Consumer<String> log) {
+        PlannerAgent p = new PlannerAgent(map, c.name(), log);
         platform.startAgent("planner-" + c.name(), p);
         planners.put(c.name(), p);
-        ControlAgent a = new ControlAgent(c, world.map(), log);
+        ControlAgent a = new ControlAgent(c, map, log);
         platform.startAgent("control-" + c.name(), a);
         controls.put(c.name(), a);
     }

@@ -80,13 +80,16 @@ public final class HospitalDemo {
 
     /** Settings of a run. */
     record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
-                   double maxSeconds) {
+                   double maxSeconds, String serial) {
         List<String> childArgs() {
             List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
                     "--chairs", Integer.toString(chairs), "--picture", picture.toAbsolutePath().toString(),
                     "--max-seconds", Double.toString(maxSeconds), "--tasks", String.join(",", tasks.stream().map(TaskSpec::toString).toList())));
             if (map != null) {
                 a.addAll(List.of("--map", map.toAbsolutePath().toString()));
+            }
+            if (serial != null) {
+                a.addAll(List.of("--serial", serial));
             }
             return a;
         }
@@ -103,7 +106,7 @@ public final class HospitalDemo {
         } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
             System.err.println("usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
-                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]");
+                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT]");
             System.exit(2);
             return;
         }
@@ -130,6 +133,7 @@ public final class HospitalDemo {
         int chairs = 1;
         List<TaskSpec> tasks = new ArrayList<>(List.of(new TaskSpec(3, 9, 3, 60)));
         double max = 1800;
+        String serial = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--virtual")) {
@@ -148,6 +152,7 @@ public final class HospitalDemo {
                     case "--picture" -> picture = Path.of(v);
                     case "--chairs" -> chairs = Integer.parseInt(v);
                     case "--max-seconds" -> max = Double.parseDouble(v);
+                    case "--serial" -> serial = v;
                     case "--tasks" -> {
                         tasks = new ArrayList<>();
                         for (String t : v.split(",")) {
@@ -166,7 +171,13 @@ public final class HospitalDemo {
         if (chairs < 1 || chairs > PARKING.length) {
             throw new IllegalArgumentException("--chairs must be 1 to " + PARKING.length + ", got " + chairs);
         }
-        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max);
+        if (serial != null && virtual) {
+            throw new IllegalArgumentException("--serial drives a chair in real time over its port: it cannot run with --virtual");
+        }
+        if (serial != null) {
+            speed = 1;   // the board (real or emulated) keeps real time
+        }
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial);
     }
 
     private static void check(HospitalMap map, Options o) {
@@ -196,8 +207,10 @@ public final class HospitalDemo {
         }
         OUT.println(o.chairs() + (o.chairs() == 1 ? " chair waits" : " chairs wait") + " in the lobby (node 19 first).");
         if (o.chairs() > 1) {
-            OUT.println("Note: the chairs have no traffic management yet: they stop for each other and may give up a task"
-                    + " (with its reason) where two meet head-on (docs/design.md, 'Not yet: traffic between chairs').");
+            OUT.println("The traffic agent grants each chair its whole route before it drives: they never meet.");
+        }
+        if (o.serial() != null) {
+            OUT.println("chair1 is driven over the serial port " + o.serial() + " (a real chair's board, or the emulator), in real time.");
         }
     }
 
@@ -235,7 +248,7 @@ public final class HospitalDemo {
 
     static HospitalWorld world(HospitalMap map, Options o) {
         HospitalWorld world = HospitalWorld.builder(map).seed(o.seed()).build();
-        for (int i = 0; i < o.chairs(); i++) {
+        for (int i = o.serial() == null ? 0 : 1; i < o.chairs(); i++) {
             world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(PARKING[i], 90));
         }
         return world;
@@ -333,6 +346,11 @@ public final class HospitalDemo {
         Consumer<String> log = line -> OUT.printf(Locale.ROOT, "t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
         Hospital hospital = Hospital.start(platform, world, log);
         world.attach(rt, o.speed());
+        if (o.serial() != null) {
+            // chair1 is on its serial port; the world keeps the doors (and any other chairs).
+            rt.execute(() -> hospital.addChair(platform, map, io.concord.serial.SerialChair.open(rt,
+                    io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))), log));
+        }
         CountDownLatch stopped = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             CountDownLatch drawn = new CountDownLatch(1);

@@ -1,0 +1,274 @@
+package io.concord.sim.board;
+
+import com.fazecast.jSerialComm.SerialPort;
+
+import io.concord.agents.map.HospitalMap;
+import io.concord.serial.Board;
+import io.concord.serial.FrameCodec;
+import io.concord.sim.world.ChairConfig;
+import io.concord.sim.world.HospitalWorld;
+import io.concord.sim.world.SimChair;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.HexFormat;
+import java.util.Locale;
+import java.util.SplittableRandom;
+import java.util.concurrent.ConcurrentLinkedQueue;
+
+/**
+ * The chair's board on one end of a serial port (a pty of a {@code socat} pair), backed by the
+ * hospital simulation's physics for one chair: the same world, the same sensors. A host's driver
+ * pointed at the other end drives it as it would drive the real chair.
+ *
+ * <pre>
+ * socat pty,raw,echo=0,link=/tmp/chair-host pty,raw,echo=0,link=/tmp/chair-board &amp;
+ * java -cp concord-demo.jar io.concord.sim.board.BoardEmulator --port /tmp/chair-board --at 19
+ * </pre>
+ *
+ * <p>Faults on what the board sends (each a probability per frame): {@code --drop},
+ * {@code --corrupt} (one byte flipped), {@code --duplicate}, {@code --reorder} (swapped with the
+ * next), {@code --garbage} (random bytes before it); {@code --delay-ms} holds every frame back. On
+ * standard input: {@code estop on|off}, {@code status} (one line: motors, watchdog, pose, drops),
+ * {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
+ * are at zero by its watchdog meanwhile.
+ */
+public final class BoardEmulator {
+    /** The firmware version it reports. */
+    public static final String FIRMWARE = "concord-board-emulator 1";
+
+    private final SerialPort[] port = new SerialPort[1];
+    private final String path;
+    private final HospitalWorld world;
+    private final SimChair chair;
+    private final Board board;
+    private final Faults faults;
+    private final long startNs = System.nanoTime();
+    private final ConcurrentLinkedQueue<String> commands = new ConcurrentLinkedQueue<>();
+    private final PrintStream out;
+
+    /** Fault probabilities on the board's frames. */
+    record Faults(double drop, double corrupt, double duplicate, double reorder, double garbage, long delayMs, SplittableRandom random) {
+    }
+
+    private final ArrayDeque<long[]> heldTimes = new ArrayDeque<>();
+    private final ArrayDeque<byte[]> held = new ArrayDeque<>();
+    private byte[] reorderHeld;
+
+    BoardEmulator(String path, HospitalMap map, int atNode, long seed, byte[] key, Faults faults, PrintStream out) {
+        this.path = path;
+        this.faults = faults;
+        this.out = out;
+        this.world = HospitalWorld.builder(map).seed(seed).doors(false).build();
+        this.chair = world.addChair("chair", ChairConfig.standard(), world.poseAt(atNode, 90));
+        this.board = new Board(chair, new FrameCodec(key), FIRMWARE, this::emit);
+    }
+
+    private long nowMs() {
+        return (System.nanoTime() - startNs) / 1_000_000;
+    }
+
+    /** Runs until {@code quit} on standard input. */
+    void run() {
+        Thread in = new Thread(() -> {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8))) {
+                for (String line; (line = r.readLine()) != null; ) {
+                    commands.add(line.trim());
+                }
+            } catch (java.io.IOException e) {
+                // standard input closed
+            }
+        }, "board-stdin");
+        in.setDaemon(true);
+        in.start();
+        byte[] buf = new byte[512];
+        long stepNs = (long) (1e9 / world.stepHz());
+        boolean switchedOn = false;
+        while (true) {
+            String cmd = commands.poll();
+            if (cmd != null && !command(cmd)) {
+                break;
+            }
+            SerialPort p = port[0];
+            if (p == null) {
+                p = open();
+                if (p == null) {
+                    sleep(50);
+                } else if (!switchedOn) {
+                    switchedOn = true;
+                    board.switchOn(nowMs());
+                }
+            } else {
+                int n = p.readBytes(buf, buf.length);
+                if (n < 0 || !Files.exists(Path.of(path))) {
+                    p.closePort();
+                    port[0] = null;
+                    out.println("board: the port " + path + " is gone; waiting for it");
+                } else if (n > 0) {
+                    board.onBytes(buf, 0, n, nowMs());
+                }
+            }
+            while (world.worldTimeNs() + stepNs <= System.nanoTime() - startNs) {
+                world.step();
+            }
+            board.tick(nowMs());
+            flushHeld();
+        }
+    }
+
+    private SerialPort open() {
+        if (!Files.exists(Path.of(path))) {
+            return null;
+        }
+        SerialPort p = SerialPort.getCommPort(path);
+        p.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+        p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 5, 0);
+        if (!p.openPort()) {
+            return null;
+        }
+        port[0] = p;
+        out.println("board: on " + path);
+        return p;
+    }
+
+    private boolean command(String cmd) {
+        switch (cmd) {
+            case "estop on" -> board.estop(true, nowMs());
+            case "estop off" -> board.estop(false, nowMs());
+            case "status" -> {
+                int[] m = board.motors();
+                var pose = chair.truePose();
+                out.printf(Locale.ROOT, "status motors=%d,%d tripped=%b armed=%b x=%.3f y=%.3f moved=%.3f accepted=%d drops=%s%n", m[0], m[1],
+                        board.tripped(), board.armed(), pose.x(), pose.y(), chair.distanceTravelled(), board.accepted(), board.drops());
+            }
+            case "quit" -> {
+                return false;
+            }
+            default -> out.println("board: commands are estop on, estop off, status, quit; not '" + cmd + "'");
+        }
+        out.flush();
+        return true;
+    }
+
+    /** A frame the board sends, through the fault plan. */
+    private void emit(byte[] frame) {
+        SplittableRandom r = faults.random();
+        if (r.nextDouble() < faults.drop()) {
+            return;
+        }
+        byte[] f = frame;
+        if (r.nextDouble() < faults.corrupt()) {
+            f = frame.clone();
+            int i = r.nextInt(Math.max(1, f.length - 1));
+            f[i] = (byte) (f[i] ^ (1 + r.nextInt(255)));
+            if (f[i] == 0) {
+                f[i] = 1;
+            }
+        }
+        if (r.nextDouble() < faults.garbage()) {
+            byte[] g = new byte[1 + r.nextInt(16)];
+            for (int i = 0; i < g.length; i++) {
+                g[i] = (byte) r.nextInt(256);
+            }
+            hold(g);
+        }
+        if (r.nextDouble() < faults.reorder() && reorderHeld == null) {
+            reorderHeld = f;
+            return;
+        }
+        hold(f);
+        if (reorderHeld != null) {
+            hold(reorderHeld);
+            reorderHeld = null;
+        }
+        if (r.nextDouble() < faults.duplicate()) {
+            hold(f);
+        }
+    }
+
+    private void hold(byte[] b) {
+        held.add(b);
+        heldTimes.add(new long[] {nowMs() + faults.delayMs()});
+    }
+
+    private void flushHeld() {
+        SerialPort p = port[0];
+        while (!held.isEmpty() && heldTimes.peek()[0] <= nowMs()) {
+            byte[] b = held.poll();
+            heldTimes.poll();
+            if (p != null) {
+                p.writeBytes(b, b.length);
+            }
+        }
+    }
+
+    private static void sleep(long ms) {
+        try {
+            Thread.sleep(ms);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    public static void main(String[] args) {
+        String port = null;
+        int at = 19;
+        long seed = 1;
+        byte[] key = null;
+        double drop = 0;
+        double corrupt = 0;
+        double dup = 0;
+        double reorder = 0;
+        double garbage = 0;
+        long delay = 0;
+        HospitalMap map = HospitalMap.defaultHospital();
+        try {
+            for (int i = 0; i < args.length; i++) {
+                String a = args[i];
+                String v = i + 1 < args.length ? args[i + 1] : null;
+                switch (a) {
+                    case "--port" -> port = need(a, v);
+                    case "--at" -> at = Integer.parseInt(need(a, v));
+                    case "--seed" -> seed = Long.parseLong(need(a, v));
+                    case "--key" -> key = HexFormat.of().parseHex(need(a, v));
+                    case "--map" -> map = HospitalMap.load(Path.of(need(a, v)));
+                    case "--drop" -> drop = Double.parseDouble(need(a, v));
+                    case "--corrupt" -> corrupt = Double.parseDouble(need(a, v));
+                    case "--duplicate" -> dup = Double.parseDouble(need(a, v));
+                    case "--reorder" -> reorder = Double.parseDouble(need(a, v));
+                    case "--garbage" -> garbage = Double.parseDouble(need(a, v));
+                    case "--delay-ms" -> delay = Long.parseLong(need(a, v));
+                    default -> throw new IllegalArgumentException("unknown option " + a);
+                }
+                i++;
+            }
+            if (port == null) {
+                throw new IllegalArgumentException("--port PATH is required (one end of a socat pty pair, or a real port)");
+            }
+            if (!map.hasNode(at)) {
+                throw new IllegalArgumentException("--at " + at + ": the map has no such node");
+            }
+        } catch (IllegalArgumentException e) {
+            System.err.println("board emulator: " + e.getMessage());
+            System.err.println("usage: BoardEmulator --port PATH [--at NODE] [--seed N] [--key HEX] [--map FILE]"
+                    + " [--drop P] [--corrupt P] [--duplicate P] [--reorder P] [--garbage P] [--delay-ms N]");
+            System.exit(2);
+            return;
+        }
+        new BoardEmulator(port, map, at, seed, key, new Faults(drop, corrupt, dup, reorder, garbage, delay, new SplittableRandom(seed)),
+                System.out).run();
+        System.exit(0);
+    }
+
+    private static String need(String opt, String v) {
+        if (v == null) {
+            throw new IllegalArgumentException(opt + " needs a value");
+        }
+        return v;
+    }
+}

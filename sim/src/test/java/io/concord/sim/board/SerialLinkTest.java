@@ -1,0 +1,195 @@
+package io.concord.sim.board;
+
+import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.ChairListener;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.medical.MedicalAgent;
+import io.concord.core.agent.AgentRuntime;
+import io.concord.layers.platform.Platform;
+import io.concord.serial.BoardProtocol;
+import io.concord.serial.Frame;
+import io.concord.serial.FrameCodec;
+import io.concord.serial.SerialChair;
+import io.concord.sim.Hospital;
+import io.concord.sim.world.HospitalWorld;
+
+import com.fazecast.jSerialComm.SerialPort;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The serial chair over a real pty pair (socat), with the board emulator in a process of its
+ * own and the physics of the simulation behind it: what a real chair's cable would carry.
+ */
+class SerialLinkTest {
+    static final HospitalMap MAP = HospitalMap.defaultHospital();
+
+    private static <T> T onLoop(AgentRuntime rt, java.util.function.Supplier<T> s) throws InterruptedException {
+        CountDownLatch done = new CountDownLatch(1);
+        Object[] out = new Object[1];
+        rt.execute(() -> {
+            out[0] = s.get();
+            done.countDown();
+        });
+        assertTrue(done.await(10, TimeUnit.SECONDS));
+        @SuppressWarnings("unchecked")
+        T t = (T) out[0];
+        return t;
+    }
+
+    @Test
+    void theControlAgentDrivesTheEmulatedChairFrom19To3OverANoisyLink(@TempDir Path dir) throws Exception {
+        List<String> log = java.util.Collections.synchronizedList(new ArrayList<>());
+        try (Pty pty = new Pty(dir);
+             EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19", "--corrupt", "0.02", "--duplicate", "0.02",
+                     "--reorder", "0.02", "--garbage", "0.02");
+             Platform platform = Platform.builder().name("hospital").build()) {
+            AgentRuntime rt = platform.runtime();
+            // The doors live in the host's world (the emulated chair's world has open doorways): the door
+            // agents move them as they would real doors.
+            HospitalWorld doors = HospitalWorld.builder(MAP).seed(1).build();
+            Hospital hospital = Hospital.start(platform, doors, log::add);
+            doors.attach(rt);
+            SerialChair chair = onLoop(rt, () -> SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair1")
+                    .withStart(doors.poseAt(19, 90))));
+            hospital.addChair(platform, MAP, chair, log::add);
+            MedicalAgent medical = new MedicalAgent(log::add);
+            platform.startAgent("medical", medical);
+            Pty.await(() -> {
+                try {
+                    return onLoop(rt, hospital::ready) && onLoop(rt, chair::online);
+                } catch (InterruptedException e) {
+                    throw new AssertionError(e);
+                }
+            }, 30_000, "the planner to know the doors and the chair to be online");
+            CompletableFuture<MedicalAgent.Outcome> f = medical.transport(19, 3, 0, 1);
+            Pty.await(f::isDone, 240_000, "the transport; log: " + log);
+            assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", log.subList(Math.max(0, log.size() - 30), log.size())));
+            Map<String, String> s = board.status();
+            double x = Double.parseDouble(s.get("x"));
+            double y = Double.parseDouble(s.get("y"));
+            assertTrue(Math.hypot(x - 7.5, y - 15.6) < 0.4, "the emulated chair is at node 3: " + s);
+            var drops = chair.drops();
+            assertTrue(drops.get("corrupt") > 0 && drops.get("repeated") > 0 && drops.get("out-of-order") > 0,
+                    "corrupt, repeated and reordered frames were dropped and counted: " + drops);
+            assertTrue(log.stream().anyMatch(l -> l.startsWith("control-chair1: at node 3")), String.join("\n", log));
+        }
+    }
+
+    @Test
+    void aHostKilledWithSigkillLeavesTheMotorsAtZero(@TempDir Path dir) throws Exception {
+        try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19")) {
+            Process host = JavaProcess.start(SerialHostMain.class, pty.host.toString());
+            try {
+                Pty.await(() -> {
+                    try {
+                        return board.status().get("motors").equals("200,200") && Double.parseDouble(board.status().get("moved")) > 0.05;
+                    } catch (Exception e) {
+                        throw new AssertionError(e);
+                    }
+                }, 30_000, "the host to drive the chair");
+                host.destroyForcibly().waitFor();
+                Pty.await(() -> {
+                    try {
+                        return board.status().get("tripped").equals("true");
+                    } catch (Exception e) {
+                        throw new AssertionError(e);
+                    }
+                }, 5_000, "the board's watchdog");
+                Map<String, String> s = board.status();
+                assertEquals("0,0", s.get("motors"), s.toString());
+                assertEquals("false", s.get("armed"));
+            } finally {
+                host.destroyForcibly();
+            }
+        }
+    }
+
+    @Test
+    void theAdapterUnpluggedAndPluggedInAgainTheDriverReportsOfflineAndComesBack(@TempDir Path dir) throws Exception {
+        List<String> events = java.util.Collections.synchronizedList(new ArrayList<>());
+        try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19");
+             Platform platform = Platform.builder().name("host").build()) {
+            AgentRuntime rt = platform.runtime();
+            SerialChair chair = onLoop(rt, () -> {
+                SerialChair c = SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair"));
+                c.setListener(new ChairListener() {
+                    @Override
+                    public void onReadings(ChairReadings r) {
+                        if (r.faults().contains(ChairFault.LINK)) {
+                            events.add("link fault");
+                        } else if (events.isEmpty() || !events.get(events.size() - 1).equals("reading")) {
+                            events.add("reading");
+                        }
+                    }
+
+                    @Override
+                    public void onOnline(boolean up) {
+                        events.add(up ? "online" : "offline");
+                    }
+                });
+                return c;
+            });
+            Pty.await(() -> events.contains("reading"), 10_000, "readings");
+            pty.unplug();
+            Pty.await(() -> events.contains("offline"), 10_000, "the driver to report the link down");
+            pty.start();
+            Pty.await(() -> events.lastIndexOf("online") > events.indexOf("offline") && events.get(events.size() - 1).equals("reading"),
+                    15_000, "the driver to come back: " + events);
+            assertEquals(List.of("online", "reading", "link fault", "offline", "online", "reading"), events);
+            assertTrue(onLoop(rt, chair::online));
+            assertEquals("concord-board-emulator 1", chair.firmware());
+        }
+    }
+
+    @Test
+    void aNonNeutralCommandAtSwitchOnDoesNotMoveTheChair(@TempDir Path dir) throws Exception {
+        try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19")) {
+            SerialPort p = SerialPort.getCommPort(pty.host.toString());
+            p.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+            assertTrue(p.openPort());
+            try {
+                FrameCodec codec = new FrameCodec();
+                long t0 = System.nanoTime();
+                int[] seq = {0};
+                java.util.function.BiConsumer<Integer, byte[]> send = (type, body) -> {
+                    byte[] b = codec.encode(new Frame(type, seq[0] == 0 ? Frame.SYNC : 0, seq[0]++, (System.nanoTime() - t0) / 1_000_000, body));
+                    p.writeBytes(b, b.length);
+                };
+                // Full power from the first frame on, at the heartbeat's rate, for a second.
+                for (int i = 0; i < 20; i++) {
+                    send.accept(Frame.Type.DRIVE, BoardProtocol.drive(500, 500));
+                    Thread.sleep(50);   // the host's heartbeat pace, not a wait for an outcome
+                }
+                Map<String, String> s = board.status();
+                assertEquals("0,0", s.get("motors"), s.toString());
+                assertTrue(Double.parseDouble(s.get("moved")) < 0.01, "the chair stands: " + s);
+                assertEquals("false", s.get("armed"));
+                send.accept(Frame.Type.STOP, new byte[0]);
+                send.accept(Frame.Type.DRIVE, BoardProtocol.drive(500, 500));
+                Pty.await(() -> {
+                    try {
+                        return board.status().get("motors").equals("500,500");
+                    } catch (Exception e) {
+                        throw new AssertionError(e);
+                    }
+                }, 5_000, "the board to take the drive after a STOP");
+            } finally {
+                p.closePort();
+            }
+        }
+    }
+}
