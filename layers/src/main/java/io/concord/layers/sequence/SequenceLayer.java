@@ -418,9 +418,10 @@ public final class SequenceLayer extends Layer {
     private void skipTo(LayerContext ctx, Envelope env, long peer, In in, long seq) {
         ctx.drop(env, "lost", (seq - in.expected) + " frames from " + in.address + " are no longer available "
                 + "at the sender (sequence " + in.expected + " to " + (seq - 1) + ")");
-        for (long s = in.expected; s < seq; s++) {
-            int slot = (int) (s % config.reorderWindow());
-            if (in.buffer[slot] != null && in.bufferSeq[slot] == s) {
+        // Over the window's slots, never over the numbers skipped: a SKIP to a far sequence number
+        // must cost no more than a near one (counting up to it once hung the loop).
+        for (int slot = 0; slot < in.buffer.length; slot++) {
+            if (in.buffer[slot] != null && in.bufferSeq[slot] < seq) {
                 in.buffer[slot] = null;
                 in.buffered--;
             }

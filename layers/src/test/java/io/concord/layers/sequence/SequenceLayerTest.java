@@ -156,6 +156,27 @@ class SequenceLayerTest {
         assertEquals(4, countUp(r));
     }
 
+    @Test
+    @org.junit.jupiter.api.Timeout(value = 60, threadMode = org.junit.jupiter.api.Timeout.ThreadMode.SEPARATE_THREAD)
+    void aSkipToAFarSequenceNumberCostsNoMoreThanTheWindow() {
+        // The hang guard above is not a timing assertion: counting up to 2^62 takes years.
+        List<Envelope> frames = sendAll("m0", "m1", "m2");
+        receiver.receiveUp(arriving(frames.get(0), A, A_ID));
+        receiver.receiveUp(arriving(frames.get(2), A, A_ID)); // 2 waits for 1
+        byte[] skip = frames.get(0).dataCopy();
+        skip[0] = 4;
+        Frames.putLong(skip, 5, 1L << 62);
+        Envelope e = Envelope.incoming(A, skip, 0, HEADER, 0);
+        e.setPeerId(A_ID);
+        receiver.receiveUp(e);
+        assertEquals(1, receiver.drops().get("lost"));
+        assertEquals(List.of("m0"), delivered(), "what waited below the skip is gone, not delivered");
+        receiver.receiveUp(arriving(frames.get(1), A, A_ID));
+        assertEquals(List.of(), delivered(), "frames below the skipped-to number are old now");
+    }
+
+    private static final int HEADER = SequenceLayer.HEADER_BYTES;
+
     private static int countUp(LayerHarness h) {
         int n = 0;
         while (h.pollUp() != null) {
