@@ -29,6 +29,12 @@ public final class JadeSaxParser implements XMLReader {
         try {
             SAXParserFactory f = SAXParserFactory.newInstance();
             f.setNamespaceAware(true);
+            // What arrives over HTTP is anyone's: no DOCTYPE, so no external or expanding entities
+            // (a FIPA envelope has none).
+            f.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+            f.setFeature("http://xml.org/sax/features/external-general-entities", false);
+            f.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
+            f.setFeature(javax.xml.XMLConstants.FEATURE_SECURE_PROCESSING, true);
             delegate = f.newSAXParser().getXMLReader();
         } catch (ParserConfigurationException | SAXException e) {
             throw new IllegalStateException("this JVM has no SAX parser: " + e.getMessage(), e);

@@ -185,10 +185,26 @@ public final class LayerStack {
             return host;
         }
 
+        /** Exception classes this layer has thrown, each logged with its stack trace once. */
+        private final java.util.Set<Class<?>> traced = new java.util.HashSet<>();
+
         void failed(Envelope env, RuntimeException e) {
-            LOG.warn("layer {} of {} threw on {}", name, host.nodeName(), env, e);
+            // Once per layer and exception class with the stack trace; after that only counted (a
+            // frame that makes a layer throw, sent a million times, must not write a million traces).
+            if (traced.add(e.getClass())) {
+                tracesLogged++;
+                LOG.warn("layer {} of {} threw on {} (logged once for {}; later ones are counted as drops, reason layer-error)",
+                        name, host.nodeName(), env, e.getClass().getSimpleName(), e);
+            }
             drop(env, "layer-error", e.toString());
         }
+    }
+
+    private long tracesLogged;
+
+    /** Stack traces logged for layers that threw: one per layer and exception class. */
+    public long tracesLogged() {
+        return tracesLogged;
     }
 
     /** Builds a stack from layers listed top first; the list is frozen. */

@@ -161,6 +161,11 @@ public final class LayerHarness implements StackHost {
         return tracing ? trace : Tracer.NONE;
     }
 
+    /** Stack traces its stack has logged for layers that threw. */
+    public long tracesLogged() {
+        return stack.tracesLogged();
+    }
+
     @Override
     public DropCounters drops() {
         return drops;

@@ -100,6 +100,22 @@ class LayerStackTest {
     }
 
     @Test
+    void aLayerThatThrowsOnEveryFrameLogsOneStackTraceNotOneAFrame() {
+        Layer faulty = new Layer() {
+            @Override
+            public void onDown(LayerContext ctx, Envelope env) {
+                throw new IllegalStateException("boom");
+            }
+        };
+        LayerHarness h = new LayerHarness(faulty);
+        for (int i = 0; i < 1_000; i++) {
+            h.sendDown(outgoing());
+        }
+        assertEquals(1_000, h.drops().get("layer-error"), "every one counted");
+        assertEquals(1, h.tracesLogged(), "one stack trace in the log");
+    }
+
+    @Test
     void aDropIsCountedUnderItsReasonAndTraced() {
         Layer dropper = new Layer() {
             @Override
