@@ -29,7 +29,7 @@ import io.concord.core.net.Transport;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http",
-            "sim", "hospital");
+            "sim", "hospital", "serial");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -89,6 +89,7 @@ public final class BenchMain {
                     case "http" -> b.http();
                     case "sim" -> b.sim();
                     case "hospital" -> b.hospital();
+                    case "serial" -> b.serial();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -527,6 +528,32 @@ public final class BenchMain {
                 o.awardMs().length, o.awardMedianMs(), java.util.Arrays.toString(java.util.Arrays.stream(o.awardMs())
                         .map(v -> Math.round(v * 100) / 100.0).toArray()), o.taskS()));
         Files.writeString(reportDir.resolve("hospital.md"), md.toString());
+    }
+
+    private void serial() throws IOException {
+        SerialBench.Outcome o;
+        try {
+            o = SerialBench.run(full);
+        } catch (IOException | RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IllegalStateException("the serial benchmark failed", e);
+        }
+        System.out.println(SerialBench.describe(o));
+        StringBuilder md = new StringBuilder(header("The serial chair's link", "Over a real pty pair made by socat: the "
+                + "board's logic (io.concord.serial.Board) in a thread of its own on one end, reading with a 1 ms timeout and "
+                + "ticking after each read; the host's driver (SerialChair) on the other, on a platform's loop. A drive command "
+                + "from the loop to the board's motors; a STATE from the board's write to the control agent's listener (one hop "
+                + "from the reader thread to the loop); the watchdog, from the host's last frame written to the motors at zero "
+                + "(the board's rule is 200 ms without a valid frame). Target: the watchdog within 200 ms of the window, a sensor "
+                + "frame at the agent in under 1 ms.", "Wall clock"));
+        md.append(String.format(Locale.ROOT, "| figure | median | 99th percentile | samples |%n|---|---|---|---|%n"
+                        + "| drive command to motors | %.0f µs | %.0f µs | %d |%n| STATE to the agent | %.0f µs | %.0f µs | %d |%n"
+                        + "| host silent to motors at zero | %.1f ms | %.1f ms | %d |%n",
+                SerialBench.percentile(o.cmdToMotorUs(), 50), SerialBench.percentile(o.cmdToMotorUs(), 99), o.cmdToMotorUs().length,
+                SerialBench.percentile(o.sensorToAgentUs(), 50), SerialBench.percentile(o.sensorToAgentUs(), 99), o.sensorToAgentUs().length,
+                SerialBench.percentile(o.watchdogStopMs(), 50), SerialBench.percentile(o.watchdogStopMs(), 99), o.watchdogStopMs().length));
+        Files.writeString(reportDir.resolve("serial.md"), md.toString());
     }
 
     private static String fmt(Double v) {

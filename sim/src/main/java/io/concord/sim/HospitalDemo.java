@@ -80,7 +80,7 @@ public final class HospitalDemo {
 
     /** Settings of a run. */
     record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
-                   double maxSeconds, String serial) {
+                   double maxSeconds, String serial, boolean augmented) {
         List<String> childArgs() {
             List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
                     "--chairs", Integer.toString(chairs), "--picture", picture.toAbsolutePath().toString(),
@@ -90,6 +90,9 @@ public final class HospitalDemo {
             }
             if (serial != null) {
                 a.addAll(List.of("--serial", serial));
+            }
+            if (augmented) {
+                a.add("--augmented");
             }
             return a;
         }
@@ -106,7 +109,7 @@ public final class HospitalDemo {
         } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
             System.err.println("usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
-                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT]");
+                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT [--augmented]]");
             System.exit(2);
             return;
         }
@@ -134,10 +137,15 @@ public final class HospitalDemo {
         List<TaskSpec> tasks = new ArrayList<>(List.of(new TaskSpec(3, 9, 3, 60)));
         double max = 1800;
         String serial = null;
+        boolean augmented = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--virtual")) {
                 virtual = true;
+                continue;
+            }
+            if (a.equals("--augmented")) {
+                augmented = true;
                 continue;
             }
             if (i + 1 >= args.length) {
@@ -174,10 +182,13 @@ public final class HospitalDemo {
         if (serial != null && virtual) {
             throw new IllegalArgumentException("--serial drives a chair in real time over its port: it cannot run with --virtual");
         }
+        if (augmented && serial == null) {
+            throw new IllegalArgumentException("--augmented adds the simulated world to a real chair's readings: it needs --serial PORT");
+        }
         if (serial != null) {
             speed = 1;   // the board (real or emulated) keeps real time
         }
-        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial);
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented);
     }
 
     private static void check(HospitalMap map, Options o) {
@@ -348,8 +359,11 @@ public final class HospitalDemo {
         world.attach(rt, o.speed());
         if (o.serial() != null) {
             // chair1 is on its serial port; the world keeps the doors (and any other chairs).
-            rt.execute(() -> hospital.addChair(platform, map, io.concord.serial.SerialChair.open(rt,
-                    io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))), log));
+            rt.execute(() -> {
+                io.concord.agents.chair.ChairDriver c = io.concord.serial.SerialChair.open(rt,
+                        io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90)));
+                hospital.addChair(platform, map, o.augmented() ? new io.concord.sim.world.AugmentedChair(c, world) : c, log);
+            });
         }
         CountDownLatch stopped = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {

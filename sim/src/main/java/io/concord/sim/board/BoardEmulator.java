@@ -104,7 +104,13 @@ public final class BoardEmulator {
                     board.switchOn(nowMs());
                 }
             } else {
-                int n = p.readBytes(buf, buf.length);
+                // Polled every 0.2 ms, as a board's timer interrupt would: a read's timeout on a pty is
+                // only good to about 10 ms, which would delay the watchdog by as much.
+                int avail = p.bytesAvailable();
+                int n = avail > 0 ? p.readBytes(buf, Math.min(avail, buf.length)) : avail;
+                if (n == 0) {
+                    java.util.concurrent.locks.LockSupport.parkNanos(200_000);
+                }
                 if (n < 0 || !Files.exists(Path.of(path))) {
                     p.closePort();
                     port[0] = null;
@@ -127,7 +133,7 @@ public final class BoardEmulator {
         }
         SerialPort p = SerialPort.getCommPort(path);
         p.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
-        p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 5, 0);
+        p.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
         if (!p.openPort()) {
             return null;
         }

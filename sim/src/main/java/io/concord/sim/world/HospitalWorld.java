@@ -587,6 +587,42 @@ public final class HospitalWorld {
         return hit.hitAny ? hit.fraction * range : Double.POSITIVE_INFINITY;
     }
 
+    /**
+     * What a chair of this layout standing at {@code pose} would read on each range sensor, without
+     * noise: the walls, doors, obstacles and chairs of this world (for a chair that is not in it:
+     * the augmented mode adds these to a real chair's readings). Nothing seen reads as the
+     * sensor's maximum range.
+     */
+    public double[] rangesAt(Pose pose, io.concord.agents.chair.ChairLayout layout, int sonarRays) {
+        double[] out = new double[layout.sensors().size()];
+        SimChair.RayHit h = new SimChair.RayHit();
+        Vec2 a = new Vec2();
+        Vec2 b = new Vec2();
+        double c = StrictMath.cos(pose.heading());
+        double sn = StrictMath.sin(pose.heading());
+        for (int i = 0; i < out.length; i++) {
+            io.concord.agents.chair.SensorMount s = layout.sensors().get(i);
+            double ox = pose.x() + s.x() * c - s.y() * sn;
+            double oy = pose.y() + s.x() * sn + s.y() * c;
+            int rays = s.kind() == io.concord.agents.chair.SensorMount.Kind.SONAR ? sonarRays : 1;
+            double nearest = s.maxRangeM();
+            for (int r = 0; r < rays; r++) {
+                double dir = pose.heading() + s.direction() + (rays == 1 ? 0 : -s.coneRad() / 2 + s.coneRad() * r / (rays - 1));
+                a.set((float) ox, (float) oy);
+                b.set((float) (ox + StrictMath.cos(dir) * s.maxRangeM()), (float) (oy + StrictMath.sin(dir) * s.maxRangeM()));
+                h.self = null;
+                h.fraction = 1.0f;
+                h.hitAny = false;
+                world.raycast(h, a, b);
+                if (h.hitAny) {
+                    nearest = Math.min(nearest, Math.max(s.minRangeM(), h.fraction * s.maxRangeM()));
+                }
+            }
+            out[i] = nearest;
+        }
+        return out;
+    }
+
     /** The names of the chairs and obstacles overlapping a shape placed in world coordinates. */
     List<String> overlapping(Shape shape, Transform xf) {
         return overlapping(shape, xf == null ? identity : xf, false);

@@ -76,7 +76,7 @@ class SerialLinkTest {
                 }
             }, 30_000, "the planner to know the doors and the chair to be online");
             CompletableFuture<MedicalAgent.Outcome> f = medical.transport(19, 3, 0, 1);
-            Pty.await(f::isDone, 240_000, "the transport; log: " + log);
+            Pty.await(f::isDone, 240_000, "the transport");
             assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", log.subList(Math.max(0, log.size() - 30), log.size())));
             Map<String, String> s = board.status();
             double x = Double.parseDouble(s.get("x"));
@@ -86,6 +86,40 @@ class SerialLinkTest {
             assertTrue(drops.get("corrupt") > 0 && drops.get("repeated") > 0 && drops.get("out-of-order") > 0,
                     "corrupt, repeated and reordered frames were dropped and counted: " + drops);
             assertTrue(log.stream().anyMatch(l -> l.startsWith("control-chair1: at node 3")), String.join("\n", log));
+        }
+    }
+
+    @Test
+    void inTheAugmentedModeTheChairStopsAtAVirtualObstacle(@TempDir Path dir) throws Exception {
+        List<String> log = java.util.Collections.synchronizedList(new ArrayList<>());
+        try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19");
+             Platform platform = Platform.builder().name("hospital").build()) {
+            AgentRuntime rt = platform.runtime();
+            HospitalWorld virtual = HospitalWorld.builder(MAP).seed(1).build();
+            // A trolley across the lobby's way out, in the host's world only: the emulated chair's
+            // world has nothing there.
+            virtual.addBox("trolley", new io.concord.agents.map.Point(24, 6.0), 1.6, 0.5, 0);
+            Hospital hospital = Hospital.start(platform, virtual, log::add);
+            virtual.attach(rt);
+            io.concord.agents.chair.ChairDriver chair = onLoop(rt, () -> new io.concord.sim.world.AugmentedChair(
+                    SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair1").withStart(virtual.poseAt(19, 90))), virtual));
+            hospital.addChair(platform, MAP, chair, log::add);
+            MedicalAgent medical = new MedicalAgent(log::add);
+            platform.startAgent("medical", medical);
+            Pty.await(() -> {
+                try {
+                    return onLoop(rt, hospital::ready) && onLoop(rt, chair::online);
+                } catch (InterruptedException e) {
+                    throw new AssertionError(e);
+                }
+            }, 30_000, "the planner to know the doors and the chair to be online");
+            medical.transport(19, 3, 0, 1);
+            Pty.await(() -> log.stream().anyMatch(l -> l.startsWith("control-chair1: stops: something")), 60_000,
+                    "the chair to stop for the virtual trolley");
+            Map<String, String> s = board.status();
+            double y = Double.parseDouble(s.get("y"));
+            assertTrue(Double.parseDouble(s.get("moved")) > 0.2, "it set off: " + s);
+            assertTrue(y < 6.0 - 0.25 - 0.6, "it stopped before the trolley, which only the host's world has: " + s);
         }
     }
 

@@ -1,0 +1,255 @@
+package io.concord.bench;
+
+import com.fazecast.jSerialComm.SerialPort;
+
+import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairLayout;
+import io.concord.agents.chair.ChairListener;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.Pose;
+import io.concord.core.agent.AgentRuntime;
+import io.concord.layers.platform.Platform;
+import io.concord.serial.Board;
+import io.concord.serial.BoardProtocol;
+import io.concord.serial.Frame;
+import io.concord.serial.FrameCodec;
+import io.concord.serial.SerialChair;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The serial link's timings over a real pty pair (socat), the board's logic on one end in a
+ * thread of its own, the host's driver on the other on a platform's loop: a drive command from
+ * the loop to the board's motors; a STATE from the board's write to the control agent's listener;
+ * and the watchdog, from the host's last frame to the motors at zero.
+ */
+final class SerialBench {
+    private SerialBench() {
+    }
+
+    /** Each measurement's samples, in microseconds (watchdog: milliseconds). */
+    record Outcome(double[] cmdToMotorUs, double[] sensorToAgentUs, double[] watchdogStopMs) {
+    }
+
+    /** Motors that note when each power arrives. */
+    static final class Motors implements ChairDriver {
+        final Map<Integer, Long> applied = new ConcurrentHashMap<>();
+        volatile long zeroAtNs;
+        volatile int left;
+
+        @Override
+        public String name() {
+            return "bench";
+        }
+
+        @Override
+        public ChairLayout layout() {
+            return ChairLayout.standard();
+        }
+
+        @Override
+        public void drive(double l, double r) {
+            int p = (int) Math.round(l * 10);
+            long now = System.nanoTime();
+            if (p != left) {
+                applied.putIfAbsent(p, now);
+                if (p == 0) {
+                    zeroAtNs = now;
+                }
+            }
+            left = p;
+        }
+
+        @Override
+        public ChairReadings latest() {
+            return new ChairReadings(0, 0, 0, 0, new double[layout().sensors().size()], false, 24, false, Set.of(), new Pose(0, 0, 0), null);
+        }
+
+        @Override
+        public boolean online() {
+            return true;
+        }
+
+        @Override
+        public void setListener(ChairListener l) {
+        }
+    }
+
+    static Outcome run(boolean full) throws Exception {
+        Path dir = Files.createTempDirectory("concord-serial-bench");
+        Path host = dir.resolve("host");
+        Path boardPath = dir.resolve("board");
+        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + host, "pty,raw,echo=0,link=" + boardPath)
+                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        try {
+            long end = System.nanoTime() + 10_000_000_000L;
+            while (!(Files.exists(host) && Files.exists(boardPath))) {
+                if (System.nanoTime() > end) {
+                    throw new IllegalStateException("socat made no pty pair (is socat installed?)");
+                }
+                Thread.sleep(10);
+            }
+            Motors motors = new Motors();
+            FrameCodec codec = new FrameCodec();
+            Map<Integer, Long> stateSentNs = new ConcurrentHashMap<>();
+            SerialPort bp = SerialPort.getCommPort(boardPath.toString());
+            bp.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+            bp.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
+            if (!bp.openPort()) {
+                throw new IllegalStateException("cannot open " + boardPath);
+            }
+            long t0 = System.nanoTime();
+            Board board = new Board(motors, codec, "bench", bytes -> {
+                Frame f = codec.decode(bytes, 0, bytes.length - 1);
+                if (f.type() == Frame.Type.STATE) {
+                    stateSentNs.put(f.seq(), System.nanoTime());
+                }
+                bp.writeBytes(bytes, bytes.length);
+            });
+            volatileStop[0] = false;
+            Thread boardThread = new Thread(() -> {
+                byte[] buf = new byte[512];
+                board.switchOn(0);
+                while (!volatileStop[0]) {
+                    // Polled every 0.1 ms, as a board's timer interrupt would: a read's timeout on a pty
+                    // is only good to about 10 ms, which the watchdog's figure then carried.
+                    int avail = bp.bytesAvailable();
+                    int n = avail > 0 ? bp.readBytes(buf, Math.min(avail, buf.length)) : 0;
+                    long now = (System.nanoTime() - t0) / 1_000_000;
+                    if (n > 0) {
+                        board.onBytes(buf, 0, n, now);
+                    }
+                    board.tick(now);
+                    if (n <= 0) {
+                        java.util.concurrent.locks.LockSupport.parkNanos(100_000);
+                    }
+                }
+            }, "bench-board");
+            boardThread.setDaemon(true);
+            boardThread.start();
+
+            int samples = full ? 400 : 100;
+            List<Double> sensor = java.util.Collections.synchronizedList(new ArrayList<>());
+            List<Double> cmd = new ArrayList<>();
+            try (Platform platform = Platform.builder().name("bench").build()) {
+                AgentRuntime rt = platform.runtime();
+                CountDownLatch open = new CountDownLatch(1);
+                SerialChair[] chair = new SerialChair[1];
+                rt.execute(() -> {
+                    chair[0] = SerialChair.open(rt, SerialChair.Settings.of(host.toString(), "bench"));
+                    chair[0].setListener(r -> {
+                        Long sent = stateSentNs.remove((int) r.seq());
+                        if (sent != null) {
+                            sensor.add((System.nanoTime() - sent) / 1e3);
+                        }
+                    });
+                    open.countDown();
+                });
+                open.await(10, TimeUnit.SECONDS);
+                while (sensor.size() < 5) {
+                    Thread.sleep(10);
+                }
+                rt.execute(() -> chair[0].stop());
+                Thread.sleep(100);
+                // Drive commands: each power its own value, so that its arrival is its own.
+                for (int i = 0; i < samples; i++) {
+                    int pct = 1 + i % 99;
+                    long[] at = new long[1];
+                    CountDownLatch sent = new CountDownLatch(1);
+                    motors.applied.remove(pct * 10);
+                    rt.execute(() -> {
+                        at[0] = System.nanoTime();
+                        chair[0].drive(pct, pct);
+                        sent.countDown();
+                    });
+                    sent.await();
+                    long deadline = System.nanoTime() + 1_000_000_000L;
+                    while (!motors.applied.containsKey(pct * 10) && System.nanoTime() < deadline) {
+                        Thread.onSpinWait();
+                    }
+                    Long got = motors.applied.get(pct * 10);
+                    if (got != null) {
+                        cmd.add((got - at[0]) / 1e3);
+                    }
+                    Thread.sleep(5);
+                }
+                while (sensor.size() < samples) {
+                    Thread.sleep(10);
+                }
+                CountDownLatch closed = new CountDownLatch(1);
+                rt.execute(() -> {
+                    chair[0].close();
+                    closed.countDown();
+                });
+                closed.await();
+            }
+            Thread.sleep(300);
+            // The watchdog: a host that drives, then falls silent mid-stride.
+            List<Double> watchdog = new ArrayList<>();
+            SerialPort hp = SerialPort.getCommPort(host.toString());
+            hp.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+            if (!hp.openPort()) {
+                throw new IllegalStateException("cannot open " + host);
+            }
+            int seq = 0;
+            long h0 = System.nanoTime();
+            for (int i = 0; i < (full ? 50 : 20); i++) {
+                motors.zeroAtNs = 0;
+                long last = 0;
+                for (int k = 0; k < 4; k++) {
+                    int type = k == 0 ? Frame.Type.STOP : Frame.Type.DRIVE;
+                    byte[] body = k == 0 ? new byte[0] : BoardProtocol.drive(400, 400);
+                    byte[] b = codec.encode(new Frame(type, seq == 0 ? Frame.SYNC : 0, seq++ & 0xFFFF, (System.nanoTime() - h0) / 1_000_000, body));
+                    hp.writeBytes(b, b.length);
+                    last = System.nanoTime();
+                    Thread.sleep(50);
+                }
+                long deadline = System.nanoTime() + 2_000_000_000L;
+                while (motors.zeroAtNs == 0 && System.nanoTime() < deadline) {
+                    Thread.sleep(1);
+                }
+                if (motors.zeroAtNs != 0) {
+                    watchdog.add((motors.zeroAtNs - last) / 1e6);
+                }
+            }
+            hp.closePort();
+            volatileStop[0] = true;
+            boardThread.join(1000);
+            bp.closePort();
+            return new Outcome(cmd.stream().mapToDouble(Double::doubleValue).toArray(),
+                    sensor.stream().limit(samples).mapToDouble(Double::doubleValue).toArray(),
+                    watchdog.stream().mapToDouble(Double::doubleValue).toArray());
+        } finally {
+            socat.destroyForcibly();
+        }
+    }
+
+    private static final boolean[] volatileStop = {false};
+
+    static double percentile(double[] v, double p) {
+        if (v.length == 0) {
+            return Double.NaN;
+        }
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s[Math.min(s.length - 1, (int) Math.ceil(p / 100 * s.length) - 1)];
+    }
+
+    static String describe(Outcome o) {
+        return String.format(Locale.ROOT, "RESULT serial cmd_to_motor_us=%.0f cmd_to_motor_p99_us=%.0f sensor_to_agent_us=%.0f "
+                        + "sensor_to_agent_p99_us=%.0f watchdog_stop_ms=%.1f watchdog_stop_p99_ms=%.1f samples=%d,%d,%d",
+                percentile(o.cmdToMotorUs(), 50), percentile(o.cmdToMotorUs(), 99), percentile(o.sensorToAgentUs(), 50),
+                percentile(o.sensorToAgentUs(), 99), percentile(o.watchdogStopMs(), 50), percentile(o.watchdogStopMs(), 99),
+                o.cmdToMotorUs().length, o.sensorToAgentUs().length, o.watchdogStopMs().length);
+    }
+}
