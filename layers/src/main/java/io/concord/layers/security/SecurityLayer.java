@@ -79,6 +79,14 @@ public final class SecurityLayer extends Layer {
 
     private static final int HELLO = 1;
     private static final int HELLO_REPLY = 2;
+    /**
+     * A notice, sealed with the platform key and not signed: "I hold no session key with you;
+     * start a handshake". What a receiver sends, at most once a second per source, for a frame
+     * sealed with a pair key it does not have (it restarted, or the frame is forged).
+     */
+    private static final int REKEY = 3;
+    private static final long REKEY_EVERY_MS = 1_000;
+    private static final int REKEY_MEMORY = 1024;
     private static final int RECENT_TAGS = 64;
     private static final int MAX_PAIRS = 4096;
     private static final long FIRST_RETRY_MS = 100;
@@ -89,12 +97,31 @@ public final class SecurityLayer extends Layer {
     private final long[] recentTags = new long[RECENT_TAGS];
     private final byte[] nonce = new byte[12];
     private final Map<String, byte[]> pins = new HashMap<>();
+    /**
+     * Pairs, least recently used first. Only this agent's own sends and signed handshakes create
+     * one, so strangers cannot push real pairs out; one pushed out by this agent's own traffic
+     * to more than {@link #MAX_PAIRS} peers has its waiting messages counted as dropped.
+     */
     private final Map<Long, Pair> pairs = new LinkedHashMap<>(64, 0.75f, true) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<Long, Pair> eldest) {
-            return size() > MAX_PAIRS;
+            if (size() > MAX_PAIRS) {
+                evicted.add(eldest.getValue());
+                return true;
+            }
+            return false;
         }
     };
+    private final java.util.List<Pair> evicted = new java.util.ArrayList<>();
+    /** When a REKEY notice last went to each source id (bounded: forgetting one costs a notice). */
+    private final Map<Long, Long> rekeyed = new LinkedHashMap<>(64, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
+            return size() > REKEY_MEMORY;
+        }
+    };
+    private long rekeysSent;
+    private long hellosSent;
     private int recentIndex;
     private long ownId;
     private String ownName;
@@ -190,6 +217,7 @@ public final class SecurityLayer extends Layer {
             }
             case GCM_PAIR -> {
                 Pair p = pairs.computeIfAbsent(env.peerId(), k -> new Pair());
+                dropEvicted(ctx);
                 if (p.key != null) {
                     seal(env, Frames.PROTECTION_GCM_PAIR, 0, p.key, p.encrypt);
                     ctx.passDown(env);
@@ -204,6 +232,20 @@ public final class SecurityLayer extends Layer {
                 startHandshake(ctx, env.peerId(), p);
             }
         }
+    }
+
+    /** Counts the messages of pairs pushed out of the table: nothing is lost uncounted. */
+    private void dropEvicted(LayerContext ctx) {
+        for (Pair gone : evicted) {
+            if (gone.timer >= 0) {
+                ctx.host().cancel(gone.timer);
+            }
+            for (Envelope e : gone.queue) {
+                ctx.drop(e, "pair-evicted", "more than " + MAX_PAIRS + " peers: the least recently used pair was forgotten");
+            }
+            gone.queue.clear();
+        }
+        evicted.clear();
     }
 
     private void seal(Envelope env, int protection, int flags, SecretKeySpec key, Cipher gcm) {
@@ -330,11 +372,17 @@ public final class SecurityLayer extends Layer {
                 if (protection == Frames.PROTECTION_GCM_PAIR) {
                     Pair p = pairs.get(src);
                     if (p == null || p.key == null) {
+                        // Nothing here is authenticated yet: no state, no signature, and at most one
+                        // small notice back a second per source id (the sender, if real, then starts
+                        // the handshake, which costs it a signature first).
                         ctx.drop(env, "no-session-key", "no session key with " + Long.toHexString(src)
-                                + " (this agent restarted?); starting a handshake");
-                        Pair np = pairs.computeIfAbsent(src, k -> new Pair());
-                        np.address = env.source();
-                        startHandshake(ctx, src, np);
+                                + " (this agent restarted, or the frame is forged); asks the sender for a handshake");
+                        long now = ctx.host().clock().epochMillis();
+                        Long last = rekeyed.get(src);
+                        if (last == null || now - last >= REKEY_EVERY_MS) {
+                            rekeyed.put(src, now);
+                            sendRekey(ctx, src, env.source());
+                        }
                         return;
                     }
                     key = p.key;
@@ -404,7 +452,51 @@ public final class SecurityLayer extends Layer {
         }
     }
 
+    /** Asks a peer for a handshake: one byte of body, sealed with the platform key. */
+    private void sendRekey(LayerContext ctx, long peerId, Address to) {
+        byte[] buf = new byte[Frames.HEADROOM + 1 + 40];
+        buf[Frames.HEADROOM] = (byte) REKEY;
+        Envelope env = Envelope.control(peerId, to, buf, Frames.HEADROOM, 1);
+        seal(env, Frames.PROTECTION_GCM_PLATFORM, Frames.FLAG_HANDSHAKE, platformAead, platformEncrypt);
+        rekeysSent++;
+        ctx.passDown(env);
+    }
+
+    /** A peer holds no session key with this agent: forget ours and agree a new one (our frames wait meanwhile). */
+    private void onRekey(LayerContext ctx, Envelope env, long src, int len) {
+        if (len != 1) {
+            ctx.drop(env, "malformed-handshake", "a rekey notice of " + len + " bytes");
+            return;
+        }
+        Pair p = pairs.get(src);
+        if (p == null) {
+            // Nothing was sent to it: nothing to recover. Its next message will find a handshake.
+            ctx.drop(env, "no-session-key", "a rekey notice from " + Long.toHexString(src) + ", which this agent has no pair with");
+            return;
+        }
+        p.key = null;
+        p.peerAgreement = null;
+        p.address = env.source();
+        startHandshake(ctx, src, p);
+    }
+
+    /** REKEY notices sent (tests, the console). */
+    public long rekeysSent() {
+        return rekeysSent;
+    }
+
+    /** Signed HELLOs and replies sent (tests, the console). */
+    public long hellosSent() {
+        return hellosSent;
+    }
+
+    /** Pairs held. */
+    public int pairCount() {
+        return pairs.size();
+    }
+
     private void sendHello(LayerContext ctx, long peerId, Address to, int type) {
+        hellosSent++;
         byte[] name = ownName.getBytes(StandardCharsets.UTF_8);
         int signedLen = 1 + 2 + name.length + 32 + 32 + 8;
         byte[] buf = new byte[Frames.HEADROOM + signedLen + 8 + 64 + 40];
@@ -446,6 +538,10 @@ public final class SecurityLayer extends Layer {
     }
 
     private void onHello(LayerContext ctx, Envelope env, long src, byte[] b, int off, int len) {
+        if (len >= 1 && b[off] == REKEY) {
+            onRekey(ctx, env, src, len);
+            return;
+        }
         if (len < 3) {
             ctx.drop(env, "malformed-handshake", len + " bytes");
             return;
@@ -488,6 +584,7 @@ public final class SecurityLayer extends Layer {
             return;
         }
         Pair pair = pairs.computeIfAbsent(src, k -> new Pair());
+        dropEvicted(ctx);
         pair.address = env.source();
         if (pair.key == null || !Arrays.equals(pair.peerAgreement, agreementKey)) {
             byte[] info = new byte[16 + 16];

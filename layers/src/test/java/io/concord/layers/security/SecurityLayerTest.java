@@ -168,6 +168,103 @@ class SecurityLayerTest {
         assertEquals(0, b.downCount(), "no reply to an impostor");
     }
 
+    /** A frame claiming to be sealed with a pair key, from any id: 48 bytes anyone can send. */
+    private static Envelope forged(long src, String to, long ctr) {
+        byte[] f = new byte[48];
+        Frames.putShort(f, 0, Frames.MAGIC);
+        f[2] = (byte) Frames.VERSION;
+        f[3] = (byte) Frames.PROTECTION_GCM_PAIR;
+        Frames.putLong(f, 4, src);
+        Frames.putLong(f, 12, Frames.id(to));
+        Frames.putLong(f, 20, ctr);
+        java.util.SplittableRandom noise = new java.util.SplittableRandom(src * 31 + ctr);
+        for (int i = 28; i < f.length; i++) {
+            f[i] = (byte) noise.nextInt(256); // a body and a tag no other frame had
+        }
+        return Envelope.incoming(new Address("attacker", 9), f, 0, f.length, 0);
+    }
+
+    @Test
+    void aFrameFromAStrangerCostsNoStateNoSignatureAndAtMostOneSmallNoticeASecond() {
+        SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness b = agent("b@p", sb);
+        java.util.SplittableRandom r = new java.util.SplittableRandom(1);
+        for (int i = 0; i < 1_000; i++) {
+            b.receiveUp(forged(r.nextLong(), "b@p", i));
+        }
+        for (int i = 0; i < 100; i++) {
+            b.receiveUp(forged(42, "b@p", i));
+        }
+        assertEquals(1_100, b.drops().get("no-session-key"), b.drops().toString());
+        assertEquals(0, sb.pairCount(), "no state for strangers");
+        assertEquals(0, sb.hellosSent(), "no signature for strangers");
+        assertEquals(1_001, sb.rekeysSent(), "one notice per source id a second: 1,000 ids, and id 42 once");
+        Envelope e;
+        int n = 0;
+        while ((e = b.pollDown()) != null) {
+            n++;
+            assertTrue(e.length() <= 49, "a notice of 49 bytes for a frame of 48: " + e.length() + " bytes");
+        }
+        assertEquals(1_001, n);
+        clock.advanceMs(1_000);
+        b.receiveUp(forged(42, "b@p", 100));
+        assertEquals(1_002, sb.rekeysSent(), "a second later, one more");
+    }
+
+    @Test
+    void strangersDoNotPushRealPairsOut() {
+        SecurityLayer sa = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness a = agent("a@p", sa);
+        LayerHarness b = agent("b@p", sb);
+        a.sendDown(body("first", "b@p"));
+        carry(a, A_ADDR, b);
+        carry(b, B_ADDR, a);
+        carry(a, A_ADDR, b);
+        assertEquals("first", text(b.pollUp()));
+        for (int i = 0; i < 5_000; i++) {
+            b.receiveUp(forged(1_000_000 + i, "b@p", i));
+        }
+        assertTrue(sb.hasSessionWith(Frames.id("a@p")), "the real pair is kept");
+        while (b.pollDown() != null) {
+            // the notices to the strangers' addresses
+        }
+        a.sendDown(body("second", "b@p"));
+        carry(a, A_ADDR, b);
+        assertEquals("second", text(b.pollUp()));
+    }
+
+    @Test
+    void aRestartedAgentAsksItsPeerForANewHandshakeAndTheirMessagesFlowAgain() {
+        // b keeps its identity across the restart, as a directory store does.
+        Identity kept = IdentityStore.ephemeral().identityFor("b@p");
+        IdentityStore bIdentity = name -> kept;
+        SecurityLayer sa = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness a = agent("a@p", sa);
+        LayerHarness b = agent("b@p", new SecurityLayer(new SecurityLayer.Config(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY, bIdentity, 30_000, 16)));
+        a.sendDown(body("before", "b@p"));
+        carry(a, A_ADDR, b);
+        carry(b, B_ADDR, a);
+        carry(a, A_ADDR, b);
+        assertEquals("before", text(b.pollUp()));
+        // b restarts with its identity and no session keys.
+        SecurityLayer sb2 = new SecurityLayer(new SecurityLayer.Config(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY, bIdentity, 30_000, 16));
+        LayerHarness b2 = agent("b@p", sb2);
+        a.sendDown(body("lost in the restart", "b@p"));
+        carry(a, A_ADDR, b2);
+        assertEquals(1, b2.drops().get("no-session-key"));
+        long hellos = sa.hellosSent();
+        assertEquals(1, carry(b2, B_ADDR, a), "one notice");
+        assertEquals(hellos + 1, sa.hellosSent(), "the notice made a start a handshake: " + a.drops());
+        a.sendDown(body("after", "b@p"));
+        carry(a, A_ADDR, b2);      // a's hello (the message waits for it)
+        carry(b2, B_ADDR, a);      // b's reply
+        carry(a, A_ADDR, b2);      // the message
+        Envelope got = b2.pollUp();
+        assertNotNull(got, "a: " + a.drops() + " b2: " + b2.drops());
+        assertEquals("after", text(got));
+    }
+
     @Test
     void theConfigurationRefusesWhatCannotWork() {
         assertThrows(IllegalArgumentException.class,
