@@ -145,25 +145,26 @@ final class SerialBench {
                 AgentRuntime rt = platform.runtime();
                 CountDownLatch open = new CountDownLatch(1);
                 SerialChair[] chair = new SerialChair[1];
+                int[] warm = {0};
                 rt.execute(() -> {
                     chair[0] = SerialChair.open(rt, SerialChair.Settings.of(host.toString(), "bench"));
                     chair[0].setListener(r -> {
                         Long sent = stateSentNs.remove((int) r.seq());
-                        if (sent != null) {
+                        if (sent != null && warm[0]++ >= WARM_UP) {
                             sensor.add((System.nanoTime() - sent) / 1e3);
                         }
                     });
                     open.countDown();
                 });
                 open.await(10, TimeUnit.SECONDS);
-                while (sensor.size() < 5) {
+                while (sensor.size() < 1) {
                     Thread.sleep(10);
                 }
                 rt.execute(() -> chair[0].stop());
                 Thread.sleep(100);
                 // Drive commands: each power its own value, so that its arrival is its own.
-                for (int i = 0; i < samples; i++) {
-                    int pct = 1 + i % 99;
+                for (int i = -WARM_UP; i < samples; i++) {
+                    int pct = 1 + (i + WARM_UP) % 99;
                     long[] at = new long[1];
                     CountDownLatch sent = new CountDownLatch(1);
                     motors.applied.remove(pct * 10);
@@ -178,7 +179,7 @@ final class SerialBench {
                         Thread.onSpinWait();
                     }
                     Long got = motors.applied.get(pct * 10);
-                    if (got != null) {
+                    if (got != null && i >= 0) {
                         cmd.add((got - at[0]) / 1e3);
                     }
                     Thread.sleep(5);
@@ -226,6 +227,18 @@ final class SerialBench {
             volatileStop[0] = true;
             boardThread.join(1000);
             bp.closePort();
+            if (Boolean.getBoolean("concord.serial.debug")) {
+                for (int i = 0; i < sensor.size(); i++) {
+                    if (sensor.get(i) > 2000) {
+                        System.out.printf("sensor sample %d: %.0f us%n", i, sensor.get(i));
+                    }
+                }
+                for (int i = 0; i < cmd.size(); i++) {
+                    if (cmd.get(i) > 2000) {
+                        System.out.printf("cmd sample %d: %.0f us%n", i, cmd.get(i));
+                    }
+                }
+            }
             return new Outcome(cmd.stream().mapToDouble(Double::doubleValue).toArray(),
                     sensor.stream().limit(samples).mapToDouble(Double::doubleValue).toArray(),
                     watchdog.stream().mapToDouble(Double::doubleValue).toArray());
@@ -235,6 +248,8 @@ final class SerialBench {
     }
 
     private static final boolean[] volatileStop = {false};
+    /** Samples of each kind not counted: the first STATEs and commands run while classes load and compile. */
+    private static final int WARM_UP = 10;
 
     static double percentile(double[] v, double p) {
         if (v.length == 0) {

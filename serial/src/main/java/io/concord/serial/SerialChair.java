@@ -217,6 +217,17 @@ public final class SerialChair implements ChairDriver {
         if (closed) {
             return;
         }
+        if (online && port != null && System.nanoTime() - lastFrameNanos > settings.silentMs() * 1_000_000) {
+            SerialPort p = port;
+            long silent = (System.nanoTime() - lastFrameNanos) / 1_000_000;
+            // Closing the port ends the reader's read; the reader then opens it again.
+            closePort();
+            LOG.warn("{}: link down: the board has been silent for {} ms; opens the port again", settings.name(), silent);
+            setOnline(false);
+            if (p != null) {
+                lastFrameNanos = System.nanoTime();
+            }
+        }
         sendCommand();
         heartbeatTimer = runtime.schedule(runtime.nowNs() + settings.heartbeatMs() * 1_000_000, this::heartbeat);
     }
@@ -278,15 +289,15 @@ public final class SerialChair implements ChairDriver {
                 continue;
             }
             int n = p.readBytes(buf, buf.length);
+            if (port != p) {
+                continue; // closed meanwhile (a silent board, or close())
+            }
             if (n < 0 || !Files.exists(Path.of(settings.port()))) {
                 lost("the port " + settings.port() + " is gone");
                 continue;
             }
             if (n > 0) {
                 deframer.feed(buf, 0, n);
-            }
-            if (online && System.nanoTime() - lastFrameNanos > settings.silentMs() * 1_000_000) {
-                lost("the board has been silent for " + settings.silentMs() + " ms");
             }
         }
     }
@@ -297,7 +308,10 @@ public final class SerialChair implements ChairDriver {
         }
         SerialPort p = SerialPort.getCommPort(settings.port());
         p.setComPortParameters(settings.baud(), 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
-        p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 50, 0);
+        // A read returns as soon as a byte is there (a timeout on a pty is only good to about 10 ms,
+        // which a STATE frame's way to the agent then carried); the loop's heartbeat watches for a
+        // silent board, and closing the port ends a read.
+        p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 0, 0);
         if (!p.openPort()) {
             LOG.warn("{}: cannot open {} (error {}); tries again", settings.name(), settings.port(), p.getLastErrorCode());
             return false;
