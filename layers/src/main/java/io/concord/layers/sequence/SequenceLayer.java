@@ -24,7 +24,15 @@ import java.util.Map;
  * is skipped (SKIP), counted as {@code lost}.
  *
  * <p>Header: kind u8 (0 data, 1 ack, 2 nak, 3 probe, 4 skip), stream u32, sequence u64. A NAK
- * carries a u16 count and that many u64 sequence numbers.
+ * carries a u16 count and that many u64 sequence numbers. An ACK and a NAK end with the
+ * receiver's own session (its stream id, new at every start: u32) and the first sequence number
+ * this session of the receiver got of the stream (u64, 0 if none yet).
+ *
+ * <p>A restarted receiver: its acknowledgements name a new session. The sender then sends again
+ * nothing the previous session acknowledged or could have got, only what the new one asks for
+ * from the first frame it got on: it skips (SKIP) to after both, counting what it gives up as
+ * {@code receiver-restarted}, and ignores late acknowledgements of the session that ended. So a
+ * receiver that restarts is never given again what it delivered before.
  */
 public final class SequenceLayer extends Layer {
     public static final int HEADER_BYTES = 13;
@@ -73,6 +81,9 @@ public final class SequenceLayer extends Layer {
     private static final class Out {
         long nextSeq = 1;
         long acked;
+        /** The receiver's session, from its acknowledgements; 0 until the first. */
+        int peerSession;
+        final java.util.Set<Integer> endedSessions = new java.util.LinkedHashSet<>();
         Address address;
         final byte[][] ring;
         final long[] ringSeq;
@@ -89,6 +100,8 @@ public final class SequenceLayer extends Layer {
 
     private static final class In {
         int stream;
+        /** The first sequence number of the stream this session got, or 0. */
+        long since;
         long expected = 1;
         long highest;
         final Envelope[] buffer;
@@ -214,6 +227,38 @@ public final class SequenceLayer extends Layer {
         o.probeTimer = ctx.host().schedule(ctx.nowNs() + backoff * 1_000_000L, () -> probe(ctx, peer, o));
     }
 
+    /**
+     * False if an acknowledgement is not to be acted on: it names a session of the receiver that
+     * has ended, or a new one (the receiver restarted), which is handled here.
+     */
+    private boolean sameSession(LayerContext ctx, long peer, Out out, int session, long since) {
+        if (session == 0 || session == out.peerSession) {
+            return true;
+        }
+        if (out.peerSession == 0) {
+            out.peerSession = session;
+            return true;
+        }
+        if (out.endedSessions.contains(session)) {
+            return false;
+        }
+        out.endedSessions.add(out.peerSession);
+        if (out.endedSessions.size() > OLD_STREAMS) {
+            out.endedSessions.remove(out.endedSessions.iterator().next());
+        }
+        out.peerSession = session;
+        long from = Math.min(out.nextSeq, Math.max(out.acked + 1, since));
+        if (from - 1 > out.acked) {
+            ctx.drop(Envelope.control(peer, out.address, new byte[0], 0, 0), "receiver-restarted", (from - 1 - out.acked)
+                    + " frames sent to " + out.address + " before it restarted are not sent again (it may have had them)");
+        }
+        out.acked = Math.max(out.acked, from - 1);
+        if (from > 1) {
+            sendControl(ctx, peer, out.address, SKIP, stream, from, null, 0);
+        }
+        return false;
+    }
+
     private void retransmit(LayerContext ctx, long peer, Out o, long seq) {
         int slot = (int) (seq % config.retransmitBuffer());
         if (seq < o.nextSeq && o.ring[slot] != null && o.ringSeq[slot] == seq) {
@@ -225,7 +270,12 @@ public final class SequenceLayer extends Layer {
     }
 
     private void sendControl(LayerContext ctx, long peer, Address to, int kind, int streamId, long seq, long[] list, int n) {
-        int len = HEADER_BYTES + (kind == NAK ? 2 + 8 * n : 0);
+        sendControl(ctx, peer, to, kind, streamId, seq, list, n, 0);
+    }
+
+    private void sendControl(LayerContext ctx, long peer, Address to, int kind, int streamId, long seq, long[] list, int n, long since) {
+        boolean acknowledging = kind == ACK || kind == NAK;
+        int len = HEADER_BYTES + (kind == NAK ? 2 + 8 * n : 0) + (acknowledging ? 12 : 0);
         byte[] b = new byte[Frames.HEADROOM + len + 40];
         int o = Frames.HEADROOM;
         b[o] = (byte) kind;
@@ -236,6 +286,10 @@ public final class SequenceLayer extends Layer {
             for (int i = 0; i < n; i++) {
                 Frames.putLong(b, o + 15 + 8 * i, list[i]);
             }
+        }
+        if (acknowledging) {
+            Frames.putInt(b, o + len - 12, stream);
+            Frames.putLong(b, o + len - 8, since);
         }
         ctx.passDown(Envelope.control(peer, to, b, o, len));
     }
@@ -266,6 +320,10 @@ public final class SequenceLayer extends Layer {
             }
             case ACK -> {
                 Out out = outs.get(peer);
+                if (out != null && streamId == stream && env.length() >= HEADER_BYTES + 12
+                        && !sameSession(ctx, peer, out, Frames.getInt(d, o + HEADER_BYTES), Frames.getLong(d, o + HEADER_BYTES + 4))) {
+                    return;
+                }
                 if (out != null && streamId == stream && seq > out.acked) {
                     out.acked = Math.min(seq, out.nextSeq - 1);
                     if (out.acked >= out.nextSeq - 1 && out.probeTimer >= 0) {
@@ -281,6 +339,10 @@ public final class SequenceLayer extends Layer {
                     return;
                 }
                 int n = Math.min(Frames.getShort(d, o + 13), (env.length() - HEADER_BYTES - 2) / 8);
+                int tail = o + HEADER_BYTES + 2 + 8 * n;
+                if (tail + 12 <= o + env.length() && !sameSession(ctx, peer, out, Frames.getInt(d, tail), Frames.getLong(d, tail + 4))) {
+                    return;
+                }
                 long[] wanted = new long[n];
                 for (int i = 0; i < n; i++) {
                     wanted[i] = Frames.getLong(d, o + 15 + 8 * i);
@@ -335,6 +397,7 @@ public final class SequenceLayer extends Layer {
 
     private void reset(LayerContext ctx, In in, int streamId) {
         in.stream = streamId;
+        in.since = 0;
         in.expected = 1;
         in.highest = 0;
         Arrays.fill(in.buffer, null);
@@ -357,6 +420,9 @@ public final class SequenceLayer extends Layer {
             return;
         }
         in.highest = Math.max(in.highest, seq);
+        if (in.since == 0) {
+            in.since = seq;
+        }
         if (seq < in.expected) {
             if (takeResendAllowance(in, seq)) {
                 deliver(ctx, env, peer, in, seq);
@@ -441,7 +507,7 @@ public final class SequenceLayer extends Layer {
             }
         }
         if (n > 0) {
-            sendControl(ctx, peer, in.address, NAK, in.stream, in.expected, missing, n);
+            sendControl(ctx, peer, in.address, NAK, in.stream, in.expected, missing, n, in.since);
         }
     }
 
@@ -490,7 +556,7 @@ public final class SequenceLayer extends Layer {
             ctx.host().cancel(in.ackTimer);
             in.ackTimer = -1;
         }
-        sendControl(ctx, peer, in.address, ACK, in.stream, in.expected - 1, null, 0);
+        sendControl(ctx, peer, in.address, ACK, in.stream, in.expected - 1, null, 0, in.since);
     }
 
     // ---- resend requests from above ----------------------------------------------------------------
