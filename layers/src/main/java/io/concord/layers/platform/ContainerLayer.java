@@ -542,6 +542,22 @@ public final class ContainerLayer extends Layer {
                     + "', not to '" + platform + "'");
             return;
         }
+        // The sender a platform message names must be the agent whose frame carried it (under
+        // class 7 the pair key authenticates that): nobody speaks for another agent, so "leave",
+        // the lists and the relays, checked against the sender's name below, are its own.
+        long from = env.peerId();
+        if (from != 0 && from != io.concord.layers.frame.Frames.id(sender.name())) {
+            ctx.drop(env, "masquerade", "a platform message in the name of " + sender.name() + " from another agent (id "
+                    + Long.toHexString(from) + ")");
+            return;
+        }
+        // A frame for any agent at a port is sealed with the platform key alone: its source is
+        // whatever its sender wrote. Only discovery travels that way; nothing that changes state.
+        if (env.header(io.concord.layers.frame.Frames.ENVELOPE_ANY) != null && !discovery(m, forService)) {
+            ctx.drop(env, "unauthenticated", "a platform message other than discovery in a frame for any agent ("
+                    + firstWord(m.getContent()) + " from " + sender.name() + "): it must come sealed to this agent");
+            return;
+        }
         if (role == Role.STOPPED) {
             return;
         }
@@ -554,6 +570,28 @@ public final class ContainerLayer extends Layer {
         } catch (IllegalArgumentException e) {
             ctx.drop(env, "malformed-platform", e.getMessage());
         }
+    }
+
+    /** Platform messages that may come in a frame for any agent: asking a port who is container, the answers, and a host container's announcement. */
+    private static final Set<String> DISCOVERY = Set.of("who-is-container", "container", "seeking", "lal-request", "announce");
+
+    private static boolean discovery(AclMessage m, boolean forService) {
+        String text = m.getContent();
+        if (forService || text == null || text.startsWith(RELAY_OUT) || text.startsWith(RELAY_IN)) {
+            return false;
+        }
+        return DISCOVERY.contains(firstWord(text));
+    }
+
+    private static String firstWord(String text) {
+        if (text == null) {
+            return "";
+        }
+        int end = 0;
+        while (end < text.length() && !Character.isWhitespace(text.charAt(end))) {
+            end++;
+        }
+        return text.substring(0, end);
     }
 
     private boolean addressedToService(AclMessage m) {
