@@ -174,8 +174,12 @@ public final class HttpMtp implements Gateway {
                 return;
             }
             Inbound in;
+            GatewayContext at = context;
             try {
                 in = parse(new String(body, StandardCharsets.ISO_8859_1), boundary);
+                if (at != null) {
+                    checkForeignSender(in, at.platformName());
+                }
             } catch (IllegalArgumentException e) {
                 reply(x, 400, e.getMessage());
                 return;
@@ -300,6 +304,20 @@ public final class HttpMtp implements Gateway {
             m.setSender(env.from());
         }
         return new Inbound(env, m);
+    }
+
+    /**
+     * A message that comes in over HTTP comes from outside the platform: one whose sender names an
+     * agent of this platform is somebody posing as it (its own agents never use this door in).
+     */
+    static void checkForeignSender(Inbound in, String platform) {
+        AID sender = in.message().getSender();
+        if (sender != null && platform.equalsIgnoreCase(sender.platform())) {
+            LOG.warn("HTTP MTP refused a message in the name of {}, an agent of this platform: over HTTP only agents of "
+                    + "other platforms can send", sender.name());
+            throw new IllegalArgumentException("the sender " + sender.name() + " is an agent of this platform ("
+                    + platform + "); a message over HTTP must come from an agent of another platform");
+        }
     }
 
     /** The content of a part: after its headers and the blank line. */

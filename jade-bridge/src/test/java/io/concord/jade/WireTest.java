@@ -56,6 +56,17 @@ class WireTest {
     }
 
     @Test
+    void aMessageOverHttpCannotComeFromAnAgentOfThisPlatform() {
+        String boundary = "7b446481f5ae2c17c233efb80dd6246";
+        HttpMtp.Inbound foreign = HttpMtp.parse(JADE_BODY, boundary);
+        HttpMtp.checkForeignSender(foreign, "foreignplat");
+        HttpMtp.Inbound posing = HttpMtp.parse(JADE_BODY.replace(":name echo@TestPlat", ":name boss@foreignplat"), boundary);
+        assertEquals("boss@foreignplat", posing.message().getSender().name());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> HttpMtp.checkForeignSender(posing, "foreignplat"));
+        assertTrue(e.getMessage().contains("is an agent of this platform"), e.getMessage());
+    }
+
+    @Test
     void theEnvelopeItWritesReadsBack() {
         AID bob = new AID("bob@j", "http://h:1/acc");
         AID me = new AID("me@c&co", "http://h:2/acc");
