@@ -269,12 +269,22 @@ public class ControlAgent extends Agent implements ChairListener {
                 t.pathS = p2.number("length") / EST_SPEED_MPS + EST_DOOR_S * p2.list("doors").size();
                 t.estimateS = approach + t.unloadS + t.pathS + t.unloadS;
                 t.costS = queueSeconds() + t.estimateS;
+                // The proposals still open that the cost counts, each with its seconds: the Medical
+                // agent takes out those another chair has won.
+                StringBuilder pending = new StringBuilder();
+                for (Task o : tasks) {
+                    if (o != t && o.state == TaskView.State.PROPOSED) {
+                        pending.append(pending.length() == 0 ? "" : ",").append(o.id).append(':')
+                                .append(String.format(Locale.ROOT, "%.1f", o.estimateS));
+                    }
+                }
                 t.state = TaskView.State.PROPOSED;
                 say(String.format(Locale.ROOT, "proposes for %s: cost %.1f s, path %.1f s, unload %.0f s", t.id, t.costS,
                         t.pathS, t.unloadS));
+                Content proposal = Content.of("proposal").with("task", t.id).with("cost", t.costS).with("path", t.pathS)
+                        .with("unload", t.unloadS);
                 responder.respond(t.cfp, t.cfp.createReply().setPerformative(Performative.PROPOSE).setContent(
-                        Content.of("proposal").with("task", t.id).with("cost", t.costS).with("path", t.pathS)
-                                .with("unload", t.unloadS).toString()));
+                        (pending.length() == 0 ? proposal : proposal.with("pending", pending)).toString()));
             });
         });
     }
@@ -342,10 +352,16 @@ public class ControlAgent extends Agent implements ChairListener {
         return nearestNode();
     }
 
+    /**
+     * Seconds of work ahead: the queued and running tasks, and those it has proposed for and not
+     * heard back of (auctions run at once: a chair that counted only accepted work proposed the
+     * same short cost for every one of them, and won them all while the other chairs stood).
+     */
     private double queueSeconds() {
         double s = 0;
         for (Task t : tasks) {
-            if (t.state.compareTo(TaskView.State.QUEUED) >= 0 && t.state.compareTo(TaskView.State.UNLOADING) <= 0) {
+            if (t.state == TaskView.State.PROPOSED
+                    || t.state.compareTo(TaskView.State.QUEUED) >= 0 && t.state.compareTo(TaskView.State.UNLOADING) <= 0) {
                 s += t.estimateS;
             }
         }

@@ -60,6 +60,13 @@ public class MedicalAgent extends Agent {
     private final Map<String, CompletableFuture<Outcome>> open = new LinkedHashMap<>();
     /** task -> the accepted proposal of its current auction. */
     private final Map<String, AclMessage> awarded = new LinkedHashMap<>();
+    /** task -> the chair that won its last auction (kept a while: later proposals may still count it). */
+    private final Map<String, String> winners = new LinkedHashMap<>(16, 0.75f, false) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, String> eldest) {
+            return size() > 1_000;
+        }
+    };
     private long next;
 
     /** A Medical agent with the standard settings. */
@@ -215,9 +222,10 @@ public class MedicalAgent extends Agent {
                     if (r.getPerformative() == Performative.PROPOSE) {
                         try {
                             Content p = Content.parse(r.getContent());
-                            double u = utility(p.number("cost"), p.number("path"), p.number("unload"), tp);
+                            double cost = p.number("cost") - lostElsewhere(p, r.getSender().localName());
+                            double u = utility(cost, p.number("path"), p.number("unload"), tp);
                             log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f, path %.1f: U = %.3f",
-                                    getLocalName(), r.getSender().localName(), p.number("cost"), p.number("path"), u));
+                                    getLocalName(), r.getSender().localName(), cost, p.number("path"), u));
                             if (u > best) {
                                 best = u;
                                 winner = r;
@@ -237,6 +245,7 @@ public class MedicalAgent extends Agent {
                     if (r == winner) {
                         reply.setPerformative(Performative.ACCEPT_PROPOSAL);
                         awarded.put(id, r);
+                        winners.put(id, r.getSender().localName());
                         double cost = Content.parse(r.getContent()).number("cost");
                         reply.setReplyByEpochMs(currentTimeMillis() + (long) (cost * 3_000) + 120_000);
                         log.accept(getLocalName() + ": ACCEPT " + r.getSender().localName() + " for " + id);
@@ -288,6 +297,29 @@ public class MedicalAgent extends Agent {
                 }
             }
         });
+    }
+
+    /**
+     * Seconds of a proposal's cost that count other proposals of that chair which another chair
+     * has won since (auctions run at once, and each chair counts all its open proposals).
+     */
+    private double lostElsewhere(Content proposal, String chair) {
+        double s = 0;
+        for (String item : proposal.list("pending")) {
+            int colon = item.lastIndexOf(':');
+            if (colon < 0) {
+                continue;
+            }
+            String winner = winners.get(item.substring(0, colon));
+            if (winner != null && !winner.equals(chair)) {
+                try {
+                    s += Double.parseDouble(item.substring(colon + 1));
+                } catch (NumberFormatException e) {
+                    // not a number: nothing taken out
+                }
+            }
+        }
+        return s;
     }
 
     private static String reasonOf(AclMessage m) {

@@ -72,6 +72,23 @@ class HospitalAgentsTest {
     }
 
     @Test
+    void transportsAskedForAtOnceAreSpreadOverTheChairs() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(5, FaultPlan.NONE, 3)) {
+            var fs = java.util.List.of(r.medical.transport(3, 9, 3, 20), r.medical.transport(14, 31, 0, 20),
+                    r.medical.transport(26, 17, 1.5, 20));
+            assertTrue(r.sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), 1_800_000));
+            java.util.Set<String> chairs = new java.util.TreeSet<>();
+            for (var f : fs) {
+                assertTrue(f.join().done(), f.join().toString());
+                chairs.add(f.join().chair());
+            }
+            // Each chair counts its open proposals in its cost; the Medical agent takes out those
+            // another chair has won. Without that, the nearest chair won all three at once.
+            assertTrue(chairs.size() >= 2, "more than one chair at work: " + chairs);
+        }
+    }
+
+    @Test
     void aTaskToAnUnknownNodeIsRefusedWithTheReason() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
             var f = r.medical.transport(3, 99, 0, 30);
