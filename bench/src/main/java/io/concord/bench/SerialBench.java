@@ -116,11 +116,11 @@ final class SerialBench {
                 }
                 bp.writeBytes(bytes, bytes.length);
             });
-            volatileStop[0] = false;
+            java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
             Thread boardThread = new Thread(() -> {
                 byte[] buf = new byte[512];
                 board.switchOn(0);
-                while (!volatileStop[0]) {
+                while (!stop.get()) {
                     // Polled every 0.1 ms, as a board's timer interrupt would: a read's timeout on a pty
                     // is only good to about 10 ms, which the watchdog's figure then carried.
                     int avail = bp.bytesAvailable();
@@ -224,7 +224,7 @@ final class SerialBench {
                 }
             }
             hp.closePort();
-            volatileStop[0] = true;
+            stop.set(true);
             boardThread.join(1000);
             bp.closePort();
             if (Boolean.getBoolean("concord.serial.debug")) {
@@ -247,7 +247,6 @@ final class SerialBench {
         }
     }
 
-    private static final boolean[] volatileStop = {false};
     /** Samples of each kind not counted: the first STATEs and commands run while classes load and compile. */
     private static final int WARM_UP = 10;
 

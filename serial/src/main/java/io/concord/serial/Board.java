@@ -33,9 +33,7 @@ public final class Board {
     private final FrameCodec codec;
     private final String firmware;
     private final Consumer<byte[]> wire;
-    private final Deframer deframer;
-    private final SequenceCheck check = new SequenceCheck(HOST_MAX_AGE_MS);
-    private final Drops drops = new Drops();
+    private final FrameReceiver receiver;
     private long nowMs;
     private int seq;
     private long lastHostMs = -1;
@@ -59,7 +57,7 @@ public final class Board {
         this.codec = codec;
         this.firmware = firmware;
         this.wire = wire;
-        this.deframer = new Deframer(FrameCodec.MAX_FRAME * 2, this::onStuffed, () -> drops.count("oversized"));
+        this.receiver = new FrameReceiver(codec, false, HOST_MAX_AGE_MS, this::onHostFrame);
     }
 
     /** Switches on at {@code nowMs} on the board's clock: sends HELLO, motors at zero, not armed. */
@@ -73,7 +71,7 @@ public final class Board {
     /** Bytes from the host, in any chunks. */
     public void onBytes(byte[] b, int off, int len, long nowMs) {
         this.nowMs = nowMs;
-        deframer.feed(b, off, len);
+        receiver.feed(b, off, len, nowMs);
     }
 
     /** Presses (true) or releases the e-stop. */
@@ -108,23 +106,7 @@ public final class Board {
         chair.stop();
     }
 
-    private void onStuffed(byte[] stuffed) {
-        Frame f;
-        try {
-            f = codec.decode(stuffed, 0, stuffed.length);
-        } catch (FrameException e) {
-            drops.count(e.reason());
-            return;
-        }
-        if (f.type() >= 0x80) {
-            drops.count("wrong-direction");
-            return;
-        }
-        String bad = check.check(f, nowMs);
-        if (bad != null) {
-            drops.count(bad);
-            return;
-        }
+    private void onHostFrame(Frame f) {
         lastHostMs = nowMs;
         accepted++;
         if (tripped) {
@@ -171,12 +153,12 @@ public final class Board {
                     send(Frame.Type.ACK, 0, BoardProtocol.ack(f.seq(), nonce));
                 }
                 default -> {
-                    drops.count("unknown-type");
+                    receiver.drops().count("unknown-type");
                     send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_UNKNOWN));
                 }
             }
         } catch (FrameException e) {
-            drops.count(e.reason());
+            receiver.drops().count(e.reason());
             send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_MALFORMED));
         }
     }
@@ -216,7 +198,7 @@ public final class Board {
 
     /** Host frames dropped, by reason. */
     public Drops drops() {
-        return drops;
+        return receiver.drops();
     }
 
     /** Host frames taken. */

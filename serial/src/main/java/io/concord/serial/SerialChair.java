@@ -69,9 +69,7 @@ public final class SerialChair implements ChairDriver {
     private final Settings settings;
     private final AgentRuntime runtime;
     private final FrameCodec codec;
-    private final Drops drops = new Drops();
-    private final SequenceCheck check = new SequenceCheck(500);
-    private final Deframer deframer;
+    private final FrameReceiver receiver;
     private final Thread reader;
     private final Object portLock = new Object();
     private volatile SerialPort port;
@@ -100,7 +98,7 @@ public final class SerialChair implements ChairDriver {
         this.codec = new FrameCodec(settings.key());
         this.layout = settings.layout();
         this.odometry = new Odometry(settings.layout(), settings.start());
-        this.deframer = new Deframer(FrameCodec.MAX_FRAME * 2, this::onStuffed, () -> drops.count("oversized"));
+        this.receiver = new FrameReceiver(codec, true, 500, this::onBoardFrame);
         this.reader = new Thread(this::readLoop, "serial-" + settings.name());
         this.reader.setDaemon(true);
     }
@@ -183,7 +181,7 @@ public final class SerialChair implements ChairDriver {
 
     /** Frames dropped, by reason. */
     public Drops drops() {
-        return drops;
+        return receiver.drops();
     }
 
     /** Frames taken. */
@@ -249,20 +247,18 @@ public final class SerialChair implements ChairDriver {
         if (p == null) {
             return false;
         }
-        int flags = 0;
         if (sync) {
             // A new session: the board starts counting again and sends its HELLO.
             sync = false;
-            sendFrame(p, new Frame(Frame.Type.PING, Frame.SYNC, seq, nowMs(), BoardProtocol.ping(seq)));
-            sendFrame(p, new Frame(Frame.Type.CONFIGURE, 0, seq, nowMs(), BoardProtocol.configure(settings.stateHz())));
+            sendFrame(p, Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(seq));
+            sendFrame(p, Frame.Type.CONFIGURE, 0, BoardProtocol.configure(settings.stateHz()));
         }
-        return sendFrame(p, new Frame(type, flags, seq, nowMs(), body));
+        return sendFrame(p, type, 0, body);
     }
 
-    private boolean sendFrame(SerialPort p, Frame f) {
-        Frame numbered = new Frame(f.type(), f.flags(), seq, f.timeMs(), f.body());
+    private boolean sendFrame(SerialPort p, int type, int flags, byte[] body) {
+        byte[] b = codec.encode(new Frame(type, flags, seq, nowMs(), body));
         seq = (seq + 1) & 0xFFFF;
-        byte[] b = codec.encode(numbered);
         synchronized (portLock) {
             return p.writeBytes(b, b.length) == b.length;
         }
@@ -297,7 +293,7 @@ public final class SerialChair implements ChairDriver {
                 continue;
             }
             if (n > 0) {
-                deframer.feed(buf, 0, n);
+                receiver.feed(buf, 0, n, nowMs());
             }
         }
     }
@@ -306,7 +302,9 @@ public final class SerialChair implements ChairDriver {
         if (!Files.exists(Path.of(settings.port())) && !settings.port().toUpperCase().startsWith("COM")) {
             return false;
         }
-        SerialPort p = SerialPort.getCommPort(settings.port());
+        // A relative path is made absolute: jSerialComm would take a bare name for one under /dev.
+        String where = settings.port().toUpperCase().startsWith("COM") ? settings.port() : Path.of(settings.port()).toAbsolutePath().toString();
+        SerialPort p = SerialPort.getCommPort(where);
         p.setComPortParameters(settings.baud(), 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
         // A read returns as soon as a byte is there (a timeout on a pty is only good to about 10 ms,
         // which a STATE frame's way to the agent then carried); the loop's heartbeat watches for a
@@ -316,8 +314,7 @@ public final class SerialChair implements ChairDriver {
             LOG.warn("{}: cannot open {} (error {}); tries again", settings.name(), settings.port(), p.getLastErrorCode());
             return false;
         }
-        deframer.reset();
-        check.reset();
+        receiver.reset();
         lastFrameNanos = System.nanoTime();
         port = p;
         runtime.execute(() -> {
@@ -353,28 +350,7 @@ public final class SerialChair implements ChairDriver {
         }
     }
 
-    private void onStuffed(byte[] stuffed) {
-        Frame f;
-        try {
-            f = codec.decode(stuffed, 0, stuffed.length);
-        } catch (FrameException e) {
-            drops.count(e.reason());
-            return;
-        }
-        if (f.type() < 0x80) {
-            drops.count("wrong-direction");
-            return;
-        }
-        long local = nowMs();
-        if (f.type() == Frame.Type.HELLO) {
-            // The board (re)started: its count and its clock start again.
-            check.reset();
-        }
-        String bad = check.check(f, local);
-        if (bad != null) {
-            drops.count(bad);
-            return;
-        }
+    private void onBoardFrame(Frame f) {
         lastFrameNanos = System.nanoTime();
         accepted++;
         try {
@@ -406,10 +382,10 @@ public final class SerialChair implements ChairDriver {
                     LOG.debug("{}: the board refused frame {}: reason {}", settings.name(), s, why);
                 }
                 case Frame.Type.ACK -> { }
-                default -> drops.count("unknown-type");
+                default -> receiver.drops().count("unknown-type");
             }
         } catch (FrameException e) {
-            drops.count(e.reason());
+            receiver.drops().count(e.reason());
         }
     }
 

@@ -12,32 +12,20 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 /** Frames survive any chunking and garbage; every frame not taken is counted by its reason. */
 class FramingTest {
 
-    /** A receiver as the host and the board have one: deframer, codec, sequence check, drops. */
+    /** The board's receiving side (these are host frames), keeping what it takes. */
     static final class Receiver {
-        final Drops drops = new Drops();
         final List<Frame> taken = new ArrayList<>();
-        final FrameCodec codec;
-        final SequenceCheck check = new SequenceCheck(200);
+        final FrameReceiver rx;
+        final Drops drops;
         long nowMs;
-        final Deframer deframer;
 
         Receiver(FrameCodec codec) {
-            this.codec = codec;
-            this.deframer = new Deframer(FrameCodec.MAX_FRAME * 2, this::frame, () -> drops.count("oversized"));
+            rx = new FrameReceiver(codec, false, 200, taken::add);
+            drops = rx.drops();
         }
 
-        void frame(byte[] stuffed) {
-            try {
-                Frame f = codec.decode(stuffed, 0, stuffed.length);
-                String bad = check.check(f, nowMs);
-                if (bad != null) {
-                    drops.count(bad);
-                } else {
-                    taken.add(f);
-                }
-            } catch (FrameException e) {
-                drops.count(e.reason());
-            }
+        void feed(byte[] b, int off, int len) {
+            rx.feed(b, off, len, nowMs);
         }
     }
 
@@ -58,7 +46,7 @@ class FramingTest {
             Receiver rx = new Receiver(c);
             for (int i = 0; i < wire.length; ) {
                 int n = Math.min(wire.length - i, 1 + r.nextInt(40));
-                rx.deframer.feed(wire, i, n);
+                rx.feed(wire, i, n);
                 i += n;
             }
             assertEquals(200, rx.taken.size());
@@ -70,9 +58,9 @@ class FramingTest {
     void garbageCostsAtMostTheFrameItLandsIn() {
         FrameCodec c = new FrameCodec();
         Receiver rx = new Receiver(c);
-        rx.deframer.feed(new byte[] {0x13, 0x37, (byte) 0xFF, 0x42}, 0, 4);
+        rx.feed(new byte[] {0x13, 0x37, (byte) 0xFF, 0x42}, 0, 4);
         byte[] wire = frames(c, 0, 10, 0);
-        rx.deframer.feed(wire, 0, wire.length);
+        rx.feed(wire, 0, wire.length);
         // The garbage joins the first frame's bytes: that frame is lost as corrupt, the rest are taken.
         assertEquals(9, rx.taken.size());
         assertEquals(1, rx.drops.get("corrupt"));
@@ -84,7 +72,7 @@ class FramingTest {
         byte[] one = plain.encode(new Frame(Frame.Type.STOP, 0, 1, 5, new byte[0]));
         one[5] ^= 0x04;
         Receiver rx = new Receiver(plain);
-        rx.deframer.feed(one, 0, one.length);
+        rx.feed(one, 0, one.length);
         assertEquals(1, rx.drops.get("corrupt"));
 
         FrameCodec a = new FrameCodec(new byte[16]);
@@ -92,19 +80,19 @@ class FramingTest {
         k[0] = 1;
         Receiver other = new Receiver(new FrameCodec(k));
         byte[] signed = a.encode(new Frame(Frame.Type.STOP, 0, 1, 5, new byte[0]));
-        other.deframer.feed(signed, 0, signed.length);
+        other.feed(signed, 0, signed.length);
         assertEquals(1, other.drops.get("mac"));
         Receiver unpaired = new Receiver(plain);
-        unpaired.deframer.feed(signed, 0, signed.length);
+        unpaired.feed(signed, 0, signed.length);
         assertEquals(1, unpaired.drops.get("mac"), "a MAC this end cannot check is not taken");
 
         byte[] junk = new byte[3000];
         java.util.Arrays.fill(junk, (byte) 7);
-        rx.deframer.feed(junk, 0, junk.length);
-        rx.deframer.feed(new byte[] {0}, 0, 1);
+        rx.feed(junk, 0, junk.length);
+        rx.feed(new byte[] {0}, 0, 1);
         assertEquals(1, rx.drops.get("oversized"));
         byte[] after = frames(plain, 2, 1, 0);
-        rx.deframer.feed(after, 0, after.length);
+        rx.feed(after, 0, after.length);
         assertEquals(1, rx.taken.size(), "the next frame is taken");
     }
 
@@ -116,23 +104,23 @@ class FramingTest {
         byte[] f2 = frames(c, 2, 1, 1000);
         byte[] f3 = frames(c, 3, 1, 1000);
         rx.nowMs = 5000;
-        rx.deframer.feed(f1, 0, f1.length);
-        rx.deframer.feed(f1, 0, f1.length);
-        rx.deframer.feed(f3, 0, f3.length);
-        rx.deframer.feed(f2, 0, f2.length);
+        rx.feed(f1, 0, f1.length);
+        rx.feed(f1, 0, f1.length);
+        rx.feed(f3, 0, f3.length);
+        rx.feed(f2, 0, f2.length);
         assertEquals(1, rx.drops.get("repeated"));
         assertEquals(1, rx.drops.get("out-of-order"));
         rx.nowMs = 5000 + 201 + 3;
         byte[] f4 = frames(c, 4, 1, 1000);
-        rx.deframer.feed(f4, 0, f4.length);
+        rx.feed(f4, 0, f4.length);
         assertEquals(1, rx.drops.get("stale"), "sent 1 ms after frame 3, arrived 204 ms later than the least delayed");
         assertEquals(2, rx.taken.size());
         // Sequence numbers wrap: 65535 then 0 is in order.
         Receiver w = new Receiver(c);
         byte[] a = c.encode(new Frame(Frame.Type.STOP, 0, 65_535, 0, new byte[0]));
         byte[] b = c.encode(new Frame(Frame.Type.STOP, 0, 0, 1, new byte[0]));
-        w.deframer.feed(a, 0, a.length);
-        w.deframer.feed(b, 0, b.length);
+        w.feed(a, 0, a.length);
+        w.feed(b, 0, b.length);
         assertEquals(2, w.taken.size());
     }
 }

@@ -537,7 +537,11 @@ public class ControlAgent extends Agent implements ChairListener {
             replan(fromId, "the plan has no edge " + fromId + "-" + toId);
             return;
         }
-        Point target = waypoint(edge, fromId, toId);
+        // On the graph's line, to the node itself: the traffic agent never lets two chairs on one
+        // edge, and on the line a chair passes over every node's floor marker (a chair kept 0.6 m
+        // right of the line missed the markers once its heading had drifted 3 degrees in a spot
+        // turn, and met a door's jamb 0.85 m off course: seed 156 of the soak).
+        Point target = map.node(toId).at();
         if (control.reached(pose, target.x(), target.y())) {
             if (edge.door() != null && edge.door().equals(doorPassing)) {
                 tellPassed(edge.door());
@@ -869,16 +873,6 @@ public class ControlAgent extends Agent implements ChairListener {
             stopReason = null;
             asideTo = -1;
         }
-    }
-
-    /**
-     * The point to drive to: the node itself. Chairs drive on the graph's lines: the traffic agent
-     * never lets two on one edge, and on the line a chair passes over every node's floor marker
-     * (a chair kept 0.6 m right of the line missed the markers once its heading had drifted 3
-     * degrees in a spot turn, and met a door's jamb 0.85 m off course: seed 156 of the soak).
-     */
-    private Point waypoint(Edge edge, int fromId, int toId) {
-        return map.node(toId).at();
     }
 
     @Override

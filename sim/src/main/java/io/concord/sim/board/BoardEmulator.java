@@ -27,8 +27,8 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  * pointed at the other end drives it as it would drive the real chair.
  *
  * <pre>
- * socat pty,raw,echo=0,link=/tmp/chair-host pty,raw,echo=0,link=/tmp/chair-board &amp;
- * java -cp concord-demo.jar io.concord.sim.board.BoardEmulator --port /tmp/chair-board --at 19
+ * socat pty,raw,echo=0,link=chair-host pty,raw,echo=0,link=chair-board &amp;
+ * java -cp concord-demo.jar io.concord.sim.board.BoardEmulator --port chair-board --at 19
  * </pre>
  *
  * <p>Faults on what the board sends (each a probability per frame): {@code --drop},
@@ -131,7 +131,8 @@ public final class BoardEmulator {
         if (!Files.exists(Path.of(path))) {
             return null;
         }
-        SerialPort p = SerialPort.getCommPort(path);
+        // A relative path is made absolute: jSerialComm would take a bare name for one under /dev.
+        SerialPort p = SerialPort.getCommPort(Path.of(path).toAbsolutePath().toString());
         p.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
         p.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
         if (!p.openPort()) {

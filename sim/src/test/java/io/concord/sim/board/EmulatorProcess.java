@@ -66,6 +66,17 @@ final class EmulatorProcess implements AutoCloseable {
         throw new AssertionError("the emulator did not answer status; it said: " + log);
     }
 
+    /** Asks for the status until it satisfies the condition; fails after the limit. */
+    void awaitStatus(java.util.function.Predicate<Map<String, String>> condition, long limitMs, String what) {
+        Pty.await(() -> {
+            try {
+                return condition.test(status());
+            } catch (Exception e) {
+                throw new AssertionError(e);
+            }
+        }, limitMs, what);
+    }
+
     void command(String c) throws IOException {
         in.write(c + "\n");
         in.flush();

@@ -50,6 +50,17 @@ class SerialLinkTest {
         return t;
     }
 
+    /** Waits until the planner knows every door and the chair is online. */
+    private static void awaitReady(AgentRuntime rt, Hospital hospital, io.concord.agents.chair.ChairDriver chair) {
+        Pty.await(() -> {
+            try {
+                return onLoop(rt, hospital::ready) && onLoop(rt, chair::online);
+            } catch (InterruptedException e) {
+                throw new AssertionError(e);
+            }
+        }, 30_000, "the planner to know the doors and the chair to be online");
+    }
+
     @Test
     void theControlAgentDrivesTheEmulatedChairFrom19To3OverANoisyLink(@TempDir Path dir) throws Exception {
         List<String> log = java.util.Collections.synchronizedList(new ArrayList<>());
@@ -68,13 +79,7 @@ class SerialLinkTest {
             hospital.addChair(platform, MAP, chair, log::add);
             MedicalAgent medical = new MedicalAgent(log::add);
             platform.startAgent("medical", medical);
-            Pty.await(() -> {
-                try {
-                    return onLoop(rt, hospital::ready) && onLoop(rt, chair::online);
-                } catch (InterruptedException e) {
-                    throw new AssertionError(e);
-                }
-            }, 30_000, "the planner to know the doors and the chair to be online");
+            awaitReady(rt, hospital, chair);
             CompletableFuture<MedicalAgent.Outcome> f = medical.transport(19, 3, 0, 1);
             Pty.await(f::isDone, 240_000, "the transport");
             assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", log.subList(Math.max(0, log.size() - 30), log.size())));
@@ -106,13 +111,7 @@ class SerialLinkTest {
             hospital.addChair(platform, MAP, chair, log::add);
             MedicalAgent medical = new MedicalAgent(log::add);
             platform.startAgent("medical", medical);
-            Pty.await(() -> {
-                try {
-                    return onLoop(rt, hospital::ready) && onLoop(rt, chair::online);
-                } catch (InterruptedException e) {
-                    throw new AssertionError(e);
-                }
-            }, 30_000, "the planner to know the doors and the chair to be online");
+            awaitReady(rt, hospital, chair);
             medical.transport(19, 3, 0, 1);
             Pty.await(() -> log.stream().anyMatch(l -> l.startsWith("control-chair1: stops: something")), 60_000,
                     "the chair to stop for the virtual trolley");
@@ -128,21 +127,10 @@ class SerialLinkTest {
         try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19")) {
             Process host = JavaProcess.start(SerialHostMain.class, pty.host.toString());
             try {
-                Pty.await(() -> {
-                    try {
-                        return board.status().get("motors").equals("200,200") && Double.parseDouble(board.status().get("moved")) > 0.05;
-                    } catch (Exception e) {
-                        throw new AssertionError(e);
-                    }
-                }, 30_000, "the host to drive the chair");
+                board.awaitStatus(st -> st.get("motors").equals("200,200") && Double.parseDouble(st.get("moved")) > 0.05, 30_000,
+                        "the host to drive the chair");
                 host.destroyForcibly().waitFor();
-                Pty.await(() -> {
-                    try {
-                        return board.status().get("tripped").equals("true");
-                    } catch (Exception e) {
-                        throw new AssertionError(e);
-                    }
-                }, 5_000, "the board's watchdog");
+                board.awaitStatus(st -> st.get("tripped").equals("true"), 5_000, "the board's watchdog");
                 Map<String, String> s = board.status();
                 assertEquals("0,0", s.get("motors"), s.toString());
                 assertEquals("false", s.get("armed"));
@@ -214,13 +202,7 @@ class SerialLinkTest {
                 assertEquals("false", s.get("armed"));
                 send.accept(Frame.Type.STOP, new byte[0]);
                 send.accept(Frame.Type.DRIVE, BoardProtocol.drive(500, 500));
-                Pty.await(() -> {
-                    try {
-                        return board.status().get("motors").equals("500,500");
-                    } catch (Exception e) {
-                        throw new AssertionError(e);
-                    }
-                }, 5_000, "the board to take the drive after a STOP");
+                board.awaitStatus(st -> st.get("motors").equals("500,500"), 5_000, "the board to take the drive after a STOP");
             } finally {
                 p.closePort();
             }
