@@ -244,6 +244,10 @@ public class ControlAgent extends Agent implements ChairListener {
             return;
         }
         tasks.add(t);
+        if (!chair.online()) {
+            refuse(t, chair.name() + " is offline (its link is down)");
+            return;
+        }
         AID planner = planner();
         if (planner == null) {
             refuse(t, "no planner for " + chair.name() + " in the yellow pages");
