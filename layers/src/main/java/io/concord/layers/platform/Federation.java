@@ -7,7 +7,6 @@ import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.HexFormat;
 import java.util.List;
@@ -25,7 +24,7 @@ import java.util.TreeMap;
  * A host not heard for the timeout leaves both; a host whose container changed is taken over by
  * its new container, whose announcement replaces the old one.
  */
-final class Federation {
+final class Federation implements PlatformMessage.Handler {
     static final String P_NETWORK = "concord-network";
 
     /** One facilitator: another host's container. */
@@ -42,7 +41,7 @@ final class Federation {
         int contactAttempts;
         long heldSeq = -1;
         long heldTerm = -1;
-        final Map<Long, String[]> pages = new HashMap<>();
+        final PageAssembler pages = new PageAssembler();
 
         Facilitator(AgentEntry entry, String host) {
             this.entry = entry;
@@ -50,16 +49,48 @@ final class Federation {
         }
     }
 
-    private final ContainerLayer layer;
+    /** What the federation needs of its agent beyond the context: its lists, its role, its sockets. */
+    interface Host {
+        List<String> lalPages();
+
+        long term();
+
+        long lalSequence();
+
+        /** The facilitators' lists changed: the GAL is to be recomputed. */
+        void globalChanged();
+
+        /** A container of this same host announced itself: the better one stays container. */
+        void contest(AgentEntry other, long term);
+
+        Endpoint openListener(int port);
+
+        List<String> broadcastAddresses();
+    }
+
+    private final PlatformContext layer;
+    private final Host agent;
     private final NetworkConfig config;
     private final Map<String, Facilitator> fal = new TreeMap<>();
     private Endpoint listener;
     private long announceTimer = -1;
     private boolean running;
 
-    Federation(ContainerLayer layer, NetworkConfig config) {
-        this.layer = layer;
+    Federation(PlatformContext ctx, NetworkConfig config, Host agent) {
+        this.layer = ctx;
         this.config = config;
+        this.agent = agent;
+    }
+
+    /** The names of the facilitators in contact. */
+    List<String> contacted() {
+        List<String> out = new ArrayList<>();
+        for (Facilitator f : fal.values()) {
+            if (f.contacted) {
+                out.add(f.entry.name());
+            }
+        }
+        return out;
     }
 
     /** The facilitators this container knows, by name. */
@@ -73,7 +104,7 @@ final class Federation {
             return;
         }
         running = true;
-        listener = layer.host().openListener(config.discoveryPort());
+        listener = agent.openListener(config.discoveryPort());
         layer.trace("network", listener == null ? "cannot listen on the discovery port " + config.discoveryPort()
                 + " (announcing only)" : "listening on the discovery port " + config.discoveryPort());
         announce();
@@ -119,11 +150,11 @@ final class Federation {
                 known.add(f.entry);
             }
         }
-        String content = Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
-                "seq", layer.lalSequence()), known);
+        PlatformMessage content = new PlatformMessage.Announce(agent.term(), ownHost(), agent.lalSequence(), known.get(0),
+                known.subList(1, known.size()));
         List<AID> to = new ArrayList<>();
         if (config.broadcast()) {
-            for (String b : layer.host().broadcastAddresses()) {
+            for (String b : agent.broadcastAddresses()) {
                 to.add(layer.anyAt(new Address(b, config.discoveryPort())));
             }
         }
@@ -134,11 +165,11 @@ final class Federation {
             to.add(f.entry.aid());
         }
         for (AID a : to) {
-            layer.sendQuietly(layer.platformMessage(Performative.INFORM, P_NETWORK, a, content));
+            layer.send(Performative.INFORM, P_NETWORK, a, content);
         }
         // Lists not yet confirmed go again: distribution heals itself under loss.
         for (Facilitator f : fal.values()) {
-            if (f.contacted && (f.heldSeq != layer.lalSequence() || f.heldTerm != layer.term())) {
+            if (f.contacted && (f.heldSeq != agent.lalSequence() || f.heldTerm != agent.term())) {
                 sendLal(f);
             }
         }
@@ -148,7 +179,7 @@ final class Federation {
 
     /** Hosts not heard for the timeout leave the lists. */
     private void expire() {
-        long now = layer.host().nowNs();
+        long now = layer.nowNs();
         List<String> gone = new ArrayList<>();
         for (Facilitator f : fal.values()) {
             if (now - f.lastHeardNs > config.hostTimeoutMs() * 1_000_000L) {
@@ -161,7 +192,7 @@ final class Federation {
             layer.trace("host-gone", f.host + " (" + g + ") silent for " + config.hostTimeoutMs() + " ms");
         }
         if (!gone.isEmpty()) {
-            layer.globalChanged();
+            agent.globalChanged();
         }
     }
 
@@ -193,50 +224,32 @@ final class Federation {
     }
 
     private void sendLal(Facilitator f) {
-        List<String> pages = layer.lalPages();
+        List<String> pages = agent.lalPages();
         for (int i = 0; i < pages.size(); i++) {
-            String head = Lines.content("gal-update", Lines.params("secret", f.secret, "term", layer.term(),
-                    "seq", layer.lalSequence(), "page", i, "pages", pages.size()), List.of());
-            layer.sendQuietly(layer.platformMessage(Performative.INFORM_REF, P_NETWORK, f.entry.aid(), head + "\n" + pages.get(i)));
+            layer.send(Performative.INFORM_REF, P_NETWORK, f.entry.aid(), new PlatformMessage.GalUpdate(f.secret, agent.term(),
+                    agent.lalSequence(), PlatformMessage.Page.of(i, pages.size(), pages.get(i))));
         }
     }
 
-    /** Handles a network message; false if the command is not one of the network protocol's. */
-    boolean handle(AclMessage m, Lines.Content c) {
-        switch (c.command()) {
-            case "announce" -> onAnnounce(m, c);
-            case "who-is-facilitator" -> onWhoIs(m, c);
-            case "is-facilitator" -> onIs(m, c);
-            case "is-not-facilitator" -> onIsNot(m);
-            case "gal-update" -> onUpdate(m, c);
-            case "gal-held" -> onHeld(m, c);
-            case "unknown-secret" -> onUnknownSecret(m);
-            case "contact-me" -> onContactMe(m, c);
-            default -> {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private void onAnnounce(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.senderEntry(m);
+    @Override
+    public void onAnnounce(PlatformMessage.Announce an, AclMessage m) {
+        AgentEntry e = an.by();
         if (!running || e.name().equals(layer.selfEntry().name())) {
             return;
         }
-        String host = c.param("host");
+        String host = an.host();
         if (host.equals(ownHost())) {
-            layer.contest(e, c.longParam("term"));
+            agent.contest(e, an.term());
             return;
         }
-        for (AgentEntry other : c.entries().subList(1, c.entries().size())) {
+        for (AgentEntry other : an.known()) {
             Address a = other.transportAddress();
             if (a != null && !fal.containsKey(other.name()) && !other.name().equals(layer.selfEntry().name())
                     && !a.host().equals(ownHost())) {
                 learn(other, a.host(), 0);
             }
         }
-        learn(e, host, c.longParam("term"));
+        learn(e, host, an.term());
     }
 
     /** A facilitator heard (or heard of): known from now on; contacted by the smaller name. */
@@ -262,15 +275,13 @@ final class Federation {
             layer.trace("facilitator", e.name() + " of host " + host);
         }
         f.entry = e;
-        f.lastHeardNs = layer.host().nowNs();
+        f.lastHeardNs = layer.nowNs();
         return f;
     }
 
     /** Asks a facilitator with a smaller name, which opens contacts, to open one with us. */
     private void askForContact(AgentEntry e) {
-        layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, e.aid(),
-                Lines.content("contact-me", Lines.params("term", layer.term(), "host", ownHost()),
-                        List.of(layer.selfEntry()))));
+        layer.send(Performative.REQUEST, P_NETWORK, e.aid(), new PlatformMessage.ContactMe(agent.term(), ownHost(), layer.selfEntry()));
     }
 
     /** A new container for a host replaces the old one: no stale container lingers. */
@@ -287,7 +298,7 @@ final class Federation {
             layer.trace("facilitator-replaced", s + " by " + newName + " on host " + host);
         }
         if (!stale.isEmpty()) {
-            layer.globalChanged();
+            agent.globalChanged();
         }
     }
 
@@ -299,9 +310,8 @@ final class Federation {
             f.secret = HexFormat.of().formatHex(s);
         }
         f.contactAttempts++;
-        layer.sendQuietly(layer.platformMessage(Performative.REQUEST, P_NETWORK, f.entry.aid(),
-                Lines.content("who-is-facilitator", Lines.params("secret", f.secret, "term", layer.term(), "host", ownHost()),
-                        List.of(layer.selfEntry()))));
+        layer.send(Performative.REQUEST, P_NETWORK, f.entry.aid(),
+                new PlatformMessage.WhoIsFacilitator(f.secret, agent.term(), ownHost(), layer.selfEntry()));
         f.contactTimer = layer.after(Math.max(50, config.announcePeriodMs() / 2), () -> {
             f.contactTimer = -1;
             if (!f.contacted && fal.get(f.entry.name()) == f && f.contactAttempts < 8) {
@@ -310,43 +320,45 @@ final class Federation {
         });
     }
 
-    private void onWhoIs(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.senderEntry(m);
+    @Override
+    public void onWhoIsFacilitator(PlatformMessage.WhoIsFacilitator w, AclMessage m) {
+        AgentEntry e = w.by();
         if (!running) {
-            layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM,
-                    Lines.content("is-not-facilitator", Lines.params(), List.of())));
+            layer.sendQuietly(layer.reply(m, Performative.INFORM, new PlatformMessage.IsNotFacilitator()));
             return;
         }
-        Facilitator f = facilitator(e, c.param("host"), c.longParam("term"));
-        f.term = c.longParam("term");
-        f.secret = c.param("secret");
+        Facilitator f = facilitator(e, w.host(), w.term());
+        f.term = w.term();
+        f.secret = w.secret();
         f.contacted = true;
-        layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM, Lines.content("is-facilitator",
-                Lines.params("secret", f.secret, "term", layer.term(), "host", ownHost()), List.of(layer.selfEntry()))));
+        layer.sendQuietly(layer.reply(m, Performative.INFORM, new PlatformMessage.IsFacilitator(f.secret, agent.term(),
+                ownHost(), layer.selfEntry())));
         sendLal(f);
     }
 
-    private void onIs(AclMessage m, Lines.Content c) {
+    @Override
+    public void onIsFacilitator(PlatformMessage.IsFacilitator i, AclMessage m) {
         Facilitator f = fal.get(m.getSender().name());
-        if (f == null || f.secret == null || !f.secret.equals(c.param("secret"))) {
-            layer.host().drops().record(layer.selfEntry().name(), "bad-secret", m.getSender().name()
+        if (f == null || f.secret == null || !f.secret.equals(i.secret())) {
+            layer.drop("bad-secret", m.getSender().name()
                     + " confirmed a contact with a secret this container did not offer");
             return;
         }
         f.contacted = true;
-        f.lastHeardNs = layer.host().nowNs();
+        f.lastHeardNs = layer.nowNs();
         f.contactTimer = layer.cancel(f.contactTimer);
         layer.trace("facilitator-contact", m.getSender().name());
         sendLal(f);
     }
 
     /** A facilitator with a larger name has no contact with us: open a new one. */
-    private void onContactMe(AclMessage m, Lines.Content c) {
-        AgentEntry e = c.senderEntry(m);
+    @Override
+    public void onContactMe(PlatformMessage.ContactMe c, AclMessage m) {
+        AgentEntry e = c.by();
         if (!running || layer.selfEntry().name().compareTo(e.name()) >= 0) {
             return;
         }
-        Facilitator f = facilitator(e, c.param("host"), c.longParam("term"));
+        Facilitator f = facilitator(e, c.host(), c.term());
         if (f.contactTimer >= 0) {
             return; // a contact is under way
         }
@@ -358,7 +370,8 @@ final class Federation {
     }
 
     /** The facilitator does not know our secret: contact it again (the smaller name opens). */
-    private void onUnknownSecret(AclMessage m) {
+    @Override
+    public void onUnknownSecret(PlatformMessage.UnknownSecret u, AclMessage m) {
         Facilitator f = fal.get(m.getSender().name());
         if (f == null || !running) {
             return;
@@ -371,73 +384,66 @@ final class Federation {
         if (layer.selfEntry().name().compareTo(f.entry.name()) < 0) {
             contact(f);
         } else {
-            layer.sendQuietly(layer.platformMessage(Performative.INFORM, P_NETWORK, f.entry.aid(),
-                    Lines.content("announce", Lines.params("term", layer.term(), "host", ownHost(),
-                            "seq", layer.lalSequence()), List.of(layer.selfEntry()))));
+            layer.send(Performative.INFORM, P_NETWORK, f.entry.aid(),
+                    new PlatformMessage.Announce(agent.term(), ownHost(), agent.lalSequence(), layer.selfEntry(), List.of()));
         }
     }
 
-    private void onIsNot(AclMessage m) {
+    @Override
+    public void onIsNotFacilitator(PlatformMessage.IsNotFacilitator i, AclMessage m) {
         Facilitator f = fal.remove(m.getSender().name());
         if (f != null) {
             f.contactTimer = layer.cancel(f.contactTimer);
-            layer.globalChanged();
+            agent.globalChanged();
         }
     }
 
-    private void onUpdate(AclMessage m, Lines.Content c) {
+    @Override
+    public void onGalUpdate(PlatformMessage.GalUpdate u, AclMessage m) {
         Facilitator f = fal.get(m.getSender().name());
-        if (f == null || !f.contacted || f.secret == null || !f.secret.equals(c.params().get("secret"))) {
-            layer.host().drops().record(layer.selfEntry().name(), "bad-secret", "a list update from "
+        if (f == null || !f.contacted || f.secret == null || !f.secret.equals(u.secret())) {
+            layer.drop("bad-secret", "a list update from "
                     + m.getSender().name() + " without the secret agreed with it: discarded");
             layer.trace("gal-rejected", m.getSender().name());
             if (running) {
                 // Perhaps it kept a contact this container forgot (it took that host for gone): say so,
                 // and a new contact with a new secret follows.
-                layer.sendQuietly(layer.platformReplyTo(m, Performative.INFORM,
-                        Lines.content("unknown-secret", Lines.params(), List.of())));
+                layer.sendQuietly(layer.reply(m, Performative.INFORM, new PlatformMessage.UnknownSecret()));
             }
             return;
         }
-        long term = c.longParam("term");
-        long seq = c.longParam("seq");
-        int page = (int) c.longParam("page");
-        int n = (int) c.longParam("pages");
-        if (n < 1 || n > 10_000 || page < 0 || page >= n) {
-            throw new IllegalArgumentException("a bad list page " + page + " of " + n);
-        }
-        f.lastHeardNs = layer.host().nowNs();
+        long term = u.term();
+        long seq = u.seq();
+        f.lastHeardNs = layer.nowNs();
         if (term < f.term || (term == f.term && seq <= f.seq)) {
             ack(f, m);
             return;
         }
-        List<AgentEntry> all = Lines.collect(f.pages.computeIfAbsent(seq * 31 + term, k -> new String[n]), page, n,
-                m.getContent());
+        List<AgentEntry> all = f.pages.add(term + "/" + seq, u.page());
         if (all == null) {
             return;
         }
-        f.pages.clear();
         f.term = term;
         f.seq = seq;
         f.agents = List.copyOf(all);
         layer.trace("gal-applied", m.getSender().name() + " term=" + term + " seq=" + seq + " agents=" + all.size());
         ack(f, m);
-        layer.globalChanged();
+        agent.globalChanged();
     }
 
     private void ack(Facilitator f, AclMessage m) {
-        layer.sendQuietly(layer.platformReplyTo(m, Performative.CONFIRM,
-                Lines.content("gal-held", Lines.params("secret", f.secret, "term", f.term, "seq", f.seq), List.of())));
+        layer.sendQuietly(layer.reply(m, Performative.CONFIRM, new PlatformMessage.GalHeld(f.secret, f.term, f.seq)));
         // (term, seq) here are the sender's own list version, which this container now holds.
     }
 
-    private void onHeld(AclMessage m, Lines.Content c) {
+    @Override
+    public void onGalHeld(PlatformMessage.GalHeld h, AclMessage m) {
         Facilitator f = fal.get(m.getSender().name());
-        if (f == null || f.secret == null || !f.secret.equals(c.params().get("secret"))) {
+        if (f == null || f.secret == null || !f.secret.equals(h.secret())) {
             return;
         }
-        f.lastHeardNs = layer.host().nowNs();
-        f.heldSeq = c.longParam("seq");
-        f.heldTerm = c.longParam("term");
+        f.lastHeardNs = layer.nowNs();
+        f.heldSeq = h.seq();
+        f.heldTerm = h.term();
     }
 }

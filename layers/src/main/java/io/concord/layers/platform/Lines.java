@@ -250,33 +250,4 @@ final class Lines {
         }
         return new Content(head[0], params, entries);
     }
-
-    /**
-     * Files one page of a list (the entry lines after the command line of {@code content}) among
-     * the {@code pages} of its version.
-     *
-     * @return every entry of the list once all its pages are in, else {@code null}
-     * @throws IllegalArgumentException if the pages disagree on their count, or an entry is malformed
-     */
-    static List<AgentEntry> collect(String[] pages, int page, int count, String content) {
-        if (pages.length != count) {
-            throw new IllegalArgumentException("list pages disagree on their count: " + count + " and " + pages.length);
-        }
-        int nl = content.indexOf('\n');
-        pages[page] = nl < 0 ? "" : content.substring(nl + 1);
-        for (String g : pages) {
-            if (g == null) {
-                return null;
-            }
-        }
-        List<AgentEntry> all = new ArrayList<>();
-        for (String g : pages) {
-            if (!g.isEmpty()) {
-                for (String line : g.split("\n", -1)) {
-                    all.add(parseEntry(line));
-                }
-            }
-        }
-        return all;
-    }
 }

@@ -1,0 +1,145 @@
+package io.concord.layers.platform;
+
+import io.concord.core.layer.Router;
+import io.concord.core.net.Address;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * The agent lists as one agent holds them: the Local Agent List of its host (from its container, or
+ * its own if it is the container), the Global Agent List of the other hosts' agents, and the routes
+ * both give: where an agent known only by name is reached. The lists are in name order, so that
+ * pages and traces do not depend on hashing.
+ */
+final class AgentLists {
+    /**
+     * Routes of agents that left the lists lately are kept this long: a list that flickers (an
+     * agent taken for dead on a starved machine, a host's container changing) does not turn a
+     * message to a known name into a FAILURE. After the grace the name is unknown.
+     */
+    static final long ROUTE_GRACE_NS = 5_000_000_000L;
+    private static final int MAX_RECENT = 10_000;
+
+    final TreeMap<String, AgentEntry> lal = new TreeMap<>();
+    final TreeMap<String, AgentEntry> gal = new TreeMap<>();
+    /** The GAL's version, and the agent it came from (this agent's container, or itself). */
+    long gseq;
+    String galFrom;
+    private final Map<String, Router.Route> routes = new HashMap<>();
+    private final LinkedHashMap<String, Router.Route> recentRoutes = new LinkedHashMap<>(16, 0.75f, true);
+    private final Map<String, Long> recentSince = new HashMap<>();
+
+    /** The route to a listed agent, or to one that left less than the grace ago; else {@code null}. */
+    Router.Route route(String name, long nowNs) {
+        Router.Route r = routes.get(name);
+        if (r != null) {
+            return r;
+        }
+        r = recentRoutes.get(name);
+        if (r != null) {
+            Long since = recentSince.get(name);
+            if (since != null && nowNs - since < ROUTE_GRACE_NS) {
+                return r;
+            }
+            recentRoutes.remove(name);
+            recentSince.remove(name);
+        }
+        return null;
+    }
+
+    /** The lists changed: the routes follow, and the old ones enter their grace. */
+    void rebuildRoutes(long nowNs) {
+        for (Map.Entry<String, Router.Route> e : routes.entrySet()) {
+            recentRoutes.put(e.getKey(), e.getValue());
+            recentSince.put(e.getKey(), nowNs);
+        }
+        while (recentRoutes.size() > MAX_RECENT) {
+            String eldest = recentRoutes.keySet().iterator().next();
+            recentRoutes.remove(eldest);
+            recentSince.remove(eldest);
+        }
+        routes.clear();
+        for (AgentEntry e : gal.values()) {
+            put(e);
+        }
+        for (AgentEntry e : lal.values()) {
+            put(e);
+        }
+    }
+
+    private void put(AgentEntry e) {
+        Address a = e.transportAddress();
+        if (a != null) {
+            routes.put(e.name(), new Router.Route(a, e.aid()));
+        }
+    }
+
+    /** Every agent this agent knows: the LAL, then the GAL's agents the LAL does not hold. */
+    List<AgentEntry> all() {
+        List<AgentEntry> all = new ArrayList<>(lal.values());
+        for (AgentEntry e : gal.values()) {
+            if (!lal.containsKey(e.name())) {
+                all.add(e);
+            }
+        }
+        return all;
+    }
+
+    /** The agent of that name, ignoring case (as FIPA names compare), in the LAL first. */
+    AgentEntry findIgnoringCase(String name) {
+        AgentEntry found = null;
+        for (AgentEntry x : lal.values()) {
+            if (x.name().equalsIgnoreCase(name)) {
+                found = x;
+            }
+        }
+        if (found == null) {
+            for (AgentEntry x : gal.values()) {
+                if (x.name().equalsIgnoreCase(name)) {
+                    found = x;
+                }
+            }
+        }
+        return found;
+    }
+
+    /** The yellow pages in these lists: agents with a service matching the template. */
+    List<AgentEntry> search(ServiceDescription template) {
+        List<AgentEntry> out = new ArrayList<>();
+        for (AgentEntry e : all()) {
+            for (ServiceDescription s : e.services()) {
+                if (s.matches(template)) {
+                    out.add(e);
+                    break;
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The entries' lines packed into as few pages as fit in {@code maxBytes} each (at least one page). */
+    static List<String> pages(Collection<AgentEntry> entries, int maxBytes) {
+        List<String> out = new ArrayList<>();
+        StringBuilder b = new StringBuilder();
+        for (AgentEntry e : entries) {
+            StringBuilder line = new StringBuilder(80);
+            Lines.appendEntry(line, e);
+            if (b.length() > 0 && b.length() + line.length() + 1 > maxBytes) {
+                out.add(b.toString());
+                b.setLength(0);
+            }
+            if (b.length() > 0) {
+                b.append('\n');
+            }
+            b.append(line);
+        }
+        out.add(b.toString());
+        return out;
+    }
+}

@@ -1,0 +1,342 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.net.Address;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The container (dissertation figs. 5.7 to 5.12): it registers those who join, distributes the LAL
+ * in pages, tells every member each period that it is alive and removes the silent, keeps the GAL
+ * of the other hosts (through the federation) for its members, and yields to a better container.
+ */
+final class ContainerRole extends RoleBase {
+    private final Map<String, Long> lastHeard = new HashMap<>();
+    private final Map<String, Long> heldSeq = new HashMap<>();
+    private final Set<String> cycleAwaiting = new HashSet<>();
+    private long cycleTimer = -1;
+    private long pushTimer = -1;
+    private int cycles;
+    private long cycleStartNs;
+    private long cycleDueNs;
+
+    ContainerRole(Roles roles) {
+        super(roles);
+    }
+
+    @Override
+    ContainerLayer.Role kind() {
+        return ContainerLayer.Role.CONTAINER;
+    }
+
+    /** Takes the role: announces it, and asks every listed agent for its information (fig. 5.11). */
+    void begin(String why) {
+        AgentLists lists = st.lists;
+        long now = ctx.nowNs();
+        for (String n : lists.lal.keySet()) {
+            lastHeard.put(n, now);
+        }
+        roles.rebuildRoutes();
+        ctx.trace("container", "term=" + st.term + " agents=" + lists.lal.size() + ": " + why);
+        // Announce to those who wait, and ask every listed agent for its information (rebuild).
+        for (AgentEntry s : st.seekers.values()) {
+            ctx.send(Performative.INFORM, ContainerLayer.P_DISCOVERY, s.aid(), new PlatformMessage.ContainerIs(st.term, st.selfEntry, null));
+        }
+        st.seekers.clear();
+        for (AgentEntry e : lists.lal.values()) {
+            if (!e.name().equals(ctx.self())) {
+                ctx.send(Performative.REQUEST, ContainerLayer.P_LAL, e.aid(), new PlatformMessage.AgentInfoRequest(st.term, st.selfEntry));
+            }
+        }
+        if (lists.lal.size() > 1) {
+            schedulePush();
+        }
+        st.periodMs = ctx.config().periodMs(lists.lal.size());
+        st.timeoutMs = ctx.config().timeoutMs(lists.lal.size());
+        cycleDueNs = ctx.nowNs() + st.periodMs * 1_000_000L;
+        cycleTimer = after(st.periodMs, this::cycle);
+    }
+
+    // ---- who is container ---------------------------------------------------------------------
+
+    @Override
+    void claimed(AgentEntry container, long term, AclMessage m) {
+        contest(container, term);
+    }
+
+    /** Another agent claims to be container: the better claim wins; the loser yields, or is told of the winner. */
+    void contest(AgentEntry other, long t) {
+        if (other.name().equals(ctx.self())) {
+            return;
+        }
+        if (beats(t, other, st.term, st.selfEntry)) {
+            roles.yieldTo(other, t);
+        } else {
+            tellBetter(other.aid());
+        }
+    }
+
+    @Override
+    public void onLal(PlatformMessage.LalPage p, AclMessage m) {
+        contest(roles.lalClaimant(p, m), p.term());
+    }
+
+    @Override
+    public void onAlive(PlatformMessage.Alive a, AclMessage m) {
+        contest(a.by(), a.term());
+    }
+
+    @Override
+    public void onAgentInfoRequest(PlatformMessage.AgentInfoRequest r, AclMessage m) {
+        if (beats(r.term(), r.by(), st.term, st.selfEntry)) {
+            roles.yieldTo(r.by(), r.term());
+        } else {
+            tellBetter(m.getSender());
+        }
+    }
+
+    // ---- the LAL --------------------------------------------------------------------------------
+
+    /** A newcomer registers (fig. 5.7): listed, confirmed with the period and timeout for the list's size. */
+    @Override
+    public void onJoin(PlatformMessage.Join j, AclMessage m) {
+        AgentEntry e = j.by();
+        AgentLists lists = st.lists;
+        AgentEntry old = lists.lal.put(e.name(), keepServices(lists.lal.get(e.name()), e));
+        lastHeard.put(e.name(), ctx.nowNs());
+        if (old == null || !old.equals(lists.lal.get(e.name()))) {
+            st.seq++;
+            roles.rebuildRoutes();
+            schedulePush();
+            ctx.trace("registered", e.name() + " agents=" + lists.lal.size());
+        }
+        st.periodMs = ctx.config().periodMs(lists.lal.size());
+        st.timeoutMs = ctx.config().timeoutMs(lists.lal.size());
+        ctx.sendQuietly(roles.replyOf(m, Performative.CONFIRM, new PlatformMessage.Joined(st.term, st.periodMs, st.timeoutMs, st.selfEntry)));
+        roles.publish();
+    }
+
+    /** A rejoining agent that lost its own copy keeps the services the list holds for it. */
+    private static AgentEntry keepServices(AgentEntry known, AgentEntry joining) {
+        if (known != null && joining.services().isEmpty() && !known.services().isEmpty()
+                && known.address().equals(joining.address()) && known.startMs() == joining.startMs()) {
+            return joining.withServices(known.services());
+        }
+        return joining;
+    }
+
+    /** The answer to the request for information: the agent's entry, listed. */
+    @Override
+    public void onAgentInfo(PlatformMessage.AgentInfo i, AclMessage m) {
+        if (i.entries().size() != 1 || !i.entries().get(0).name().equals(m.getSender().name())) {
+            return;
+        }
+        AgentEntry e = i.entries().get(0);
+        lastHeard.put(e.name(), ctx.nowNs());
+        AgentEntry was = st.lists.lal.put(e.name(), e);
+        if (!e.equals(was)) {
+            st.seq++;
+            roles.rebuildRoutes();
+            schedulePush();
+            roles.publish();
+        }
+    }
+
+    /** A member leaves: removed at once, and the list distributed. */
+    @Override
+    public void onLeave(PlatformMessage.Leave l, AclMessage m) {
+        String from = m.getSender().name();
+        if (st.lists.lal.remove(from) != null) {
+            lastHeard.remove(from);
+            heldSeq.remove(from);
+            st.seq++;
+            roles.rebuildRoutes();
+            ctx.trace("removed", from + " left");
+            schedulePush();
+            roles.publish();
+        }
+    }
+
+    /** A member's services changed through the DF. */
+    void servicesChanged(AgentEntry entry, List<ServiceDescription> services) {
+        AgentEntry updated = entry.withServices(services);
+        if (!updated.equals(entry)) {
+            st.lists.lal.put(entry.name(), updated);
+            if (entry.name().equals(ctx.self())) {
+                st.selfEntry = updated;
+            }
+            st.seq++;
+            roles.rebuildRoutes();
+            schedulePush();
+            roles.publish();
+        }
+    }
+
+    private void schedulePush() {
+        if (pushTimer < 0) {
+            pushTimer = after(ctx.config().pushDelayMs(), () -> {
+                pushTimer = -1;
+                pushAll();
+            });
+        }
+    }
+
+    private void pushAll() {
+        List<String> p = roles.lalPages();
+        for (AgentEntry e : st.lists.lal.values()) {
+            if (!e.name().equals(ctx.self())) {
+                pushTo(e.aid(), p);
+            }
+        }
+        ctx.trace("distribute", "term=" + st.term + " seq=" + st.seq + " agents=" + st.lists.lal.size() + " pages=" + p.size());
+        if (roles.federation != null) {
+            roles.federation.localChanged();
+            globalChanged();
+        }
+        roles.publish();
+    }
+
+    private void pushTo(AID to, List<String> p) {
+        for (int i = 0; i < p.size(); i++) {
+            ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, to, new PlatformMessage.LalPage(st.term, st.seq, st.periodMs,
+                    st.timeoutMs, PlatformMessage.Page.of(i, p.size(), p.get(i))));
+        }
+    }
+
+    /** A member's confirmation of the version it holds (after a LAL or an alive). */
+    @Override
+    public void onHeld(PlatformMessage.Held h, AclMessage m) {
+        String from = m.getSender().name();
+        AgentLists lists = st.lists;
+        if (!lists.lal.containsKey(from)) {
+            // Removed while silent: its list is outdated; our list tells it to join again.
+            pushTo(m.getSender(), roles.lalPages());
+            return;
+        }
+        long now = ctx.nowNs();
+        lastHeard.put(from, now);
+        heldSeq.put(from, h.seq());
+        boolean otherSource = h.gfrom() != null && !ctx.self().equals(h.gfrom());
+        if (h.gseq() != null && (otherSource || h.gseq() < lists.gseq) && pushTimer < 0 && ctx.self().equals(lists.galFrom)) {
+            pushGalTo(lists.lal.get(from).aid(), AgentLists.pages(lists.gal.values(), ctx.config().maxContentBytes()));
+        }
+        if (cycleAwaiting.remove(from) && cycleAwaiting.isEmpty()) {
+            st.lastCycleNs = now - cycleStartNs;
+        }
+        if (h.term() != st.term || h.seq() < st.seq) {
+            if (pushTimer < 0) {
+                pushTo(lists.lal.get(from).aid(), roles.lalPages());
+            }
+        }
+    }
+
+    // ---- maintenance (fig. 5.9) -----------------------------------------------------------------
+
+    private void cycle() {
+        cycleTimer = -1;
+        roles.gatewayRetry(); // its port may have been held by the previous container a moment ago
+        cycles++;
+        long now = ctx.nowNs();
+        AgentLists lists = st.lists;
+        // A cycle that runs late (this loop stalled) removes nobody: the agents' confirmations may
+        // be waiting to be read.
+        boolean late = cycleDueNs > 0 && now - cycleDueNs > st.periodMs * 500_000L;
+        List<String> dead = new ArrayList<>();
+        for (String n : lists.lal.keySet()) {
+            if (n.equals(ctx.self())) {
+                continue;
+            }
+            Long heard = lastHeard.get(n);
+            if (heard == null) {
+                lastHeard.put(n, now);
+            } else if (!late && now - heard > st.timeoutMs * 1_000_000L) {
+                dead.add(n);
+            }
+        }
+        for (String n : dead) {
+            lists.lal.remove(n);
+            lastHeard.remove(n);
+            heldSeq.remove(n);
+            ctx.trace("removed", n + " silent for more than " + st.timeoutMs + " ms");
+        }
+        if (!dead.isEmpty()) {
+            st.seq++;
+            roles.rebuildRoutes();
+            pushAll();
+        }
+        st.periodMs = ctx.config().periodMs(lists.lal.size());
+        st.timeoutMs = ctx.config().timeoutMs(lists.lal.size());
+        cycleStartNs = now;
+        cycleAwaiting.clear();
+        cycleAwaiting.addAll(lists.lal.keySet());
+        cycleAwaiting.remove(ctx.self());
+        PlatformMessage alive = new PlatformMessage.Alive(st.term, st.seq, st.periodMs, st.timeoutMs, st.selfEntry);
+        for (AgentEntry e : lists.lal.values()) {
+            if (!e.name().equals(ctx.self())) {
+                ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), alive);
+            }
+        }
+        // Keep asking the potential agents of the range that are not listed: a container elected
+        // while one of them was slow to answer finds the other container this way.
+        if (cycles % 4 == 1) {
+            PlatformMessage q = new PlatformMessage.WhoIsContainer(st.round, st.selfEntry);
+            Set<Address> listed = new HashSet<>();
+            for (AgentEntry e : lists.lal.values()) {
+                listed.add(e.transportAddress());
+            }
+            for (Address a : st.asked.keySet()) {
+                if (!listed.contains(a)) {
+                    ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, ctx.anyAt(a), q);
+                }
+            }
+        }
+        cycleDueNs = now + st.periodMs * 1_000_000L;
+        cycleTimer = after(st.periodMs, this::cycle);
+        if (!dead.isEmpty()) {
+            roles.publish();
+        }
+    }
+
+    // ---- the global agent list (fig. 5.12) ------------------------------------------------------
+
+    /** The federation's lists changed: recompute the GAL and give it to every agent. */
+    void globalChanged() {
+        if (roles.federation == null) {
+            return;
+        }
+        AgentLists lists = st.lists;
+        List<AgentEntry> now = roles.federation.globalAgents(lists.lal.keySet());
+        if (now.equals(List.copyOf(lists.gal.values()))) {
+            return;
+        }
+        lists.gal.clear();
+        for (AgentEntry e : now) {
+            lists.gal.put(e.name(), e);
+        }
+        lists.gseq++;
+        lists.galFrom = ctx.self();
+        roles.rebuildRoutes();
+        List<String> p = AgentLists.pages(lists.gal.values(), ctx.config().maxContentBytes());
+        for (AgentEntry e : lists.lal.values()) {
+            if (!e.name().equals(ctx.self())) {
+                pushGalTo(e.aid(), p);
+            }
+        }
+        ctx.trace("gal", "gseq=" + lists.gseq + " agents=" + lists.gal.size());
+        roles.publish();
+    }
+
+    private void pushGalTo(AID to, List<String> p) {
+        for (int i = 0; i < p.size(); i++) {
+            ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, to,
+                    new PlatformMessage.GalPage(st.term, st.lists.gseq, PlatformMessage.Page.of(i, p.size(), p.get(i))));
+        }
+    }
+}

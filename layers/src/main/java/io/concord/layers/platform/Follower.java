@@ -1,0 +1,145 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+
+import java.util.List;
+
+/**
+ * What an agent that is not container does alike whether it seeks one or follows one: it takes
+ * the LAL and the alive messages of its container (or of a better one), answers a new container's
+ * request for its information, and uses a copy of the last list after failed joins.
+ */
+abstract class Follower extends RoleBase {
+
+    Follower(Roles roles) {
+        super(roles);
+    }
+
+    /** The container was heard: wait a timeout again before taking it for gone (members only). */
+    void resetWatch() {
+    }
+
+    /** A page of the LAL: applied once every page of its version is in, and confirmed (fig. 5.8). */
+    @Override
+    public void onLal(PlatformMessage.LalPage p, AclMessage m) {
+        String from = m.getSender().name();
+        AgentEntry claimed = roles.lalClaimant(p, m);
+        boolean fromMine = st.container != null && st.container.name().equals(from) && st.term == p.term();
+        if (!fromMine) {
+            if (st.container != null && !beats(p.term(), claimed, st.term, st.container) && !st.suspects.contains(st.container.name())) {
+                tellBetter(m.getSender());
+                return;
+            }
+        } else if (p.seq() <= st.seq) {
+            // Already held: confirm again (our confirmation may have been lost).
+            ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(),
+                    new PlatformMessage.Held(false, st.term, st.seq, null, null));
+            resetWatch();
+            return;
+        }
+        List<AgentEntry> all = roles.lalAssembler.add(p.term() + "/" + from + "/" + p.seq(), p.page());
+        if (all == null) {
+            return;
+        }
+        AgentEntry containerEntry = null;
+        for (AgentEntry e : all) {
+            if (e.name().equals(from)) {
+                containerEntry = e;
+            }
+        }
+        if (containerEntry == null) {
+            throw new IllegalArgumentException("the LAL from " + from + " does not list its container");
+        }
+        roles.join.stop();
+        roles.becomeMember(containerEntry, p.term(), p.period(), p.timeout());
+        AgentLists lists = st.lists;
+        lists.lal.clear();
+        for (AgentEntry e : all) {
+            lists.lal.put(e.name(), e);
+        }
+        st.seq = p.seq();
+        roles.rebuildRoutes();
+        AgentEntry mine = lists.lal.get(ctx.self());
+        if (mine == null) {
+            // Removed (we were silent too long): join again.
+            ctx.trace("rejoin", "not in the list of " + from);
+            roles.join.start(containerEntry, p.term());
+        } else {
+            st.selfEntry = mine;
+        }
+        ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
+        roles.publish();
+    }
+
+    /** The container's alive (fig. 5.9): confirmed with the versions held; a better container is joined. */
+    @Override
+    public void onAlive(PlatformMessage.Alive a, AclMessage m) {
+        long t = a.term();
+        AgentEntry by = a.by();
+        boolean mine = st.container != null && st.container.name().equals(by.name()) && st.term == t;
+        if (!mine) {
+            if (st.container == null || beats(t, by, st.term, st.container) || st.suspects.contains(st.container.name())) {
+                if (!roles.join.to(by.name())) {
+                    roles.join.start(by, t);
+                }
+            } else {
+                tellBetter(m.getSender());
+            }
+            return;
+        }
+        st.periodMs = a.period();
+        st.timeoutMs = a.timeout();
+        resetWatch();
+        AgentLists l = st.lists;
+        ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, m.getSender(),
+                new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
+    }
+
+    /** A new container asks for this agent's information (fig. 5.11): follow it and answer, or name a better one. */
+    @Override
+    public void onAgentInfoRequest(PlatformMessage.AgentInfoRequest r, AclMessage m) {
+        long t = r.term();
+        AgentEntry by = r.by();
+        if (st.container == null || st.container.name().equals(by.name()) || beats(t, by, st.term, st.container)
+                || st.suspects.contains(st.container.name())) {
+            roles.join.stop();
+            int n = st.lists.lal.size();
+            roles.becomeMember(by, t, Math.max(st.periodMs, ctx.config().periodMs(n)), Math.max(st.timeoutMs, ctx.config().timeoutMs(n)));
+            ctx.sendQuietly(roles.replyOf(m, Performative.INFORM, new PlatformMessage.AgentInfo(t, List.of(st.selfEntry))));
+        } else {
+            tellBetter(m.getSender());
+        }
+    }
+
+    /** A page of the last valid LAL a known agent held, asked for after failed joins. */
+    @Override
+    public void onLalCopy(PlatformMessage.LalCopy c, AclMessage m) {
+        AgentLists lists = st.lists;
+        boolean added = false;
+        for (AgentEntry e : c.page().entries()) {
+            if (!lists.lal.containsKey(e.name()) && !st.suspects.contains(e.name())) {
+                lists.lal.put(e.name(), e);
+                added = true;
+            }
+        }
+        if (added) {
+            roles.rebuildRoutes();
+            roles.publish();
+        }
+        // The copy names the container its holder follows: if that is not the one that failed us,
+        // join it rather than wait for an election.
+        String named = c.container();
+        long t = c.term();
+        if (!named.isEmpty() && !st.suspects.contains(named) && !named.equals(ctx.self()) && roles.join.target() == null
+                && (st.container == null || t > st.term)) {
+            for (AgentEntry e : c.page().entries()) {
+                if (e.name().equals(named)) {
+                    ctx.trace("join-from-copy", named + " term=" + t);
+                    roles.join.start(e, t);
+                    return;
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,142 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.layer.SendRejectedException;
+import io.concord.core.layer.StackHost;
+import io.concord.core.layer.Tracer;
+import io.concord.core.net.Address;
+import io.concord.layers.frame.Frames;
+
+import static io.concord.layers.platform.ContainerLayer.LANGUAGE;
+import static io.concord.layers.platform.ContainerLayer.ONTOLOGY;
+
+/** The container layer's {@link PlatformContext}: its node's services, narrowed to what the platform uses. */
+final class HostContext implements PlatformContext {
+    private final StackHost host;
+    private final PlatformConfig config;
+    private final PlatformState st;
+    private final String platform;
+    private final String self;
+    private final AID selfAid;
+
+    HostContext(StackHost host, PlatformConfig config, PlatformState st, String platform, AID selfAid) {
+        this.host = host;
+        this.config = config;
+        this.st = st;
+        this.platform = platform;
+        this.self = selfAid.name();
+        this.selfAid = selfAid;
+    }
+
+    @Override
+    public PlatformConfig config() {
+        return config;
+    }
+
+    @Override
+    public String platform() {
+        return platform;
+    }
+
+    @Override
+    public String self() {
+        return self;
+    }
+
+    @Override
+    public AgentEntry selfEntry() {
+        return st.selfEntry;
+    }
+
+    @Override
+    public AID selfAid() {
+        return selfAid;
+    }
+
+    @Override
+    public long nowNs() {
+        return host.nowNs();
+    }
+
+    @Override
+    public long epochMillis() {
+        return host.clock().epochMillis();
+    }
+
+    @Override
+    public long after(long ms, Runnable task) {
+        return host.schedule(host.nowNs() + ms * 1_000_000L, task);
+    }
+
+    @Override
+    public long cancel(long id) {
+        if (id >= 0) {
+            host.cancel(id);
+        }
+        return -1;
+    }
+
+    @Override
+    public java.util.random.RandomGenerator random() {
+        return host.random();
+    }
+
+    @Override
+    public void send(Performative act, String protocol, AID to, PlatformMessage content) {
+        AclMessage m = new AclMessage(act);
+        m.setSender(selfAid);
+        m.addReceiver(to);
+        m.setOntology(ONTOLOGY);
+        m.setLanguage(LANGUAGE);
+        m.setProtocol(protocol);
+        m.setContent(content.encode());
+        sendQuietly(m);
+    }
+
+    @Override
+    public AclMessage reply(AclMessage to, Performative act, PlatformMessage content) {
+        AclMessage r = ContainerLayer.stamped(to, epochMillis()).createReply();
+        r.setPerformative(act);
+        r.setSender(selfAid);
+        r.setOntology(ONTOLOGY);
+        r.setLanguage(LANGUAGE);
+        r.setContent(content.encode());
+        return r;
+    }
+
+    @Override
+    public void sendQuietly(AclMessage m) {
+        try {
+            host.send(m);
+        } catch (SendRejectedException e) {
+            host.drops().record(self, e.reason(), e.getMessage());
+        } catch (RuntimeException e) {
+            host.drops().record(self, "platform-send", e.toString());
+        }
+    }
+
+    @Override
+    public void sendOrThrow(AclMessage m) {
+        host.send(m);
+    }
+
+    @Override
+    public AID anyAt(Address a) {
+        return new AID(Frames.ANY_LOCAL_NAME + "@" + platform, a.toUri(host.transport()));
+    }
+
+    @Override
+    public void trace(String event, String detail) {
+        Tracer t = host.tracer();
+        if (t.enabled()) {
+            t.trace(host.nowNs(), self, "platform-" + event, detail);
+        }
+    }
+
+    @Override
+    public void drop(String reason, String detail) {
+        host.drops().record(self, reason, detail);
+    }
+}

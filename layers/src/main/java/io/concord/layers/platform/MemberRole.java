@@ -1,0 +1,138 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AclMessage;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * A member of a container (dissertation figs. 5.9 and 5.10): it watches for the container's alive
+ * messages, and when the container stays silent for the timeout (or leaves), the eldest agent left
+ * in the list takes over; if that one stays silent too, it is suspected in turn. A member that has
+ * no container yet (after failed joins, or waiting for the successor) is a member all the same.
+ */
+final class MemberRole extends Follower {
+    private long watchTimer = -1;
+
+    MemberRole(Roles roles) {
+        super(roles);
+    }
+
+    @Override
+    ContainerLayer.Role kind() {
+        return ContainerLayer.Role.MEMBER;
+    }
+
+    @Override
+    void resetWatch() {
+        watchTimer = cancel(watchTimer);
+        long t = st.timeoutMs > 0 ? st.timeoutMs : ctx.config().timeoutMs(Math.max(1, st.lists.lal.size()));
+        long deadline = ctx.nowNs() + t * 1_000_000L;
+        watchTimer = after(t, () -> onWatch(deadline, t, false));
+    }
+
+    /**
+     * The container stayed silent until the deadline. If this loop itself ran late (a stall: GC,
+     * a starved CPU), the container's messages may be waiting to be read, or its own timers were
+     * as late: grant one more period before giving it up.
+     */
+    private void onWatch(long deadline, long t, boolean graced) {
+        watchTimer = -1;
+        if (roles.join.target() != null || (st.container == null && st.successor == null)) {
+            return;
+        }
+        long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
+        if (!graced && ctx.nowNs() - deadline > period * 500_000L) {
+            watchTimer = after(period, () -> onWatch(deadline, t, true));
+            return;
+        }
+        failover("no word from " + (st.container != null ? "the container " + st.container.name()
+                : "the expected successor " + st.successor.name()) + " for " + t + " ms");
+    }
+
+    /** The container is gone: the eldest agent left in the list takes over. */
+    private void failover(String why) {
+        if (st.container != null) {
+            st.suspects.add(st.container.name());
+        }
+        if (st.successor != null) {
+            st.suspects.add(st.successor.name());
+        }
+        st.successor = null;
+        st.failoverRounds++;
+        List<AgentEntry> candidates = new ArrayList<>();
+        for (AgentEntry e : st.lists.lal.values()) {
+            if (!st.suspects.contains(e.name())) {
+                candidates.add(e);
+            }
+        }
+        if (!candidates.contains(st.selfEntry) && !st.suspects.contains(ctx.self())) {
+            candidates.add(st.selfEntry);
+        }
+        candidates.sort(st.failoverRounds <= 3 ? AgentEntry.SENIORITY : AgentEntry.BY_PORT);
+        AgentEntry next = candidates.isEmpty() ? st.selfEntry : candidates.get(0);
+        ctx.trace("failover", why + "; next container: " + next.name());
+        if (next.name().equals(ctx.self())) {
+            roles.becomeContainer(Math.max(st.term, st.maxTermSeen) + 1, why);
+            return;
+        }
+        // Wait for the successor; if it stays silent too, it is suspected in turn. Until it speaks
+        // there is no container (requests to the DF wait).
+        st.successor = next;
+        st.container = null;
+        roles.publish();
+        resetWatch();
+    }
+
+    /** A better claim is joined; a worse one is told of the container this member follows. */
+    @Override
+    void claimed(AgentEntry container, long t, AclMessage m) {
+        if (st.container == null || beats(t, container, st.term, st.container)) {
+            roles.join.start(container, t);
+        } else if (!container.name().equals(st.container.name())) {
+            tellBetter(container.aid());
+        }
+    }
+
+    /** A join sent to a member: it is told which container to join. */
+    @Override
+    public void onJoin(PlatformMessage.Join j, AclMessage m) {
+        tellBetter(j.by().aid());
+    }
+
+    @Override
+    public void onLeave(PlatformMessage.Leave l, AclMessage m) {
+        String from = m.getSender().name();
+        if (st.container != null && st.container.name().equals(from)) {
+            st.lists.lal.remove(from);
+            roles.rebuildRoutes();
+            failover(from + " left");
+        }
+    }
+
+    /** A page of the GAL: only the container this agent follows gives it. */
+    @Override
+    public void onGal(PlatformMessage.GalPage p, AclMessage m) {
+        String from = m.getSender().name();
+        if (st.container == null || !st.container.name().equals(from)) {
+            return;
+        }
+        AgentLists lists = st.lists;
+        long g = p.gseq();
+        if (from.equals(lists.galFrom) && g <= lists.gseq) {
+            return;
+        }
+        List<AgentEntry> all = roles.galAssembler.add(from + "/" + g, p.page());
+        if (all == null) {
+            return;
+        }
+        lists.gal.clear();
+        for (AgentEntry e : all) {
+            lists.gal.put(e.name(), e);
+        }
+        lists.gseq = g;
+        lists.galFrom = from;
+        roles.rebuildRoutes();
+        roles.publish();
+    }
+}

@@ -1,0 +1,65 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.net.Address;
+
+/**
+ * What the roles, the federation, the gateway relay and the directory may use of the container
+ * layer: sending platform messages, timers, tracing, counting drops, and who this agent is. They
+ * get this, never the layer.
+ */
+interface PlatformContext {
+
+    PlatformConfig config();
+
+    /** The platform's name (the part after {@code @}). */
+    String platform();
+
+    /** This agent's name. */
+    String self();
+
+    /** This agent's entry as the lists hold it (its services included). */
+    AgentEntry selfEntry();
+
+    AID selfAid();
+
+    /** The loop's time. */
+    long nowNs();
+
+    /** This host's wall clock, in ms. */
+    long epochMillis();
+
+    /** Runs a task on the loop after {@code ms}; returns the timer's id. */
+    long after(long ms, Runnable task);
+
+    /** Cancels a timer if {@code id >= 0}; returns -1, to assign back. */
+    long cancel(long id);
+
+    java.util.random.RandomGenerator random();
+
+    /** Sends a platform message; a refusal is counted, never thrown. */
+    void send(Performative act, String protocol, AID to, PlatformMessage content);
+
+    /** A reply to a message with a platform message, as this agent (to send with {@link #sendQuietly}). */
+    AclMessage reply(AclMessage to, Performative act, PlatformMessage content);
+
+    /**
+     * Sends a message through this agent's whole stack, as the agent would.
+     *
+     * @throws io.concord.core.layer.SendRejectedException if the stack refuses it at once
+     */
+    void sendOrThrow(AclMessage m);
+
+    /** Sends a message as it is; a refusal is counted, never thrown. */
+    void sendQuietly(AclMessage m);
+
+    /** Whoever holds a port: the receiver of discovery. */
+    AID anyAt(Address a);
+
+    void trace(String event, String detail);
+
+    /** Counts a drop of something that is not an envelope (a relay nothing can carry, a bad secret). */
+    void drop(String reason, String detail);
+}

@@ -1,0 +1,46 @@
+package io.concord.layers.platform;
+
+import io.concord.core.net.Address;
+
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * What every role of an agent shares and hands on to the next: the term, the container followed,
+ * the lists, and what discovery and failover learnt. A role's own fields and timers live in its
+ * class and end with it.
+ */
+final class PlatformState {
+    /** This agent's entry; its services change through the DF. */
+    AgentEntry selfEntry;
+    long term;
+    /** The LAL's sequence in the current term. */
+    long seq;
+    /** The highest term heard of: a new container takes the next. */
+    long maxTermSeen;
+    /** The container this agent follows (itself when container), or {@code null}. */
+    AgentEntry container;
+    long periodMs;
+    long timeoutMs;
+    /** The election round: after three, the lowest port wins instead of the eldest. */
+    int round;
+    final AgentLists lists = new AgentLists();
+    /** The potential agents of the port range, and whether each answered discovery. */
+    final Map<Address, Boolean> asked = new LinkedHashMap<>();
+    /** Agents heard seeking a container too: the candidates of an election. */
+    final Map<String, AgentEntry> seekers = new HashMap<>();
+    /** Agents taken for gone by a failover: no longer candidates. */
+    final Set<String> suspects = new HashSet<>();
+    /** After a failover, the agent expected to take over, or {@code null}. */
+    AgentEntry successor;
+    int failoverRounds;
+    /** How long the container's last complete maintenance cycle took, in ns; -1 if none yet. */
+    volatile long lastCycleNs = -1;
+
+    String self() {
+        return selfEntry.name();
+    }
+}

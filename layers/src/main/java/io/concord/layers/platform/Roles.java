@@ -1,0 +1,303 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.net.Address;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Holds an agent's current role and swaps it: each transition of the dissertation's figures is one
+ * method here (begin discovery, become container, become member, yield, a join that failed). The
+ * role left has its timers cancelled; what the next one needs is in {@link PlatformState}.
+ */
+final class Roles {
+    final PlatformContext ctx;
+    final PlatformState st;
+    final Joining join;
+    final Federation federation;
+    final GatewayRelay relay;
+    /** The pages of the LAL and of the GAL being received from a container. */
+    final PageAssembler lalAssembler = new PageAssembler();
+    final PageAssembler galAssembler = new PageAssembler();
+    private final Runnable publish;
+    private RoleBase current;
+
+    Roles(PlatformContext ctx, PlatformState st, Federation federation, GatewayRelay relay, Runnable publish) {
+        this.ctx = ctx;
+        this.st = st;
+        this.federation = federation;
+        this.relay = relay;
+        this.publish = publish;
+        this.join = new Joining(ctx, st, this::joinFailed);
+        this.current = new SeekingRole(this);
+    }
+
+    RoleBase current() {
+        return current;
+    }
+
+    ContainerLayer.Role kind() {
+        return current.kind();
+    }
+
+    private <R extends RoleBase> R become(R next) {
+        current.leave();
+        current = next;
+        return next;
+    }
+
+    /** The agent starts: with nobody else in its port range it is container at once, else it seeks. */
+    void start(List<Address> neighbours) {
+        if (neighbours.isEmpty()) {
+            becomeContainer(1, "no other agent holds a port of the range");
+            return;
+        }
+        for (Address a : neighbours) {
+            st.asked.put(a, Boolean.FALSE);
+        }
+        beginDiscovery();
+    }
+
+    void beginDiscovery() {
+        become(new SeekingRole(this)).begin();
+    }
+
+    void becomeContainer(long newTerm, String why) {
+        ContainerRole c = become(new ContainerRole(this));
+        join.stop();
+        st.successor = null;
+        st.lists.galFrom = ctx.self();
+        st.term = newTerm;
+        st.maxTermSeen = Math.max(st.maxTermSeen, newTerm);
+        st.seq = 1;
+        st.container = st.selfEntry;
+        for (String s : st.suspects) {
+            st.lists.lal.remove(s);
+        }
+        st.suspects.clear();
+        st.failoverRounds = 0;
+        st.lists.lal.put(ctx.self(), st.selfEntry);
+        c.begin(why);
+        if (federation != null) {
+            federation.start();
+        }
+        if (relay != null) {
+            relay.startGateway();
+        }
+        publish();
+    }
+
+    /** A container that heard a better one: it tells its members, and joins the winner. */
+    void yieldTo(AgentEntry better, long t) {
+        ctx.trace("yield", "to " + better.name() + " term=" + t);
+        if (federation != null) {
+            federation.stop();
+        }
+        if (relay != null) {
+            relay.stopGateway();
+        }
+        become(new MemberRole(this));
+        PlatformMessage claim = new PlatformMessage.ContainerIs(t, better, st.selfEntry);
+        for (AgentEntry e : st.lists.lal.values()) {
+            if (!e.name().equals(ctx.self()) && !e.name().equals(better.name())) {
+                ctx.send(Performative.INFORM, ContainerLayer.P_DISCOVERY, e.aid(), claim);
+            }
+        }
+        join.start(better, t);
+    }
+
+    void becomeMember(AgentEntry by, long t, long period, long timeout) {
+        boolean sameContainer = st.container != null && st.container.name().equals(by.name()) && st.term == t;
+        boolean changed = current.kind() != ContainerLayer.Role.MEMBER || !sameContainer;
+        if (federation != null) {
+            federation.stop();
+        }
+        if (relay != null) {
+            relay.stopGateway();
+        }
+        MemberRole m = become(new MemberRole(this));
+        st.successor = null;
+        if (!sameContainer) {
+            st.seq = 0; // a new container's list replaces ours whatever its sequence
+        }
+        st.container = by;
+        st.term = t;
+        st.maxTermSeen = Math.max(st.maxTermSeen, t);
+        st.periodMs = period;
+        st.timeoutMs = timeout;
+        st.suspects.clear();
+        st.failoverRounds = 0;
+        st.seekers.clear();
+        if (!st.lists.lal.containsKey(by.name())) {
+            st.lists.lal.put(by.name(), by);
+            rebuildRoutes();
+        }
+        m.resetWatch();
+        if (changed) {
+            ctx.trace("member", "of " + by.name() + " term=" + t);
+        }
+        publish();
+    }
+
+    /**
+     * The container does not answer joins: a random known agent is asked for the last valid LAL,
+     * and the agent waits a timeout for it (it may name a container to join), then elects from it.
+     */
+    private void joinFailed(AgentEntry failed) {
+        st.suspects.add(failed.name());
+        List<AID> known = new ArrayList<>();
+        for (AgentEntry e : st.seekers.values()) {
+            known.add(e.aid());
+        }
+        for (AgentEntry e : st.lists.lal.values()) {
+            if (!e.name().equals(ctx.self()) && !e.name().equals(failed.name())) {
+                known.add(e.aid());
+            }
+        }
+        if (known.isEmpty()) {
+            for (Address a : st.asked.keySet()) {
+                if (!a.equals(failed.transportAddress())) {
+                    known.add(ctx.anyAt(a));
+                }
+            }
+        }
+        if (!known.isEmpty()) {
+            AID pick = known.get(ctx.random().nextInt(known.size()));
+            ctx.send(Performative.REQUEST, ContainerLayer.P_LAL, pick, new PlatformMessage.LalRequest(st.term, st.selfEntry));
+        }
+        MemberRole m = become(new MemberRole(this));
+        st.container = null;
+        st.successor = failed;
+        st.term = Math.max(st.term, join.claimTerm);
+        st.lists.lal.put(ctx.self(), st.selfEntry);
+        rebuildRoutes();
+        st.timeoutMs = Math.max(st.timeoutMs, ctx.config().timeoutMs(st.lists.lal.size()));
+        publish();
+        m.resetWatch();
+    }
+
+    /** The agent stops: it says so (a container to every member, a member to its container). */
+    void stop() {
+        ContainerLayer.Role was = current.kind();
+        current.leave();
+        join.stop();
+        if (federation != null) {
+            federation.stop();
+        }
+        if (relay != null) {
+            relay.stopGateway();
+        }
+        PlatformMessage leave = new PlatformMessage.Leave(st.term);
+        if (was == ContainerLayer.Role.CONTAINER) {
+            for (AgentEntry e : st.lists.lal.values()) {
+                if (!e.name().equals(ctx.self())) {
+                    ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), leave);
+                }
+            }
+        } else if (was == ContainerLayer.Role.MEMBER && st.container != null && !st.container.name().equals(ctx.self())) {
+            ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, st.container.aid(), leave);
+        }
+        current = new Stopped(this);
+    }
+
+    /** The federation's lists changed: the container recomputes the GAL. */
+    void globalChanged() {
+        if (current instanceof ContainerRole c) {
+            c.globalChanged();
+        }
+    }
+
+    /** A container of this host announced itself on the network: the better one stays. */
+    void contest(AgentEntry other, long term) {
+        if (current instanceof ContainerRole c) {
+            c.contest(other, term);
+        }
+    }
+
+    /** The container's gateway did not start (its port was held): try again. */
+    void gatewayRetry() {
+        if (relay != null) {
+            relay.startGateway();
+        }
+    }
+
+    /** The LAL's entry lines in pages. */
+    List<String> lalPages() {
+        return AgentLists.pages(st.lists.lal.values(), ctx.config().maxContentBytes());
+    }
+
+    /**
+     * Who sent a LAL page: its entry in the page, else in our list, else only its name.
+     *
+     * @throws IllegalArgumentException if a list of one page does not list its container
+     */
+    AgentEntry lalClaimant(PlatformMessage.LalPage p, AclMessage m) {
+        String from = m.getSender().name();
+        AgentEntry by = null;
+        for (AgentEntry e : p.page().entries()) {
+            if (e.name().equals(from)) {
+                by = e;
+            }
+        }
+        if (by == null && p.page().count() == 1) {
+            throw new IllegalArgumentException("a LAL must list its container");
+        }
+        AgentEntry claimed = by != null ? by : st.lists.lal.get(from);
+        if (claimed == null) {
+            claimed = new AgentEntry(from, m.getSender().addresses().isEmpty() ? "" : m.getSender().addresses().get(0),
+                    Long.MAX_VALUE, List.of());
+        }
+        return claimed;
+    }
+
+    AclMessage replyOf(AclMessage to, Performative act, PlatformMessage content) {
+        return ctx.reply(to, act, content);
+    }
+
+    void rebuildRoutes() {
+        st.lists.rebuildRoutes(ctx.nowNs());
+    }
+
+    void publish() {
+        publish.run();
+    }
+
+    /** After the agent stopped: nothing is handled. */
+    private static final class Stopped extends RoleBase {
+        Stopped(Roles roles) {
+            super(roles);
+        }
+
+        @Override
+        ContainerLayer.Role kind() {
+            return ContainerLayer.Role.STOPPED;
+        }
+
+        @Override
+        public void onWhoIsContainer(PlatformMessage.WhoIsContainer w, AclMessage m) {
+        }
+
+        @Override
+        public void onJoined(PlatformMessage.Joined j, AclMessage m) {
+        }
+
+        @Override
+        public void onLalRequest(PlatformMessage.LalRequest r, AclMessage m) {
+        }
+
+        @Override
+        public void onSeeking(PlatformMessage.Seeking s, AclMessage m) {
+        }
+
+        @Override
+        public void onContainerIs(PlatformMessage.ContainerIs c, AclMessage m) {
+        }
+
+        @Override
+        void claimed(AgentEntry container, long term, AclMessage m) {
+        }
+    }
+}
