@@ -30,7 +30,6 @@ final class AgentNode implements StackHost {
     boolean crashed;
     java.util.function.LongSupplier platformTime;
     java.util.List<Address> neighbours = java.util.List.of();
-    io.concord.core.layer.Router router;
 
     AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint, Transport transport) {
         this.runtime = runtime;
@@ -40,7 +39,6 @@ final class AgentNode implements StackHost {
         this.transport = transport;
     }
 
-    @Override
     public void send(AclMessage msg) {
         if (msg.getSender() == null) {
             msg.setSender(aid);
@@ -50,32 +48,23 @@ final class AgentNode implements StackHost {
             return;
         }
         Tracer tracer = runtime.tracer();
+        boolean byName = stack.resolvesNames();
         for (AID receiver : msg.getReceivers()) {
+            // An agent of this runtime by name; else, unless a layer finds receivers by name (the
+            // container layer, from the platform's lists), the first address of the AID.
             Address dst = runtime.resolveLocal(receiver, transport);
-            AID via = null;
-            if (dst == null && router != null) {
-                io.concord.core.layer.Router.Route r = router.route(receiver);
-                if (r != null) {
-                    dst = r.address();
-                    via = r.node().equals(receiver) ? null : r.node();
-                }
-            }
-            if (dst == null) {
+            if (dst == null && !byName) {
                 dst = runtime.resolveByAddress(receiver, transport);
-            }
-            if (dst == null) {
-                dropOutgoing(msg, "unknown-receiver", "no " + transport + " address known for " + receiver.name());
-                returnFailure(msg, receiver);
-                continue;
+                if (dst == null) {
+                    dropOutgoing(msg, "unknown-receiver", "no " + transport + " address known for " + receiver.name());
+                    returnFailure(msg, receiver);
+                    continue;
+                }
             }
             if (tracer.enabled()) {
                 tracer.trace(runtime.nowNs(), aid.name(), "send", describe(msg) + " to " + receiver.name());
             }
-            Envelope env = Envelope.outgoing(msg, receiver, dst);
-            if (via != null) {
-                env.setVia(via);
-            }
-            stack.sendDown(env);
+            stack.sendDown(Envelope.outgoing(msg, receiver, dst));
         }
     }
 
@@ -145,10 +134,7 @@ final class AgentNode implements StackHost {
     }
 
     static String describe(AclMessage m) {
-        String c = m.getContent();
-        return m.getPerformative().wireName() + " from " + (m.getSender() == null ? "?" : m.getSender().name())
-                + " conv=" + m.getConversationId() + " content=" + (c == null ? 0 : c.length()) + "/"
-                + (c == null ? 0 : c.hashCode());
+        return Tracer.describe(m);
     }
 
     @Override
@@ -182,41 +168,38 @@ final class AgentNode implements StackHost {
         return t != null ? t.getAsLong() : runtime.clock().epochMillis();
     }
 
-    @Override
-    public java.util.List<Address> neighbours() {
-        return neighbours;
-    }
-
-    @Override
-    public void setRouter(io.concord.core.layer.Router router) {
-        this.router = router;
-    }
-
-    @Override
-    public void deliverToAgent(AclMessage message) {
-        deliverMessage(message);
-        runtime.makeReady(this);
-    }
-
-    @Override
-    public Endpoint openListener(int port) {
-        if (transport != Transport.UDP) {
-            return null;
+    /** What the container layer discovers with: the ports held around this node's, and the shared listener. */
+    private final io.concord.core.net.Neighbourhood neighbourhood = new io.concord.core.net.Neighbourhood() {
+        @Override
+        public java.util.List<Address> neighbours() {
+            return neighbours;
         }
-        String host = endpoint.localAddress().host();
-        boolean broadcast = !runtime.network().broadcastAddresses(host).isEmpty();
-        return runtime.network().bindListener(host, port, broadcast, this::onDatagram);
+
+        @Override
+        public Endpoint openListener(int port) {
+            if (transport != Transport.UDP) {
+                return null;
+            }
+            String host = endpoint.localAddress().host();
+            boolean broadcast = !runtime.network().broadcastAddresses(host).isEmpty();
+            return runtime.network().bindListener(host, port, broadcast, AgentNode.this::onDatagram);
+        }
+
+        @Override
+        public java.util.List<String> broadcastAddresses() {
+            return transport == Transport.UDP ? runtime.network().broadcastAddresses(endpoint.localAddress().host())
+                    : java.util.List.of();
+        }
+    };
+
+    @Override
+    public <T> T capability(Class<T> type) {
+        return type == io.concord.core.net.Neighbourhood.class ? type.cast(neighbourhood) : null;
     }
 
     @Override
     public void execute(Runnable task) {
         runtime.execute(task);
-    }
-
-    @Override
-    public java.util.List<String> broadcastAddresses() {
-        return transport == Transport.UDP ? runtime.network().broadcastAddresses(endpoint.localAddress().host())
-                : java.util.List.of();
     }
 
     @Override

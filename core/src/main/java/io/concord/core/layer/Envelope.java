@@ -15,7 +15,6 @@ import java.util.Arrays;
 public final class Envelope {
     private AclMessage message;
     private AID receiver;
-    private AID via;
     private byte[] data;
     private int offset;
     private int length;
@@ -56,24 +55,6 @@ public final class Envelope {
     /** The receiver this copy is for (going down). */
     public AID receiver() {
         return receiver;
-    }
-
-    /**
-     * The agent whose node carries this copy for {@link #receiver()} when that is a platform service
-     * ({@code df@platform}) served by another agent (the container); {@code null} when the receiver
-     * itself is the node.
-     */
-    public AID via() {
-        return via;
-    }
-
-    public void setVia(AID node) {
-        this.via = node;
-    }
-
-    /** The node this copy goes to: {@link #via()} if set, else the receiver. */
-    public AID hop() {
-        return via != null ? via : receiver;
     }
 
     public byte[] data() {

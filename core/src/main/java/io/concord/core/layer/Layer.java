@@ -16,6 +16,16 @@ public abstract class Layer {
         return getClass().getSimpleName();
     }
 
+    /**
+     * True if this layer finds where a receiver known only by its name is (the container layer,
+     * from the platform's agent lists): the node then passes it such receivers with no
+     * destination, and the layer sets one or drops the message. False by default: the node drops
+     * a message for a receiver it cannot place, and tells the sender.
+     */
+    public boolean resolvesNames() {
+        return false;
+    }
+
     /** Called once when the stack is built, bottom layer first. */
     public void init(LayerContext ctx) {
     }

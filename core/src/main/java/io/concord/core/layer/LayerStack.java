@@ -78,6 +78,16 @@ public final class LayerStack {
         }
     }
 
+    /** True if a layer of this stack resolves receivers by name ({@link Layer#resolvesNames()}). */
+    public boolean resolvesNames() {
+        for (Ctx c : contexts) {
+            if (c.layer.resolvesNames()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Sends an envelope down from the top. */
     public void sendDown(Envelope env) {
         down(0, env);

@@ -35,43 +35,12 @@ public interface StackHost {
     }
 
     /**
-     * The ports of this host that were held by others when this node bound its own in its port
-     * range, and those found held in the probe window past it: the potential agents of the
-     * port-binding discovery. Empty when the node was bound to a fixed port.
+     * Something more the node offers its layers, by type (for example the port neighbourhood of
+     * {@link io.concord.core.net.Neighbourhood}, which the container layer discovers with), or
+     * {@code null} if it offers none of that type.
      */
-    default java.util.List<io.concord.core.net.Address> neighbours() {
-        return java.util.List.of();
-    }
-
-    /** Installs the name-based addressing of the platform's agent lists; {@code null} removes it. */
-    default void setRouter(Router router) {
-    }
-
-    /**
-     * Hands an ACL message to the node's agent, as if it had come up the stack; for layers that
-     * answer for the platform (the AMS, a FAILURE).
-     */
-    default void deliverToAgent(io.concord.core.acl.AclMessage message) {
-    }
-
-    /** Sends an ACL message from this node, through the whole stack, as the agent would. */
-    default void send(io.concord.core.acl.AclMessage message) {
-    }
-
-    /**
-     * Opens the node's listener on a shared UDP port (the containers' network discovery port):
-     * what arrives there goes up this node's stack. Receives broadcasts unless the node is bound
-     * to loopback.
-     *
-     * @return the listener, to close when done; {@code null} if the port cannot be shared
-     */
-    default io.concord.core.net.Endpoint openListener(int port) {
+    default <T> T capability(Class<T> type) {
         return null;
-    }
-
-    /** The broadcast addresses this node reaches (none on loopback). */
-    default java.util.List<String> broadcastAddresses() {
-        return java.util.List.of();
     }
 
     /** Runs a task on the node's loop; callable from any thread. */
@@ -79,10 +48,8 @@ public interface StackHost {
         task.run();
     }
 
-    /** The seeded random source of the node's runtime. */
-    default java.util.random.RandomGenerator random() {
-        return new java.util.SplittableRandom();
-    }
+    /** The random source of the node's runtime: seeded, so that a simulation replays. */
+    java.util.random.RandomGenerator random();
 
     /** The platform name (the part after {@code @} in agent names). */
     default String platformName() {

@@ -21,4 +21,12 @@ public interface Tracer {
     default boolean enabled() {
         return this != NONE;
     }
+
+    /** A message as traces show it: act, sender, conversation, content length and hash. */
+    static String describe(io.concord.core.acl.AclMessage m) {
+        String c = m.getContent();
+        return m.getPerformative().wireName() + " from " + (m.getSender() == null ? "?" : m.getSender().name())
+                + " conv=" + m.getConversationId() + " content=" + (c == null ? 0 : c.length()) + "/"
+                + (c == null ? 0 : c.hashCode());
+    }
 }

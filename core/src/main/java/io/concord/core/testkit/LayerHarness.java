@@ -35,6 +35,9 @@ public final class LayerHarness implements StackHost {
     private final String name;
     private java.util.function.Predicate<io.concord.core.net.Address> inMemory = a -> false;
     private boolean tracing = true;
+    private final io.concord.core.net.Address localAddress;
+    private final Map<Class<?>, Object> capabilities;
+    private final java.util.SplittableRandom random;
 
     /** A started stack of the given layers, top first, named {@code "harness"}. */
     public LayerHarness(Layer... topFirst) {
@@ -42,11 +45,64 @@ public final class LayerHarness implements StackHost {
     }
 
     public LayerHarness(String name, ManualClock clock, Layer... topFirst) {
-        this.name = name;
-        this.clock = clock;
+        this(new Builder().name(name).clock(clock), topFirst);
+    }
+
+    private LayerHarness(Builder b, Layer... topFirst) {
+        this.name = b.name;
+        this.clock = b.clock;
+        this.localAddress = b.localAddress;
+        this.capabilities = Map.copyOf(b.capabilities);
+        this.random = new java.util.SplittableRandom(b.seed);
         this.wheel = DeadlineTimerWheel.forAgents(clock.nanoTime());
         this.stack = new LayerStack(List.of(topFirst), this, up::add, down::add, events::add);
         stack.start();
+    }
+
+    /** A harness with a name, an address, a seed and capabilities of its own (for layers that need them). */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    public static final class Builder {
+        private String name = "harness";
+        private ManualClock clock = new ManualClock();
+        private io.concord.core.net.Address localAddress;
+        private final Map<Class<?>, Object> capabilities = new HashMap<>();
+        private long seed = 1;
+
+        /** The node's name, {@code local@platform} for a platform's layers. */
+        public Builder name(String name) {
+            this.name = name;
+            return this;
+        }
+
+        public Builder clock(ManualClock clock) {
+            this.clock = clock;
+            return this;
+        }
+
+        public Builder localAddress(io.concord.core.net.Address a) {
+            this.localAddress = a;
+            return this;
+        }
+
+        /** Offers the layers a capability (see {@link StackHost#capability}). */
+        public <T> Builder offer(Class<T> type, T capability) {
+            capabilities.put(type, capability);
+            return this;
+        }
+
+        /** The seed of the harness's random source (1 by default). */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /** Builds and starts the stack, top first. */
+        public LayerHarness build(Layer... topFirst) {
+            return new LayerHarness(this, topFirst);
+        }
     }
 
     /** Says which destinations the stack is to take for agents of its own runtime (none by default). */
@@ -131,6 +187,21 @@ public final class LayerHarness implements StackHost {
     @Override
     public String nodeName() {
         return name;
+    }
+
+    @Override
+    public io.concord.core.net.Address localAddress() {
+        return localAddress;
+    }
+
+    @Override
+    public <T> T capability(Class<T> type) {
+        return type.cast(capabilities.get(type));
+    }
+
+    @Override
+    public java.util.random.RandomGenerator random() {
+        return random;
     }
 
     @Override

@@ -112,7 +112,8 @@ public final class ParserLayer extends Layer {
                     + maxFrameBytes + "; shorten its content, or raise maxFrameBytes (up to 65507 on UDP)");
         }
         env.setData(bytes, Frames.HEADROOM, aclBytes);
-        env.setPeerId(idOf(env.hop()));
+        AID via = env.header(Frames.ENVELOPE_VIA);
+        env.setPeerId(idOf(via != null ? via : env.receiver()));
         ctx.passDown(env);
     }
 

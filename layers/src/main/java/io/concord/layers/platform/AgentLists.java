@@ -1,6 +1,6 @@
 package io.concord.layers.platform;
 
-import io.concord.core.layer.Router;
+import io.concord.core.acl.AID;
 import io.concord.core.net.Address;
 
 import java.util.ArrayList;
@@ -19,6 +19,13 @@ import java.util.TreeMap;
  */
 final class AgentLists {
     /**
+     * Where to send for a receiver: the address, and the agent whose node is there (the receiver
+     * itself, or the agent that serves it: the container, for {@code df@platform}).
+     */
+    record Route(Address address, AID node) {
+    }
+
+    /**
      * Routes of agents that left the lists lately are kept this long: a list that flickers (an
      * agent taken for dead on a starved machine, a host's container changing) does not turn a
      * message to a known name into a FAILURE. After the grace the name is unknown.
@@ -31,13 +38,13 @@ final class AgentLists {
     /** The GAL's version, and the agent it came from (this agent's container, or itself). */
     long gseq;
     String galFrom;
-    private final Map<String, Router.Route> routes = new HashMap<>();
-    private final LinkedHashMap<String, Router.Route> recentRoutes = new LinkedHashMap<>(16, 0.75f, true);
+    private final Map<String, Route> routes = new HashMap<>();
+    private final LinkedHashMap<String, Route> recentRoutes = new LinkedHashMap<>(16, 0.75f, true);
     private final Map<String, Long> recentSince = new HashMap<>();
 
     /** The route to a listed agent, or to one that left less than the grace ago; else {@code null}. */
-    Router.Route route(String name, long nowNs) {
-        Router.Route r = routes.get(name);
+    Route route(String name, long nowNs) {
+        Route r = routes.get(name);
         if (r != null) {
             return r;
         }
@@ -55,7 +62,7 @@ final class AgentLists {
 
     /** The lists changed: the routes follow, and the old ones enter their grace. */
     void rebuildRoutes(long nowNs) {
-        for (Map.Entry<String, Router.Route> e : routes.entrySet()) {
+        for (Map.Entry<String, Route> e : routes.entrySet()) {
             recentRoutes.put(e.getKey(), e.getValue());
             recentSince.put(e.getKey(), nowNs);
         }
@@ -76,7 +83,7 @@ final class AgentLists {
     private void put(AgentEntry e) {
         Address a = e.transportAddress();
         if (a != null) {
-            routes.put(e.name(), new Router.Route(a, e.aid()));
+            routes.put(e.name(), new Route(a, e.aid()));
         }
     }
 

@@ -6,7 +6,6 @@ import io.concord.core.acl.Performative;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
-import io.concord.core.layer.Router;
 import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
 import io.concord.layers.frame.Frames;
@@ -68,6 +67,7 @@ public final class ContainerLayer extends Layer {
     private final List<Consumer<ContainerLayer>> listeners = new ArrayList<>();
     private HostContext context;
     private StackHost host;
+    private LayerContext layerContext;
     private String platform;
     private String self;
     private AID selfAid;
@@ -161,9 +161,16 @@ public final class ContainerLayer extends Layer {
 
     // ---- life cycle -------------------------------------------------------------------------------
 
+    /** This layer finds where receivers known only by name are: in the platform's lists. */
+    @Override
+    public boolean resolvesNames() {
+        return true;
+    }
+
     @Override
     public void init(LayerContext ctx) {
         this.host = ctx.host();
+        this.layerContext = ctx;
     }
 
     @Override
@@ -174,8 +181,11 @@ public final class ContainerLayer extends Layer {
         String uri = at == null ? "" : at.toUri(host.transport());
         st.selfEntry = new AgentEntry(self, uri, host.clock().epochMillis(), List.of());
         selfAid = st.selfEntry.aid();
-        context = new HostContext(host, config, st, platform, selfAid);
-        relay = new GatewayRelay(context, st, gateway, this::role, host::deliverToAgent, host::execute);
+        context = new HostContext(host, layerContext, config, st, platform, selfAid, this::place);
+        relay = new GatewayRelay(context, st, gateway, this::role, m -> layerContext.passUp(Envelope.outgoing(m, selfAid, null)),
+                host::execute);
+        io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
+        List<Address> neighbours = around == null ? List.of() : around.neighbours();
         federation = network == null ? null : new Federation(context, network, new Federation.Host() {
             @Override
             public List<String> lalPages() {
@@ -204,34 +214,37 @@ public final class ContainerLayer extends Layer {
 
             @Override
             public io.concord.core.net.Endpoint openListener(int port) {
-                return host.openListener(port);
+                return around == null ? null : around.openListener(port);
             }
 
             @Override
             public List<String> broadcastAddresses() {
-                return host.broadcastAddresses();
+                return around == null ? List.of() : around.broadcastAddresses();
             }
         });
         roles = new Roles(context, st, federation, relay, this::publish);
         directory = new Directory(context, roles);
         requests = new ServiceRequests(context, roles);
-        host.setRouter(this::route);
-        context.trace("start", "neighbours=" + host.neighbours().size());
-        roles.start(host.neighbours());
+        context.trace("start", "neighbours=" + neighbours.size());
+        roles.start(neighbours);
     }
 
     @Override
     public void stop(LayerContext ctx) {
         roles.stop();
-        host.setRouter(null);
         publish();
     }
 
-    // ---- routing ----------------------------------------------------------------------------------
+    // ---- routing and down -------------------------------------------------------------------------
 
-    private Router.Route route(AID receiver) {
+    /**
+     * Where a receiver known by name is: an agent of the lists (or one that left them less than the
+     * grace ago); a foreign agent the gateway reaches, or the platform's DF and AMS, through the
+     * container.
+     */
+    private AgentLists.Route route(AID receiver) {
         String name = receiver.name();
-        Router.Route r = st.lists.route(name, host.nowNs());
+        AgentLists.Route r = st.lists.route(name, host.nowNs());
         if (r != null) {
             return r;
         }
@@ -239,23 +252,59 @@ public final class ContainerLayer extends Layer {
         if (c != null && (!platform.equals(receiver.platform()) && relay.reaches(receiver)
                 || name.equals("ams@" + platform) || name.equals("df@" + platform))) {
             Address a = c.transportAddress();
-            return a == null ? null : new Router.Route(a, c.aid());
+            return a == null ? null : new AgentLists.Route(a, c.aid());
         }
         return null;
     }
 
-    // ---- down -------------------------------------------------------------------------------------
+    /**
+     * Gives a copy the node could not place (not an agent of its runtime) its destination: the
+     * route the lists give, else the first address of the receiver's AID. A receiver known by
+     * neither is dropped ({@code unknown-receiver}) and its sender told with the FAILURE JADE's AMS
+     * sends, so that its protocol ends instead of waiting.
+     *
+     * @return false if dropped
+     */
+    private boolean place(Envelope env) {
+        AID r = env.receiver();
+        AgentLists.Route route = route(r);
+        if (route != null) {
+            env.setDestination(route.address());
+            if (!route.node().equals(r)) {
+                env.putHeader(Frames.ENVELOPE_VIA, route.node());
+            }
+            return true;
+        }
+        String uri = r.firstAddress(host.transport().scheme());
+        Address a = uri == null ? null : Address.parse(uri);
+        if (a != null) {
+            env.setDestination(a);
+            return true;
+        }
+        layerContext.drop(env, "unknown-receiver", "no " + host.transport() + " address known for " + r.name());
+        AclMessage m = env.message();
+        if (m != null && !ONTOLOGY.equals(m.getOntology())) {
+            layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, r,
+                    "Agent not found: " + r.name()), selfAid, null));
+        }
+        return false;
+    }
 
     /**
-     * A message of this agent to a foreign receiver goes to the container, wrapped: the container's
-     * gateway carries it out. The frame stays the container's, so identification holds.
+     * A message of this agent: placed if the node could not, and one to a foreign receiver goes to
+     * the container wrapped, for the container's gateway to carry out. The frame stays the
+     * container's, so identification holds.
      */
     @Override
     public void onDown(LayerContext ctx, Envelope env) {
+        if (env.destination() == null && !place(env)) {
+            return;
+        }
         AID r = env.receiver();
-        if (relay != null && relay.present() && r != null && env.via() != null && env.message() != null
+        AID via = env.header(Frames.ENVELOPE_VIA);
+        if (relay != null && relay.present() && r != null && via != null && env.message() != null
                 && !ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
-            ctx.passDown(Envelope.outgoing(relay.wrap(env.message(), r, env.via()), env.via(), env.destination()));
+            ctx.passDown(Envelope.outgoing(relay.wrap(env.message(), r, via), via, env.destination()));
             return;
         }
         ctx.passDown(env);

@@ -3,6 +3,8 @@ package io.concord.layers.platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.SendRejectedException;
 import io.concord.core.layer.StackHost;
 import io.concord.core.layer.Tracer;
@@ -20,9 +22,18 @@ final class HostContext implements PlatformContext {
     private final String platform;
     private final String self;
     private final AID selfAid;
+    private final LayerContext layer;
+    private final java.util.function.Predicate<Envelope> place;
 
-    HostContext(StackHost host, PlatformConfig config, PlatformState st, String platform, AID selfAid) {
+    /**
+     * @param layer the container layer's place in the stack: its own messages go down from there
+     * @param place gives a copy its destination (false if it has none, and was dropped)
+     */
+    HostContext(StackHost host, LayerContext layer, PlatformConfig config, PlatformState st, String platform, AID selfAid,
+                java.util.function.Predicate<Envelope> place) {
         this.host = host;
+        this.layer = layer;
+        this.place = place;
         this.config = config;
         this.st = st;
         this.platform = platform;
@@ -109,7 +120,7 @@ final class HostContext implements PlatformContext {
     @Override
     public void sendQuietly(AclMessage m) {
         try {
-            host.send(m);
+            sendOrThrow(m);
         } catch (SendRejectedException e) {
             host.drops().record(self, e.reason(), e.getMessage());
         } catch (RuntimeException e) {
@@ -119,7 +130,16 @@ final class HostContext implements PlatformContext {
 
     @Override
     public void sendOrThrow(AclMessage m) {
-        host.send(m);
+        Tracer t = host.tracer();
+        for (AID r : m.getReceivers()) {
+            if (t.enabled()) {
+                t.trace(host.nowNs(), self, "send", Tracer.describe(m) + " to " + r.name());
+            }
+            Envelope env = Envelope.outgoing(m, r, null);
+            if (place.test(env)) {
+                layer.passDown(env);
+            }
+        }
     }
 
     @Override
