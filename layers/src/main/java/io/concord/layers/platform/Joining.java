@@ -14,6 +14,8 @@ final class Joining {
     private final PlatformState st;
     private final java.util.function.Consumer<AgentEntry> onFailed;
     private AgentEntry target;
+    /** The term the target claimed. */
+    private long targetTerm;
     /** The best container term heard of while seeking; a join asks for it. */
     long claimTerm = -1;
     private int failures;
@@ -30,12 +32,18 @@ final class Joining {
         return target;
     }
 
+    /** The term the container being joined claimed. */
+    long targetTerm() {
+        return targetTerm;
+    }
+
     boolean to(String name) {
         return target != null && target.name().equals(name);
     }
 
     void start(AgentEntry container, long term) {
         target = container;
+        targetTerm = term;
         claimTerm = Math.max(claimTerm, term);
         failures = 0;
         send();

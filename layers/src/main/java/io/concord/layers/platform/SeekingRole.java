@@ -104,7 +104,9 @@ final class SeekingRole extends Follower {
             claim = container;
             join.claimTerm = t;
         }
-        if (join.target() == null || beats(t, container, join.claimTerm, join.target())) {
+        // Against the claim being joined with its own term (comparing it with the term just heard
+        // kept an elder container of an older term ahead of a later one).
+        if (join.target() == null || beats(t, container, join.targetTerm(), join.target())) {
             discoveryTimer = cancel(discoveryTimer);
             join.start(container, t);
         }

@@ -1,0 +1,402 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.Performative;
+import io.concord.layers.platform.ContainerLayer.Role;
+import io.concord.layers.platform.PlatformMessage.AgentInfo;
+import io.concord.layers.platform.PlatformMessage.AgentInfoRequest;
+import io.concord.layers.platform.PlatformMessage.Alive;
+import io.concord.layers.platform.PlatformMessage.ContainerIs;
+import io.concord.layers.platform.PlatformMessage.Held;
+import io.concord.layers.platform.PlatformMessage.Join;
+import io.concord.layers.platform.PlatformMessage.Joined;
+import io.concord.layers.platform.PlatformMessage.LalPage;
+import io.concord.layers.platform.PlatformMessage.LalRequest;
+import io.concord.layers.platform.PlatformMessage.Leave;
+import io.concord.layers.platform.PlatformMessage.Page;
+import io.concord.layers.platform.PlatformMessage.Seeking;
+import io.concord.layers.platform.PlatformMessage.WhoIsContainer;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import static io.concord.layers.platform.ContainerLayer.P_DISCOVERY;
+import static io.concord.layers.platform.ContainerLayer.P_LAL;
+import static io.concord.layers.platform.ContainerLayer.P_MAINTENANCE;
+import static io.concord.layers.platform.OneAgent.other;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The container layer's rules, one test each, named after the rule (dissertation figs. 5.6 to
+ * 5.11): one agent's layer alone on the layer harness with a manual clock; the test plays the
+ * other agents. The whole platform in simulation is {@link PlatformSimulationTest}'s, the
+ * containers of several hosts (fig. 5.12) {@link NetworkSimulationTest}'s.
+ */
+class ContainerRulesTest {
+
+    private static List<String> names(List<AgentEntry> entries) {
+        List<String> out = new ArrayList<>();
+        for (AgentEntry e : entries) {
+            out.add(e.name());
+        }
+        return out;
+    }
+
+    /** An agent made member of {@code container} (term 1) with the list given, by a joined and a LAL. */
+    private static OneAgent memberOf(AgentEntry container, List<AgentEntry> others) {
+        OneAgent a = new OneAgent("me", 7001, container.port());
+        a.from(container, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, container, null));
+        a.from(container, Performative.CONFIRM, P_LAL, new Joined(1, 40, 250, container));
+        List<AgentEntry> all = new ArrayList<>(others);
+        all.add(container);
+        all.add(a.self);
+        a.from(container, Performative.INFORM_REF, P_LAL, new LalPage(1, 2, 40, 250, Page.of(0, 1, body(all))));
+        assertEquals(Role.MEMBER, a.role());
+        a.sent();
+        return a;
+    }
+
+    private static String body(List<AgentEntry> entries) {
+        return String.join("\n", AgentLists.pages(entries, 100_000));
+    }
+
+    /** An agent that is container (alone in its range), with these members joined. */
+    private static OneAgent containerWith(AgentEntry... members) {
+        OneAgent c = new OneAgent("me", 7001);
+        for (AgentEntry m : members) {
+            c.from(m, Performative.INFORM_REF, P_LAL, new Join(1, m));
+        }
+        c.advance(10); // the list goes out
+        c.sent();
+        return c;
+    }
+
+    @Nested
+    class Seeking_ {
+
+        @Test
+        void anAgentAloneInItsPortRangeIsContainerAtOnce() {
+            OneAgent a = new OneAgent("a", 7001);
+            assertEquals(Role.CONTAINER, a.role());
+            assertEquals(1, a.layer.term());
+            assertEquals(List.of("a@p"), names(List.copyOf(a.layer.agents())));
+        }
+
+        @Test
+        void aNewcomerAsksTheNearestHeldPortsFirstABatchAtATime() {
+            int[] ports = new int[40];
+            for (int i = 0; i < ports.length; i++) {
+                ports[i] = 7100 - i * 2; // 7100, 7098, ... 7022: the nearest to 7001 last
+            }
+            OneAgent a = new OneAgent("a", 7001, ports);
+            List<OneAgent.Out> asked = a.sent();
+            assertEquals(16, asked.size(), "the first batch");
+            for (OneAgent.Out o : asked) {
+                assertEquals(Performative.QUERY_REF, o.act());
+                assertTrue(o.what() instanceof WhoIsContainer, o.toString());
+                assertTrue(o.at().port() <= 7052, "nearest first: " + o.at());
+                assertTrue(o.to().startsWith("*@"), "to whoever holds the port: " + o.to());
+            }
+            assertEquals(Role.SEEKING, a.role());
+        }
+
+        @Test
+        void aNewcomerJoinsTheContainerItIsToldOfAndIsMemberWhenItConfirms() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = new OneAgent("a", 7001, 7002);
+            a.sent();
+            a.from(c, Performative.INFORM, P_DISCOVERY, new ContainerIs(3, c, null));
+            List<Join> joins = a.sent(Join.class);
+            assertEquals(1, joins.size());
+            assertEquals(3, joins.get(0).term());
+            assertEquals(Role.SEEKING, a.role(), "a member only once confirmed");
+            a.from(c, Performative.CONFIRM, P_LAL, new Joined(3, 40, 250, c));
+            assertEquals(Role.MEMBER, a.role());
+            assertEquals("c@p", a.layer.containerName());
+            assertEquals(3, a.layer.term());
+        }
+
+        @Test
+        void whenEveryoneAskedIsSeekingTheEldestBecomesContainer() {
+            OneAgent a = new OneAgent("a", 7001, 7002);
+            a.sent();
+            a.from(other("b", 7002, -500), Performative.INFORM, P_DISCOVERY, new Seeking(0, 0, other("b", 7002, -500)));
+            assertEquals(Role.CONTAINER, a.role(), "a is older than b");
+            assertEquals(1, a.layer.term());
+            // ... and tells the other seeker.
+            List<ContainerIs> told = a.sent(ContainerIs.class);
+            assertEquals(1, told.size());
+            assertEquals("a@p", told.get(0).container().name());
+        }
+
+        @Test
+        void aYoungerSeekerExcludesItselfAndAsksAgainAfterTheElectionTimeout() {
+            OneAgent a = new OneAgent("a", 7001, 7002);
+            a.sent();
+            a.from(other("b", 7002, 500), Performative.INFORM, P_DISCOVERY, new Seeking(0, 0, other("b", 7002, 500)));
+            assertEquals(Role.SEEKING, a.role(), "b is older: a waits for it");
+            a.advance(59);
+            assertTrue(a.sent(WhoIsContainer.class).isEmpty(), "nothing before the election timeout");
+            a.advance(1);
+            List<WhoIsContainer> again = a.sent(WhoIsContainer.class);
+            assertEquals(1, again.size(), "the next round asks again");
+            assertEquals(1, again.get(0).round());
+        }
+
+        @Test
+        void theBetterOfTwoClaimsIsJoined() {
+            OneAgent a = new OneAgent("a", 7001, 7002, 7003);
+            a.sent();
+            AgentEntry c1 = other("c1", 7002, 1_000);
+            AgentEntry c2 = other("c2", 7003, 100);
+            a.from(c1, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c1, null));
+            assertEquals(List.of("c1@p"), a.sent().stream().filter(o -> o.what() instanceof Join).map(OneAgent.Out::to).toList());
+            // c2 is younger, but of a later term: the later term wins.
+            a.from(c2, Performative.INFORM, P_DISCOVERY, new ContainerIs(2, c2, null));
+            assertEquals(List.of("c2@p"), a.sent().stream().filter(o -> o.what() instanceof Join).map(OneAgent.Out::to).toList());
+            a.from(c1, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c1, null));
+            assertTrue(a.sent(Join.class).isEmpty(), "the earlier term does not take it back");
+        }
+
+        @Test
+        void aNewcomerWhoseJoinsFailAsksAKnownAgentForTheLastList() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = new OneAgent("a", 7001, 7002, 7003);
+            a.sent();
+            AgentEntry b = other("b", 7003, 2_000);
+            a.from(b, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c, b));
+            assertEquals(1, a.sent(Join.class).size());
+            // Joins at 0, 60, 180, 420 ms; the fourth is given up at 900 ms.
+            a.advance(899);
+            assertEquals(3, a.sent(Join.class).size());
+            assertTrue(a.sent(LalRequest.class).isEmpty());
+            a.advance(1);
+            List<OneAgent.Out> out = a.sent();
+            assertEquals(1, out.size(), out.toString());
+            assertTrue(out.get(0).what() instanceof LalRequest, out.toString());
+            assertTrue(!out.get(0).to().equals("c@p"), "not the container that failed: " + out);
+            assertEquals(Role.MEMBER, a.role());
+            assertNull(a.layer.containerName(), "no container until the copy or an election");
+        }
+    }
+
+    @Nested
+    class Member {
+
+        @Test
+        void aMemberAppliesTheListOnlyOnceEveryPageIsInAndConfirmsIt() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = new OneAgent("me", 7001, 7002);
+            a.from(c, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c, null));
+            a.from(c, Performative.CONFIRM, P_LAL, new Joined(1, 40, 250, c));
+            a.sent();
+            List<AgentEntry> all = new ArrayList<>(List.of(c, a.self));
+            for (int i = 0; i < 30; i++) {
+                all.add(other("x" + i, 7100 + i, -i));
+            }
+            List<String> pages = AgentLists.pages(all, 512);
+            assertTrue(pages.size() > 2, "the list takes several pages");
+            for (int i = pages.size() - 1; i > 0; i--) {
+                a.from(c, Performative.INFORM_REF, P_LAL, new LalPage(1, 5, 40, 250, Page.of(i, pages.size(), pages.get(i))));
+            }
+            assertEquals(List.of("c@p"), names(List.copyOf(a.layer.agents())), "only the container it joined, before the last page");
+            assertTrue(a.sent(Held.class).isEmpty());
+            a.from(c, Performative.INFORM_REF, P_LAL, new LalPage(1, 5, 40, 250, Page.of(0, pages.size(), pages.get(0))));
+            assertEquals(32, a.layer.agents().size());
+            assertEquals(5, a.layer.lalSequence());
+            List<Held> held = a.sent(Held.class);
+            assertEquals(1, held.size());
+            assertEquals(5, held.get(0).seq());
+        }
+
+        @Test
+        void aMemberConfirmsEachAliveWithTheVersionsItHolds() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            a.from(c, Performative.INFORM, P_MAINTENANCE, new Alive(1, 2, 40, 250, c));
+            List<OneAgent.Out> out = a.sent();
+            assertEquals(1, out.size());
+            assertEquals(Performative.CONFIRM, out.get(0).act());
+            Held h = (Held) out.get(0).what();
+            assertTrue(h.alive());
+            assertEquals(2, h.seq());
+        }
+
+        @Test
+        void aMemberThatHearsNothingForTheTimeoutAndIsTheEldestLeftBecomesContainerOfTheNextTerm() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of(other("y", 7003, -1_000)));
+            a.advance(249);
+            assertEquals(Role.MEMBER, a.role());
+            a.advance(1);
+            assertEquals(Role.CONTAINER, a.role());
+            assertEquals(2, a.layer.term());
+            assertTrue(a.layer.agents().stream().noneMatch(e -> e.name().equals("c@p")), "the dead container is not listed");
+            // It asks every listed agent for its information (fig. 5.11).
+            List<OneAgent.Out> asks = a.sent();
+            assertEquals(List.of("y@p"), asks.stream().filter(o -> o.what() instanceof AgentInfoRequest).map(OneAgent.Out::to).toList());
+        }
+
+        @Test
+        void aMemberThatIsNotTheEldestWaitsForTheSuccessorAndSuspectsItInTurn() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, 500);
+            OneAgent a = memberOf(c, List.of(y));
+            a.advance(250);
+            assertEquals(Role.MEMBER, a.role(), "y is older: a waits for it");
+            assertNull(a.layer.containerName());
+            a.advance(249);
+            assertEquals(Role.MEMBER, a.role());
+            a.advance(1);
+            assertEquals(Role.CONTAINER, a.role(), "y stayed silent too");
+        }
+
+        @Test
+        void anAliveKeepsTheMemberFromFailover() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            for (int i = 0; i < 10; i++) {
+                a.advance(200);
+                a.from(c, Performative.INFORM, P_MAINTENANCE, new Alive(1, 2, 40, 250, c));
+            }
+            assertEquals(Role.MEMBER, a.role());
+            assertEquals("c@p", a.layer.containerName());
+        }
+
+        @Test
+        void aMemberJoinsABetterContainerAndTellsAWorseOneOfItsOwn() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            AgentEntry worse = other("w", 7004, 10);
+            a.from(worse, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, worse, null));
+            List<OneAgent.Out> out = a.sent();
+            assertEquals(1, out.size());
+            assertEquals("w@p", out.get(0).to());
+            assertEquals("c@p", ((ContainerIs) out.get(0).what()).container().name());
+            AgentEntry better = other("b", 7005, 10);
+            a.from(better, Performative.INFORM, P_DISCOVERY, new ContainerIs(2, better, null));
+            List<Join> joins = a.sent(Join.class);
+            assertEquals(1, joins.size());
+            assertEquals(2, joins.get(0).term());
+        }
+
+        @Test
+        void whenTheContainerLeavesTheMembersFailOverAtOnce() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            a.from(c, Performative.INFORM, P_MAINTENANCE, new Leave(1));
+            assertEquals(Role.CONTAINER, a.role());
+            assertEquals(2, a.layer.term());
+        }
+
+        @Test
+        void onlyTheAgentItselfSaysItLeaves() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, -1_000);
+            OneAgent a = memberOf(c, List.of(y));
+            a.from(y, Performative.INFORM, P_MAINTENANCE, new Leave(1));
+            assertEquals(Role.MEMBER, a.role(), "a member's leave is its container's business");
+            assertEquals("c@p", a.layer.containerName());
+        }
+    }
+
+    @Nested
+    class Container {
+
+        @Test
+        void theContainerRegistersAJoinConfirmsItAndDistributesTheList() {
+            OneAgent c = new OneAgent("me", 7001);
+            AgentEntry m = other("m", 7002, -10);
+            c.from(m, Performative.INFORM_REF, P_LAL, new Join(1, m));
+            List<OneAgent.Out> out = c.sent();
+            assertEquals(1, out.size());
+            Joined j = (Joined) out.get(0).what();
+            assertEquals(Performative.CONFIRM, out.get(0).act());
+            assertEquals(1, j.term());
+            assertTrue(j.timeout() >= PlatformConfig.MIN_TIMEOUT_MS);
+            c.advance(5); // the push delay gathers changes
+            List<LalPage> lists = c.sent(LalPage.class);
+            assertEquals(1, lists.size());
+            assertEquals(List.of("m@p", "me@p"), names(lists.get(0).page().entries()));
+        }
+
+        @Test
+        void theContainerTellsEveryMemberEachPeriodThatItIsAlive() {
+            AgentEntry m1 = other("m1", 7002, -10);
+            AgentEntry m2 = other("m2", 7003, -10);
+            OneAgent c = containerWith(m1, m2);
+            c.advance(41);
+            List<OneAgent.Out> alive = c.sent().stream().filter(o -> o.what() instanceof Alive).toList();
+            assertEquals(List.of("m1@p", "m2@p"), alive.stream().map(OneAgent.Out::to).toList());
+        }
+
+        @Test
+        void aMemberSilentForTheTimeoutIsRemovedAndTheListDistributed() {
+            AgentEntry m1 = other("m1", 7002, -10);
+            AgentEntry m2 = other("m2", 7003, -10);
+            OneAgent c = containerWith(m1, m2);
+            long seq = c.layer.lalSequence();
+            // m1 confirms every alive, m2 never does.
+            for (int t = 0; t < 400; t += 20) {
+                c.advance(20);
+                c.from(m1, Performative.CONFIRM, P_MAINTENANCE, new Held(true, 1, c.layer.lalSequence(), 0L, "-"));
+            }
+            assertEquals(List.of("m1@p", "me@p"), names(List.copyOf(c.layer.agents())));
+            assertTrue(c.layer.lalSequence() > seq);
+            assertTrue(c.sent().stream().anyMatch(o -> o.what() instanceof LalPage && o.to().equals("m1@p")),
+                    "the removal is distributed");
+        }
+
+        @Test
+        void aContainerThatHearsAnOlderContainerOfTheSameTermYieldsAndJoinsIt() {
+            AgentEntry m = other("m", 7002, -10);
+            OneAgent c = containerWith(m);
+            AgentEntry older = other("o", 7009, 60_000);
+            c.from(older, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, older, null));
+            assertEquals(Role.MEMBER, c.role());
+            List<OneAgent.Out> out = c.sent();
+            assertTrue(out.stream().anyMatch(o -> o.to().equals("m@p") && o.what() instanceof ContainerIs ci
+                    && ci.container().name().equals("o@p")), "its member is told of the winner: " + out);
+            assertTrue(out.stream().anyMatch(o -> o.to().equals("o@p") && o.what() instanceof Join), "it joins the winner: " + out);
+            // Its own timers ended with the role: no alive any more.
+            c.advance(500);
+            assertTrue(c.sent(Alive.class).isEmpty());
+        }
+
+        @Test
+        void aContainerThatHearsAWorseClaimTellsItOfItself() {
+            OneAgent c = containerWith(other("m", 7002, -10));
+            AgentEntry younger = other("y", 7009, -60_000);
+            c.from(younger, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, younger, null));
+            assertEquals(Role.CONTAINER, c.role());
+            List<OneAgent.Out> out = c.sent();
+            assertEquals(1, out.size());
+            assertEquals("y@p", out.get(0).to());
+            assertEquals("me@p", ((ContainerIs) out.get(0).what()).container().name());
+        }
+
+        @Test
+        void aMemberThatLeavesIsRemovedAtOnce() {
+            AgentEntry m = other("m", 7002, -10);
+            OneAgent c = containerWith(m, other("n", 7003, -10));
+            c.from(m, Performative.INFORM, P_MAINTENANCE, new Leave(1));
+            assertEquals(List.of("me@p", "n@p"), names(List.copyOf(c.layer.agents())));
+        }
+
+        @Test
+        void aNewContainerTakesTheAnswersToItsRequestForInformation() {
+            AgentEntry c0 = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, -1_000);
+            OneAgent a = memberOf(c0, List.of(y));
+            a.advance(250);
+            assertEquals(Role.CONTAINER, a.role());
+            a.sent();
+            AgentEntry yWithService = y.withServices(List.of(ServiceDescription.ofType("book-selling")));
+            a.from(y, Performative.INFORM, P_LAL, new AgentInfo(2, List.of(yWithService)));
+            assertEquals(List.of("y@p"), names(a.layer.search(ServiceDescription.ofType("book-selling"))));
+        }
+    }
+}
