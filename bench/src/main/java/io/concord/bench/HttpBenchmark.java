@@ -2,10 +2,6 @@ package io.concord.bench;
 
 import io.concord.bench.jade.JadeHttpRequester;
 import io.concord.bench.jade.JadePlatform;
-import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;
@@ -30,24 +26,10 @@ public class HttpBenchmark {
 
     private final RoundDriver driver = new RoundDriver();
 
-    /** A Concord echo. */
-    public static final class Echo extends Agent {
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    AclMessage r = m.createReply();
-                    r.setPerformative(Performative.INFORM);
-                    r.setContent(m.getContent());
-                    myAgent.send(r);
-                }
-            });
+    /** A Concord echo: the request's content back, unchanged. */
+    public static final class Echo extends io.concord.core.testkit.EchoAgent {
+        public Echo() {
+            super("", m -> { });
         }
     }
 

@@ -71,28 +71,15 @@ class JadeBridgeTest {
         }
     }
 
-    /** A Concord echo: REQUEST in, INFORM back; registered in the DF as echo-service. */
-    static final class ConcordEcho extends Agent {
+    /** A Concord echo: REQUEST in, INFORM "echo:..." back; registered in the DF as echo-service. */
+    static final class ConcordEcho extends io.concord.core.testkit.EchoAgent {
         @Override
         protected void setup() {
+            super.setup();
             addBehaviour(new io.concord.core.agent.OneShotBehaviour(this) {
                 @Override
                 public void action() {
                     Platform.of(myAgent).register(ServiceDescription.of("echo-service", "concord-echo"));
-                }
-            });
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                    } else if (m.getPerformative() == Performative.REQUEST) {
-                        AclMessage r = m.createReply();
-                        r.setPerformative(Performative.INFORM);
-                        r.setContent("echo:" + m.getContent());
-                        myAgent.send(r);
-                    }
                 }
             });
         }

@@ -1,10 +1,10 @@
 package io.concord.layers.platform;
 
+import io.concord.core.testkit.EchoAgent;
+
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Profile;
 
@@ -22,29 +22,7 @@ import java.nio.charset.StandardCharsets;
  * {@code -Dconcord.home}.
  */
 public final class PlatformChild {
-    static final class Echo extends Agent {
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    System.out.println("GOT " + m.getPerformative().wireName() + " from " + m.getSender().localName()
-                            + " " + m.getContent());
-                    if (m.getPerformative() == Performative.REQUEST) {
-                        AclMessage r = m.createReply();
-                        r.setPerformative(Performative.INFORM);
-                        r.setContent("echo:" + m.getContent());
-                        myAgent.send(r);
-                    }
-                }
-            });
-        }
-    }
+
 
     public static void main(String[] args) throws Exception {
         Platform.Builder b = Platform.builder().name(args[0]).ports(PortRange.parse(args[1])).profile(Profile.CLASS_7);
@@ -52,7 +30,8 @@ public final class PlatformChild {
             b.host(args[3]);
         }
         Platform p = b.build();
-        Echo echo = new Echo();
+        EchoAgent echo = new EchoAgent("echo:", m -> System.out.println("GOT " + m.getPerformative().wireName() + " from "
+                + m.getSender().localName() + " " + m.getContent()));
         AID aid = p.startAgent(args[2], echo);
         p.runtime().execute(() -> {
             ContainerLayer c = Platform.containerLayer(p.runtime(), aid);

@@ -1,10 +1,10 @@
 package io.concord.layers.platform;
 
+import io.concord.core.testkit.EchoAgent;
+
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
@@ -25,27 +25,20 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class PlatformSocketsTest {
 
     /** Answers every REQUEST; completes a future on the first INFORM it gets. */
-    static final class Echo extends Agent {
-        final CompletableFuture<AclMessage> informed = new CompletableFuture<>();
+    static final class Echo extends EchoAgent {
+        final CompletableFuture<AclMessage> informed;
 
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                    } else if (m.getPerformative() == Performative.REQUEST) {
-                        AclMessage r = m.createReply();
-                        r.setPerformative(Performative.INFORM);
-                        r.setContent("echo:" + m.getContent());
-                        myAgent.send(r);
-                    } else if (m.getPerformative() == Performative.INFORM) {
-                        informed.complete(m);
-                    }
+        Echo() {
+            this(new CompletableFuture<>());
+        }
+
+        private Echo(CompletableFuture<AclMessage> informed) {
+            super("echo:", m -> {
+                if (m.getPerformative() == Performative.INFORM) {
+                    informed.complete(m);
                 }
             });
+            this.informed = informed;
         }
     }
 
