@@ -290,21 +290,19 @@ public final class Boot {
         } catch (NumberFormatException e) {
             throw new BootException("-http is written port or host:port, got '" + spec + "'");
         }
-        java.lang.reflect.Constructor<?> ctor;
-        try {
-            ctor = Class.forName("io.concord.jade.HttpMtp").getConstructor(String.class, int.class);
-        } catch (ReflectiveOperationException e) {
+        io.concord.layers.platform.GatewayProvider http = null;
+        for (io.concord.layers.platform.GatewayProvider g : java.util.ServiceLoader.load(io.concord.layers.platform.GatewayProvider.class)) {
+            if (g.kind().equals("http")) {
+                http = g;
+            }
+        }
+        if (http == null) {
             throw new BootException("-http needs the JADE bridge: add concord-jade-bridge to the class path");
         }
+        io.concord.layers.platform.GatewayProvider provider = http;
         String fh = h;
         int fp = port;
-        return () -> {
-            try {
-                return (io.concord.layers.platform.Gateway) ctor.newInstance(fh, fp);
-            } catch (ReflectiveOperationException e) {
-                throw new IllegalStateException("cannot create the HTTP MTP: " + e, e);
-            }
-        };
+        return () -> provider.create(fh, fp);
     }
 
     private static PortRange range(String s) {

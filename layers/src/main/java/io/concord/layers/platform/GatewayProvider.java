@@ -1,0 +1,15 @@
+package io.concord.layers.platform;
+
+/**
+ * Makes gateways of one kind, found with {@link java.util.ServiceLoader} (as core finds the default
+ * stack): {@code concord-jade-bridge} provides {@code "http"}, the JADE HTTP MTP, so that
+ * {@code Boot -http 7779} needs nothing but that jar on the class path.
+ */
+public interface GatewayProvider {
+
+    /** The kind, as Boot's option names it: {@code "http"}. */
+    String kind();
+
+    /** A gateway listening on the host and port (each container that serves it makes its own). */
+    Gateway create(String host, int port);
+}
