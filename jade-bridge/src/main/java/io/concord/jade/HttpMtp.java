@@ -8,28 +8,20 @@ import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
 import io.concord.core.proto.MtsFailure;
-import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.GatewayContext;
-import io.concord.layers.platform.ServiceDescription;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.net.InetSocketAddress;
-import java.net.Socket;
-import java.net.URI;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
-import java.util.HexFormat;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicLong;
@@ -46,7 +38,6 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class HttpMtp implements Gateway {
     private static final Logger LOG = LoggerFactory.getLogger(HttpMtp.class);
     static final int MAX_BODY = 1 << 20;
-    static final String ONTOLOGY = "FIPA-Agent-Management";
 
     private final String host;
     private final int port;
@@ -54,13 +45,10 @@ public final class HttpMtp implements Gateway {
     private HttpServer server;
     private ExecutorService out;
     private volatile GatewayContext context;
-    private final Map<String, ForeignEntry> foreignRegistrations = new LinkedHashMap<>();
+    private final AgentManagement management = new AgentManagement(this::addresses);
+    private final MtpClient client = new MtpClient();
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong rejected = new AtomicLong();
-
-    /** An agent of another platform registered in this platform's DF. */
-    record ForeignEntry(AID aid, List<ServiceDescription> services) {
-    }
 
     /**
      * @param host the address to bind (and to advertise, unless it is 0.0.0.0)
@@ -129,16 +117,7 @@ public final class HttpMtp implements Gateway {
         }
         if (out != null) {
             ExecutorService o = out;
-            o.execute(() -> {
-                for (Connection c : connections.values()) {
-                    try {
-                        c.socket().close();
-                    } catch (IOException ignored) {
-                        // closing anyway
-                    }
-                }
-                connections.clear();
-            });
+            o.execute(client::close);
             o.shutdown();
             out = null;
         }
@@ -345,7 +324,7 @@ public final class HttpMtp implements Gateway {
             String local = r.localName();
             boolean ours = ctx.platformName().equalsIgnoreCase(r.platform());
             if (ours && (local.equalsIgnoreCase("df") || local.equalsIgnoreCase("ams"))) {
-                answerManagement(ctx, m, local.equalsIgnoreCase("df"));
+                sendOut(management.answer(ctx, m, local.equalsIgnoreCase("df")), m.getSender());
                 continue;
             }
             if (!ours || !ctx.deliver(m, r)) {
@@ -357,224 +336,6 @@ public final class HttpMtp implements Gateway {
     /** JADE's AMS FAILURE for an unknown receiver. */
     private static AclMessage notFound(GatewayContext ctx, AclMessage original, AID receiver) {
         return MtsFailure.of(ctx.platformName(), original, receiver, "Agent not found: " + receiver.name());
-    }
-
-    // ---- FIPA-Agent-Management (fipa-sl0) ---------------------------------------------------------
-
-    private void answerManagement(GatewayContext ctx, AclMessage m, boolean df) {
-        AclMessage r = m.createReply();
-        r.setSender(AID.local(df ? "df" : "ams", ctx.platformName()));
-        r.setLanguage(m.getLanguage() == null ? "fipa-sl0" : m.getLanguage());
-        r.setOntology(ONTOLOGY);
-        Sl0.Expr action;
-        try {
-            if (m.getPerformative() != Performative.REQUEST) {
-                throw new IllegalArgumentException("the " + (df ? "DF" : "AMS") + " takes REQUESTs, not "
-                        + m.getPerformative().wireName());
-            }
-            Sl0.Expr outer = Sl0.parse(m.getContent() == null ? "" : m.getContent());
-            if (outer.items().size() != 1 || !(outer.items().get(0) instanceof Sl0.Expr a) || !a.head().equals("action")
-                    || a.items().size() != 3 || !(a.items().get(2) instanceof Sl0.Expr)) {
-                throw new IllegalArgumentException("expected ((action <agent-identifier> (<function> ...)))");
-            }
-            action = a;
-        } catch (IllegalArgumentException e) {
-            r.setPerformative(Performative.NOT_UNDERSTOOD);
-            r.setContent("(" + Sl0.word(m.getContent() == null ? "" : m.getContent()) + " (error " + Sl0.word(e.getMessage()) + "))");
-            sendOut(r, m.getSender());
-            return;
-        }
-        Sl0.Expr fn = (Sl0.Expr) action.items().get(2);
-        try {
-            String content = switch (fn.head().toLowerCase(Locale.ROOT)) {
-                case "search" -> "((result " + action + " (sequence " + (df ? searchDf(ctx, fn) : searchAms(ctx)) + ")))";
-                case "register" -> {
-                    if (!df) {
-                        throw new UnsupportedOperationException("register with the AMS");
-                    }
-                    register(fn);
-                    yield "((done " + action + "))";
-                }
-                case "deregister" -> {
-                    if (!df) {
-                        throw new UnsupportedOperationException("deregister with the AMS");
-                    }
-                    deregister(fn);
-                    yield "((done " + action + "))";
-                }
-                default -> throw new UnsupportedOperationException(fn.head());
-            };
-            r.setPerformative(Performative.INFORM);
-            r.setContent(content);
-        } catch (UnsupportedOperationException e) {
-            r.setPerformative(Performative.FAILURE);
-            r.setContent("(" + action + " (unsupported-function " + Sl0.word(e.getMessage()) + "))");
-        } catch (IllegalArgumentException e) {
-            r.setPerformative(Performative.FAILURE);
-            r.setContent("(" + action + " (internal-error " + Sl0.word(e.getMessage()) + "))");
-        }
-        sendOut(r, m.getSender());
-    }
-
-    private String searchDf(GatewayContext ctx, Sl0.Expr fn) {
-        Sl0.Expr dfd = argument(fn);
-        if (dfd == null || !dfd.head().equals("df-agent-description")) {
-            throw new IllegalArgumentException("search needs a df-agent-description template");
-        }
-        List<ServiceDescription> templates = services(dfd.slot("services"));
-        long max = maxResults(fn);
-        StringBuilder b = new StringBuilder();
-        int n = 0;
-        for (AgentEntry e : ctx.agents()) {
-            if (matches(e.services(), templates) && !e.services().isEmpty() && (max < 0 || n < max)) {
-                b.append(n++ == 0 ? "" : " ").append(describe(new AID(e.name(), addresses().toArray(new String[0])), e.services()));
-            }
-        }
-        for (ForeignEntry f : foreignRegistrations.values()) {
-            if (matches(f.services(), templates) && (max < 0 || n < max)) {
-                b.append(n++ == 0 ? "" : " ").append(describe(f.aid(), f.services()));
-            }
-        }
-        return b.toString();
-    }
-
-    private String searchAms(GatewayContext ctx) {
-        StringBuilder b = new StringBuilder();
-        for (AgentEntry e : ctx.agents()) {
-            b.append(b.length() == 0 ? "" : " ").append("(ams-agent-description :name ")
-                    .append(aid(new AID(e.name(), addresses().toArray(new String[0])))).append(" :state active)");
-        }
-        return b.toString();
-    }
-
-    /** The function's first argument, if it is an expression (the df-agent-description). */
-    private static Sl0.Expr argument(Sl0.Expr fn) {
-        return fn.items().size() > 1 && fn.items().get(1) instanceof Sl0.Expr e ? e : null;
-    }
-
-    private static long maxResults(Sl0.Expr fn) {
-        for (Object o : fn.items()) {
-            if (o instanceof Sl0.Expr e && e.head().equals("search-constraints")) {
-                String v = e.text("max-results");
-                if (v != null) {
-                    try {
-                        return Long.parseLong(v);
-                    } catch (NumberFormatException x) {
-                        throw new IllegalArgumentException("a bad :max-results " + v);
-                    }
-                }
-            }
-        }
-        return -1;
-    }
-
-    private static boolean matches(List<ServiceDescription> have, List<ServiceDescription> templates) {
-        for (ServiceDescription t : templates) {
-            boolean any = false;
-            for (ServiceDescription s : have) {
-                any |= s.matches(t);
-            }
-            if (!any) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private void register(Sl0.Expr fn) {
-        Sl0.Expr dfd = argument(fn);
-        if (dfd == null || !(dfd.slot("name") instanceof Sl0.Expr name)) {
-            throw new IllegalArgumentException("register needs a df-agent-description with a :name");
-        }
-        AID who = aidOf(name);
-        foreignRegistrations.put(who.name().toLowerCase(Locale.ROOT), new ForeignEntry(who, services(dfd.slot("services"))));
-    }
-
-    private void deregister(Sl0.Expr fn) {
-        Sl0.Expr dfd = argument(fn);
-        if (dfd == null || !(dfd.slot("name") instanceof Sl0.Expr name)) {
-            throw new IllegalArgumentException("deregister needs a df-agent-description with a :name");
-        }
-        if (foreignRegistrations.remove(aidOf(name).name().toLowerCase(Locale.ROOT)) == null) {
-            throw new IllegalArgumentException("not-registered");
-        }
-    }
-
-    private static AID aidOf(Sl0.Expr e) {
-        if (!e.head().equals("agent-identifier") || e.text("name") == null) {
-            throw new IllegalArgumentException("expected (agent-identifier :name ...)");
-        }
-        List<String> urls = new ArrayList<>();
-        if (e.slot("addresses") instanceof Sl0.Expr seq) {
-            for (Object o : seq.items().subList(1, seq.items().size())) {
-                if (o instanceof Sl0.Atom a) {
-                    urls.add(a.text());
-                }
-            }
-        }
-        return new AID(e.text("name"), urls.toArray(new String[0]));
-    }
-
-    private static List<ServiceDescription> services(Object set) {
-        List<ServiceDescription> out = new ArrayList<>();
-        if (set == null) {
-            return out;
-        }
-        if (!(set instanceof Sl0.Expr s) || !s.head().equals("set")) {
-            throw new IllegalArgumentException(":services must be a (set ...)");
-        }
-        for (Object o : s.items().subList(1, s.items().size())) {
-            if (!(o instanceof Sl0.Expr sd) || !sd.head().equals("service-description")) {
-                throw new IllegalArgumentException("a :services set holds service-descriptions");
-            }
-            Map<String, String> props = new LinkedHashMap<>();
-            if (sd.slot("properties") instanceof Sl0.Expr ps) {
-                for (Object p : ps.items().subList(1, ps.items().size())) {
-                    if (p instanceof Sl0.Expr prop && prop.text("name") != null && prop.text("value") != null) {
-                        props.put(prop.text("name"), prop.text("value"));
-                    }
-                }
-            }
-            out.add(new ServiceDescription(sd.text("type"), sd.text("name"), props, List.of(), List.of(), List.of()));
-        }
-        return out;
-    }
-
-    private static String describe(AID who, List<ServiceDescription> services) {
-        StringBuilder b = new StringBuilder("(df-agent-description :name ").append(aid(who));
-        if (!services.isEmpty()) {
-            b.append(" :services (set");
-            for (ServiceDescription s : services) {
-                b.append(" (service-description");
-                if (s.name() != null) {
-                    b.append(" :name ").append(Sl0.word(s.name()));
-                }
-                if (s.type() != null) {
-                    b.append(" :type ").append(Sl0.word(s.type()));
-                }
-                if (!s.properties().isEmpty()) {
-                    b.append(" :properties (set");
-                    s.properties().forEach((k, v) -> b.append(" (property :name ").append(Sl0.word(k))
-                            .append(" :value ").append(Sl0.word(v)).append(')'));
-                    b.append(')');
-                }
-                b.append(')');
-            }
-            b.append(')');
-        }
-        return b.append(')').toString();
-    }
-
-    private static String aid(AID a) {
-        StringBuilder b = new StringBuilder("(agent-identifier :name ").append(Sl0.word(a.name()));
-        if (!a.addresses().isEmpty()) {
-            b.append(" :addresses (sequence");
-            for (String u : a.addresses()) {
-                b.append(' ').append(u);
-            }
-            b.append(')');
-        }
-        return b.append(')').toString();
     }
 
     // ---- outbound ---------------------------------------------------------------------------------
@@ -599,7 +360,7 @@ public final class HttpMtp implements Gateway {
                     continue;
                 }
                 try {
-                    int status = post(url, receiver, m.getSender(), payload);
+                    int status = client.post(url, receiver, m.getSender(), payload);
                     if (status == 200) {
                         return;
                     }
@@ -618,143 +379,5 @@ public final class HttpMtp implements Gateway {
                 });
             }
         });
-    }
-
-    // Kept-alive connections to other platforms' ACCs, by host:port; used by the out thread only.
-    private final Map<String, Connection> connections = new java.util.HashMap<>();
-
-    /** A socket and its buffered input: a response is read a buffer at a time, not a byte a system call. */
-    private record Connection(Socket socket, InputStream in) {
-        static Connection open(String host, int port) throws IOException {
-            Socket s = new Socket();
-            try {
-                s.setTcpNoDelay(true); // one write, sent at once: no Nagle wait for a delayed ACK
-                s.connect(new InetSocketAddress(host, port), 5_000);
-                s.setSoTimeout(10_000);
-                return new Connection(s, new java.io.BufferedInputStream(s.getInputStream(), 4096));
-            } catch (IOException e) {
-                s.close();
-                throw e;
-            }
-        }
-    }
-
-    /** One POST, as JADE reads it, on a kept-alive connection when the peer allows; returns the status. */
-    int post(String url, AID receiver, AID sender, String payload) throws IOException {
-        URI u = URI.create(url);
-        int p = u.getPort() < 0 ? 80 : u.getPort();
-        byte[] request = request(url, u.getHost(), p, receiver, sender, payload);
-        String key = u.getHost() + ":" + p;
-        for (int attempt = 0; ; attempt++) {
-            Connection c = connections.remove(key);
-            boolean reused = c != null;
-            if (c == null) {
-                c = Connection.open(u.getHost(), p);
-            }
-            try {
-                OutputStream o = c.socket().getOutputStream();
-                o.write(request);
-                o.flush();
-                Response r = readResponse(c.in(), url);
-                if (r.keepAlive()) {
-                    connections.put(key, c);
-                } else {
-                    c.socket().close();
-                }
-                return r.status();
-            } catch (IOException e) {
-                c.socket().close();
-                if (!reused || attempt > 0) {
-                    throw e;
-                }
-                // the peer closed a kept-alive connection meanwhile: once more on a new one
-            }
-        }
-    }
-
-    private record Response(int status, boolean keepAlive) {
-    }
-
-    private static byte[] request(String url, String host, int port, AID receiver, AID sender, String payload) {
-        byte[] acl = payload.getBytes(StandardCharsets.UTF_8);
-        FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length);
-        byte[] rnd = new byte[16];
-        java.util.concurrent.ThreadLocalRandom.current().nextBytes(rnd);
-        String boundary = HexFormat.of().formatHex(rnd).substring(1);
-        ByteArrayOutputStream body = new ByteArrayOutputStream(acl.length + 1024);
-        body.writeBytes(("This is not part of the MIME multipart encoded message.\r\n--" + boundary
-                + "\r\nContent-Type: application/xml\r\n\r\n" + env.toXml() + "\r\n--" + boundary
-                + "\r\nContent-Type: application/text; charset=UTF-8\r\n\r\n").getBytes(StandardCharsets.UTF_8));
-        body.writeBytes(acl);
-        body.writeBytes(("\r\n--" + boundary + "--\r\n").getBytes(StandardCharsets.UTF_8));
-        String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + host
-                + ":" + port + "\r\nContent-Type: multipart/mixed ; boundary=\"" + boundary + "\"\r\nContent-Length: "
-                + body.size() + "\r\nConnection: Keep-Alive\r\n\r\n";
-        ByteArrayOutputStream all = new ByteArrayOutputStream(head.length() + body.size());
-        all.writeBytes(head.getBytes(StandardCharsets.US_ASCII));
-        all.writeBytes(body.toByteArray());
-        return all.toByteArray();
-    }
-
-    /**
-     * Reads a response: the status line (after any blank lines), the headers, and the body when the
-     * connection stays open: by Content-Length, or JADE's fixed HTML page, which has none.
-     */
-    private static Response readResponse(InputStream in, String url) throws IOException {
-        String line;
-        do {
-            line = readLine(in);
-            if (line == null) {
-                throw new IOException("no HTTP status from " + url);
-            }
-        } while (line.isEmpty());
-        if (!line.startsWith("HTTP/1.")) {
-            throw new IOException("not an HTTP response from " + url + ": " + line);
-        }
-        String[] w = line.split(" ");
-        int status = w.length > 1 ? Integer.parseInt(w[1]) : 500;
-        boolean keepAlive = line.startsWith("HTTP/1.1");
-        int length = -1;
-        while ((line = readLine(in)) != null && !line.isEmpty()) {
-            String l = line.toLowerCase(Locale.ROOT);
-            if (l.startsWith("connection:")) {
-                keepAlive = l.substring(11).trim().equals("keep-alive");
-            } else if (l.startsWith("content-length:")) {
-                length = Integer.parseInt(l.substring(15).trim());
-            }
-        }
-        if (!keepAlive) {
-            return new Response(status, false);
-        }
-        if (length >= 0) {
-            in.readNBytes(length);
-            return new Response(status, true);
-        }
-        // JADE's page: <html><body><h1>200 OK</h1></body></html>, without a length.
-        StringBuilder b = new StringBuilder();
-        int c;
-        while (b.length() < 4096 && (c = in.read()) >= 0) {
-            b.append((char) c);
-            if (b.length() >= 7 && b.substring(b.length() - 7).equalsIgnoreCase("</html>")) {
-                return new Response(status, true);
-            }
-        }
-        return new Response(status, false);
-    }
-
-    private static String readLine(InputStream in) throws IOException {
-        StringBuilder b = new StringBuilder();
-        int c;
-        while ((c = in.read()) >= 0) {
-            if (c == '\n') {
-                int n = b.length();
-                return n > 0 && b.charAt(n - 1) == '\r' ? b.substring(0, n - 1) : b.toString();
-            }
-            b.append((char) c);
-            if (b.length() > 8192) {
-                throw new IOException("an HTTP header line longer than 8 KiB");
-            }
-        }
-        return b.length() == 0 ? null : b.toString();
     }
 }

@@ -116,15 +116,12 @@ final class AgentLists {
         return found;
     }
 
-    /** The yellow pages in these lists: agents with a service matching the template. */
-    List<AgentEntry> search(ServiceDescription template) {
+    /** The yellow pages in these lists: agents with a service matching each template (the DF's search, the one). */
+    List<AgentEntry> search(List<ServiceDescription> templates) {
         List<AgentEntry> out = new ArrayList<>();
         for (AgentEntry e : all()) {
-            for (ServiceDescription s : e.services()) {
-                if (s.matches(template)) {
-                    out.add(e);
-                    break;
-                }
+            if (ServiceDescription.offersAll(e.services(), templates)) {
+                out.add(e);
             }
         }
         return out;

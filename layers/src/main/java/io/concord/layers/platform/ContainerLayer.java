@@ -156,7 +156,7 @@ public final class ContainerLayer extends Layer {
 
     /** Searches the yellow pages in this agent's copy of the LAL (no message is sent). */
     public List<AgentEntry> search(ServiceDescription template) {
-        return st.lists.search(template);
+        return st.lists.search(List.of(template));
     }
 
     // ---- life cycle -------------------------------------------------------------------------------

@@ -99,7 +99,7 @@ final class Directory {
             }
             ctx.sendQuietly(reply(m, Performative.INFORM, "done"));
         } else if (a instanceof Search s) {
-            List<AgentEntry> found = st.lists.search(s.template());
+            List<AgentEntry> found = st.lists.search(List.of(s.template()));
             ctx.sendQuietly(reply(m, Performative.INFORM, Lines.content("result", Lines.params("count", found.size()), found)));
         } else if (a instanceof Agents g) {
             List<AgentEntry> found = new ArrayList<>();

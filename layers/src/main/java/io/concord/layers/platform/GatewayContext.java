@@ -22,8 +22,11 @@ public interface GatewayContext {
      */
     boolean deliver(AclMessage message, AID receiver);
 
-    /** The yellow pages: agents of the platform (this host and the others) whose services match. Loop only. */
-    List<AgentEntry> search(ServiceDescription template);
+    /**
+     * The yellow pages: agents of the platform (this host and the others) that offer a service
+     * matching each template (see {@link ServiceDescription#offersAll}). Loop only.
+     */
+    List<AgentEntry> search(List<ServiceDescription> templates);
 
     /** Every agent of the platform, this host's and the others'. Loop only. */
     List<AgentEntry> agents();

@@ -154,8 +154,8 @@ final class GatewayRelay implements PlatformMessage.Handler {
         }
 
         @Override
-        public List<AgentEntry> search(ServiceDescription template) {
-            return st.lists.search(template);
+        public List<AgentEntry> search(List<ServiceDescription> templates) {
+            return st.lists.search(templates);
         }
 
         @Override

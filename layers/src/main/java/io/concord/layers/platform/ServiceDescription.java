@@ -56,6 +56,26 @@ public record ServiceDescription(String type, String name, Map<String, String> p
         return r;
     }
 
+    /**
+     * True if an agent with these services answers a search with these templates, as a FIPA DF
+     * search does: it offers at least one service, and each template is matched by one of them.
+     */
+    public static boolean offersAll(List<ServiceDescription> services, List<ServiceDescription> templates) {
+        if (services.isEmpty()) {
+            return false;
+        }
+        for (ServiceDescription t : templates) {
+            boolean any = false;
+            for (ServiceDescription s : services) {
+                any |= s.matches(t);
+            }
+            if (!any) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** True if this service satisfies the template (see the class comment). */
     public boolean matches(ServiceDescription template) {
         if (template.type != null && !template.type.equals(type)) {
