@@ -281,7 +281,7 @@ public final class BenchMain {
         Map<Integer, List<PlatformHarness.Failover>> fails = new TreeMap<>();
         for (int run = 0; run < runs + 1; run++) {
             for (int n : sizes) {
-                Object[] r;
+                PlatformHarness.Run r;
                 try {
                     r = PlatformHarness.run(n);
                 } catch (Exception e) {
@@ -290,8 +290,8 @@ public final class BenchMain {
                 if (run == 0) {
                     continue; // warm-up: class loading and JIT of the first run
                 }
-                boots.computeIfAbsent(n, k -> new ArrayList<>()).add((PlatformHarness.Bootstrap) r[0]);
-                fails.computeIfAbsent(n, k -> new ArrayList<>()).add((PlatformHarness.Failover) r[1]);
+                boots.computeIfAbsent(n, k -> new ArrayList<>()).add(r.bootstrap());
+                fails.computeIfAbsent(n, k -> new ArrayList<>()).add(r.failover());
             }
         }
         String conf = "Defaults of PlatformConfig: maintenance period 40 ms + 0.5 ms per agent, an agent or the container is "

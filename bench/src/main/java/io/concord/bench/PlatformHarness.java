@@ -47,8 +47,12 @@ final class PlatformHarness {
     private PlatformHarness() {
     }
 
+    /** What one run measured. */
+    record Run(Bootstrap bootstrap, Failover failover) {
+    }
+
     /** Runs bootstrap, one maintenance cycle, and failover for N agents. */
-    static Object[] run(int n) throws Exception {
+    static Run run(int n) throws Exception {
         String name = "bench" + ProcessHandle.current().pid() + "n" + n;
         try (AgentRuntime rt = AgentRuntime.builder().platformName(name).build().start()) {
             Platform p = Platform.builder().runtime(rt).ports(PORTS)
@@ -114,7 +118,7 @@ final class PlatformHarness {
             }
             Bootstrap b = new Bootstrap(n, ok, elect, collect, dist, ok ? ms(t[2] - t0[0]) : -1, cycle);
             Failover f = ok && n > 1 ? failover(rt, aids, layers, n) : new Failover(n, false, -1, -1, -1);
-            return new Object[]{b, f};
+            return new Run(b, f);
         }
     }
 
