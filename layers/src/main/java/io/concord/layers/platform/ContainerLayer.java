@@ -186,43 +186,8 @@ public final class ContainerLayer extends Layer {
                 host::execute);
         io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();
-        federation = network == null ? null : new Federation(context, network, new Federation.Host() {
-            @Override
-            public List<String> lalPages() {
-                return roles.lalPages();
-            }
-
-            @Override
-            public long term() {
-                return st.term;
-            }
-
-            @Override
-            public long lalSequence() {
-                return st.seq;
-            }
-
-            @Override
-            public void globalChanged() {
-                roles.globalChanged();
-            }
-
-            @Override
-            public void contest(AgentEntry other, long term) {
-                roles.contest(other, term);
-            }
-
-            @Override
-            public io.concord.core.net.Endpoint openListener(int port) {
-                return around == null ? null : around.openListener(port);
-            }
-
-            @Override
-            public List<String> broadcastAddresses() {
-                return around == null ? List.of() : around.broadcastAddresses();
-            }
-        });
-        roles = new Roles(context, st, federation, relay, this::publish);
+        roles = new Roles(context, st, network, around, relay, this::publish);
+        federation = roles.federation;
         directory = new Directory(context, roles);
         requests = new ServiceRequests(context, roles);
         context.trace("start", "neighbours=" + neighbours.size());

@@ -62,23 +62,22 @@ final class Federation implements PlatformMessage.Handler {
 
         /** A container of this same host announced itself: the better one stays container. */
         void contest(AgentEntry other, long term);
-
-        Endpoint openListener(int port);
-
-        List<String> broadcastAddresses();
     }
 
     private final PlatformContext layer;
     private final Host agent;
+    private final io.concord.core.net.Neighbourhood around;
     private final NetworkConfig config;
     private final Map<String, Facilitator> fal = new TreeMap<>();
     private Endpoint listener;
     private long announceTimer = -1;
     private boolean running;
 
-    Federation(PlatformContext ctx, NetworkConfig config, Host agent) {
+    /** @param around the node's neighbourhood: its shared listener and broadcast addresses ({@code null}: none) */
+    Federation(PlatformContext ctx, NetworkConfig config, io.concord.core.net.Neighbourhood around, Host agent) {
         this.layer = ctx;
         this.config = config;
+        this.around = around;
         this.agent = agent;
     }
 
@@ -104,7 +103,7 @@ final class Federation implements PlatformMessage.Handler {
             return;
         }
         running = true;
-        listener = agent.openListener(config.discoveryPort());
+        listener = around == null ? null : around.openListener(config.discoveryPort());
         layer.trace("network", listener == null ? "cannot listen on the discovery port " + config.discoveryPort()
                 + " (announcing only)" : "listening on the discovery port " + config.discoveryPort());
         announce();
@@ -154,7 +153,7 @@ final class Federation implements PlatformMessage.Handler {
                 known.subList(1, known.size()));
         List<AID> to = new ArrayList<>();
         if (config.broadcast()) {
-            for (String b : agent.broadcastAddresses()) {
+            for (String b : around == null ? List.<String>of() : around.broadcastAddresses()) {
                 to.add(layer.anyAt(new Address(b, config.discoveryPort())));
             }
         }

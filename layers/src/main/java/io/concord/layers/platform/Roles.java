@@ -13,7 +13,7 @@ import java.util.List;
  * method here (begin discovery, become container, become member, yield, a join that failed). The
  * role left has its timers cancelled; what the next one needs is in {@link PlatformState}.
  */
-final class Roles {
+final class Roles implements Federation.Host {
     final PlatformContext ctx;
     final PlatformState st;
     final Joining join;
@@ -25,10 +25,15 @@ final class Roles {
     private final Runnable publish;
     private RoleBase current;
 
-    Roles(PlatformContext ctx, PlatformState st, Federation federation, GatewayRelay relay, Runnable publish) {
+    /**
+     * @param network the discovery of other hosts' containers, or {@code null} for none
+     * @param around  the node's neighbourhood (its listener for the network discovery), or {@code null}
+     */
+    Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, io.concord.core.net.Neighbourhood around,
+          GatewayRelay relay, Runnable publish) {
         this.ctx = ctx;
         this.st = st;
-        this.federation = federation;
+        this.federation = network == null ? null : new Federation(ctx, network, around, this);
         this.relay = relay;
         this.publish = publish;
         this.join = new Joining(ctx, st, this::joinFailed);
@@ -203,15 +208,27 @@ final class Roles {
         current = new Stopped(this);
     }
 
+    @Override
+    public long term() {
+        return st.term;
+    }
+
+    @Override
+    public long lalSequence() {
+        return st.seq;
+    }
+
     /** The federation's lists changed: the container recomputes the GAL. */
-    void globalChanged() {
+    @Override
+    public void globalChanged() {
         if (current instanceof ContainerRole c) {
             c.globalChanged();
         }
     }
 
     /** A container of this host announced itself on the network: the better one stays. */
-    void contest(AgentEntry other, long term) {
+    @Override
+    public void contest(AgentEntry other, long term) {
         if (current instanceof ContainerRole c) {
             c.contest(other, term);
         }
@@ -225,7 +242,8 @@ final class Roles {
     }
 
     /** The LAL's entry lines in pages. */
-    List<String> lalPages() {
+    @Override
+    public List<String> lalPages() {
         return AgentLists.pages(st.lists.lal.values(), ctx.config().maxContentBytes());
     }
 
