@@ -1,5 +1,21 @@
 package io.concord.bench;
 
+import io.concord.bench.harness.HospitalBench;
+import io.concord.bench.harness.NetworkHarness;
+import io.concord.bench.harness.PlatformHarness;
+import io.concord.bench.harness.SerialBench;
+import io.concord.bench.harness.SimHarness;
+import io.concord.bench.harness.StressHarness;
+import io.concord.bench.jmh.BooksBenchmark;
+import io.concord.bench.jmh.ChainBenchmark;
+import io.concord.bench.jmh.HttpBenchmark;
+import io.concord.bench.jmh.ProcessBooksBenchmark;
+import io.concord.bench.jmh.ProcessChainBenchmark;
+import io.concord.bench.jmh.StackBenchmark;
+import io.concord.bench.jmh.UdpBaselineBenchmark;
+import io.concord.bench.report.Charts;
+import io.concord.bench.report.Machine;
+
 import org.openjdk.jmh.results.RunResult;
 import org.openjdk.jmh.runner.Runner;
 import org.openjdk.jmh.runner.RunnerException;

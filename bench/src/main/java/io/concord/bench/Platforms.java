@@ -15,7 +15,7 @@ public final class Platforms {
     public static final String CONCORD_CLOSED = "concord-closed";
     public static final String JADE = "jade";
 
-    static final PlatformKey KEY = PlatformKey.ofHex("0f".repeat(32));
+    public static final PlatformKey KEY = PlatformKey.ofHex("0f".repeat(32));
 
     private Platforms() {
     }

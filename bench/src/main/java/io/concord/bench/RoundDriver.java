@@ -1,5 +1,7 @@
 package io.concord.bench;
 
+import io.concord.bench.child.Children;
+
 import io.concord.bench.jade.JadePlatform;
 import io.concord.core.agent.AgentRuntime;
 import jade.wrapper.AgentController;
@@ -9,16 +11,16 @@ import jade.wrapper.AgentController;
  * main container), the child processes if any, and the way a batch of rounds is started and
  * awaited. A benchmark sets the starter of its first agent, then runs batches.
  */
-final class RoundDriver implements AutoCloseable {
-    final Rounds rounds = new Rounds();
-    final Children children = new Children();
-    AgentRuntime concord;
-    Runnable concordStart;
-    JadePlatform jade;
-    AgentController jadeStarter;
+public final class RoundDriver implements AutoCloseable {
+    public final Rounds rounds = new Rounds();
+    public final Children children = new Children();
+    public AgentRuntime concord;
+    public Runnable concordStart;
+    public JadePlatform jade;
+    public AgentController jadeStarter;
 
     /** Runs one batch of rounds from the benchmark thread and waits for it. */
-    void runBatch(int count) throws Exception {
+    public void runBatch(int count) throws Exception {
         rounds.arm(count);
         if (jade != null) {
             jadeStarter.putO2AObject("go", false);

@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.harness;
 
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
@@ -21,20 +21,20 @@ import java.util.concurrent.TimeUnit;
  * N agents started in one loop turn (the same instant), and the container's crash.
  * Every time is taken on the loop, in the container layers' change callbacks.
  */
-final class PlatformHarness {
+public final class PlatformHarness {
     static final PortRange PORTS = new PortRange(7801, 190, 10);
 
-    record Bootstrap(int agents, boolean converged, double electMs, double collectMs, double distributeMs,
+    public record Bootstrap(int agents, boolean converged, double electMs, double collectMs, double distributeMs,
                      double totalMs, double cycleMs) {
-        String line() {
+        public String line() {
             return String.format(java.util.Locale.ROOT,
                     "RESULT bootstrap agents=%d converged=%s elect_ms=%.1f collect_ms=%.1f distribute_ms=%.1f total_ms=%.1f",
                     agents, converged, electMs, collectMs, distributeMs, totalMs);
         }
     }
 
-    record Failover(int agents, boolean converged, double detectedMs, double newContainerMs, double lalCompleteMs) {
-        String line() {
+    public record Failover(int agents, boolean converged, double detectedMs, double newContainerMs, double lalCompleteMs) {
+        public String line() {
             return String.format(java.util.Locale.ROOT,
                     "RESULT failover agents=%d detected_ms=%.1f new_container_ms=%.1f lal_complete_ms=%.1f",
                     agents, detectedMs, newContainerMs, lalCompleteMs);
@@ -48,11 +48,11 @@ final class PlatformHarness {
     }
 
     /** What one run measured. */
-    record Run(Bootstrap bootstrap, Failover failover) {
+    public record Run(Bootstrap bootstrap, Failover failover) {
     }
 
     /** Runs bootstrap, one maintenance cycle, and failover for N agents. */
-    static Run run(int n) throws Exception {
+    public static Run run(int n) throws Exception {
         String name = "bench" + ProcessHandle.current().pid() + "n" + n;
         try (AgentRuntime rt = AgentRuntime.builder().platformName(name).build().start()) {
             Platform p = Platform.builder().runtime(rt).ports(PORTS)

@@ -1,4 +1,6 @@
-package io.concord.bench;
+package io.concord.bench.jmh;
+
+import io.concord.bench.child.UdpEcho;
 
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;

@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.jmh;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;

@@ -1,4 +1,7 @@
-package io.concord.bench;
+package io.concord.bench.jmh;
+
+import io.concord.bench.RoundDriver;
+import io.concord.bench.child.HttpTarget;
 
 import io.concord.bench.jade.JadeHttpRequester;
 import io.concord.bench.jade.JadePlatform;

@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.report;
 
 import javax.imageio.ImageIO;
 import java.awt.BasicStroke;
@@ -15,7 +15,7 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /** Line charts as PNG, in the spirit of the dissertation's figures 7.13 to 7.16; java.awt only. */
-final class Charts {
+public final class Charts {
     private static final Color[] COLORS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),
             new Color(0xff7f0e), new Color(0x9467bd)};
 
@@ -25,7 +25,7 @@ final class Charts {
     /**
      * @param series name to (x to y)
      */
-    static void line(Path file, String title, String xLabel, String yLabel, Map<String, TreeMap<Integer, Double>> series)
+    public static void line(Path file, String title, String xLabel, String yLabel, Map<String, TreeMap<Integer, Double>> series)
             throws IOException {
         int w = 820;
         int h = 480;
@@ -108,7 +108,7 @@ final class Charts {
         ImageIO.write(img, "png", file.toFile());
     }
 
-    static Map<String, TreeMap<Integer, Double>> series(List<String> names) {
+    public static Map<String, TreeMap<Integer, Double>> series(List<String> names) {
         Map<String, TreeMap<Integer, Double>> m = new LinkedHashMap<>();
         names.forEach(n -> m.put(n, new TreeMap<>()));
         return m;

@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.child;
 
 import io.concord.core.agent.Agent;
 

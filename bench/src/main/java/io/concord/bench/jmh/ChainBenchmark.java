@@ -1,7 +1,11 @@
-package io.concord.bench;
+package io.concord.bench.jmh;
 
-import io.concord.bench.concord.ConcordBooks;
-import io.concord.bench.jade.JadeBooks;
+import io.concord.bench.Platforms;
+import io.concord.bench.RoundDriver;
+import io.concord.bench.Rounds;
+
+import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.jade.JadeChainLink;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
@@ -19,50 +23,52 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Experiment 5 of the dissertation: one buyer, S sellers in one JVM. QUERY-REF to all sellers,
- * INFORM quotes (a buyer timeout for missing ones), REQUEST to the cheapest, AGREE. Time per round.
+ * Experiment 4 of the dissertation, "pass the secret": N agents in one JVM pass a 500-byte content
+ * round a ring; the first checks it came back unchanged and starts the next round. Time per round.
  */
 @State(Scope.Benchmark)
-public class BooksBenchmark {
+public class ChainBenchmark {
     public static final int ROUNDS = 50;
-    static final long TIMEOUT_MS = 1_000;
+    public static final String SECRET = "s".repeat(492) + "checksum";
 
     @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
     public String platform;
 
-    @Param({"1", "5", "10", "15"})
-    public int s;
+    @Param({"2", "6", "10", "19"})
+    public int n;
 
     private final RoundDriver driver = new RoundDriver();
     private final Rounds rounds = driver.rounds;
-    private ConcordBooks.Buyer buyer;
-
-    static int price(int i) {
-        return 40 + (i * 7919) % 23;
-    }
+    private ConcordChainLink first;
 
     @Setup(Level.Trial)
     public void start() throws Exception {
         if (platform.equals(Platforms.JADE)) {
             driver.jade = new JadePlatform();
-            rounds.expectReady(s + 1);
-            for (int i = 0; i < s; i++) {
-                driver.jade.start("seller" + i, JadeBooks.Seller.class, price(i), rounds);
+            rounds.expectReady(n);
+            for (int i = n - 1; i >= 0; i--) {
+                AgentController a = driver.jade.start("link" + i, JadeChainLink.class, rounds, i, n, SECRET);
+                if (i == 0) {
+                    driver.jadeStarter = a;
+                }
             }
-            driver.jadeStarter = driver.jade.start("buyer", JadeBooks.Buyer.class, rounds, s, TIMEOUT_MS);
             rounds.awaitReady();
             return;
         }
         driver.concord = Platforms.concord(platform);
         AgentRuntime concord = driver.concord;
-        List<AID> sellers = new ArrayList<>();
-        for (int i = 0; i < s; i++) {
-            sellers.add(concord.startAgent("seller" + i, new ConcordBooks.Seller(price(i))));
+        List<ConcordChainLink> links = new ArrayList<>();
+        List<AID> ids = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            ConcordChainLink l = new ConcordChainLink(rounds, i == 0, SECRET);
+            links.add(l);
+            ids.add(concord.startAgent("link" + i, l));
         }
-        buyer = new ConcordBooks.Buyer(rounds, TIMEOUT_MS);
-        buyer.sellers = sellers;
-        concord.startAgent("buyer", buyer);
-        driver.concordStart = buyer::startRound;
+        for (int i = 0; i < n; i++) {
+            links.get(i).next = ids.get((i + 1) % n);
+        }
+        first = links.get(0);
+        driver.concordStart = first::startRound;
     }
 
     @Benchmark

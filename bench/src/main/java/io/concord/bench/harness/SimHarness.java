@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.harness;
 
 import io.concord.agents.door.DoorDriver;
 import io.concord.agents.chair.PoseController;
@@ -27,16 +27,16 @@ import java.util.SplittableRandom;
  * and the heap after a collection, so that a long run shows any growth; beside it, the bare
  * physics engine with the same walls and as many boxes, in the same run.
  */
-final class SimHarness {
+public final class SimHarness {
     /** Nodes the chairs start from, far enough apart. */
     private static final int[] STARTS = io.concord.sim.Hospital.STARTS;
 
-    record Window(double stepsPerS, double bytesPerStep, double heapMb) {
+    public record Window(double stepsPerS, double bytesPerStep, double heapMb) {
     }
 
-    record Outcome(int chairs, double stepsPerS, double engineStepsPerS, List<Window> windows, long collisions,
+    public record Outcome(int chairs, double stepsPerS, double engineStepsPerS, List<Window> windows, long collisions,
                    double metresDriven, long doorMoves, long resets, double worldSeconds) {
-        double realtimeX() {
+        public double realtimeX() {
             return stepsPerS / 60;
         }
     }
@@ -63,7 +63,7 @@ final class SimHarness {
         }
     }
 
-    static Outcome run(int chairs, double seconds, int windows, java.nio.file.Path picture) {
+    public static Outcome run(int chairs, double seconds, int windows, java.nio.file.Path picture) {
         HospitalMap map = HospitalMap.defaultHospital();
         double engine = EngineBaseline.stepsPerSecond(map, chairs, Math.min(5, seconds / 4));
         try (Simulation sim = new Simulation(chairs, FaultPlan.NONE)) {
@@ -194,7 +194,7 @@ final class SimHarness {
         return moves;
     }
 
-    static String describe(Outcome o) {
+    public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT sim %d steps_per_s=%.0f realtime_x=%.0f engine_steps_per_s=%.0f "
                         + "engine_share=%.2f speed_mps=%.2f resets=%d bytes_per_step=%.0f heap_mb_first=%.1f heap_mb_last=%.1f",
                 o.chairs(), o.stepsPerS(), o.realtimeX(), o.engineStepsPerS(), o.stepsPerS() / o.engineStepsPerS(),

@@ -1,4 +1,6 @@
-package io.concord.bench;
+package io.concord.bench.harness;
+
+import io.concord.bench.Platforms;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
@@ -25,9 +27,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * The receiver checks that the small ones arrive in order. Per window: the rate, and the heap in
  * use after a collection, to show there is no decay and memory stays flat.
  */
-final class StressHarness {
+public final class StressHarness {
     /** What one run measured. */
-    record Outcome(Transport transport, List<Double> ratePerWindow, List<Double> heapMbPerWindow, long delivered,
+    public record Outcome(Transport transport, List<Double> ratePerWindow, List<Double> heapMbPerWindow, long delivered,
                    long refused, long outOfOrder, long maxSizeDelivered, String drops) {
         double decayPct() {
             double first = ratePerWindow.get(0);
@@ -102,7 +104,7 @@ final class StressHarness {
         }
     }
 
-    static Outcome run(Transport transport, int seconds, int windows) throws InterruptedException {
+    public static Outcome run(Transport transport, int seconds, int windows) throws InterruptedException {
         var stack = SafetyStack.builder().profile(Profile.CLASS_7).platformKey(Platforms.KEY)
                 .identities(IdentityStore.ephemeral()).transport(transport).build();
         int limit = transport == Transport.UDP ? 8 * 1024 : 16 * 1024;
@@ -136,7 +138,7 @@ final class StressHarness {
         }
     }
 
-    static String describe(Outcome o) {
+    public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT stress %s 500 rate_per_s=%.0f decay_pct=%.1f heap_mb_first=%.1f "
                         + "heap_mb_last=%.1f delivered=%d out_of_order=%d refused_over_limit=%d largest_delivered=%d",
                 o.transport().name().toLowerCase(Locale.ROOT), o.ratePerWindow().get(0), o.decayPct(),

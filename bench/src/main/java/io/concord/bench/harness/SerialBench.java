@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.harness;
 
 import com.fazecast.jSerialComm.SerialPort;
 
@@ -33,12 +33,12 @@ import java.util.concurrent.TimeUnit;
  * the loop to the board's motors; a STATE from the board's write to the control agent's listener;
  * and the watchdog, from the host's last frame to the motors at zero.
  */
-final class SerialBench {
+public final class SerialBench {
     private SerialBench() {
     }
 
     /** Each measurement's samples, in microseconds (watchdog: milliseconds). */
-    record Outcome(double[] cmdToMotorUs, double[] sensorToAgentUs, double[] watchdogStopMs) {
+    public record Outcome(double[] cmdToMotorUs, double[] sensorToAgentUs, double[] watchdogStopMs) {
     }
 
     /** Motors that note when each power arrives. */
@@ -85,7 +85,7 @@ final class SerialBench {
         }
     }
 
-    static Outcome run(boolean full) throws Exception {
+    public static Outcome run(boolean full) throws Exception {
         Path dir = Files.createTempDirectory("concord-serial-bench");
         Path host = dir.resolve("host");
         Path boardPath = dir.resolve("board");
@@ -250,7 +250,7 @@ final class SerialBench {
     /** Samples of each kind not counted: the first STATEs and commands run while classes load and compile. */
     private static final int WARM_UP = 10;
 
-    static double percentile(double[] v, double p) {
+    public static double percentile(double[] v, double p) {
         if (v.length == 0) {
             return Double.NaN;
         }
@@ -259,7 +259,7 @@ final class SerialBench {
         return s[Math.min(s.length - 1, (int) Math.ceil(p / 100 * s.length) - 1)];
     }
 
-    static String describe(Outcome o) {
+    public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT serial cmd_to_motor_us=%.0f cmd_to_motor_p99_us=%.0f sensor_to_agent_us=%.0f "
                         + "sensor_to_agent_p99_us=%.0f watchdog_stop_ms=%.1f watchdog_stop_p99_ms=%.1f samples=%d,%d,%d",
                 percentile(o.cmdToMotorUs(), 50), percentile(o.cmdToMotorUs(), 99), percentile(o.sensorToAgentUs(), 50),

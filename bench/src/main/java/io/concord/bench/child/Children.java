@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.child;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -15,12 +15,12 @@ import java.util.concurrent.TimeUnit;
  * {@code READY <address>} once its agent is set up, takes commands on its standard input, and
  * exits when that input closes.
  */
-final class Children implements AutoCloseable {
+public final class Children implements AutoCloseable {
     private final List<Process> processes = new ArrayList<>();
     private final List<BufferedReader> outputs = new ArrayList<>();
 
     /** Starts a child JVM running {@code mainClass} with the arguments. */
-    void start(Class<?> mainClass, String... args) throws IOException {
+    public void start(Class<?> mainClass, String... args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-XX:+UseSerialGC", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error",
                 "-cp", System.getProperty("java.class.path")));
@@ -37,7 +37,7 @@ final class Children implements AutoCloseable {
     }
 
     /** Waits for every child's READY line and returns what follows READY, in start order. */
-    List<String> awaitReady() throws IOException {
+    public List<String> awaitReady() throws IOException {
         List<String> out = new ArrayList<>();
         for (int i = 0; i < outputs.size(); i++) {
             String line;
@@ -53,7 +53,7 @@ final class Children implements AutoCloseable {
     }
 
     /** Sends a command line to child i. */
-    void tell(int i, String line) throws IOException {
+    public void tell(int i, String line) throws IOException {
         OutputStream in = processes.get(i).getOutputStream();
         in.write((line + "\n").getBytes(StandardCharsets.UTF_8));
         in.flush();

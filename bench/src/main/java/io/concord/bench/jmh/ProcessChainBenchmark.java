@@ -1,7 +1,13 @@
-package io.concord.bench;
+package io.concord.bench.jmh;
 
-import io.concord.bench.concord.ConcordBooks;
-import io.concord.bench.jade.JadeBooks;
+import io.concord.bench.Platforms;
+import io.concord.bench.RoundDriver;
+import io.concord.bench.Rounds;
+import io.concord.bench.child.Children;
+import io.concord.bench.child.ProcessAgent;
+
+import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.jade.JadeChainLink;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.bench.jade.JadeProcessAgent;
 import io.concord.core.acl.AID;
@@ -16,53 +22,56 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.TearDown;
 
-import java.util.ArrayList;
 import java.util.List;
 
-/** The book buyer with one process per agent: the buyer here, every seller in a JVM of its own. */
+/**
+ * The chain with one process per agent: link 0 in the benchmark's JVM, every other link in a JVM
+ * of its own. Concord over UDP with the class-7 stack; JADE with a main container here and a
+ * peripheral container per agent.
+ */
 @State(Scope.Benchmark)
-public class ProcessBooksBenchmark {
+public class ProcessChainBenchmark {
     public static final int ROUNDS = 20;
 
     @Param({Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE})
     public String platform;
 
-    @Param({"1", "5"})
-    public int s;
+    @Param({"2", "6"})
+    public int n;
 
     private final RoundDriver driver = new RoundDriver();
     private final Rounds rounds = driver.rounds;
     private final Children children = driver.children;
-    private ConcordBooks.Buyer buyer;
+    private ConcordChainLink first;
 
     @Setup(Level.Trial)
     public void start() throws Exception {
         if (platform.equals(Platforms.JADE)) {
             driver.jade = new JadePlatform();
-            for (int i = 0; i < s; i++) {
-                children.start(JadeProcessAgent.class, Integer.toString(driver.jade.port()), "seller", "seller" + i,
-                        Integer.toString(BooksBenchmark.price(i)));
+            for (int i = 1; i < n; i++) {
+                children.start(JadeProcessAgent.class, Integer.toString(driver.jade.port()), "link", "link" + i,
+                        Integer.toString(i), Integer.toString(n));
             }
             children.awaitReady();
             rounds.expectReady(1);
-            driver.jadeStarter = driver.jade.start("buyer", JadeBooks.Buyer.class, rounds, s, BooksBenchmark.TIMEOUT_MS);
+            driver.jadeStarter = driver.jade.start("link0", JadeChainLink.class, rounds, 0, n, ChainBenchmark.SECRET);
             rounds.awaitReady();
             return;
         }
-        for (int i = 0; i < s; i++) {
-            children.start(ProcessAgent.class, "seller", "seller" + i, Integer.toString(BooksBenchmark.price(i)), platform);
+        for (int i = 1; i < n; i++) {
+            children.start(ProcessAgent.class, "link", "link" + i, platform);
         }
         List<String> addresses = children.awaitReady();
-        List<AID> sellers = new ArrayList<>();
-        for (int i = 0; i < s; i++) {
-            sellers.add(new AID("seller" + i + "@bench", addresses.get(i)));
-        }
         driver.concord = Platforms.concord(platform);
         AgentRuntime concord = driver.concord;
-        buyer = new ConcordBooks.Buyer(rounds, BooksBenchmark.TIMEOUT_MS);
-        buyer.sellers = sellers;
-        concord.startAgent("buyer", buyer);
-        driver.concordStart = buyer::startRound;
+        first = new ConcordChainLink(rounds, true, ChainBenchmark.SECRET);
+        AID firstAid = concord.startAgent("link0", first);
+        for (int i = 1; i < n; i++) {
+            AID next = i + 1 < n ? new AID("link" + (i + 1) + "@bench", addresses.get(i)) : firstAid;
+            children.tell(i - 1, "NEXT " + next.localName() + " " + next.addresses().get(0));
+        }
+        first.next = new AID("link1@bench", addresses.get(0));
+        driver.concordStart = first::startRound;
     }
 
     @Benchmark

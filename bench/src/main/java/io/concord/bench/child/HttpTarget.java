@@ -1,4 +1,7 @@
-package io.concord.bench;
+package io.concord.bench.child;
+
+import io.concord.bench.Platforms;
+import io.concord.bench.jmh.HttpBenchmark;
 
 import io.concord.bench.jade.JadeHttpEcho;
 import io.concord.bench.jade.JadePlatform;

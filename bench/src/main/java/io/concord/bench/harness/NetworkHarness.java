@@ -1,4 +1,6 @@
-package io.concord.bench;
+package io.concord.bench.harness;
+
+import io.concord.bench.child.IdleAgent;
 
 import io.concord.core.testkit.NetnsHosts;
 import io.concord.layers.Boot;
@@ -23,9 +25,9 @@ import java.util.function.Predicate;
  * heal: from the moment a host's link comes back up (after the others dropped it) to the moment all
  * lists are whole again. Times are the parent's wall clock on reading each JVM's report.
  */
-final class NetworkHarness {
-    record Result(int hosts, boolean ok, double joinMs, double healMs, String problem) {
-        String line() {
+public final class NetworkHarness {
+    public record Result(int hosts, boolean ok, double joinMs, double healMs, String problem) {
+        public String line() {
             return String.format(java.util.Locale.ROOT, "RESULT network hosts=%d join_ms=%.1f heal_ms=%.1f", hosts, joinMs, healMs);
         }
     }
@@ -68,7 +70,7 @@ final class NetworkHarness {
     private NetworkHarness() {
     }
 
-    static Result run(int hosts) throws Exception {
+    public static Result run(int hosts) throws Exception {
         String prefix = "cb" + (ProcessHandle.current().pid() % 100_000);
         Map<Integer, Jvm> jvms = new LinkedHashMap<>();
         Path home = Files.createTempDirectory("concord-bench-net");

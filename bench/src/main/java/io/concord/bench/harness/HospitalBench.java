@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.harness;
 
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
@@ -33,9 +33,9 @@ import java.util.concurrent.TimeUnit;
  * real sockets with class 7 (two plans, every door on them asked, a proposal, the choice; Open-RMF's
  * bidding window alone is 2 s), and the scenario's duration in simulated seconds.
  */
-final class HospitalBench {
-    record Outcome(double planUs, double plan1000Us, double[] awardMs, double taskS) {
-        double awardMedianMs() {
+public final class HospitalBench {
+    public record Outcome(double planUs, double plan1000Us, double[] awardMs, double taskS) {
+        public double awardMedianMs() {
             double[] a = awardMs.clone();
             Arrays.sort(a);
             return a[a.length / 2];
@@ -45,7 +45,7 @@ final class HospitalBench {
     private HospitalBench() {
     }
 
-    static Outcome run(boolean full) throws Exception {
+    public static Outcome run(boolean full) throws Exception {
         HospitalMap map = HospitalMap.defaultHospital();
         double planUs = astar(RouteGraph.of(map), new int[][] {{19, 3}, {3, 9}, {14, 31}, {30, 15}}, full);
         RouteGraph grid = RouteGraph.grid(32, 32, 0.15, 9);
@@ -172,7 +172,7 @@ final class HospitalBench {
         }
     }
 
-    static String describe(Outcome o) {
+    public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT hospital plan_us=%.2f plan1000_us=%.2f award_ms=%.2f task_s=%.1f",
                 o.planUs(), o.plan1000Us(), o.awardMedianMs(), o.taskS());
     }

@@ -1,4 +1,8 @@
-package io.concord.bench;
+package io.concord.bench.child;
+
+import io.concord.bench.Platforms;
+import io.concord.bench.Rounds;
+import io.concord.bench.jmh.ChainBenchmark;
 
 import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.concord.ConcordChainLink;
