@@ -81,6 +81,13 @@ final class GatewayRelay implements PlatformMessage.Handler {
     @Override
     public void onRelayOut(PlatformMessage.RelayOut r, AclMessage wrapper) {
         AclMessage inner = inner(r.acl());
+        // A member relays its own messages only: the wrapper's sender is authenticated, the inner
+        // message's is whatever the member wrote.
+        if (inner.getSender() == null || !inner.getSender().name().equalsIgnoreCase(wrapper.getSender().name())) {
+            ctx.drop("masquerade", wrapper.getSender().name() + " relayed a message in the name of "
+                    + (inner.getSender() == null ? "nobody" : inner.getSender().name()) + " to " + r.receiver());
+            return;
+        }
         String addrs = r.addresses();
         AID receiver = new AID(r.receiver(), addrs.isEmpty() ? new String[0] : addrs.split(","));
         boolean container = role.get() == ContainerLayer.Role.CONTAINER;

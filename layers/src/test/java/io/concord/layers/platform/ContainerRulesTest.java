@@ -399,4 +399,65 @@ class ContainerRulesTest {
             assertEquals(List.of("y@p"), names(a.layer.search(ServiceDescription.ofType("book-selling"))));
         }
     }
+
+    @Nested
+    class Relay {
+
+        /** A gateway that keeps what it is given to carry out. */
+        final class Kept implements Gateway {
+            final List<io.concord.core.acl.AclMessage> out = new ArrayList<>();
+
+            @Override
+            public void start(GatewayContext context) {
+            }
+
+            @Override
+            public void stop() {
+            }
+
+            @Override
+            public boolean reaches(io.concord.core.acl.AID foreign) {
+                return true;
+            }
+
+            @Override
+            public void sendOut(io.concord.core.acl.AclMessage message, io.concord.core.acl.AID receiver) {
+                out.add(message);
+            }
+
+            @Override
+            public List<String> addresses() {
+                return List.of("http://127.0.0.1:7779/acc");
+            }
+        }
+
+        private PlatformMessage.RelayOut relay(String sender) {
+            io.concord.core.acl.AclMessage inner = new io.concord.core.acl.AclMessage(Performative.REQUEST);
+            inner.setSender(io.concord.core.acl.AID.local(sender, OneAgent.PLATFORM));
+            inner.addReceiver(new io.concord.core.acl.AID("j@jade", "http://127.0.0.1:7778/acc"));
+            inner.setContent("hello");
+            return new PlatformMessage.RelayOut("j@jade", "http://127.0.0.1:7778/acc",
+                    io.concord.core.codec.StringAclCodec.INSTANCE.encodeToString(inner));
+        }
+
+        @Test
+        void theContainerCarriesOutWhatAMemberRelaysInItsOwnName() {
+            Kept g = new Kept();
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), g);
+            AgentEntry m = other("m", 7002, -10);
+            c.from(m, Performative.INFORM, ContainerLayer.P_SERVICES, relay("m"));
+            assertEquals(1, g.out.size());
+            assertEquals("m@p", g.out.get(0).getSender().name());
+        }
+
+        @Test
+        void aMemberCannotRelayAMessageInAnotherAgentsName() {
+            Kept g = new Kept();
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), g);
+            AgentEntry m = other("m", 7002, -10);
+            c.from(m, Performative.INFORM, ContainerLayer.P_SERVICES, relay("victim"));
+            assertTrue(g.out.isEmpty(), "carried out in victim's name: " + g.out);
+            assertEquals(1, c.h.drops().get("masquerade"));
+        }
+    }
 }

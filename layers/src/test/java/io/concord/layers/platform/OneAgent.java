@@ -31,11 +31,16 @@ final class OneAgent {
 
     /** An agent named {@code local} at port {@code port}, with other agents holding the ports given. */
     OneAgent(String local, int port, PlatformConfig config, int... neighbourPorts) {
+        this(local, port, config, null, neighbourPorts);
+    }
+
+    /** ... serving a gateway when container ({@code null}: none). */
+    OneAgent(String local, int port, PlatformConfig config, Gateway gateway, int... neighbourPorts) {
         List<Address> around = new ArrayList<>();
         for (int p : neighbourPorts) {
             around.add(new Address("127.0.0.1", p));
         }
-        layer = new ContainerLayer(config, null);
+        layer = new ContainerLayer(config, null, gateway);
         h = LayerHarness.builder().name(local + "@" + PLATFORM).localAddress(new Address("127.0.0.1", port))
                 .offer(Neighbourhood.class, new Neighbourhood() {
                     @Override
