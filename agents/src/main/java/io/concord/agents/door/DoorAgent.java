@@ -135,13 +135,8 @@ public class DoorAgent extends Agent {
     }
 
     private void handle(AclMessage m) {
-        Content c;
-        try {
-            c = Content.parse(m.getContent());
-        } catch (IllegalArgumentException e) {
-            if (m.getPerformative() == Performative.REQUEST) {
-                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent(e.getMessage()));
-            }
+        Content c = Content.parseOrAnswer(m, this::send);
+        if (c == null) {
             return;
         }
         String sender = m.getSender().name();

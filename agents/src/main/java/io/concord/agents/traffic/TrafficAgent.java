@@ -158,13 +158,8 @@ public class TrafficAgent extends Agent {
     // ---- messages -------------------------------------------------------------------------------
 
     private void handle(AclMessage m) {
-        Content c;
-        try {
-            c = Content.parse(m.getContent());
-        } catch (IllegalArgumentException e) {
-            if (m.getPerformative() == Performative.REQUEST) {
-                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent(e.getMessage()));
-            }
+        Content c = Content.parseOrAnswer(m, this::send);
+        if (c == null) {
             return;
         }
         String chair = m.getSender().name();

@@ -62,7 +62,7 @@ final class AgentNode implements StackHost {
                 }
             }
             if (tracer.enabled()) {
-                tracer.trace(runtime.nowNs(), aid.name(), "send", describe(msg) + " to " + receiver.name());
+                tracer.trace(runtime.nowNs(), aid.name(), "send", Tracer.describe(msg) + " to " + receiver.name());
             }
             stack.sendDown(Envelope.outgoing(msg, receiver, dst));
         }
@@ -72,7 +72,7 @@ final class AgentNode implements StackHost {
         drops.record(aid.name(), reason, detail);
         Tracer t = runtime.tracer();
         if (t.enabled()) {
-            t.trace(runtime.nowNs(), aid.name(), "drop", reason + ": " + detail + " " + describe(msg));
+            t.trace(runtime.nowNs(), aid.name(), "drop", reason + ": " + detail + " " + Tracer.describe(msg));
         }
     }
 
@@ -129,12 +129,8 @@ final class AgentNode implements StackHost {
             return;
         }
         if (t.enabled()) {
-            t.trace(runtime.nowNs(), aid.name(), "deliver", describe(msg));
+            t.trace(runtime.nowNs(), aid.name(), "deliver", Tracer.describe(msg));
         }
-    }
-
-    static String describe(AclMessage m) {
-        return Tracer.describe(m);
     }
 
     @Override

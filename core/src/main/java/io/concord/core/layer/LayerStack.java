@@ -18,6 +18,7 @@ public final class LayerStack {
 
     private final List<Layer> layers;
     private final Ctx[] contexts;
+    private final boolean resolvesNames;
     private final StackHost host;
     private final Consumer<Envelope> deliver;
     private final Consumer<Envelope> transmit;
@@ -39,9 +40,12 @@ public final class LayerStack {
         this.transmit = Objects.requireNonNull(transmit, "transmit");
         this.eventSink = Objects.requireNonNull(eventSink, "eventSink");
         this.contexts = new Ctx[this.layers.size()];
+        boolean byName = false;
         for (int i = 0; i < contexts.length; i++) {
             contexts[i] = new Ctx(i, this.layers.get(i));
+            byName |= contexts[i].layer.resolvesNames();
         }
+        this.resolvesNames = byName;
         for (int i = contexts.length - 1; i >= 0; i--) {
             contexts[i].layer.init(contexts[i]);
         }
@@ -80,12 +84,7 @@ public final class LayerStack {
 
     /** True if a layer of this stack resolves receivers by name ({@link Layer#resolvesNames()}). */
     public boolean resolvesNames() {
-        for (Ctx c : contexts) {
-            if (c.layer.resolvesNames()) {
-                return true;
-            }
-        }
-        return false;
+        return resolvesNames;
     }
 
     /** Sends an envelope down from the top. */

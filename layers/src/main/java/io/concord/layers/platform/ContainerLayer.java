@@ -71,7 +71,9 @@ public final class ContainerLayer extends Layer {
     private String platform;
     private String self;
     private AID selfAid;
-    private Federation federation;
+    /** The platform's service names, {@code df@platform} and {@code ams@platform}: asked of every message up. */
+    private String dfName;
+    private String amsName;
     private GatewayRelay relay;
     private Roles roles;
     private Directory directory;
@@ -133,7 +135,7 @@ public final class ContainerLayer extends Layer {
 
     /** The other hosts' containers this container is in contact with (empty unless container). */
     public List<String> facilitators() {
-        return federation == null ? List.of() : federation.contacted();
+        return roles == null || roles.federation == null ? List.of() : roles.federation.contacted();
     }
 
     public long term() {
@@ -177,6 +179,8 @@ public final class ContainerLayer extends Layer {
     public void start(LayerContext ctx) {
         platform = host.platformName();
         self = host.nodeName();
+        dfName = "df@" + platform;
+        amsName = "ams@" + platform;
         Address at = host.localAddress();
         String uri = at == null ? "" : at.toUri(host.transport());
         st.selfEntry = new AgentEntry(self, uri, host.clock().epochMillis(), List.of());
@@ -187,7 +191,6 @@ public final class ContainerLayer extends Layer {
         io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();
         roles = new Roles(context, st, network, around, relay, this::publish);
-        federation = roles.federation;
         directory = new Directory(context, roles);
         requests = new ServiceRequests(context, roles);
         context.trace("start", "neighbours=" + neighbours.size());
@@ -215,7 +218,7 @@ public final class ContainerLayer extends Layer {
         }
         AgentEntry c = st.container;
         if (c != null && (!platform.equals(receiver.platform()) && relay.reaches(receiver)
-                || name.equals("ams@" + platform) || name.equals("df@" + platform))) {
+                || name.equals(amsName) || name.equals(dfName))) {
             Address a = c.transportAddress();
             return a == null ? null : new AgentLists.Route(a, c.aid());
         }
@@ -346,10 +349,10 @@ public final class ContainerLayer extends Layer {
                 || p instanceof PlatformMessage.IsFacilitator || p instanceof PlatformMessage.IsNotFacilitator
                 || p instanceof PlatformMessage.GalUpdate || p instanceof PlatformMessage.GalHeld
                 || p instanceof PlatformMessage.UnknownSecret || p instanceof PlatformMessage.ContactMe) {
-            if (federation == null) {
+            if (roles.federation == null) {
                 throw new IllegalArgumentException("a network message, and this agent has no network discovery");
             }
-            p.to(federation, m);
+            p.to(roles.federation, m);
         } else {
             p.to(roles.current(), m);
         }
@@ -373,7 +376,7 @@ public final class ContainerLayer extends Layer {
 
     private boolean addressedToService(AclMessage m) {
         for (AID r : m.getReceivers()) {
-            if (r.name().equals("df@" + platform) || r.name().equals("ams@" + platform)) {
+            if (r.name().equals(dfName) || r.name().equals(amsName)) {
                 return true;
             }
         }

@@ -47,15 +47,8 @@ final class GatewayRelay implements PlatformMessage.Handler {
 
     /** This agent's message for a foreign receiver, wrapped for its container (the node {@code via}). */
     AclMessage wrap(AclMessage message, AID receiver, AID via) {
-        AclMessage w = new AclMessage(Performative.INFORM);
-        w.setSender(ctx.selfAid());
-        w.addReceiver(via);
-        w.setOntology(ContainerLayer.ONTOLOGY);
-        w.setLanguage(ContainerLayer.LANGUAGE);
-        w.setProtocol(ContainerLayer.P_SERVICES);
-        w.setContent(new PlatformMessage.RelayOut(receiver.name(), String.join(",", receiver.addresses()),
-                StringAclCodec.INSTANCE.encodeToString(message)).encode());
-        return w;
+        return ctx.message(Performative.INFORM, ContainerLayer.P_SERVICES, via, new PlatformMessage.RelayOut(receiver.name(),
+                String.join(",", receiver.addresses()), StringAclCodec.INSTANCE.encodeToString(message)).encode());
     }
 
     private static AclMessage inner(String acl) {

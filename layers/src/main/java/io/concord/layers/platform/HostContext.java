@@ -95,15 +95,20 @@ final class HostContext implements PlatformContext {
     }
 
     @Override
-    public void send(Performative act, String protocol, AID to, PlatformMessage content) {
+    public AclMessage message(Performative act, String protocol, AID to, String content) {
         AclMessage m = new AclMessage(act);
         m.setSender(selfAid);
         m.addReceiver(to);
         m.setOntology(ONTOLOGY);
         m.setLanguage(LANGUAGE);
         m.setProtocol(protocol);
-        m.setContent(content.encode());
-        sendQuietly(m);
+        m.setContent(content);
+        return m;
+    }
+
+    @Override
+    public void send(Performative act, String protocol, AID to, PlatformMessage content) {
+        sendQuietly(message(act, protocol, to, content.encode()));
     }
 
     @Override

@@ -39,6 +39,9 @@ interface PlatformContext {
 
     java.util.random.RandomGenerator random();
 
+    /** A platform message from this agent to one receiver: the platform's ontology and language, the protocol given. */
+    AclMessage message(Performative act, String protocol, AID to, String content);
+
     /** Sends a platform message; a refusal is counted, never thrown. */
     void send(Performative act, String protocol, AID to, PlatformMessage content);
 

@@ -283,7 +283,7 @@ final class Roles implements Federation.Host {
         publish.run();
     }
 
-    /** After the agent stopped: nothing is handled. */
+    /** After the agent stopped: the layer dispatches nothing to it any more. */
     private static final class Stopped extends RoleBase {
         Stopped(Roles roles) {
             super(roles);
@@ -292,26 +292,6 @@ final class Roles implements Federation.Host {
         @Override
         ContainerLayer.Role kind() {
             return ContainerLayer.Role.STOPPED;
-        }
-
-        @Override
-        public void onWhoIsContainer(PlatformMessage.WhoIsContainer w, AclMessage m) {
-        }
-
-        @Override
-        public void onJoined(PlatformMessage.Joined j, AclMessage m) {
-        }
-
-        @Override
-        public void onLalRequest(PlatformMessage.LalRequest r, AclMessage m) {
-        }
-
-        @Override
-        public void onSeeking(PlatformMessage.Seeking s, AclMessage m) {
-        }
-
-        @Override
-        public void onContainerIs(PlatformMessage.ContainerIs c, AclMessage m) {
         }
 
         @Override

@@ -68,13 +68,8 @@ final class ServiceRequests {
 
     private void send(Request r) {
         r.attempts++;
-        AclMessage m = new AclMessage(r.act);
-        m.setSender(ctx.selfAid());
-        m.addReceiver(io.concord.core.acl.AID.local(r.df ? "df" : "ams", ctx.platform()));
-        m.setOntology(ContainerLayer.ONTOLOGY);
-        m.setLanguage(ContainerLayer.LANGUAGE);
-        m.setProtocol(ContainerLayer.P_SERVICES);
-        m.setContent(r.content);
+        AclMessage m = ctx.message(r.act, ContainerLayer.P_SERVICES, io.concord.core.acl.AID.local(r.df ? "df" : "ams", ctx.platform()),
+                r.content);
         m.setReplyWith(r.replyWith);
         PlatformState st = roles.st;
         long wait = Math.max(500, 2 * Math.max(st.timeoutMs, ctx.config().timeoutMs(st.lists.lal.size())));

@@ -1,6 +1,5 @@
 package io.concord.layers.platform;
 
-import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.layer.Envelope;
@@ -112,9 +111,5 @@ final class OneAgent {
         for (long i = 0; i < ms; i++) {
             h.advanceMs(1);
         }
-    }
-
-    static AID aidOf(AgentEntry e) {
-        return e.aid();
     }
 }
