@@ -31,9 +31,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The container layer's rules, one test each, named after the rule (dissertation figs. 5.6 to
- * 5.11): one agent's layer alone on the layer harness with a manual clock; the test plays the
- * other agents. The whole platform in simulation is {@link PlatformSimulationTest}'s, the
- * containers of several hosts (fig. 5.12) {@link NetworkSimulationTest}'s.
+ * 5.12): one agent's layer alone on the layer harness with a manual clock; the test plays the
+ * other agents (and the other hosts' containers). The whole platform in simulation is
+ * {@link PlatformSimulationTest}'s, several hosts in simulation {@link NetworkSimulationTest}'s.
  */
 class ContainerRulesTest {
 
@@ -458,6 +458,101 @@ class ContainerRulesTest {
             c.from(m, Performative.INFORM, ContainerLayer.P_SERVICES, relay("victim"));
             assertTrue(g.out.isEmpty(), "carried out in victim's name: " + g.out);
             assertEquals(1, c.h.drops().get("masquerade"));
+        }
+    }
+
+    /** Fig. 5.12: a host's container and the containers of the other hosts. */
+    @Nested
+    class Hosts {
+        final NetworkConfig net = NetworkConfig.defaults().withBroadcast(false).withSeeds(List.of("127.0.0.2"))
+                .withTiming(250, 1_500);
+
+        /** Another host's container. */
+        AgentEntry on2(String local) {
+            return new AgentEntry(local + "@" + OneAgent.PLATFORM, "udp://127.0.0.2:7001", OneAgent.EPOCH - 5_000, List.of());
+        }
+
+        OneAgent container() {
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), net, null);
+            assertEquals(Role.CONTAINER, c.role());
+            return c;
+        }
+
+        @Test
+        void aContainerAnnouncesItselfToItsSeedsEachAnnouncementPeriod() {
+            OneAgent c = container();
+            List<OneAgent.Out> first = c.sent().stream().filter(o -> o.what() instanceof PlatformMessage.Announce).toList();
+            assertEquals(1, first.size());
+            assertEquals("127.0.0.2", first.get(0).at().host());
+            assertEquals(NetworkConfig.DEFAULT_PORT, first.get(0).at().port());
+            c.advance(249);
+            assertTrue(c.sent(PlatformMessage.Announce.class).isEmpty());
+            c.advance(1);
+            assertEquals(1, c.sent(PlatformMessage.Announce.class).size());
+        }
+
+        @Test
+        void theContainerWithTheSmallerNameOpensTheContactTheOtherAsksForOne() {
+            OneAgent c = container();
+            c.sent();
+            AgentEntry z = on2("z");
+            c.from(z, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, z, List.of()));
+            List<PlatformMessage.WhoIsFacilitator> opened = c.sent(PlatformMessage.WhoIsFacilitator.class);
+            assertEquals(1, opened.size(), "me@p < z@p: me opens");
+            assertEquals(32, opened.get(0).secret().length(), "a 128-bit secret");
+            AgentEntry a = on2("a");
+            c.from(a, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.3", 1, a, List.of()));
+            List<OneAgent.Out> out = c.sent();
+            assertTrue(out.stream().anyMatch(o -> o.what() instanceof PlatformMessage.ContactMe && o.to().equals("a@p")), out.toString());
+            assertTrue(out.stream().noneMatch(o -> o.what() instanceof PlatformMessage.WhoIsFacilitator), "a@p < me@p: a opens");
+        }
+
+        @Test
+        void anotherHostsListWithTheAgreedSecretGoesIntoTheGalOfEveryMember() {
+            AgentEntry m = other("m", 7002, -10);
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), net, null);
+            c.from(m, Performative.INFORM_REF, P_LAL, new Join(1, m));
+            c.advance(10);
+            c.sent();
+            AgentEntry a = on2("a");
+            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            List<OneAgent.Out> out = c.sent();
+            assertTrue(out.stream().anyMatch(o -> o.what() instanceof PlatformMessage.IsFacilitator i && i.secret().equals("s3cret")));
+            assertTrue(out.stream().anyMatch(o -> o.what() instanceof PlatformMessage.GalUpdate u && o.to().equals("a@p")
+                    && names(u.page().entries()).equals(List.of("m@p", "me@p"))), "our list goes to the other host: " + out);
+            AgentEntry b = new AgentEntry("b@p", "udp://127.0.0.2:7002", OneAgent.EPOCH, List.of());
+            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+                    PlatformMessage.Page.of(0, 1, body(List.of(a, b)))));
+            assertEquals(List.of("a@p", "b@p"), names(List.copyOf(c.layer.globalAgents())));
+            assertTrue(c.sent().stream().anyMatch(o -> o.what() instanceof PlatformMessage.GalPage && o.to().equals("m@p")),
+                    "the member gets the GAL");
+        }
+
+        @Test
+        void aListWithoutTheAgreedSecretIsDiscardedCountedAndItsSenderTold() {
+            OneAgent c = container();
+            AgentEntry a = on2("a");
+            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.sent();
+            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("guess", 1, 1,
+                    PlatformMessage.Page.of(0, 1, body(List.of(a, on2("x"))))));
+            assertTrue(c.layer.globalAgents().isEmpty());
+            assertEquals(1, c.h.drops().get("bad-secret"));
+            assertEquals(1, c.sent(PlatformMessage.UnknownSecret.class).size());
+        }
+
+        @Test
+        void aHostSilentForTheHostTimeoutLeavesTheGal() {
+            OneAgent c = container();
+            AgentEntry a = on2("a");
+            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+                    PlatformMessage.Page.of(0, 1, body(List.of(a)))));
+            assertEquals(List.of("a@p"), names(List.copyOf(c.layer.globalAgents())));
+            c.advance(1_500);
+            assertEquals(List.of("a@p"), names(List.copyOf(c.layer.globalAgents())), "not before the timeout");
+            c.advance(251);
+            assertTrue(c.layer.globalAgents().isEmpty());
         }
     }
 }

@@ -35,11 +35,16 @@ final class OneAgent {
 
     /** ... serving a gateway when container ({@code null}: none). */
     OneAgent(String local, int port, PlatformConfig config, Gateway gateway, int... neighbourPorts) {
+        this(local, port, config, null, gateway, neighbourPorts);
+    }
+
+    /** ... and in touch with the containers of other hosts ({@code network}; {@code null}: none). */
+    OneAgent(String local, int port, PlatformConfig config, NetworkConfig network, Gateway gateway, int... neighbourPorts) {
         List<Address> around = new ArrayList<>();
         for (int p : neighbourPorts) {
             around.add(new Address("127.0.0.1", p));
         }
-        layer = new ContainerLayer(config, null, gateway);
+        layer = new ContainerLayer(config, network, gateway);
         h = LayerHarness.builder().name(local + "@" + PLATFORM).localAddress(new Address("127.0.0.1", port))
                 .offer(Neighbourhood.class, new Neighbourhood() {
                     @Override
