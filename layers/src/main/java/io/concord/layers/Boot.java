@@ -85,6 +85,13 @@ public final class Boot {
                 .ports(range(s.getOrDefault("ports", PortRange.DEFAULT_BASE + "-" + (PortRange.DEFAULT_BASE + PortRange.DEFAULT_COUNT - 1))))
                 .profile(profile(s.getOrDefault("profile", "class7")))
                 .transport(transport(s.getOrDefault("transport", "udp")));
+        if (s.containsKey("key")) {
+            try {
+                b.platformKey(io.concord.layers.security.PlatformKey.load(java.nio.file.Path.of(s.get("key").trim())));
+            } catch (IllegalStateException | java.io.UncheckedIOException e) {
+                throw new BootException("-key: " + e.getMessage(), e);
+            }
+        }
         try {
             io.concord.layers.platform.NetworkConfig net = io.concord.layers.platform.NetworkConfig.defaults();
             if (s.containsKey("discovery-port")) {
@@ -160,7 +167,7 @@ public final class Boot {
             String key = a.replaceFirst("^--?", "").toLowerCase(Locale.ROOT);
             switch (key) {
                 case "help", "h", "watch" -> cli.put(key.equals("h") ? "help" : key, "true");
-                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port", "http" -> {
+                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port", "http", "key" -> {
                     if (i + 1 >= args.length) {
                         throw new BootException("-" + key + " needs a value. " + usage());
                     }
@@ -180,7 +187,7 @@ public final class Boot {
             }
             for (String k : props.stringPropertyNames()) {
                 String key = k.toLowerCase(Locale.ROOT);
-                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port", "http")
+                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port", "http", "key")
                         .contains(key)) {
                     throw new BootException("unknown setting '" + k + "' in " + conf
                             + "; known: name, ports, profile, transport, host, agents, watch, seeds, discovery-port, http");
@@ -333,6 +340,6 @@ public final class Boot {
     static String usage() {
         return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
                 + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
-                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-conf file.properties] [-watch]";
+                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-key platform.key] [-conf file.properties] [-watch]";
     }
 }

@@ -70,6 +70,25 @@ class BootTest {
                 .getMessage().contains("add concord-jade-bridge to the class path"));
         assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-http", "x:y"}, out))
                 .getMessage().contains("-http is written port or host:port"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-key", "no/such.key"}, out))
+                .getMessage().contains("-key: the platform key file no/such.key does not exist"));
+    }
+
+    @Test
+    void aPlatformWithItsOwnKeyCannotBeReachedWithTheUsersKey(@TempDir Path dir) throws Exception {
+        Path own = dir.resolve("own.key");
+        Files.writeString(own, "ab".repeat(32));
+        Files.setPosixFilePermissions(own, java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"));
+        PrintStream out = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        String name = "keyed" + ProcessHandle.current().pid();
+        try (Platform p = Boot.start(new String[]{"-name", name, "-ports", "7701-7720", "-key", own.toString(),
+                "-agents", "r:" + Recorder.class.getName()}, out)) {
+            java.util.List<io.concord.core.layer.Layer> layers = p.runtime().layers(new io.concord.core.acl.AID("r@" + name));
+            io.concord.layers.security.SecurityLayer sec = layers.stream()
+                    .filter(l -> l instanceof io.concord.layers.security.SecurityLayer)
+                    .map(l -> (io.concord.layers.security.SecurityLayer) l).findFirst().orElseThrow();
+            assertEquals(own.toString(), sec.platformKeyOrigin(), "the agent seals with the key -key names");
+        }
     }
 
     @Test

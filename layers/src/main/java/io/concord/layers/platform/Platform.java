@@ -41,8 +41,7 @@ public final class Platform implements AutoCloseable {
         this.ownsRuntime = owns;
         this.ports = b.ports;
         this.transport = b.transport;
-        Supplier<List<Layer>> safety = b.safety != null ? b.safety
-                : SafetyStack.builder().profile(b.profile).transport(b.transport).build();
+        Supplier<List<Layer>> safety = b.safety != null ? b.safety : defaultSafety(b);
         PlatformConfig config = b.config;
         NetworkConfig network = b.network;
         Supplier<Gateway> gateways = b.gateway;
@@ -52,6 +51,14 @@ public final class Platform implements AutoCloseable {
             l.addAll(safety.get());
             return l;
         };
+    }
+
+    private static Supplier<List<Layer>> defaultSafety(Builder b) {
+        SafetyStack.Builder sb = SafetyStack.builder().profile(b.profile).transport(b.transport);
+        if (b.key != null) {
+            sb.platformKey(b.key);
+        }
+        return sb.build();
     }
 
     public static Builder builder() {
@@ -70,6 +77,7 @@ public final class Platform implements AutoCloseable {
         private Supplier<Gateway> gateway;
         private Supplier<List<Layer>> safety;
         private AgentRuntime runtime;
+        private io.concord.layers.security.PlatformKey key;
 
         private Builder() {
         }
@@ -95,6 +103,16 @@ public final class Platform implements AutoCloseable {
         /** The safety profile; class 7 by default. */
         public Builder profile(Profile p) {
             this.profile = Objects.requireNonNull(p, "profile");
+            return this;
+        }
+
+        /**
+         * The platform key; by default the user's {@code ~/.concord/platform.key}, which all of
+         * one user's platforms share whatever their names. Give a platform its own key when its
+         * agents must not reach the user's other platforms.
+         */
+        public Builder platformKey(io.concord.layers.security.PlatformKey k) {
+            this.key = Objects.requireNonNull(k, "platformKey");
             return this;
         }
 

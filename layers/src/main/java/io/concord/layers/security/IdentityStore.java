@@ -33,6 +33,8 @@ public interface IdentityStore {
             Path p = dir.resolve(file);
             try {
                 if (Files.exists(p)) {
+                    PlatformKey.checkDirectory(dir);
+                    PlatformKey.checkPrivate(p);
                     byte[] seed = Files.readAllBytes(p);
                     if (seed.length != 32) {
                         throw new IllegalStateException("the identity file " + p + " is damaged (" + seed.length
@@ -40,17 +42,23 @@ public interface IdentityStore {
                     }
                     return Identity.fromSeed(seed, random);
                 }
-                Files.createDirectories(dir);
+                PlatformKey.createPrivateDirectories(dir);
+                PlatformKey.checkDirectory(dir);
                 Identity id = Identity.generate(random);
                 Path tmp = Files.createTempFile(dir, ".id", ".tmp");
                 try {
-                    Files.setPosixFilePermissions(tmp, PosixFilePermissions.fromString("rw-------"));
-                } catch (UnsupportedOperationException ignored) {
-                    // not POSIX
+                    try {
+                        Files.setPosixFilePermissions(tmp, PosixFilePermissions.fromString("rw-------"));
+                    } catch (UnsupportedOperationException ignored) {
+                        // not POSIX
+                    }
+                    Files.write(tmp, id.seed());
+                    PlatformKey.publish(tmp, p);
+                } finally {
+                    Files.deleteIfExists(tmp);
                 }
-                Files.write(tmp, id.seed());
-                Files.move(tmp, p, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
-                return id;
+                // Two starts of one agent at once: both use the identity that won.
+                return Identity.fromSeed(Files.readAllBytes(p), random);
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot read or write the identity " + p + ": " + e.getMessage(), e);
             }

@@ -83,27 +83,51 @@ public final class PlatformKey {
         }
     }
 
-    /** Reads the key file, or creates it with a new random key (mode 0600) if it does not exist. */
+    /**
+     * Reads the key file, or creates it with a new random key (mode 0600) if it does not exist.
+     * Agents started together agree on one key: the file appears whole and at once (a hard link to
+     * a finished private file), and whoever comes second reads the first one's key.
+     */
     public static PlatformKey loadOrCreate(Path file) {
+        Path dir = file.toAbsolutePath().getParent();
         if (!Files.exists(file)) {
             try {
-                Files.createDirectories(file.getParent());
+                createPrivateDirectories(dir);
                 PlatformKey k = random();
                 byte[] text = (HexFormat.of().formatHex(k.key) + "\n").getBytes(StandardCharsets.US_ASCII);
-                Path tmp = Files.createTempFile(file.getParent(), ".platform", ".key");
-                restrict(tmp);
-                Files.write(tmp, text, StandardOpenOption.TRUNCATE_EXISTING);
+                Path tmp = Files.createTempFile(dir, ".platform", ".key");
                 try {
-                    Files.move(tmp, file);
-                } catch (FileAlreadyExistsException raced) {
-                    Files.deleteIfExists(tmp); // another agent created it first: use theirs
+                    restrict(tmp);
+                    Files.write(tmp, text, StandardOpenOption.TRUNCATE_EXISTING);
+                    publish(tmp, file);
+                } finally {
+                    Files.deleteIfExists(tmp);
                 }
             } catch (IOException e) {
                 throw new UncheckedIOException("cannot create the platform key file " + file + ": " + e.getMessage()
                         + "; make its directory writable or configure a key file", e);
             }
         }
+        checkDirectory(dir);
         return load(file);
+    }
+
+    /**
+     * Puts a finished file at its name unless one is there already. A link, unlike a rename,
+     * never replaces an existing file, and the existence check and the link are one system call.
+     */
+    static void publish(Path finished, Path name) throws IOException {
+        try {
+            Files.createLink(name, finished);
+        } catch (FileAlreadyExistsException raced) {
+            // another agent created it first: use theirs
+        } catch (UnsupportedOperationException noLinks) {
+            try {
+                Files.move(finished, name);
+            } catch (FileAlreadyExistsException raced) {
+                // another agent created it first: use theirs
+            }
+        }
     }
 
     private static void restrict(Path p) throws IOException {
@@ -114,12 +138,57 @@ public final class PlatformKey {
         }
     }
 
-    private static void checkPrivate(Path file) {
+    /** Creates a directory (and its parents) that only its owner may enter, if it is missing. */
+    static void createPrivateDirectories(Path dir) throws IOException {
+        if (Files.isDirectory(dir)) {
+            return;
+        }
+        try {
+            Files.createDirectories(dir, PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
+        } catch (UnsupportedOperationException e) {
+            Files.createDirectories(dir);
+        }
+    }
+
+    /**
+     * Refuses a key or identity directory that another user owns or may write to: whoever can
+     * write there can replace the platform key or an agent's identity.
+     *
+     * @throws IllegalStateException saying what is wrong and how to fix it
+     */
+    public static void checkDirectory(Path dir) {
+        try {
+            String me = System.getProperty("user.name");
+            String owner = Files.getOwner(dir).getName();
+            if (me != null && !me.equals(owner)) {
+                throw new IllegalStateException("the key directory " + dir + " belongs to " + owner + ", not to "
+                        + me + ", who runs this agent; use a directory of your own (-D" + HOME_PROPERTY + "=...)"
+                        + " or: chown " + me + " " + dir);
+            }
+            Set<PosixFilePermission> perms = Files.getPosixFilePermissions(dir);
+            if (perms.contains(PosixFilePermission.GROUP_WRITE) || perms.contains(PosixFilePermission.OTHERS_WRITE)) {
+                throw new IllegalStateException("the key directory " + dir + " can be written by others ("
+                        + PosixFilePermissions.toString(perms) + "): they could replace the keys in it; make it "
+                        + "private: chmod 700 " + dir);
+            }
+        } catch (UnsupportedOperationException e) {
+            // not a POSIX file system
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot check the owner and permissions of " + dir, e);
+        }
+    }
+
+    /**
+     * Refuses a key or identity file that others may read or write.
+     *
+     * @throws IllegalStateException saying how to make it private
+     */
+    static void checkPrivate(Path file) {
         try {
             Set<PosixFilePermission> perms = Files.getPosixFilePermissions(file);
             if (perms.contains(PosixFilePermission.GROUP_READ) || perms.contains(PosixFilePermission.OTHERS_READ)
                     || perms.contains(PosixFilePermission.GROUP_WRITE) || perms.contains(PosixFilePermission.OTHERS_WRITE)) {
-                throw new IllegalStateException("the platform key file " + file + " can be read by others ("
+                throw new IllegalStateException("the key file " + file + " can be read or written by others ("
                         + PosixFilePermissions.toString(perms) + "); make it private: chmod 600 " + file);
             }
         } catch (UnsupportedOperationException e) {

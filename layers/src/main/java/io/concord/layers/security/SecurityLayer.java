@@ -193,6 +193,11 @@ public final class SecurityLayer extends Layer {
         return identity;
     }
 
+    /** Where the platform key came from (a file's path, "given in code"); never the key. */
+    public String platformKeyOrigin() {
+        return config.platformKey() == null ? "none" : config.platformKey().origin();
+    }
+
     /** True once a session key with the peer exists (class 7). */
     public boolean hasSessionWith(long peerId) {
         Pair p = pairs.get(peerId);
