@@ -80,6 +80,16 @@ public final class SecurityLayer extends Layer {
     private static final int HELLO = 1;
     private static final int HELLO_REPLY = 2;
     /**
+     * Key confirmation: the initiator proves it derived the key the reply's challenge gave, so the
+     * responder starts using it. Until then the responder keeps the key it had.
+     */
+    private static final int CONFIRM = 4;
+    private static final int CHALLENGE_BYTES = 16;
+    /** Replies a responder keeps waiting for confirmation, per peer (older ones are forgotten). */
+    private static final int MAX_PENDING = 4;
+    /** Frames in a row from a peer that fail authentication before it is asked for a new handshake. */
+    private static final int REHANDSHAKE_AFTER = 3;
+    /**
      * A notice, sealed with the platform key and not signed: "I hold no session key with you;
      * start a handshake". What a receiver sends, at most once a second per source, for a frame
      * sealed with a pair key it does not have (it restarted, or the frame is forged).
@@ -93,6 +103,7 @@ public final class SecurityLayer extends Layer {
     private static final int MAX_HELLO_ATTEMPTS = 10;
 
     private final Config config;
+    private final java.security.SecureRandom random = new java.security.SecureRandom();
     private final CRC32C crc = new CRC32C();
     private final long[] recentTags = new long[RECENT_TAGS];
     private final byte[] nonce = new byte[12];
@@ -135,16 +146,31 @@ public final class SecurityLayer extends Layer {
 
     /** What a layer keeps per peer under GCM_PAIR. */
     private static final class Pair {
+        /** The key in use, confirmed by both ends; null while none is. */
         SecretKeySpec key;
         // One cipher per key and direction: the JDK expands an AES key again whenever a cipher is
         // initialised with another key than last time, which would cost more than the encryption.
         Cipher encrypt;
         Cipher decrypt;
-        byte[] peerAgreement;
+        /** The key before, still opened for frames under way while a new one was agreed. */
+        SecretKeySpec previousKey;
+        Cipher previousDecrypt;
         Address address;
         final ArrayDeque<Envelope> queue = new ArrayDeque<>();
         long timer = -1;
         int attempts;
+        /** The challenge of this agent's hello under way, or null. */
+        byte[] challenge;
+        /** Replies this agent sent, each waiting for the peer's confirmation. */
+        final ArrayDeque<Pending> pending = new ArrayDeque<>();
+        /** The challenge of the last hello whose key was confirmed: a copy of it is a replay. */
+        byte[] confirmedHello;
+        int failures;
+        long lastRekeyAnswered = Long.MIN_VALUE;
+    }
+
+    /** A reply sent and not yet confirmed: the key it gives, and the signed reply to send again. */
+    private record Pending(byte[] helloChallenge, byte[] replyChallenge, byte[] keyBytes, byte[] reply) {
     }
 
     public SecurityLayer(Config config) {
@@ -372,39 +398,37 @@ public final class SecurityLayer extends Layer {
                 bodyOff = h + Frames.HEADER_BYTES;
                 bodyLen = len - Frames.HEADER_BYTES - Frames.CRC_BYTES - Frames.TAG_BYTES;
             } else {
-                SecretKeySpec key = platformAead;
-                Cipher gcm = platformDecrypt;
                 if (protection == Frames.PROTECTION_GCM_PAIR) {
                     Pair p = pairs.get(src);
-                    if (p == null || p.key == null) {
+                    if (p == null || (p.key == null && p.previousKey == null && p.pending.isEmpty())) {
                         // Nothing here is authenticated yet: no state, no signature, and at most one
                         // small notice back a second per source id (the sender, if real, then starts
                         // the handshake, which costs it a signature first).
                         ctx.drop(env, "no-session-key", "no session key with " + Long.toHexString(src)
                                 + " (this agent restarted, or the frame is forged); asks the sender for a handshake");
-                        long now = ctx.host().clock().epochMillis();
-                        Long last = rekeyed.get(src);
-                        if (last == null || now - last >= REKEY_EVERY_MS) {
-                            rekeyed.put(src, now);
-                            sendRekey(ctx, src, env.source());
-                        }
+                        rekeyAtMostEverySecond(ctx, src, env.source());
                         return;
                     }
-                    key = p.key;
-                    gcm = p.decrypt;
-                }
-                try {
-                    nonceFor(src, ctr);
-                    gcm.init(Cipher.DECRYPT_MODE, key, new GCMParameterSpec(128, nonce));
-                    gcm.updateAAD(d, h, Frames.HEADER_BYTES);
-                    body = gcm.doFinal(d, h + Frames.HEADER_BYTES, len - Frames.HEADER_BYTES);
-                } catch (AEADBadTagException e) {
-                    ctx.drop(env, "bad-tag", "AES-GCM tag mismatch from " + env.source()
-                            + ": forged, corrupted, replayed under an old key, or another platform key");
-                    return;
-                } catch (GeneralSecurityException e) {
-                    ctx.drop(env, "bad-tag", "AES-GCM refused the frame: " + e.getMessage());
-                    return;
+                    body = openWithPair(ctx, p, src, ctr, d, h, len);
+                    if (body == null) {
+                        if (++p.failures >= REHANDSHAKE_AFTER) {
+                            // The keys of the two ends differ (a confirmation lost, a key forgotten):
+                            // ask the peer, at the address it is known at, for a new handshake.
+                            p.failures = 0;
+                            rekeyAtMostEverySecond(ctx, src, p.address != null ? p.address : env.source());
+                        }
+                        ctx.drop(env, "bad-tag", "AES-GCM tag mismatch from " + env.source()
+                                + ": forged, corrupted, or sealed with a key this agent does not hold");
+                        return;
+                    }
+                    p.failures = 0;
+                } else {
+                    body = open(platformDecrypt, platformAead, src, ctr, d, h, len);
+                    if (body == null) {
+                        ctx.drop(env, "bad-tag", "AES-GCM tag mismatch from " + env.source()
+                                + ": forged, corrupted, replayed under an old key, or another platform key");
+                        return;
+                    }
                 }
                 bodyOff = 0;
                 bodyLen = body.length - Frames.CRC_BYTES;
@@ -432,6 +456,61 @@ public final class SecurityLayer extends Layer {
         ctx.passUp(env);
     }
 
+    /** Opens an AES-GCM frame, or returns null if the tag does not match. */
+    private byte[] open(Cipher gcm, SecretKeySpec key, long src, long ctr, byte[] d, int h, int len) {
+        try {
+            nonceFor(src, ctr);
+            gcm.init(Cipher.DECRYPT_MODE, key, new GCMParameterSpec(128, nonce));
+            gcm.updateAAD(d, h, Frames.HEADER_BYTES);
+            return gcm.doFinal(d, h + Frames.HEADER_BYTES, len - Frames.HEADER_BYTES);
+        } catch (AEADBadTagException e) {
+            return null;
+        } catch (GeneralSecurityException e) {
+            return null;
+        }
+    }
+
+    /**
+     * Opens a frame with the pair's key, else the key before it, else a key a reply of this agent
+     * gave and the peer has not confirmed yet (the frame confirms it). At most 2 + {@link #MAX_PENDING}
+     * attempts, all bounded.
+     */
+    private byte[] openWithPair(LayerContext ctx, Pair p, long src, long ctr, byte[] d, int h, int len) {
+        byte[] body;
+        if (p.key != null && (body = open(p.decrypt, p.key, src, ctr, d, h, len)) != null) {
+            return body;
+        }
+        if (p.previousKey != null && (body = open(p.previousDecrypt, p.previousKey, src, ctr, d, h, len)) != null) {
+            return body;
+        }
+        for (Pending pending : p.pending) {
+            SecretKeySpec k = new SecretKeySpec(pending.keyBytes(), "AES");
+            Cipher c = newGcm();
+            if ((body = open(c, k, src, ctr, d, h, len)) != null) {
+                confirmed(ctx, src, p, pending);
+                return body;
+            }
+        }
+        return null;
+    }
+
+    private void rekeyAtMostEverySecond(LayerContext ctx, long src, Address to) {
+        long now = ctx.host().clock().epochMillis();
+        Long last = rekeyed.get(src);
+        if (last == null || now - last >= REKEY_EVERY_MS) {
+            rekeyed.put(src, now);
+            sendRekey(ctx, src, to);
+        }
+    }
+
+    private static Cipher newGcm() {
+        try {
+            return Cipher.getInstance("AES/GCM/NoPadding");
+        } catch (GeneralSecurityException e) {
+            throw new IllegalStateException("this JVM lacks AES-GCM: " + e.getMessage(), e);
+        }
+    }
+
     private boolean seenTag(long tag) {
         for (long t : recentTags) {
             if (t == tag) {
@@ -447,12 +526,23 @@ public final class SecurityLayer extends Layer {
     }
 
     // ---- handshake ------------------------------------------------------------------------------
+    //
+    // initiator                                   responder
+    //   HELLO(name, keys, time, challenge I)  ->    a key from I and a fresh R, kept pending
+    //                                         <-    REPLY(name, keys, time, R, echo of I)
+    //   the echo of I proves the reply fresh:
+    //   the key is used, and confirmed         ->    CONFIRM(I, MAC of I and R): the key is used
+    //
+    // Both challenges go into the key, so a replayed hello (or a replayed reply) gives a key
+    // nobody holds and changes nothing in use; old frames never open under a new key.
 
     /** Sends a hello and keeps repeating it until answered, unless a handshake is already running. */
     private void startHandshake(LayerContext ctx, long peerId, Pair p) {
         if (p.timer < 0) {
             p.attempts = 0;
-            sendHello(ctx, peerId, p.address, HELLO);
+            p.challenge = new byte[CHALLENGE_BYTES];
+            random.nextBytes(p.challenge);
+            sendHello(ctx, peerId, p.address, p.challenge);
             scheduleRetry(ctx, peerId, p);
         }
     }
@@ -467,7 +557,11 @@ public final class SecurityLayer extends Layer {
         ctx.passDown(env);
     }
 
-    /** A peer holds no session key with this agent: forget ours and agree a new one (our frames wait meanwhile). */
+    /**
+     * A peer holds no key with this agent, or cannot open its frames: agree a new one. Our frames
+     * wait meanwhile, and the old key still opens the peer's frames under way. Anyone with the
+     * platform key can send this notice, so it is answered at most once a second per peer.
+     */
     private void onRekey(LayerContext ctx, Envelope env, long src, int len) {
         if (len != 1) {
             ctx.drop(env, "malformed-handshake", "a rekey notice of " + len + " bytes");
@@ -479,10 +573,29 @@ public final class SecurityLayer extends Layer {
             ctx.drop(env, "no-session-key", "a rekey notice from " + Long.toHexString(src) + ", which this agent has no pair with");
             return;
         }
-        p.key = null;
-        p.peerAgreement = null;
-        p.address = env.source();
+        long now = ctx.host().clock().epochMillis();
+        if (p.timer >= 0 || (p.lastRekeyAnswered != Long.MIN_VALUE && now - p.lastRekeyAnswered < REKEY_EVERY_MS)) {
+            ctx.drop(env, "rekey-limit", "a rekey notice from " + Long.toHexString(src)
+                    + " while a handshake with it runs or within a second of the last");
+            return;
+        }
+        p.lastRekeyAnswered = now;
+        retire(p);
+        if (p.address == null) {
+            p.address = env.source();
+        }
         startHandshake(ctx, src, p);
+    }
+
+    /** The key in use becomes the previous one: still opened, no longer used to seal. */
+    private static void retire(Pair p) {
+        if (p.key != null) {
+            p.previousKey = p.key;
+            p.previousDecrypt = p.decrypt;
+        }
+        p.key = null;
+        p.encrypt = null;
+        p.decrypt = null;
     }
 
     /** REKEY notices sent (tests, the console). */
@@ -500,24 +613,40 @@ public final class SecurityLayer extends Layer {
         return pairs.size();
     }
 
-    private void sendHello(LayerContext ctx, long peerId, Address to, int type) {
+    /** Signs and sends a hello ({@code echo == null}) or a reply; returns the signed body. */
+    private byte[] sendHello(LayerContext ctx, long peerId, Address to, byte[] challenge) {
+        return sendSigned(ctx, peerId, to, HELLO, challenge, null);
+    }
+
+    private byte[] sendSigned(LayerContext ctx, long peerId, Address to, int type, byte[] challenge, byte[] echo) {
         hellosSent++;
         byte[] name = ownName.getBytes(StandardCharsets.UTF_8);
-        int signedLen = 1 + 2 + name.length + 32 + 32 + 8;
-        byte[] buf = new byte[Frames.HEADROOM + signedLen + 8 + 64 + 40];
-        int o = Frames.HEADROOM;
-        buf[o] = (byte) type;
-        Frames.putShort(buf, o + 1, name.length);
-        System.arraycopy(name, 0, buf, o + 3, name.length);
-        int p = o + 3 + name.length;
-        System.arraycopy(identity.signingPublicKey(), 0, buf, p, 32);
-        System.arraycopy(identity.agreementPublicKey(), 0, buf, p + 32, 32);
-        Frames.putLong(buf, p + 64, ctx.host().clock().epochMillis());
+        int signedLen = 1 + 2 + name.length + 32 + 32 + 8 + CHALLENGE_BYTES + (echo != null ? CHALLENGE_BYTES : 0);
+        byte[] signed = new byte[signedLen + 8];
+        signed[0] = (byte) type;
+        Frames.putShort(signed, 1, name.length);
+        System.arraycopy(name, 0, signed, 3, name.length);
+        int p = 3 + name.length;
+        System.arraycopy(identity.signingPublicKey(), 0, signed, p, 32);
+        System.arraycopy(identity.agreementPublicKey(), 0, signed, p + 32, 32);
+        Frames.putLong(signed, p + 64, ctx.host().clock().epochMillis());
+        System.arraycopy(challenge, 0, signed, p + 72, CHALLENGE_BYTES);
+        if (echo != null) {
+            System.arraycopy(echo, 0, signed, p + 72 + CHALLENGE_BYTES, CHALLENGE_BYTES);
+        }
         // The signature also covers the destination id, so a hello cannot be replayed to another agent.
-        Frames.putLong(buf, o + signedLen, peerId);
-        byte[] sig = identity.sign(buf, o, signedLen + 8);
-        System.arraycopy(sig, 0, buf, o + signedLen, 64);
-        Envelope env = Envelope.control(peerId, to, buf, o, signedLen + 64);
+        Frames.putLong(signed, signedLen, peerId);
+        byte[] sig = identity.sign(signed, 0, signedLen + 8);
+        byte[] body = Arrays.copyOf(signed, signedLen + 64);
+        System.arraycopy(sig, 0, body, signedLen, 64);
+        sendHandshakeBody(ctx, peerId, to, body);
+        return body;
+    }
+
+    private void sendHandshakeBody(LayerContext ctx, long peerId, Address to, byte[] body) {
+        byte[] buf = new byte[Frames.HEADROOM + body.length + 40];
+        System.arraycopy(body, 0, buf, Frames.HEADROOM, body.length);
+        Envelope env = Envelope.control(peerId, to, buf, Frames.HEADROOM, body.length);
         seal(env, Frames.PROTECTION_GCM_PLATFORM, Frames.FLAG_HANDSHAKE, platformAead, platformEncrypt);
         ctx.passDown(env);
     }
@@ -526,7 +655,7 @@ public final class SecurityLayer extends Layer {
         long delayMs = Math.min(2_000, FIRST_RETRY_MS << Math.min(p.attempts, 5));
         p.timer = ctx.host().schedule(ctx.nowNs() + delayMs * 1_000_000L, () -> {
             p.timer = -1;
-            if (p.key != null) {
+            if (p.key != null || p.challenge == null) {
                 return;
             }
             if (++p.attempts >= MAX_HELLO_ATTEMPTS) {
@@ -535,9 +664,10 @@ public final class SecurityLayer extends Layer {
                             + " did not answer " + MAX_HELLO_ATTEMPTS + " handshakes");
                 }
                 p.queue.clear();
+                p.challenge = null;
                 return;
             }
-            sendHello(ctx, peerId, p.address, HELLO);
+            sendHello(ctx, peerId, p.address, p.challenge);
             scheduleRetry(ctx, peerId, p);
         });
     }
@@ -547,13 +677,17 @@ public final class SecurityLayer extends Layer {
             onRekey(ctx, env, src, len);
             return;
         }
+        if (len >= 1 && b[off] == CONFIRM) {
+            onConfirm(ctx, env, src, b, off, len);
+            return;
+        }
         if (len < 3) {
             ctx.drop(env, "malformed-handshake", len + " bytes");
             return;
         }
         int type = b[off];
         int nameLen = Frames.getShort(b, off + 1);
-        int signedLen = 1 + 2 + nameLen + 32 + 32 + 8;
+        int signedLen = 1 + 2 + nameLen + 32 + 32 + 8 + CHALLENGE_BYTES + (type == HELLO_REPLY ? CHALLENGE_BYTES : 0);
         if ((type != HELLO && type != HELLO_REPLY) || len != signedLen + 64) {
             ctx.drop(env, "malformed-handshake", "type " + type + ", " + len + " bytes");
             return;
@@ -563,8 +697,19 @@ public final class SecurityLayer extends Layer {
         byte[] signingKey = Arrays.copyOfRange(b, p, p + 32);
         byte[] agreementKey = Arrays.copyOfRange(b, p + 32, p + 64);
         long ts = Frames.getLong(b, p + 64);
+        byte[] challenge = Arrays.copyOfRange(b, p + 72, p + 72 + CHALLENGE_BYTES);
+        byte[] echo = type == HELLO_REPLY ? Arrays.copyOfRange(b, p + 72 + CHALLENGE_BYTES, p + 72 + 2 * CHALLENGE_BYTES) : null;
         if (Frames.id(name) != src) {
             ctx.drop(env, "masquerade", "a handshake for " + name + " from the frame id of another agent");
+            return;
+        }
+        Pair known = pairs.get(src);
+        if (type == HELLO && known != null && known.confirmedHello != null && Arrays.equals(known.confirmedHello, challenge)) {
+            ctx.drop(env, "replayed-handshake", "a copy of the hello of " + name + " whose key is in use");
+            return;
+        }
+        if (type == HELLO_REPLY && (known == null || known.challenge == null || !Arrays.equals(known.challenge, echo))) {
+            ctx.drop(env, "replayed-handshake", "a reply from " + name + " to no hello of this agent under way");
             return;
         }
         byte[] signed = new byte[signedLen + 8];
@@ -590,33 +735,126 @@ public final class SecurityLayer extends Layer {
         }
         Pair pair = pairs.computeIfAbsent(src, k -> new Pair());
         dropEvicted(ctx);
-        pair.address = env.source();
-        if (pair.key == null || !Arrays.equals(pair.peerAgreement, agreementKey)) {
-            byte[] info = new byte[16 + 16];
-            System.arraycopy("concord pair v1\0".getBytes(StandardCharsets.US_ASCII), 0, info, 0, 16);
-            Frames.putLong(info, 16, Math.min(src, ownId));
-            Frames.putLong(info, 24, Math.max(src, ownId));
-            byte[] key = Crypto.hkdf(identity.agree(agreementKey), platformKeyBytes, info, 16);
-            pair.key = new SecretKeySpec(key, "AES");
-            pair.peerAgreement = agreementKey;
-            try {
-                pair.encrypt = Cipher.getInstance("AES/GCM/NoPadding");
-                pair.decrypt = Cipher.getInstance("AES/GCM/NoPadding");
-            } catch (GeneralSecurityException e) {
-                throw new IllegalStateException("this JVM lacks AES-GCM: " + e.getMessage(), e);
+        if (type == HELLO_REPLY) {
+            // Fresh: it echoes the challenge of our hello under way. Use the key, and confirm it.
+            byte[] key = pairKey(identity.agree(agreementKey), src, pair.challenge, challenge);
+            pair.address = env.source();
+            byte[] confirm = new byte[1 + CHALLENGE_BYTES + 16];
+            confirm[0] = (byte) CONFIRM;
+            System.arraycopy(pair.challenge, 0, confirm, 1, CHALLENGE_BYTES);
+            System.arraycopy(confirmation(key, pair.challenge, challenge), 0, confirm, 1 + CHALLENGE_BYTES, 16);
+            pair.challenge = null;
+            use(ctx, pair, key);
+            sendHandshakeBody(ctx, src, pair.address, confirm);
+            flush(ctx, pair);
+            return;
+        }
+        for (Pending sent : pair.pending) {
+            if (Arrays.equals(sent.helloChallenge(), challenge)) {
+                // The initiator repeats its hello: our reply was lost. The same reply again, unsigned anew.
+                sendHandshakeBody(ctx, src, env.source(), sent.reply());
+                return;
             }
         }
-        if (type == HELLO) {
-            sendHello(ctx, src, env.source(), HELLO_REPLY);
+        if (pair.challenge != null && pair.key == null && ownId < src) {
+            // Both started at once: the smaller id's handshake goes on, and the peer answers it.
+            ctx.drop(env, "crossed-handshake", name + " started a handshake while this agent's own runs; the smaller id's goes on");
+            return;
         }
+        // A hello of our own under way goes on: if the peer never confirms (it had nothing to
+        // send, and the confirmation was lost), its reply gives us a key all the same.
+        if (pair.address == null || pair.key == null) {
+            pair.address = env.source();
+        }
+        byte[] replyChallenge = new byte[CHALLENGE_BYTES];
+        random.nextBytes(replyChallenge);
+        byte[] key = pairKey(identity.agree(agreementKey), src, challenge, replyChallenge);
+        byte[] reply = sendSigned(ctx, src, env.source(), HELLO_REPLY, replyChallenge, challenge);
+        if (pair.pending.size() >= MAX_PENDING) {
+            pair.pending.poll();
+        }
+        pair.pending.add(new Pending(challenge, replyChallenge, key, reply));
+    }
+
+    /** The initiator derived the key of one of our replies: use it. */
+    private void onConfirm(LayerContext ctx, Envelope env, long src, byte[] b, int off, int len) {
+        if (len != 1 + CHALLENGE_BYTES + 16) {
+            ctx.drop(env, "malformed-handshake", "a confirmation of " + len + " bytes");
+            return;
+        }
+        Pair pair = pairs.get(src);
+        byte[] hello = Arrays.copyOfRange(b, off + 1, off + 1 + CHALLENGE_BYTES);
+        byte[] mac = Arrays.copyOfRange(b, off + 1 + CHALLENGE_BYTES, off + len);
+        if (pair != null) {
+            for (Pending sent : pair.pending) {
+                if (Arrays.equals(sent.helloChallenge(), hello)) {
+                    if (!MessageDigest.isEqual(mac, confirmation(sent.keyBytes(), hello, sent.replyChallenge()))) {
+                        break;
+                    }
+                    confirmed(ctx, src, pair, sent);
+                    return;
+                }
+            }
+        }
+        ctx.drop(env, "replayed-handshake", "a confirmation from " + Long.toHexString(src)
+                + " of no reply of this agent waiting for one, or with the wrong proof");
+    }
+
+    /** The peer holds the key of one of our replies: it is the pair's key from now on. */
+    private void confirmed(LayerContext ctx, long src, Pair pair, Pending sent) {
+        pair.pending.clear();
+        pair.confirmedHello = sent.helloChallenge();
         if (pair.timer >= 0) {
             ctx.host().cancel(pair.timer);
             pair.timer = -1;
         }
+        pair.challenge = null;
+        use(ctx, pair, sent.keyBytes());
+        flush(ctx, pair);
+    }
+
+    private void use(LayerContext ctx, Pair pair, byte[] key) {
+        retire(pair);
+        pair.key = new SecretKeySpec(key, "AES");
+        pair.encrypt = newGcm();
+        pair.decrypt = newGcm();
+        pair.failures = 0;
+        if (pair.timer >= 0) {
+            ctx.host().cancel(pair.timer);
+            pair.timer = -1;
+        }
+    }
+
+    private void flush(LayerContext ctx, Pair pair) {
         while (!pair.queue.isEmpty()) {
             Envelope queued = pair.queue.poll();
             seal(queued, Frames.PROTECTION_GCM_PAIR, 0, pair.key, pair.encrypt);
             ctx.passDown(queued);
+        }
+    }
+
+    /** HKDF of the shared secret, salted with the platform key, bound to both ids and both challenges. */
+    private byte[] pairKey(byte[] shared, long peerId, byte[] helloChallenge, byte[] replyChallenge) {
+        byte[] info = new byte[16 + 16 + 2 * CHALLENGE_BYTES];
+        System.arraycopy("concord pair v2\0".getBytes(StandardCharsets.US_ASCII), 0, info, 0, 16);
+        Frames.putLong(info, 16, Math.min(peerId, ownId));
+        Frames.putLong(info, 24, Math.max(peerId, ownId));
+        System.arraycopy(helloChallenge, 0, info, 32, CHALLENGE_BYTES);
+        System.arraycopy(replyChallenge, 0, info, 32 + CHALLENGE_BYTES, CHALLENGE_BYTES);
+        return Crypto.hkdf(shared, platformKeyBytes, info, 16);
+    }
+
+    /** The proof of holding a pair key: HMAC-SHA256 of both challenges under it, 16 bytes. */
+    private static byte[] confirmation(byte[] key, byte[] helloChallenge, byte[] replyChallenge) {
+        try {
+            Mac m = Mac.getInstance("HmacSHA256");
+            m.init(new SecretKeySpec(key, "HmacSHA256"));
+            m.update("concord confirm v1".getBytes(StandardCharsets.US_ASCII));
+            m.update(helloChallenge);
+            m.update(replyChallenge);
+            return Arrays.copyOf(m.doFinal(), 16);
+        } catch (GeneralSecurityException e) {
+            throw new IllegalStateException("this JVM lacks HMAC-SHA256: " + e.getMessage(), e);
         }
     }
 }

@@ -136,9 +136,10 @@ class SecurityLayerTest {
         carry(a, A_ADDR, b);          // hello
         assertNull(b.pollUp(), "a hello is not a message");
         carry(b, B_ADDR, a);          // hello reply
-        assertTrue(sa.hasSessionWith(Frames.id("b@p")));
+        assertTrue(sa.hasSessionWith(Frames.id("b@p")), "the reply echoes a's challenge: a uses the key");
+        assertFalse(sb.hasSessionWith(Frames.id("a@p")), "b waits for a to confirm it");
+        carry(a, A_ADDR, b);          // the confirmation and the queued message
         assertTrue(sb.hasSessionWith(Frames.id("a@p")));
-        carry(a, A_ADDR, b);          // the queued message
         assertEquals("after the handshake", text(b.pollUp()));
     }
 
@@ -263,6 +264,167 @@ class SecurityLayerTest {
         Envelope got = b2.pollUp();
         assertNotNull(got, "a: " + a.drops() + " b2: " + b2.drops());
         assertEquals("after", text(got));
+    }
+
+    /** A start of the agent with a kept identity: the same Ed25519 key, a new X25519 key for this run. */
+    private static SecurityLayer keeping(Identity id) {
+        Identity thisRun = Identity.fromSeed(id.seed(), new java.security.SecureRandom());
+        return new SecurityLayer(new SecurityLayer.Config(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY, name -> thisRun, 30_000, 16));
+    }
+
+    private static byte[] next(LayerHarness from) {
+        Envelope e = from.pollDown();
+        assertNotNull(e, "a frame was expected");
+        return e.dataCopy();
+    }
+
+    private static long resealCounter = 1L << 40;
+
+    /**
+     * What a holder of the platform key can do with a handshake frame it saw: open it and seal it
+     * again under a fresh counter, so that it is no copy of a frame already taken.
+     */
+    static byte[] resealed(byte[] wire) {
+        try {
+            javax.crypto.spec.SecretKeySpec k = new javax.crypto.spec.SecretKeySpec(
+                    Crypto.hkdf(Stacks.KEY.bytes(), null, "concord platform aead v1", 16), "AES");
+            javax.crypto.Cipher c = javax.crypto.Cipher.getInstance("AES/GCM/NoPadding");
+            byte[] nonce = new byte[12];
+            System.arraycopy(wire, 4, nonce, 0, 4);
+            System.arraycopy(wire, 20, nonce, 4, 8);
+            c.init(javax.crypto.Cipher.DECRYPT_MODE, k, new javax.crypto.spec.GCMParameterSpec(128, nonce));
+            c.updateAAD(wire, 0, Frames.HEADER_BYTES);
+            byte[] plain = c.doFinal(wire, Frames.HEADER_BYTES, wire.length - Frames.HEADER_BYTES);
+            byte[] out = java.util.Arrays.copyOf(wire, wire.length);
+            Frames.putLong(out, 20, resealCounter++);
+            System.arraycopy(out, 20, nonce, 4, 8);
+            java.util.zip.CRC32C crc = new java.util.zip.CRC32C();
+            crc.update(out, 0, Frames.HEADER_BYTES);
+            crc.update(plain, 0, plain.length - Frames.CRC_BYTES);
+            Frames.putInt(plain, plain.length - Frames.CRC_BYTES, (int) crc.getValue());
+            c.init(javax.crypto.Cipher.ENCRYPT_MODE, k, new javax.crypto.spec.GCMParameterSpec(128, nonce));
+            c.updateAAD(out, 0, Frames.HEADER_BYTES);
+            c.doFinal(plain, 0, plain.length, out, Frames.HEADER_BYTES);
+            return out;
+        } catch (java.security.GeneralSecurityException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    private static void deliver(byte[] wire, Address from, LayerHarness to) {
+        to.receiveUp(Envelope.incoming(from, wire, 0, wire.length, 0));
+    }
+
+    /** a and b shake hands and a's first message arrives; returns a's hello as it went on the wire. */
+    private static byte[] shakeHands(LayerHarness a, LayerHarness b, String text) {
+        a.sendDown(body(text, "b@p"));
+        byte[] hello = next(a);
+        deliver(hello, A_ADDR, b);
+        carry(b, B_ADDR, a);
+        carry(a, A_ADDR, b);
+        assertEquals(text, text(b.pollUp()));
+        return hello;
+    }
+
+    @Test
+    void aHelloReplayedFromAnEarlierRunOfThePeerChangesNothing() {
+        Identity aId = IdentityStore.ephemeral().identityFor("a@p");
+        LayerHarness b = agent("b@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        byte[] oldHello = shakeHands(agent("a@p", keeping(aId)), b, "first run");
+        // a restarts with its identity and a new X25519 key, and shakes hands again.
+        LayerHarness a2 = agent("a@p", keeping(aId));
+        shakeHands(a2, b, "second run");
+        clock.advanceMs(5_000); // well inside the handshake window
+        deliver(resealed(oldHello), new Address("attacker", 9), b);
+        while (b.pollDown() != null) {
+            // b's answer to the replayed hello: a key nobody can confirm
+        }
+        a2.sendDown(body("after the replay", "b@p"));
+        carry(a2, A_ADDR, b);
+        Envelope got = b.pollUp();
+        assertNotNull(got, "the replayed hello broke the pair: " + b.drops());
+        assertEquals("after the replay", text(got));
+        carry(b, B_ADDR, a2);
+        assertEquals(0, a2.upCount(), "and a2 got nothing it did not ask for: " + a2.drops());
+    }
+
+    @Test
+    void aCopyOfAHelloWhoseKeyIsInUseIsDroppedUnanswered() {
+        SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        LayerHarness b = agent("b@p", sb);
+        byte[] hello = shakeHands(a, b, "genuine");
+        long signed = sb.hellosSent();
+        deliver(resealed(hello), A_ADDR, b);
+        assertEquals(1, b.drops().get("replayed-handshake"), b.drops().toString());
+        assertEquals(0, b.downCount(), "no answer to a replay");
+        assertEquals(signed, sb.hellosSent(), "no signature for a replay");
+        a.sendDown(body("still flowing", "b@p"));
+        carry(a, A_ADDR, b);
+        assertEquals("still flowing", text(b.pollUp()));
+    }
+
+    @Test
+    void aReplyToNoHelloUnderWayIsDropped() {
+        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        LayerHarness b = agent("b@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        a.sendDown(body("one", "b@p"));
+        carry(a, A_ADDR, b);
+        byte[] reply = next(b);
+        deliver(reply, B_ADDR, a);
+        carry(a, A_ADDR, b);
+        assertEquals("one", text(b.pollUp()));
+        deliver(resealed(reply), B_ADDR, a);
+        assertEquals(1, a.drops().get("replayed-handshake"), a.drops().toString());
+        a.sendDown(body("two", "b@p"));
+        carry(a, A_ADDR, b);
+        assertEquals("two", text(b.pollUp()));
+    }
+
+    @Test
+    void framesThatKeepFailingAuthenticationBringANewHandshake() {
+        SecurityLayer sa = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness a = agent("a@p", sa);
+        LayerHarness b = agent("b@p", sb);
+        shakeHands(a, b, "paired");
+        // Three frames in a row in a's name that b cannot open (keys that went apart, or forgeries).
+        for (int i = 0; i < 3; i++) {
+            b.receiveUp(forged(Frames.id("a@p"), "b@p", 1_000 + i));
+        }
+        assertEquals(3, b.drops().get("bad-tag"));
+        Envelope notice = b.pollDown();
+        assertNotNull(notice, "b asks a for a new handshake");
+        assertEquals(A_ADDR, notice.destination(), "at the address a is known at, not where the frames came from");
+        byte[] wire = notice.dataCopy();
+        long hellos = sa.hellosSent();
+        deliver(wire, B_ADDR, a);
+        assertEquals(hellos + 1, sa.hellosSent(), "a starts a handshake");
+        a.sendDown(body("on a new key", "b@p"));
+        carry(a, A_ADDR, b);
+        carry(b, B_ADDR, a);
+        carry(a, A_ADDR, b);
+        assertEquals("on a new key", text(b.pollUp()));
+        deliver(resealed(wire), B_ADDR, a);
+        assertEquals(1, a.drops().get("rekey-limit"), "a copy of the notice within a second: " + a.drops());
+    }
+
+    @Test
+    void twoAgentsThatStartTogetherAgreeOnOneKey() {
+        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        LayerHarness b = agent("b@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        a.sendDown(body("from a", "b@p"));
+        Envelope toA = body("from b", "a@p");
+        toA.setDestination(A_ADDR);
+        b.sendDown(toA);
+        for (int round = 0; round < 4; round++) {
+            carry(a, A_ADDR, b);
+            carry(b, B_ADDR, a);
+        }
+        assertEquals("from a", text(b.pollUp()));
+        assertEquals("from b", text(a.pollUp()));
+        assertEquals(1, a.drops().get("crossed-handshake") + b.drops().get("crossed-handshake"),
+                "one of the two hellos gives way: " + a.drops() + " " + b.drops());
     }
 
     @Test
