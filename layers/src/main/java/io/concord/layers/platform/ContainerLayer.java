@@ -78,6 +78,7 @@ public final class ContainerLayer extends Layer {
     private Roles roles;
     private Directory directory;
     private ServiceRequests requests;
+    private MembershipGate gate;
 
     public ContainerLayer(PlatformConfig config) {
         this(config, NetworkConfig.defaults());
@@ -190,7 +191,8 @@ public final class ContainerLayer extends Layer {
                 host::execute);
         io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();
-        roles = new Roles(context, st, network, around, relay, this::publish);
+        gate = new MembershipGate(context, layerContext, st.lists, self);
+        roles = new Roles(context, st, network, around, relay, this::publish, gate::listsChanged);
         directory = new Directory(context, roles);
         requests = new ServiceRequests(context, roles);
         context.trace("start", "neighbours=" + neighbours.size());
@@ -199,6 +201,9 @@ public final class ContainerLayer extends Layer {
 
     @Override
     public void stop(LayerContext ctx) {
+        if (gate != null) {
+            gate.stop();
+        }
         roles.stop();
         publish();
     }
@@ -286,7 +291,11 @@ public final class ContainerLayer extends Layer {
         boolean forService = addressedToService(m);
         boolean platformMessage = !forService && ONTOLOGY.equals(m.getOntology());
         if (!platformMessage && !forService) {
-            ctx.passUp(env);
+            if (roles == null || roles.kind() == Role.STOPPED) {
+                ctx.passUp(env);
+            } else {
+                gate.admit(env, m.getSender().name());
+            }
             return;
         }
         AID sender = m.getSender();
@@ -331,14 +340,22 @@ public final class ContainerLayer extends Layer {
             unauthenticated(ctx, env, firstWord(m.getContent()) + " from " + sender.name());
             return;
         }
+        AgentEntry speaker = PlatformMessage.speaker(p);
+        if (speaker != null && !speaker.name().equals(sender.name())) {
+            ctx.drop(env, "masquerade", firstWord(m.getContent()) + " from " + sender.name() + " in the name of " + speaker.name());
+            return;
+        }
         if (host.tracer().enabled()) {
             host.tracer().trace(host.nowNs(), self, "platform-accept", m.getPerformative().wireName() + " "
                     + firstWord(m.getContent()) + " from " + sender.name());
         }
+        st.fromAny = env.header(Frames.ENVELOPE_ANY) != null;
         try {
             dispatch(p, m);
         } catch (IllegalArgumentException e) {
             ctx.drop(env, "malformed-platform", e.getMessage());
+        } finally {
+            st.fromAny = false;
         }
     }
 

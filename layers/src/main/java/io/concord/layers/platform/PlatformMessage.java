@@ -361,6 +361,39 @@ sealed interface PlatformMessage {
     }
 
     /** The words that may come in a frame for any agent: asking a port, the answers, an announcement. */
+    /**
+     * The agent a message says it is from, where it says so ({@code null} where it does not): it
+     * must be the message's sender, whom the frame authenticated.
+     */
+    static AgentEntry speaker(PlatformMessage p) {
+        if (p instanceof WhoIsContainer w) {
+            return w.asker();
+        } else if (p instanceof ContainerIs c) {
+            return c.by();
+        } else if (p instanceof Seeking s) {
+            return s.by();
+        } else if (p instanceof Join j) {
+            return j.by();
+        } else if (p instanceof Joined j) {
+            return j.by();
+        } else if (p instanceof Alive a) {
+            return a.by();
+        } else if (p instanceof AgentInfoRequest r) {
+            return r.by();
+        } else if (p instanceof LalRequest r) {
+            return r.by();
+        } else if (p instanceof Announce a) {
+            return a.by();
+        } else if (p instanceof WhoIsFacilitator w) {
+            return w.by();
+        } else if (p instanceof IsFacilitator f) {
+            return f.by();
+        } else if (p instanceof ContactMe c) {
+            return c.by();
+        }
+        return null;
+    }
+
     static boolean discovery(PlatformMessage p) {
         return p instanceof WhoIsContainer || p instanceof ContainerIs || p instanceof Seeking
                 || p instanceof LalRequest || p instanceof Announce;

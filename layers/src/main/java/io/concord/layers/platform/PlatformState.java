@@ -37,6 +37,18 @@ final class PlatformState {
     /** After a failover, the agent expected to take over, or {@code null}. */
     AgentEntry successor;
     int failoverRounds;
+    /**
+     * The message being handled came in a frame for any agent at a port, sealed with the platform
+     * key alone: its sender is whatever its sender wrote, so it is a hint at most.
+     */
+    boolean fromAny;
+    /** When this agent last asked each claimed container itself whether it is (bounded). */
+    final Map<String, Long> verified = new LinkedHashMap<>(16, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, Long> eldest) {
+            return size() > 64;
+        }
+    };
     /** How long the container's last complete maintenance cycle took, in ns; -1 if none yet. */
     volatile long lastCycleNs = -1;
 

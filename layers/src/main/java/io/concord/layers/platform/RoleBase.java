@@ -72,9 +72,13 @@ abstract class RoleBase implements PlatformMessage.Handler {
         // Answered to whoever holds the asker's port, as it asked: sealed with the platform key, so
         // that discovery costs no signed handshake per pair of agents.
         AclMessage reply = roles.replyOf(m, Performative.INFORM, answer);
-        reply.clearAllReceiver();
-        Address back = asker.transportAddress();
-        reply.addReceiver(back != null ? ctx.anyAt(back) : asker.aid());
+        if (st.fromAny) {
+            reply.clearAllReceiver();
+            Address back = asker.transportAddress();
+            reply.addReceiver(back != null ? ctx.anyAt(back) : asker.aid());
+        }
+        // Asked in a frame sealed to this agent (a claim being checked): answered the same way,
+        // so that the answer is authenticated too.
         ctx.sendQuietly(reply);
     }
 
@@ -87,10 +91,20 @@ abstract class RoleBase implements PlatformMessage.Handler {
     @Override
     public void onContainerIs(PlatformMessage.ContainerIs c, AclMessage m) {
         markAnswered(m);
-        st.maxTermSeen = Math.max(st.maxTermSeen, c.term());
-        if (!c.container().name().equals(ctx.self())) {
-            claimed(c.container(), c.term(), m);
+        if (c.container().name().equals(ctx.self())) {
+            return;
         }
+        boolean ownClaim = !st.fromAny && c.container().name().equals(m.getSender().name());
+        if (!ownClaim && kind() != ContainerLayer.Role.SEEKING) {
+            // A member or a container changes sides only on the claimed container's own word,
+            // sealed to it; anything else is a hint, and the claimed container is asked itself.
+            roles.verifyClaim(c.container());
+            return;
+        }
+        if (!st.fromAny) {
+            st.maxTermSeen = Math.max(st.maxTermSeen, c.term());
+        }
+        claimed(c.container(), c.term(), m);
     }
 
     /** Another agent is container, says a container message. */

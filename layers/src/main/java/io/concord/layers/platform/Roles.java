@@ -29,13 +29,16 @@ final class Roles implements Federation.Host {
      * @param network the discovery of other hosts' containers, or {@code null} for none
      * @param around  the node's neighbourhood (its listener for the network discovery), or {@code null}
      */
+    private final Runnable listsChanged;
+
     Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, io.concord.core.net.Neighbourhood around,
-          GatewayRelay relay, Runnable publish) {
+          GatewayRelay relay, Runnable publish, Runnable listsChanged) {
         this.ctx = ctx;
         this.st = st;
         this.federation = network == null ? null : new Federation(ctx, network, around, this);
         this.relay = relay;
         this.publish = publish;
+        this.listsChanged = listsChanged;
         this.join = new Joining(ctx, st, this::joinFailed);
         this.current = new SeekingRole(this);
     }
@@ -271,12 +274,30 @@ final class Roles implements Federation.Host {
         return claimed;
     }
 
+    /**
+     * Asks an agent said to be container, in a frame sealed to it, whether it is: its own answer
+     * decides. At most once per maintenance period per name, so that claims cost little.
+     */
+    void verifyClaim(AgentEntry claimed) {
+        long now = ctx.nowNs();
+        Long last = st.verified.get(claimed.name());
+        long gapNs = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().basePeriodMs()) * 1_000_000L;
+        if (last != null && now - last < gapNs) {
+            return;
+        }
+        st.verified.put(claimed.name(), now);
+        ctx.trace("verify-claim", claimed.name());
+        ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, claimed.aid(),
+                new PlatformMessage.WhoIsContainer(st.round, st.selfEntry));
+    }
+
     AclMessage replyOf(AclMessage to, Performative act, PlatformMessage content) {
         return ctx.reply(to, act, content);
     }
 
     void rebuildRoutes() {
         st.lists.rebuildRoutes(ctx.nowNs());
+        listsChanged.run();
     }
 
     void publish() {

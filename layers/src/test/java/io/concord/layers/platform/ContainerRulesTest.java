@@ -1,5 +1,7 @@
 package io.concord.layers.platform;
 
+import io.concord.core.acl.AclMessage;
+import io.concord.core.layer.Envelope;
 import io.concord.core.acl.Performative;
 import io.concord.layers.platform.ContainerLayer.Role;
 import io.concord.layers.platform.PlatformMessage.AgentInfo;
@@ -397,6 +399,156 @@ class ContainerRulesTest {
             AgentEntry yWithService = y.withServices(List.of(ServiceDescription.ofType("book-selling")));
             a.from(y, Performative.INFORM, P_LAL, new AgentInfo(2, List.of(yWithService)));
             assertEquals(List.of("y@p"), names(a.layer.search(ServiceDescription.ofType("book-selling"))));
+        }
+    }
+
+    /** Who may say what: a claim counts only on the claimed container's own authenticated word. */
+    @Nested
+    class Claims {
+
+        @Test
+        void aClaimInAFrameForAnyAgentMakesAMemberOnlyAskTheClaimedContainer() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry x = other("x", 7009, 2_000);
+            OneAgent a = memberOf(c, List.of(x));
+            a.fromAny(x, Performative.INFORM, P_DISCOVERY, new ContainerIs(99, x, x));
+            List<OneAgent.Out> out = a.sent();
+            assertEquals(Role.MEMBER, a.role());
+            assertEquals("c@p", a.layer.containerName(), "a key holder's claim changes nothing by itself");
+            assertTrue(out.stream().noneMatch(o -> o.what() instanceof Join), "no join on a forged claim: " + out);
+            assertEquals(List.of("x@p"), out.stream().filter(o -> o.what() instanceof WhoIsContainer).map(OneAgent.Out::to).toList(),
+                    "x itself is asked, in a frame sealed to it");
+            // x's own answer, authenticated: x is not container, it follows c.
+            a.from(x, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c, x));
+            assertEquals("c@p", a.layer.containerName());
+            assertTrue(a.sent().stream().noneMatch(o -> o.what() instanceof Join));
+        }
+
+        @Test
+        void aClaimedContainersOwnWordIsFollowed() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry x = other("x", 7009, 2_000);
+            OneAgent a = memberOf(c, List.of(x));
+            a.from(x, Performative.INFORM, P_DISCOVERY, new ContainerIs(2, x, x));
+            assertEquals(List.of("x@p"), a.sent().stream().filter(o -> o.what() instanceof Join).map(OneAgent.Out::to).toList());
+        }
+
+        @Test
+        void aMemberSayingAnotherIsContainerIsCheckedWithThatOne() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, 10);
+            AgentEntry x = other("x", 7009, 2_000);
+            OneAgent a = memberOf(c, List.of(x, y));
+            a.from(y, Performative.INFORM, P_DISCOVERY, new ContainerIs(99, x, y));
+            List<OneAgent.Out> out = a.sent();
+            assertTrue(out.stream().noneMatch(o -> o.what() instanceof Join), out.toString());
+            assertEquals(1, out.stream().filter(o -> o.what() instanceof WhoIsContainer && o.to().equals("x@p")).count());
+            a.from(y, Performative.INFORM, P_DISCOVERY, new ContainerIs(99, x, y));
+            assertTrue(a.sent().isEmpty(), "asked once a period, however often it is claimed");
+        }
+
+        @Test
+        void aForgedClaimDoesNotMakeAContainerStepDown() {
+            AgentEntry m1 = other("m1", 7002, -10);
+            OneAgent c = containerWith(m1);
+            AgentEntry x = other("x", 7009, 2_000);
+            c.fromAny(x, Performative.INFORM, P_DISCOVERY, new ContainerIs(99, x, x));
+            assertEquals(Role.CONTAINER, c.role());
+            assertTrue(c.sent().stream().noneMatch(o -> o.what() instanceof ContainerIs && ((ContainerIs) o.what()).container().name().equals("x@p")),
+                    "it tells its members nothing of x");
+        }
+
+        @Test
+        void aMessageInAnotherAgentsNameIsAMasquerade() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, 10);
+            OneAgent a = memberOf(c, List.of(y));
+            // y, a member, sends an alive in its container's name with a later term.
+            a.from(y, Performative.INFORM, P_MAINTENANCE, new Alive(5, 9, 40, 250, c));
+            assertEquals(1, a.h.drops().get("masquerade") + a.h.drops().get("malformed-platform"), a.h.drops().toString());
+            assertEquals("c@p", a.layer.containerName());
+            assertTrue(a.sent().isEmpty());
+            // ... answers discovery in c's name ...
+            a.from(y, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c, c));
+            assertEquals(1, a.h.drops().get("masquerade"), a.h.drops().toString());
+            // ... and joins a stranger to the LAL of its container.
+            OneAgent container = containerWith(y);
+            container.from(y, Performative.INFORM_REF, P_LAL, new Join(1, other("ghost", 7100, 0)));
+            assertEquals(1, container.h.drops().get("masquerade") + container.h.drops().get("malformed-platform"));
+            assertTrue(container.layer.agents().stream().noneMatch(e -> e.name().equals("ghost@p")));
+        }
+    }
+
+    /** Membership control: application messages only from agents the lists name. */
+    @Nested
+    class Members {
+
+        private static void say(OneAgent a, AgentEntry from, String text) {
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.setSender(from.aid());
+            m.addReceiver(a.self.aid());
+            m.setContent(text);
+            a.h.receiveUp(Envelope.outgoing(m, a.self.aid(), null));
+        }
+
+        private static List<String> delivered(OneAgent a) {
+            List<String> out = new ArrayList<>();
+            for (Envelope e = a.h.pollUp(); e != null; e = a.h.pollUp()) {
+                out.add(e.message().getContent());
+            }
+            return out;
+        }
+
+        @Test
+        void aListedAgentsMessageGoesUpAtOnce() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, 10);
+            OneAgent a = memberOf(c, List.of(y));
+            say(a, y, "hello");
+            assertEquals(List.of("hello"), delivered(a));
+        }
+
+        @Test
+        void aKeyHolderThatNeverJoinedReachesNobody() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            AgentEntry mallory = other("mallory", 7066, 10);
+            for (int i = 0; i < 3; i++) {
+                say(a, mallory, "forged " + i);
+            }
+            assertEquals(List.of(), delivered(a), "it waits for the lists to name mallory");
+            a.advance(MembershipGate.WAIT_MS);
+            assertEquals(List.of(), delivered(a));
+            assertEquals(3, a.h.drops().get("not-member"), a.h.drops().toString());
+        }
+
+        @Test
+        void anAgentThatJustJoinedIsHeardOnceTheListNamesItInTheOrderItSpoke() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            AgentEntry carol = other("carol", 7004, -5);
+            say(a, carol, "one");
+            say(a, carol, "two");
+            assertEquals(List.of(), delivered(a), "the container's new list is still on its way");
+            a.advance(100);
+            a.from(c, Performative.INFORM_REF, P_LAL, new LalPage(1, 3, 40, 250,
+                    Page.of(0, 1, body(List.of(c, a.self, carol)))));
+            say(a, carol, "three");
+            assertEquals(List.of("one", "two", "three"), delivered(a));
+            assertEquals(0, a.h.drops().get("not-member"));
+        }
+
+        @Test
+        void aFloodFromStrangersHoldsAtMostTheLimit() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of());
+            for (int i = 0; i < MembershipGate.MAX_HELD + 100; i++) {
+                say(a, other("s" + i, 8000 + i, 0), "x");
+            }
+            assertEquals(100, a.h.drops().get("not-member"), "the eldest go when the limit is reached");
+            a.advance(MembershipGate.WAIT_MS);
+            assertEquals(MembershipGate.MAX_HELD + 100, a.h.drops().get("not-member"));
+            assertEquals(List.of(), delivered(a));
         }
     }
 

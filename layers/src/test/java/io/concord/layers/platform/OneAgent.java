@@ -76,6 +76,20 @@ final class OneAgent {
 
     /** Hands the agent a platform message from another agent, as its stack would. */
     void from(AgentEntry sender, Performative act, String protocol, PlatformMessage content) {
+        h.receiveUp(Envelope.outgoing(message(sender, act, protocol, content), self.aid(), null));
+    }
+
+    /**
+     * ... as a frame for any agent at this port would bring it: sealed with the platform key alone,
+     * so whoever holds the key could have written it in any name.
+     */
+    void fromAny(AgentEntry sender, Performative act, String protocol, PlatformMessage content) {
+        Envelope env = Envelope.outgoing(message(sender, act, protocol, content), self.aid(), null);
+        env.putHeader(io.concord.layers.frame.Frames.ENVELOPE_ANY, Boolean.TRUE);
+        h.receiveUp(env);
+    }
+
+    private AclMessage message(AgentEntry sender, Performative act, String protocol, PlatformMessage content) {
         AclMessage m = new AclMessage(act);
         m.setSender(sender.aid());
         m.addReceiver(self.aid());
@@ -83,7 +97,7 @@ final class OneAgent {
         m.setLanguage(ContainerLayer.LANGUAGE);
         m.setProtocol(protocol);
         m.setContent(content.encode());
-        h.receiveUp(Envelope.outgoing(m, self.aid(), null));
+        return m;
     }
 
     /** Everything the agent sent since the last call, decoded. */
