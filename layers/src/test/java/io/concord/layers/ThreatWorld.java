@@ -76,12 +76,22 @@ abstract class ThreatWorld implements AutoCloseable {
     final Puppet sender = new Puppet();
     final long windowMs;
 
-    ThreatWorld(long windowMs) {
+    final Profile profile;
+    /** The sequence layer's settings, or {@code null} for the defaults. */
+    final io.concord.layers.sequence.SequenceLayer.Config sequence;
+
+    ThreatWorld(long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence) {
         this.windowMs = windowMs;
+        this.profile = profile;
+        this.sequence = sequence;
     }
 
     Supplier<List<Layer>> stack() {
-        return Stacks.builder(Profile.CLASS_7).acceptanceWindowMs(windowMs).build();
+        SafetyStack.Builder b = Stacks.builder(profile).acceptanceWindowMs(windowMs);
+        if (sequence != null) {
+            b.sequence(sequence);
+        }
+        return b.build();
     }
 
     Supplier<List<Layer>> stackWithKey(PlatformKey key) {
@@ -157,7 +167,15 @@ abstract class ThreatWorld implements AutoCloseable {
         private final AID bAid;
 
         Virtual(Medium medium, long windowMs) {
-            super(windowMs);
+            this(medium, windowMs, Profile.CLASS_7);
+        }
+
+        Virtual(Medium medium, long windowMs, Profile profile) {
+            this(medium, windowMs, profile, null);
+        }
+
+        Virtual(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence) {
+            super(windowMs, profile, sequence);
             a = sim.newRuntime("host-a", stack());
             b = sim.newRuntime("host-b", stack());
             bAid = b.startAgent("b", receiver);
@@ -229,7 +247,16 @@ abstract class ThreatWorld implements AutoCloseable {
         private int markers;
 
         RealUdp(Medium medium, long windowMs) throws Exception {
-            super(windowMs);
+            this(medium, windowMs, Profile.CLASS_7);
+        }
+
+        RealUdp(Medium medium, long windowMs, Profile profile) throws Exception {
+            this(medium, windowMs, profile, null);
+        }
+
+        RealUdp(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence)
+                throws Exception {
+            super(windowMs, profile, sequence);
             a = AgentRuntime.builder().platformName(PLATFORM).stack(stack()).build().start();
             b = AgentRuntime.builder().platformName(PLATFORM).stack(stack()).build().start();
             bDirect = b.startAgent("b", receiver);

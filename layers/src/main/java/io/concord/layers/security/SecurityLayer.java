@@ -389,7 +389,7 @@ public final class SecurityLayer extends Layer {
             if (protection == Frames.PROTECTION_HMAC) {
                 mac.update(d, h, len - Frames.TAG_BYTES);
                 byte[] expected = mac.doFinal();
-                if (!MessageDigest.isEqual(Arrays.copyOf(expected, Frames.TAG_BYTES),
+                if (io.concord.layers.Defences.hmacTag && !MessageDigest.isEqual(Arrays.copyOf(expected, Frames.TAG_BYTES),
                         Arrays.copyOfRange(d, h + len - Frames.TAG_BYTES, h + len))) {
                     ctx.drop(env, "bad-tag", "HMAC mismatch from " + env.source() + ": forged, corrupted, or another platform key");
                     return;
@@ -437,7 +437,7 @@ public final class SecurityLayer extends Layer {
         crc.reset();
         crc.update(d, h, Frames.HEADER_BYTES);
         crc.update(body, bodyOff, bodyLen);
-        if ((int) crc.getValue() != Frames.getInt(body, bodyOff + bodyLen)) {
+        if (io.concord.layers.Defences.safetyCode && (int) crc.getValue() != Frames.getInt(body, bodyOff + bodyLen)) {
             ctx.drop(env, "corrupt", "the safety code does not match: the frame was damaged");
             return;
         }

@@ -260,6 +260,9 @@ public final class SequenceLayer extends Layer {
     }
 
     private void retransmit(LayerContext ctx, long peer, Out o, long seq) {
+        if (!io.concord.layers.Defences.retransmission) {
+            return;
+        }
         int slot = (int) (seq % config.retransmitBuffer());
         if (seq < o.nextSeq && o.ring[slot] != null && o.ringSeq[slot] == seq) {
             ctx.passDown(Envelope.control(peer, o.address, o.ring[slot], Frames.HEADROOM, o.ringLen[slot]));
@@ -422,6 +425,15 @@ public final class SequenceLayer extends Layer {
         in.highest = Math.max(in.highest, seq);
         if (in.since == 0) {
             in.since = seq;
+        }
+        if (!io.concord.layers.Defences.sequenceWindow || !io.concord.layers.Defences.reorderBuffer) {
+            if (seq >= in.expected || !io.concord.layers.Defences.sequenceWindow) {
+                // Switched off for a threat test: whatever comes is delivered as it comes.
+                deliver(ctx, env, peer, in, seq);
+                in.expected = Math.max(in.expected, seq + 1);
+                scheduleAck(ctx, peer, in);
+                return;
+            }
         }
         if (seq < in.expected) {
             if (takeResendAllowance(in, seq)) {
