@@ -47,6 +47,7 @@ public final class HttpMtp implements Gateway {
     private volatile GatewayContext context;
     private final AgentManagement management = new AgentManagement(this::addresses);
     private final MtpClient client = new MtpClient();
+    private volatile Trust trust = Trust.ANY;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong rejected = new AtomicLong();
 
@@ -67,6 +68,71 @@ public final class HttpMtp implements Gateway {
     @Override
     public List<String> addresses() {
         return List.of("http://" + advertisedHost + ":" + port + "/acc");
+    }
+
+    /**
+     * Which JADE platforms the bridge talks to: their names (the part of an agent's name after
+     * {@code @}, as JADE writes it: {@code 10.200.0.2:1099/JADE}) and the addresses their requests
+     * come from and their ACCs are at. Empty sets trust any. A request from elsewhere, or in the name
+     * of an agent of another platform, gets 403; a message to an agent of another platform, or at
+     * another address, is answered with the FIPA FAILURE and never posted.
+     */
+    public record Trust(java.util.Set<String> platforms, java.util.Set<String> hosts) {
+        public static final Trust ANY = new Trust(java.util.Set.of(), java.util.Set.of());
+
+        public Trust {
+            platforms = lower(platforms);
+            hosts = lower(hosts);
+        }
+
+        private static java.util.Set<String> lower(java.util.Collection<String> in) {
+            java.util.Set<String> out = new java.util.TreeSet<>();
+            for (String x : in) {
+                if (!x.isBlank()) {
+                    out.add(x.trim().toLowerCase(java.util.Locale.ROOT));
+                }
+            }
+            return java.util.Set.copyOf(out);
+        }
+
+        /** Why a request from that address is refused, or {@code null}. */
+        String refuseFrom(String remoteHost) {
+            if (hosts.isEmpty() || remoteHost != null && hosts.contains(remoteHost.toLowerCase(java.util.Locale.ROOT))) {
+                return null;
+            }
+            return "requests from " + remoteHost + " are not trusted: this bridge talks only to " + hosts;
+        }
+
+        /** Why a message in that sender's name is refused, or {@code null}. */
+        String refuseSender(AID sender) {
+            if (platforms.isEmpty() || sender != null && platforms.contains(sender.platform().toLowerCase(java.util.Locale.ROOT))) {
+                return null;
+            }
+            return "the platform " + (sender == null ? "?" : sender.platform()) + " is not trusted: this bridge talks only to "
+                    + platforms;
+        }
+
+        /** True if a message may go to that agent at that URL. */
+        boolean mayReach(AID receiver, String url) {
+            if (!platforms.isEmpty() && !platforms.contains(receiver.platform().toLowerCase(java.util.Locale.ROOT))) {
+                return false;
+            }
+            if (hosts.isEmpty()) {
+                return true;
+            }
+            try {
+                String h = java.net.URI.create(url).getHost();
+                return h != null && hosts.contains(h.toLowerCase(java.util.Locale.ROOT));
+            } catch (IllegalArgumentException e) {
+                return false;
+            }
+        }
+    }
+
+    /** Restricts the bridge to these JADE platforms and addresses (see {@link Trust}); returns this. */
+    public HttpMtp trust(Trust t) {
+        this.trust = java.util.Objects.requireNonNull(t, "trust");
+        return this;
     }
 
     /** Requests received and accepted, and rejected with a 4xx, since start. */
@@ -126,7 +192,7 @@ public final class HttpMtp implements Gateway {
     @Override
     public boolean reaches(AID foreign) {
         for (String a : foreign.addresses()) {
-            if (a.regionMatches(true, 0, "http://", 0, 7)) {
+            if (a.regionMatches(true, 0, "http://", 0, 7) && trust.mayReach(foreign, a)) {
                 return true;
             }
         }
@@ -139,6 +205,12 @@ public final class HttpMtp implements Gateway {
         try (x) {
             if (!x.getRequestMethod().equalsIgnoreCase("POST")) {
                 reply(x, 405, "the ACC accepts POST only");
+                return;
+            }
+            java.net.InetSocketAddress remote = x.getRemoteAddress();
+            String from = trust.refuseFrom(remote == null ? null : remote.getAddress().getHostAddress());
+            if (from != null) {
+                reply(x, 403, from);
                 return;
             }
             String type = x.getRequestHeaders().getFirst("Content-Type");
@@ -161,6 +233,11 @@ public final class HttpMtp implements Gateway {
                 }
             } catch (IllegalArgumentException e) {
                 reply(x, 400, e.getMessage());
+                return;
+            }
+            String sender = trust.refuseSender(in.message().getSender());
+            if (sender != null) {
+                reply(x, 403, sender);
                 return;
             }
             received.incrementAndGet();
@@ -357,6 +434,10 @@ public final class HttpMtp implements Gateway {
             String problem = null;
             for (String url : receiver.addresses()) {
                 if (!url.regionMatches(true, 0, "http://", 0, 7)) {
+                    continue;
+                }
+                if (!trust.mayReach(receiver, url)) {
+                    problem = url + " is not among the JADE platforms this bridge trusts";
                     continue;
                 }
                 try {

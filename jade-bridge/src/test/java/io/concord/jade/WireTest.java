@@ -67,6 +67,21 @@ class WireTest {
     }
 
     @Test
+    void aRestrictedBridgeReachesOnlyTheJadePlatformsItTrusts() {
+        HttpMtp.Trust t = new HttpMtp.Trust(java.util.Set.of("10.200.0.2:1099/JADE"), java.util.Set.of("10.200.0.2"));
+        assertEquals(null, t.refuseFrom("10.200.0.2"));
+        assertTrue(t.refuseFrom("127.0.0.1").contains("not trusted"));
+        assertEquals(null, t.refuseSender(new AID("buyer@10.200.0.2:1099/jade")));
+        assertTrue(t.refuseSender(new AID("buyer@evil")).contains("not trusted"));
+        HttpMtp mtp = new HttpMtp("127.0.0.1", 1).trust(t);
+        assertTrue(mtp.reaches(new AID("seller@10.200.0.2:1099/JADE", "http://10.200.0.2:7778/acc")));
+        assertTrue(!mtp.reaches(new AID("seller@10.200.0.2:1099/JADE", "http://10.200.0.66:7778/acc")), "another address");
+        assertTrue(!mtp.reaches(new AID("seller@evil", "http://10.200.0.2:7778/acc")), "another platform");
+        assertTrue(new HttpMtp("127.0.0.1", 1).reaches(new AID("seller@evil", "http://10.200.0.66:7778/acc")),
+                "unrestricted, any HTTP address");
+    }
+
+    @Test
     void theEnvelopeItWritesReadsBack() {
         AID bob = new AID("bob@j", "http://h:1/acc");
         AID me = new AID("me@c&co", "http://h:2/acc");

@@ -105,7 +105,7 @@ public final class Boot {
             throw new BootException("-seeds is written host[:port],... and -discovery-port a port number: " + e.getMessage(), e);
         }
         if (s.containsKey("http")) {
-            b.gateway(httpGateway(s.get("http"), s.getOrDefault("host", "127.0.0.1")));
+            b.gateway(httpGateway(s.get("http"), s.getOrDefault("host", "127.0.0.1"), s));
         }
         List<Agent> agents = new ArrayList<>();
         for (AgentSpec spec : specs) {
@@ -167,7 +167,7 @@ public final class Boot {
             String key = a.replaceFirst("^--?", "").toLowerCase(Locale.ROOT);
             switch (key) {
                 case "help", "h", "watch" -> cli.put(key.equals("h") ? "help" : key, "true");
-                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port", "http", "key" -> {
+                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port", "http", "key", "http-platforms", "http-hosts" -> {
                     if (i + 1 >= args.length) {
                         throw new BootException("-" + key + " needs a value. " + usage());
                     }
@@ -187,7 +187,7 @@ public final class Boot {
             }
             for (String k : props.stringPropertyNames()) {
                 String key = k.toLowerCase(Locale.ROOT);
-                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port", "http", "key")
+                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port", "http", "key", "http-platforms", "http-hosts")
                         .contains(key)) {
                     throw new BootException("unknown setting '" + k + "' in " + conf
                             + "; known: name, ports, profile, transport, host, agents, watch, seeds, discovery-port, http");
@@ -283,7 +283,8 @@ public final class Boot {
     }
 
     /** {@code -http 7779} or {@code -http host:7779}: the JADE bridge's HTTP MTP, from concord-jade-bridge. */
-    private static java.util.function.Supplier<io.concord.layers.platform.Gateway> httpGateway(String spec, String host) {
+    private static java.util.function.Supplier<io.concord.layers.platform.Gateway> httpGateway(String spec, String host,
+                                                                                            Map<String, String> settings) {
         String h = host;
         String p = spec.trim();
         int colon = p.lastIndexOf(':');
@@ -309,7 +310,13 @@ public final class Boot {
         io.concord.layers.platform.GatewayProvider provider = http;
         String fh = h;
         int fp = port;
-        return () -> provider.create(fh, fp);
+        Map<String, String> own = new java.util.HashMap<>();
+        for (String k : List.of("http-platforms", "http-hosts")) {
+            if (settings.containsKey(k)) {
+                own.put(k, settings.get(k));
+            }
+        }
+        return () -> provider.create(fh, fp, own);
     }
 
     private static PortRange range(String s) {
@@ -340,6 +347,6 @@ public final class Boot {
     static String usage() {
         return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
                 + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
-                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-key platform.key] [-conf file.properties] [-watch]";
+                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-http-platforms name,...] [-http-hosts address,...] [-key platform.key] [-conf file.properties] [-watch]";
     }
 }

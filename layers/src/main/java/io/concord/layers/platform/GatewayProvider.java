@@ -12,4 +12,12 @@ public interface GatewayProvider {
 
     /** A gateway listening on the host and port (each container that serves it makes its own). */
     Gateway create(String host, int port);
+
+    /**
+     * ... with the kind's own settings ({@code http-platforms}, {@code http-hosts} for the HTTP
+     * MTP: comma-separated names and addresses it trusts); by default they are ignored.
+     */
+    default Gateway create(String host, int port, java.util.Map<String, String> settings) {
+        return create(host, port);
+    }
 }
