@@ -284,7 +284,20 @@ public final class AgentRuntime implements AutoCloseable {
         }
         AgentNode[] holder = new AgentNode[1];
         Transport t = options.transport() != null ? options.transport() : transport;
-        io.concord.core.net.Receiver receiver = (from, data, off, len, now) -> holder[0].onDatagram(from, data, off, len, now);
+        io.concord.core.net.Receiver receiver = new io.concord.core.net.Receiver() {
+            @Override
+            public void onDatagram(Address from, byte[] data, int off, int len, long now) {
+                holder[0].onDatagram(from, data, off, len, now);
+            }
+
+            @Override
+            public void onRefused(Address from, String reason, String detail) {
+                AgentNode n = holder[0];
+                if (n != null) {
+                    n.drops().record(n.nodeName(), "communication", reason, detail);
+                }
+            }
+        };
         List<Address> neighbours = List.of();
         Endpoint ep;
         if (options.portRange() != null) {

@@ -32,6 +32,15 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
     private static final Logger LOG = LoggerFactory.getLogger(TcpEndpoint.class);
     static final int MAX_FRAME = 1 << 20;
     static final int MAX_QUEUED_BYTES = 4 << 20;
+    /**
+     * Streams into one endpoint at once. At the limit a new one pushes out the stream that has been
+     * quiet longest (a real peer that was pushed out connects again on its next send, and the
+     * sequence layer recovers what was under way), so that streams opened and left idle by someone
+     * else cannot keep real peers out.
+     */
+    static final int MAX_INBOUND = 64;
+    /** How long a connection may take to open before what waits for it is dropped. */
+    static final long CONNECT_TIMEOUT_NS = 5_000_000_000L;
     private static final byte[] MAGIC = {'C', 'T', 'C', 'P'};
 
     private final Selector selector;
@@ -105,9 +114,20 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
         try {
             SocketChannel ch;
             while ((ch = server.accept()) != null) {
+                if (inbound.size() >= MAX_INBOUND) {
+                    Inbound quietest = null;
+                    for (Inbound i : inbound) {
+                        if (quietest == null || i.lastActiveNs < quietest.lastActiveNs) {
+                            quietest = i;
+                        }
+                    }
+                    quietest.close();
+                    receiver.onRefused(quietest.peer, "tcp-connections", MAX_INBOUND + " TCP streams were open into "
+                            + local + "; the one quiet longest was closed for a new one");
+                }
                 ch.configureBlocking(false);
                 ch.setOption(StandardSocketOptions.TCP_NODELAY, true);
-                Inbound in = new Inbound(ch);
+                Inbound in = new Inbound(ch, nowNs);
                 inbound.add(in);
                 ch.register(selector, SelectionKey.OP_READ, in);
             }
@@ -123,6 +143,11 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
             return false;
         }
         Outbound o = outbound.get(to);
+        if (o != null && !o.connected && !o.closed && System.nanoTime() - o.startedNs > CONNECT_TIMEOUT_NS) {
+            receiver.onRefused(to, "tcp-connect-timeout", "the connection to " + to + " did not open in "
+                    + CONNECT_TIMEOUT_NS / 1_000_000_000L + " s; " + o.queue.size() + " frames waiting for it dropped");
+            o.close();
+        }
         if (o == null || o.closed) {
             o = connect(to);
             if (o == null) {
@@ -178,6 +203,7 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
         private SelectionKey key;
         private boolean connected;
         private boolean closed;
+        private final long startedNs = System.nanoTime();
 
         Outbound(Address peer, SocketChannel ch) {
             this.peer = peer;
@@ -264,9 +290,11 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
         private final SocketChannel ch;
         private ByteBuffer buf = ByteBuffer.allocate(16 * 1024);
         private Address peer;
+        private long lastActiveNs;
 
-        Inbound(SocketChannel ch) {
+        Inbound(SocketChannel ch, long nowNs) {
             this.ch = ch;
+            this.lastActiveNs = nowNs;
         }
 
         @Override
@@ -286,12 +314,19 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
                         return delivered;
                     }
                     delivered += parse(nowNs);
+                    if (delivered > 0) {
+                        lastActiveNs = nowNs;
+                    }
                     if (n == 0) {
                         return delivered;
                     }
                 }
-            } catch (IOException | StreamException e) {
-                LOG.warn("closed a TCP stream into {}: {}", local, e.getMessage());
+            } catch (IOException e) {
+                LOG.debug("a TCP stream into {} failed: {}", local, e.getMessage());
+                close();
+                return delivered;
+            } catch (StreamException e) {
+                receiver.onRefused(peer, "tcp-malformed", "closed a TCP stream into " + local + ": " + e.getMessage());
                 close();
                 return delivered;
             }
@@ -328,12 +363,8 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
                         throw new StreamException("a frame of " + len + " bytes announced, over the 1 MiB limit");
                     }
                     if (buf.remaining() < 4 + len) {
-                        if (buf.capacity() < 4 + len) {
-                            ByteBuffer bigger = ByteBuffer.allocate(4 + len);
-                            bigger.put(buf);
-                            bigger.flip();
-                            buf = bigger;
-                        }
+                        // The buffer grows as the bytes come (doubling when full), never on the
+                        // announced length alone: a header costs nothing until its frame arrives.
                         break;
                     }
                     int at = buf.position() + 4;
