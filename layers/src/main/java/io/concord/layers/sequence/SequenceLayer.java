@@ -346,12 +346,25 @@ public final class SequenceLayer extends Layer {
                 if (tail + 12 <= o + env.length() && !sameSession(ctx, peer, out, Frames.getInt(d, tail), Frames.getLong(d, tail + 4))) {
                     return;
                 }
-                long[] wanted = new long[n];
-                for (int i = 0; i < n; i++) {
-                    wanted[i] = Frames.getLong(d, o + 15 + 8 * i);
-                }
-                for (long s : wanted) {
+                // At most the 64 numbers a receiver ever asks for, each once: a NAK cannot make the
+                // sender repeat one frame, or send more than 64, however it is written.
+                int asked = Math.min(n, MAX_NAK_ENTRIES);
+                long[] wanted = new long[asked];
+                int distinct = 0;
+                next:
+                for (int i = 0; i < asked; i++) {
+                    long s = Frames.getLong(d, o + 15 + 8 * i);
+                    for (int j = 0; j < distinct; j++) {
+                        if (wanted[j] == s) {
+                            continue next;
+                        }
+                    }
+                    wanted[distinct++] = s;
                     retransmit(ctx, peer, out, s);
+                }
+                if (n > distinct) {
+                    ctx.drop(env, "nak-limit", "a NAK of " + n + " numbers, " + distinct + " distinct ones answered (at most "
+                            + MAX_NAK_ENTRIES + ")");
                 }
             }
             case PROBE -> {

@@ -98,6 +98,32 @@ class SequenceLayerTest {
     }
 
     @Test
+    void aNakCannotMakeTheSenderRepeatAFrameOrSendMoreThanSixtyFour() {
+        List<Envelope> f = sendAll("one", "two", "three");
+        receiver.receiveUp(arriving(f.get(2), A, A_ID));
+        Envelope real = receiver.pollDown();
+        byte[] r = real.dataCopy();
+        // The same NAK, but asking 1,000 times for frame 1 (its session tail kept, so it is believed).
+        int entries = 1_000;
+        byte[] forged = new byte[15 + 8 * entries + 12];
+        System.arraycopy(r, 0, forged, 0, 13);
+        Frames.putShort(forged, 13, entries);
+        for (int i = 0; i < entries; i++) {
+            Frames.putLong(forged, 15 + 8 * i, 1);
+        }
+        System.arraycopy(r, 15 + 16, forged, 15 + 8 * entries, 12);
+        Envelope e = Envelope.incoming(B, forged, 0, forged.length, 0);
+        e.setPeerId(B_ID);
+        sender.receiveUp(e);
+        int resent = 0;
+        while (sender.pollDown() != null) {
+            resent++;
+        }
+        assertEquals(1, resent, "frame 1 once");
+        assertEquals(1, sender.drops().get("nak-limit"));
+    }
+
+    @Test
     void aSenderWithoutAcknowledgementProbesAndALostLastFrameIsRecovered() {
         List<Envelope> f = sendAll("one", "two");
         receiver.receiveUp(arriving(f.get(0), A, A_ID)); // "two" is lost
