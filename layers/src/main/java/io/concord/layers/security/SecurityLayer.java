@@ -99,6 +99,12 @@ public final class SecurityLayer extends Layer {
     private static final int REKEY_MEMORY = 1024;
     private static final int RECENT_TAGS = 64;
     private static final int MAX_PAIRS = 4096;
+    /**
+     * Identities pinned. At the limit a new name's handshake is refused rather than an old pin
+     * forgotten: forgetting one would let a holder of the platform key who floods new names take
+     * over a real agent's name with another identity.
+     */
+    static final int MAX_PINS = 16_384;
     private static final long FIRST_RETRY_MS = 100;
     private static final int MAX_HELLO_ATTEMPTS = 10;
 
@@ -728,6 +734,11 @@ public final class SecurityLayer extends Layer {
         String pinKey = name.toLowerCase(Locale.ROOT);
         byte[] pinned = pins.get(pinKey);
         if (pinned == null) {
+            if (pins.size() >= MAX_PINS) {
+                ctx.drop(env, "pin-limit", MAX_PINS + " identities are pinned already; a handshake of a new name, "
+                        + name + ", is refused");
+                return;
+            }
             pins.put(pinKey, signingKey);
         } else if (!MessageDigest.isEqual(pinned, signingKey)) {
             ctx.drop(env, "masquerade", name + " presented another identity key than the one it is known by");

@@ -428,6 +428,30 @@ class SecurityLayerTest {
     }
 
     @Test
+    void newNamesBeyondThePinLimitAreRefusedAndNoPinIsForgotten() {
+        SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness b = agent("b@p", sb);
+        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        shakeHands(a, b, "pinned first");
+        // A holder of the platform key floods handshakes under new names, each with its own identity.
+        Identity one = IdentityStore.ephemeral().identityFor("x");
+        for (int i = 0; i < SecurityLayer.MAX_PINS + 10; i++) {
+            LayerHarness m = agent("m" + i + "@p", keeping(one));
+            m.sendDown(body("x", "b@p"));
+            deliver(next(m), new Address("attacker", 9), b);
+            while (b.pollDown() != null) {
+                // the replies
+            }
+        }
+        assertEquals(11, b.drops().get("pin-limit"), "the new names beyond the limit (a holds one pin): " + b.drops());
+        // a's pin is still there: an impostor with another identity under a's name is refused.
+        LayerHarness impostor = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        impostor.sendDown(body("forged", "b@p"));
+        carry(impostor, A_ADDR, b);
+        assertEquals(1, b.drops().get("masquerade"));
+    }
+
+    @Test
     void theConfigurationRefusesWhatCannotWork() {
         assertThrows(IllegalArgumentException.class,
                 () -> new SecurityLayer.Config(SecurityLayer.Protection.HMAC, null, null, 1, 1));
