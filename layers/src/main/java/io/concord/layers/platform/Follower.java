@@ -112,9 +112,32 @@ abstract class Follower extends RoleBase {
         }
     }
 
+    /** True if this agent asked that agent for a copy of its LAL, lately. */
+    private boolean asked(io.concord.core.acl.AID sender) {
+        if (ctx.nowNs() - st.lalCopyUntilNs > 0) {
+            return false;
+        }
+        if (sender.name().equals(st.lalCopyFrom)) {
+            return true;
+        }
+        if (st.lalCopyAt == null) {
+            return false;
+        }
+        for (String uri : sender.addresses()) {
+            if (st.lalCopyAt.equals(io.concord.core.net.Address.parse(uri))) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** A page of the last valid LAL a known agent held, asked for after failed joins. */
     @Override
     public void onLalCopy(PlatformMessage.LalCopy c, AclMessage m) {
+        if (!asked(m.getSender())) {
+            ctx.drop("unsolicited", "a copy of a LAL from " + m.getSender().name() + ", which this agent did not ask for one");
+            return;
+        }
         AgentLists lists = st.lists;
         boolean added = false;
         for (AgentEntry e : c.page().entries()) {

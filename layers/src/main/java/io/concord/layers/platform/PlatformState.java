@@ -49,6 +49,14 @@ final class PlatformState {
             return size() > 64;
         }
     };
+    /**
+     * The copy of the last LAL this agent asked for after failed joins: from whom (a name, or the
+     * agent at an address), and until when it is taken. A copy nobody asked for is refused: only
+     * the container distributes lists.
+     */
+    String lalCopyFrom;
+    Address lalCopyAt;
+    long lalCopyUntilNs;
     /** How long the container's last complete maintenance cycle took, in ns; -1 if none yet. */
     volatile long lastCycleNs = -1;
 

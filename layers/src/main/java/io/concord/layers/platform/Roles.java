@@ -174,6 +174,10 @@ final class Roles implements Federation.Host {
         }
         if (!known.isEmpty()) {
             AID pick = known.get(ctx.random().nextInt(known.size()));
+            boolean anyone = pick.name().startsWith(io.concord.layers.frame.Frames.ANY_LOCAL_NAME + "@");
+            st.lalCopyFrom = anyone ? null : pick.name();
+            st.lalCopyAt = anyone ? Address.parse(pick.addresses().get(0)) : null;
+            st.lalCopyUntilNs = ctx.nowNs() + 2_000_000_000L;
             ctx.send(Performative.REQUEST, ContainerLayer.P_LAL, pick, new PlatformMessage.LalRequest(st.term, st.selfEntry));
         }
         MemberRole m = become(new MemberRole(this));

@@ -448,6 +448,19 @@ class ContainerRulesTest {
         }
 
         @Test
+        void aCopyOfAListNobodyAskedForIsRefused() {
+            AgentEntry c = other("c", 7002, 1_000);
+            AgentEntry y = other("y", 7003, 10);
+            OneAgent a = memberOf(c, List.of(y));
+            AgentEntry ghost = other("ghost", 7100, 0);
+            a.from(y, Performative.INFORM_REF, P_LAL, new PlatformMessage.LalCopy(1, 9, "c@p",
+                    Page.of(0, 1, body(List.of(c, y, ghost)))));
+            assertTrue(a.layer.agents().stream().noneMatch(e -> e.name().equals("ghost@p")),
+                    "only the container distributes lists: a member cannot list a ghost it speaks for");
+            assertEquals(1, a.h.drops().get("unsolicited"));
+        }
+
+        @Test
         void aForgedClaimDoesNotMakeAContainerStepDown() {
             AgentEntry m1 = other("m1", 7002, -10);
             OneAgent c = containerWith(m1);
