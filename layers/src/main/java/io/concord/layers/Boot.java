@@ -157,6 +157,10 @@ public final class Boot {
         });
     }
 
+    /** The options that take a value; all but {@code conf} may also stand in a configuration file, as may {@code watch}. */
+    private static final List<String> VALUED = List.of("agents", "name", "ports", "profile", "transport", "host", "conf",
+            "seeds", "discovery-port", "http", "http-platforms", "http-hosts", "key");
+
     static Map<String, String> settings(String[] args) {
         Map<String, String> cli = new LinkedHashMap<>();
         for (int i = 0; i < args.length; i++) {
@@ -165,19 +169,22 @@ public final class Boot {
                 throw new BootException("unexpected argument '" + a + "'; options start with '-'. " + usage());
             }
             String key = a.replaceFirst("^--?", "").toLowerCase(Locale.ROOT);
-            switch (key) {
-                case "help", "h", "watch" -> cli.put(key.equals("h") ? "help" : key, "true");
-                case "agents", "name", "ports", "profile", "transport", "host", "conf", "seeds", "discovery-port", "http", "key", "http-platforms", "http-hosts" -> {
-                    if (i + 1 >= args.length) {
-                        throw new BootException("-" + key + " needs a value. " + usage());
-                    }
-                    cli.put(key, args[++i]);
+            if (key.equals("help") || key.equals("h") || key.equals("watch")) {
+                cli.put(key.equals("h") ? "help" : key, "true");
+            } else if (VALUED.contains(key)) {
+                if (i + 1 >= args.length) {
+                    throw new BootException("-" + key + " needs a value. " + usage());
                 }
-                default -> throw new BootException("unknown option '" + a + "'. " + usage());
+                cli.put(key, args[++i]);
+            } else {
+                throw new BootException("unknown option '" + a + "'. " + usage());
             }
         }
         Map<String, String> all = new LinkedHashMap<>();
         String conf = cli.get("conf");
+        List<String> inFile = new ArrayList<>(VALUED);
+        inFile.remove("conf");
+        inFile.add("watch");
         if (conf != null) {
             Properties props = new Properties();
             try (Reader r = Files.newBufferedReader(Path.of(conf), StandardCharsets.UTF_8)) {
@@ -187,10 +194,8 @@ public final class Boot {
             }
             for (String k : props.stringPropertyNames()) {
                 String key = k.toLowerCase(Locale.ROOT);
-                if (!List.of("name", "ports", "profile", "transport", "host", "agents", "watch", "seeds", "discovery-port", "http", "key", "http-platforms", "http-hosts")
-                        .contains(key)) {
-                    throw new BootException("unknown setting '" + k + "' in " + conf
-                            + "; known: name, ports, profile, transport, host, agents, watch, seeds, discovery-port, http");
+                if (!inFile.contains(key)) {
+                    throw new BootException("unknown setting '" + k + "' in " + conf + "; known: " + String.join(", ", inFile));
                 }
                 all.put(key, props.getProperty(k).trim());
             }

@@ -5,14 +5,12 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
-import java.util.ArrayList;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -24,25 +22,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class NothingLostTest {
     static final int MESSAGES = 10_000;
-
-    /** Receives and records contents in arrival order. */
-    static final class Receiver extends Agent {
-        final List<String> got = new ArrayList<>();
-
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour(this) {
-                @Override
-                public void action() {
-                    AclMessage m;
-                    while ((m = receive()) != null) {
-                        got.add(m.getContent());
-                    }
-                    block();
-                }
-            });
-        }
-    }
 
     /** Sends numbered messages, a batch every millisecond. */
     static final class Sender extends Agent {
@@ -81,7 +60,7 @@ class NothingLostTest {
         try (Simulation sim = new Simulation(2024, FaultPlan.lossy(0.20, 0.10, 0.10, 0.02))) {
             AgentRuntime a = sim.newRuntime("host-a", Stacks.of(profile));
             AgentRuntime b = sim.newRuntime("host-b", Stacks.of(profile));
-            Receiver receiver = new Receiver();
+            ThreatWorld.Receiver receiver = new ThreatWorld.Receiver();
             AID to = b.startAgent("receiver", receiver);
             Sender sender = new Sender(to, MESSAGES);
             a.startAgent("sender", sender);
@@ -90,8 +69,9 @@ class NothingLostTest {
             assertTrue(done, "only " + receiver.got.size() + " of " + MESSAGES + " arrived (seed " + sim.seed()
                     + "); drops at the receiver: " + b.drops());
             assertEquals(MESSAGES, receiver.got.size(), "exactly once");
+            List<AclMessage> got = List.copyOf(receiver.got);
             for (int i = 0; i < MESSAGES; i++) {
-                assertEquals(content(i), receiver.got.get(i), "message " + i + " in order and unchanged");
+                assertEquals(content(i), got.get(i).getContent(), "message " + i + " in order and unchanged");
             }
             var drops = b.drops();
             assertTrue(drops.getOrDefault("bad-tag", 0L) + drops.getOrDefault("corrupt", 0L) > 0,

@@ -330,6 +330,11 @@ public final class ContainerLayer extends Layer {
         PlatformMessage p;
         try {
             p = PlatformMessage.decode(m);
+        } catch (Lines.NotTheSender e) {
+            // Where a message names whom it is from, that must be its sender (e.g. an alive in the
+            // container's name from a member).
+            ctx.drop(env, "masquerade", e.getMessage());
+            return;
         } catch (IllegalArgumentException e) {
             ctx.drop(env, "malformed-platform", e.getMessage());
             return;
@@ -338,11 +343,6 @@ public final class ContainerLayer extends Layer {
         // whatever its sender wrote. Only discovery travels that way; nothing that changes state.
         if (env.header(Frames.ENVELOPE_ANY) != null && !PlatformMessage.discovery(p)) {
             unauthenticated(ctx, env, firstWord(m.getContent()) + " from " + sender.name());
-            return;
-        }
-        AgentEntry speaker = PlatformMessage.speaker(p);
-        if (speaker != null && !speaker.name().equals(sender.name())) {
-            ctx.drop(env, "masquerade", firstWord(m.getContent()) + " from " + sender.name() + " in the name of " + speaker.name());
             return;
         }
         if (host.tracer().enabled()) {

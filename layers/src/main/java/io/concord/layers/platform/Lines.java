@@ -24,6 +24,13 @@ final class Lines {
     private Lines() {
     }
 
+    /** A platform message that says it is from another agent than its sender (whom the frame authenticated). */
+    static final class NotTheSender extends IllegalArgumentException {
+        NotTheSender(String message) {
+            super(message);
+        }
+    }
+
     /** A parsed content: the command word, its parameters, and the entries that follow. */
     record Content(String command, Map<String, String> params, List<AgentEntry> entries) {
         String param(String key) {
@@ -35,16 +42,29 @@ final class Lines {
         }
 
         /**
-         * The first entry, which must be the sender's own (every platform message that carries one
-         * starts with it).
+         * The first entry, which must be the sender's own (every platform message that says who it
+         * is from starts with it).
          *
-         * @throws IllegalArgumentException if it is missing or names another agent
+         * @throws IllegalArgumentException if it is missing
+         * @throws NotTheSender if it names another agent
          */
         AgentEntry senderEntry(io.concord.core.acl.AclMessage m) {
-            if (entries.isEmpty() || !entries.get(0).name().equals(m.getSender().name())) {
+            if (entries.isEmpty()) {
                 throw new IllegalArgumentException("a '" + command + "' message must carry its sender's entry first");
             }
-            return entries.get(0);
+            return spokenBy(entries.get(0), m);
+        }
+
+        /**
+         * An entry that says who the message is from ({@code null} if absent), which must be its sender.
+         *
+         * @throws NotTheSender if it names another agent
+         */
+        AgentEntry spokenBy(AgentEntry e, io.concord.core.acl.AclMessage m) {
+            if (e != null && !e.name().equals(m.getSender().name())) {
+                throw new NotTheSender("a '" + command + "' message from " + m.getSender().name() + " in the name of " + e.name());
+            }
+            return e;
         }
 
         long longParam(String key) {

@@ -361,39 +361,6 @@ sealed interface PlatformMessage {
     }
 
     /** The words that may come in a frame for any agent: asking a port, the answers, an announcement. */
-    /**
-     * The agent a message says it is from, where it says so ({@code null} where it does not): it
-     * must be the message's sender, whom the frame authenticated.
-     */
-    static AgentEntry speaker(PlatformMessage p) {
-        if (p instanceof WhoIsContainer w) {
-            return w.asker();
-        } else if (p instanceof ContainerIs c) {
-            return c.by();
-        } else if (p instanceof Seeking s) {
-            return s.by();
-        } else if (p instanceof Join j) {
-            return j.by();
-        } else if (p instanceof Joined j) {
-            return j.by();
-        } else if (p instanceof Alive a) {
-            return a.by();
-        } else if (p instanceof AgentInfoRequest r) {
-            return r.by();
-        } else if (p instanceof LalRequest r) {
-            return r.by();
-        } else if (p instanceof Announce a) {
-            return a.by();
-        } else if (p instanceof WhoIsFacilitator w) {
-            return w.by();
-        } else if (p instanceof IsFacilitator f) {
-            return f.by();
-        } else if (p instanceof ContactMe c) {
-            return c.by();
-        }
-        return null;
-    }
-
     static boolean discovery(PlatformMessage p) {
         return p instanceof WhoIsContainer || p instanceof ContainerIs || p instanceof Seeking
                 || p instanceof LalRequest || p instanceof Announce;
@@ -432,13 +399,13 @@ sealed interface PlatformMessage {
                 if (c.entries().isEmpty()) {
                     throw new IllegalArgumentException("a container message must carry the container's entry");
                 }
-                yield new ContainerIs(term, c.entries().get(0), c.entries().size() > 1 ? c.entries().get(1) : null);
+                yield new ContainerIs(term, c.entries().get(0), c.spokenBy(c.entries().size() > 1 ? c.entries().get(1) : null, m));
             }
             case "seeking" -> {
                 if (c.entries().size() != 1) {
                     throw new IllegalArgumentException("a seeking reply carries exactly its sender's entry");
                 }
-                yield new Seeking(optLong(c, "round"), optLong(c, "term"), c.entries().get(0));
+                yield new Seeking(optLong(c, "round"), optLong(c, "term"), c.senderEntry(m));
             }
             case "join" -> new Join(optLong(c, "term"), c.senderEntry(m));
             case "joined" -> new Joined(c.longParam("term"), c.longParam("period"), c.longParam("timeout"), c.senderEntry(m));
@@ -453,7 +420,7 @@ sealed interface PlatformMessage {
                     ? new AgentInfoRequest(c.longParam("term"), c.senderEntry(m))
                     : new AgentInfo(optLong(c, "term"), c.entries());
             case "leave" -> new Leave(optLong(c, "term"));
-            case "lal-request" -> new LalRequest(optLong(c, "term"), c.entries().isEmpty() ? null : c.entries().get(0));
+            case "lal-request" -> new LalRequest(optLong(c, "term"), c.entries().isEmpty() ? null : c.senderEntry(m));
             case "lal-copy" -> new LalCopy(optLong(c, "term"), optLong(c, "seq"), p.getOrDefault("container", ""),
                     new Page((int) optLong(c, "page"), (int) Math.max(1, optLong(c, "pages")), Page.body(text), c.entries()));
             case "gal" -> new GalPage(optLong(c, "term"), c.longParam("gseq"), Page.decode(c, text, "GAL"));
@@ -462,7 +429,7 @@ sealed interface PlatformMessage {
             case "who-is-facilitator" -> new WhoIsFacilitator(c.param("secret"), c.longParam("term"), c.param("host"),
                     c.senderEntry(m));
             case "is-facilitator" -> new IsFacilitator(c.param("secret"), optLong(c, "term"), p.getOrDefault("host", ""),
-                    c.entries().isEmpty() ? null : c.entries().get(0));
+                    c.entries().isEmpty() ? null : c.senderEntry(m));
             case "is-not-facilitator" -> new IsNotFacilitator();
             case "gal-update" -> new GalUpdate(p.get("secret"), c.longParam("term"), c.longParam("seq"),
                     Page.decode(c, text, "list"));

@@ -42,13 +42,6 @@ final class PlatformState {
      * key alone: its sender is whatever its sender wrote, so it is a hint at most.
      */
     boolean fromAny;
-    /** When this agent last asked each claimed container itself whether it is (bounded). */
-    final Map<String, Long> verified = new LinkedHashMap<>(16, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<String, Long> eldest) {
-            return size() > 64;
-        }
-    };
     /**
      * The copy of the last LAL this agent asked for after failed joins: from whom (a name, or the
      * agent at an address), and until when it is taken. A copy nobody asked for is refused: only

@@ -30,6 +30,13 @@ final class Roles implements Federation.Host {
      * @param around  the node's neighbourhood (its listener for the network discovery), or {@code null}
      */
     private final Runnable listsChanged;
+    /** When this agent last asked each claimed container itself whether it is (bounded). */
+    private final java.util.Map<String, Long> verified = new java.util.LinkedHashMap<>(16, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(java.util.Map.Entry<String, Long> eldest) {
+            return size() > 64;
+        }
+    };
 
     Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, io.concord.core.net.Neighbourhood around,
           GatewayRelay relay, Runnable publish, Runnable listsChanged) {
@@ -284,12 +291,12 @@ final class Roles implements Federation.Host {
      */
     void verifyClaim(AgentEntry claimed) {
         long now = ctx.nowNs();
-        Long last = st.verified.get(claimed.name());
+        Long last = verified.get(claimed.name());
         long gapNs = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().basePeriodMs()) * 1_000_000L;
         if (last != null && now - last < gapNs) {
             return;
         }
-        st.verified.put(claimed.name(), now);
+        verified.put(claimed.name(), now);
         ctx.trace("verify-claim", claimed.name());
         ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, claimed.aid(),
                 new PlatformMessage.WhoIsContainer(st.round, st.selfEntry));

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.security.SecureRandom;
 import java.util.Locale;
 
@@ -47,11 +46,7 @@ public interface IdentityStore {
                 Identity id = Identity.generate(random);
                 Path tmp = Files.createTempFile(dir, ".id", ".tmp");
                 try {
-                    try {
-                        Files.setPosixFilePermissions(tmp, PosixFilePermissions.fromString("rw-------"));
-                    } catch (UnsupportedOperationException ignored) {
-                        // not POSIX
-                    }
+                    PlatformKey.restrict(tmp);
                     Files.write(tmp, id.seed());
                     PlatformKey.publish(tmp, p);
                 } finally {

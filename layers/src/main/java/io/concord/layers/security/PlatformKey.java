@@ -130,7 +130,8 @@ public final class PlatformKey {
         }
     }
 
-    private static void restrict(Path p) throws IOException {
+    /** Makes a file readable and writable by its owner only (where the file system has POSIX modes). */
+    static void restrict(Path p) throws IOException {
         try {
             Files.setPosixFilePermissions(p, PosixFilePermissions.fromString("rw-------"));
         } catch (UnsupportedOperationException e) {

@@ -6,7 +6,6 @@ import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
 import io.concord.layers.frame.Frames;
 
-import javax.crypto.AEADBadTagException;
 import javax.crypto.Cipher;
 import java.security.GeneralSecurityException;
 import javax.crypto.Mac;
@@ -175,8 +174,12 @@ public final class SecurityLayer extends Layer {
         long lastRekeyAnswered = Long.MIN_VALUE;
     }
 
-    /** A reply sent and not yet confirmed: the key it gives, and the signed reply to send again. */
-    private record Pending(byte[] helloChallenge, byte[] replyChallenge, byte[] keyBytes, byte[] reply) {
+    /** A reply sent and not yet confirmed: the key it gives (and its cipher), and the signed reply to send again. */
+    private record Pending(byte[] helloChallenge, byte[] replyChallenge, byte[] keyBytes, SecretKeySpec key, Cipher decrypt,
+                           byte[] reply) {
+        Pending(byte[] helloChallenge, byte[] replyChallenge, byte[] keyBytes, byte[] reply) {
+            this(helloChallenge, replyChallenge, keyBytes, new SecretKeySpec(keyBytes, "AES"), newGcm(), reply);
+        }
     }
 
     public SecurityLayer(Config config) {
@@ -469,10 +472,8 @@ public final class SecurityLayer extends Layer {
             gcm.init(Cipher.DECRYPT_MODE, key, new GCMParameterSpec(128, nonce));
             gcm.updateAAD(d, h, Frames.HEADER_BYTES);
             return gcm.doFinal(d, h + Frames.HEADER_BYTES, len - Frames.HEADER_BYTES);
-        } catch (AEADBadTagException e) {
-            return null;
         } catch (GeneralSecurityException e) {
-            return null;
+            return null; // a bad tag (AEADBadTagException), or a frame the cipher refuses
         }
     }
 
@@ -490,9 +491,7 @@ public final class SecurityLayer extends Layer {
             return body;
         }
         for (Pending pending : p.pending) {
-            SecretKeySpec k = new SecretKeySpec(pending.keyBytes(), "AES");
-            Cipher c = newGcm();
-            if ((body = open(c, k, src, ctr, d, h, len)) != null) {
+            if ((body = open(pending.decrypt(), pending.key(), src, ctr, d, h, len)) != null) {
                 confirmed(ctx, src, p, pending);
                 return body;
             }
@@ -815,10 +814,6 @@ public final class SecurityLayer extends Layer {
     private void confirmed(LayerContext ctx, long src, Pair pair, Pending sent) {
         pair.pending.clear();
         pair.confirmedHello = sent.helloChallenge();
-        if (pair.timer >= 0) {
-            ctx.host().cancel(pair.timer);
-            pair.timer = -1;
-        }
         pair.challenge = null;
         use(ctx, pair, sent.keyBytes());
         flush(ctx, pair);

@@ -439,14 +439,12 @@ public final class SequenceLayer extends Layer {
         if (in.since == 0) {
             in.since = seq;
         }
-        if (!io.concord.layers.Defences.sequenceWindow || !io.concord.layers.Defences.reorderBuffer) {
-            if (seq >= in.expected || !io.concord.layers.Defences.sequenceWindow) {
-                // Switched off for a threat test: whatever comes is delivered as it comes.
-                deliver(ctx, env, peer, in, seq);
-                in.expected = Math.max(in.expected, seq + 1);
-                scheduleAck(ctx, peer, in);
-                return;
-            }
+        if (!io.concord.layers.Defences.sequenceWindow || !io.concord.layers.Defences.reorderBuffer && seq >= in.expected) {
+            // Switched off for a threat test: whatever comes is delivered as it comes.
+            deliver(ctx, env, peer, in, seq);
+            in.expected = Math.max(in.expected, seq + 1);
+            scheduleAck(ctx, peer, in);
+            return;
         }
         if (seq < in.expected) {
             if (takeResendAllowance(in, seq)) {
