@@ -1,29 +1,24 @@
 package io.concord.jade;
 
-import com.sun.net.httpserver.HttpExchange;
-import com.sun.net.httpserver.HttpServer;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
+import io.concord.core.layer.DropCounters;
 import io.concord.core.proto.MtsFailure;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.GatewayContext;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.net.InetSocketAddress;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -38,12 +33,19 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class HttpMtp implements Gateway {
     private static final Logger LOG = LoggerFactory.getLogger(HttpMtp.class);
     static final int MAX_BODY = 1 << 20;
+    /** Messages to foreign agents waiting for the out thread; beyond, the sender is told FAILURE. */
+    static final int OUT_QUEUE = 4096;
 
     private final String host;
     private final int port;
     private final String advertisedHost;
-    private HttpServer server;
+    private AccServer server;
     private ExecutorService out;
+    private final AccServer.Limits limits;
+    private final java.util.function.LongSupplier nanos;
+    private final DropCounters drops = new DropCounters();
+    private final java.util.Set<String> warned = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    private final ReplyLimit replyLimit;
     private volatile GatewayContext context;
     private final AgentManagement management = new AgentManagement(this::addresses);
     private final MtpClient client = new MtpClient();
@@ -60,9 +62,16 @@ public final class HttpMtp implements Gateway {
     }
 
     public HttpMtp(String host, int port, String advertisedHost) {
+        this(host, port, advertisedHost, AccServer.Limits.DEFAULT, System::nanoTime);
+    }
+
+    HttpMtp(String host, int port, String advertisedHost, AccServer.Limits limits, java.util.function.LongSupplier nanos) {
         this.host = host;
         this.port = port;
         this.advertisedHost = advertisedHost;
+        this.limits = limits;
+        this.nanos = nanos;
+        this.replyLimit = new ReplyLimit(nanos);
     }
 
     @Override
@@ -144,27 +153,22 @@ public final class HttpMtp implements Gateway {
         return rejected.get();
     }
 
+    /** What the bridge refused or gave up, by reason ({@code http-malformed}, {@code http-slow}, ...). Any thread. */
+    public java.util.Map<String, Long> drops() {
+        return drops.snapshot();
+    }
+
     @Override
     public void start(GatewayContext ctx) {
         this.context = ctx;
-        // The JDK's server leaves Nagle's algorithm on unless told otherwise, so a response could wait
-        // for the client's delayed ACK; the setting is read when the first server of the JVM starts.
-        if (System.getProperty("sun.net.httpserver.nodelay") == null) {
-            System.setProperty("sun.net.httpserver.nodelay", "true");
-        }
         try {
-            server = HttpServer.create(new InetSocketAddress(host, port), 64);
-        } catch (IOException e) {
-            throw new IllegalStateException("the HTTP MTP cannot listen on " + host + ":" + port + " (" + e.getMessage()
-                    + "); choose another port for the JADE bridge", e);
+            server = new AccServer(host, port, limits, this::handle, nanos, drops, rejected::incrementAndGet,
+                    "concord-http-in");
+        } catch (java.io.UncheckedIOException e) {
+            throw new IllegalStateException("the HTTP MTP " + e.getMessage() + "; choose another port for the JADE bridge", e);
         }
-        server.createContext("/", this::handle);
-        // A thread per busy connection: JADE sends two stray bytes after each request, so the server
-        // reads the next request on a kept-alive connection while JADE is silent; one thread for
-        // all would stall the others. JADE keeps at most 10 sockets open.
-        server.setExecutor(Executors.newCachedThreadPool(r -> daemon(r, "concord-http-in")));
-        server.start();
-        out = Executors.newSingleThreadExecutor(r -> daemon(r, "concord-http-out"));
+        out = new java.util.concurrent.ThreadPoolExecutor(1, 1, 0, java.util.concurrent.TimeUnit.SECONDS,
+                new java.util.concurrent.ArrayBlockingQueue<>(OUT_QUEUE), r -> daemon(r, "concord-http-out"));
         LOG.info("HTTP MTP of platform {} at {}", ctx.platformName(), addresses());
     }
 
@@ -177,14 +181,18 @@ public final class HttpMtp implements Gateway {
     @Override
     public void stop() {
         if (server != null) {
-            server.stop(0);
-            ((ExecutorService) server.getExecutor()).shutdownNow();
+            server.close();
             server = null;
         }
         if (out != null) {
             ExecutorService o = out;
-            o.execute(client::close);
-            o.shutdown();
+            o.shutdownNow();
+            try {
+                o.awaitTermination(5, java.util.concurrent.TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            client.close();
             out = null;
         }
     }
@@ -199,84 +207,67 @@ public final class HttpMtp implements Gateway {
         return false;
     }
 
+    /** The port served, once started (the one asked, or the one the system chose for port 0). */
+    int boundPort() {
+        AccServer s = server;
+        return s == null ? port : s.port();
+    }
+
+    /** The server, once started: for tests of its limits. */
+    AccServer server() {
+        return server;
+    }
+
     // ---- inbound ----------------------------------------------------------------------------------
 
-    private void handle(HttpExchange x) throws IOException {
-        try (x) {
-            if (!x.getRequestMethod().equalsIgnoreCase("POST")) {
-                reply(x, 405, "the ACC accepts POST only");
-                return;
-            }
-            java.net.InetSocketAddress remote = x.getRemoteAddress();
-            String from = trust.refuseFrom(remote == null ? null : remote.getAddress().getHostAddress());
-            if (from != null) {
-                reply(x, 403, from);
-                return;
-            }
-            String type = x.getRequestHeaders().getFirst("Content-Type");
-            String boundary = boundaryOf(type);
-            if (boundary == null) {
-                reply(x, 406, "the Content-Type must be multipart/mixed with a boundary, got " + type);
-                return;
-            }
-            byte[] body = readLimited(x.getRequestBody());
-            if (body == null) {
-                reply(x, 413, "the request is larger than " + MAX_BODY + " bytes");
-                return;
-            }
-            Inbound in;
-            GatewayContext at = context;
-            try {
-                in = parse(new String(body, StandardCharsets.ISO_8859_1), boundary);
-                if (at != null) {
-                    checkForeignSender(in, at.platformName());
-                }
-            } catch (IllegalArgumentException e) {
-                reply(x, 400, e.getMessage());
-                return;
-            }
-            String sender = trust.refuseSender(in.message().getSender());
-            if (sender != null) {
-                reply(x, 403, sender);
-                return;
-            }
-            received.incrementAndGet();
-            reply(x, 200, null);
-            GatewayContext ctx = context;
-            if (ctx != null) {
-                ctx.execute(() -> deliver(ctx, in));
-            }
-        } catch (RuntimeException e) {
-            LOG.warn("HTTP MTP request failed: {}", e.toString());
+    /** On the server's thread: checks a whole request and hands its message to the loop. */
+    private AccServer.Response handle(AccServer.Request x) {
+        if (!x.method().equals("POST")) {
+            return refuse(x, 405, "http-malformed", "the ACC accepts POST only");
         }
-    }
-
-    private void reply(HttpExchange x, int status, String problem) throws IOException {
-        if (status != 200) {
-            rejected.incrementAndGet();
-            LOG.debug("HTTP MTP rejected a request ({}): {}", status, problem);
+        String from = trust.refuseFrom(x.remote().getHostAddress());
+        if (from != null) {
+            return refuse(x, 403, "http-untrusted", from);
         }
-        byte[] b = problem == null ? new byte[0] : (problem + "\n").getBytes(StandardCharsets.UTF_8);
+        String type = x.header("content-type");
+        String boundary = boundaryOf(type);
+        if (boundary == null) {
+            return refuse(x, 406, "http-malformed", "the Content-Type must be multipart/mixed with a boundary, got " + type);
+        }
+        Inbound in;
+        GatewayContext at = context;
+        try {
+            in = parse(new String(x.body(), StandardCharsets.ISO_8859_1), boundary);
+            if (at != null) {
+                checkForeignSender(in, at.platformName());
+            }
+        } catch (IllegalArgumentException e) {
+            return refuse(x, 400, "http-malformed", e.getMessage());
+        }
+        String sender = trust.refuseSender(in.message().getSender());
+        if (sender != null) {
+            return refuse(x, 403, "http-untrusted", sender);
+        }
+        received.incrementAndGet();
+        if (at != null) {
+            at.execute(() -> deliver(at, in));
+        }
         // Keep-alive for good requests: JADE then reuses its sockets (it keeps up to 10 per platform).
-        x.getResponseHeaders().set("Connection", status == 200 ? "Keep-Alive" : "close");
-        x.getResponseHeaders().set("Content-Type", "text/plain; charset=utf-8");
-        x.sendResponseHeaders(status, b.length == 0 ? -1 : b.length);
-        if (b.length > 0) {
-            x.getResponseBody().write(b);
-        }
+        return new AccServer.Response(200, null, true);
     }
 
-    private static byte[] readLimited(InputStream in) throws IOException {
-        ByteArrayOutputStream b = new ByteArrayOutputStream();
-        byte[] buf = new byte[8192];
-        int n;
-        while ((n = in.read(buf)) > 0) {
-            if (b.size() + n > MAX_BODY) {
-                return null;
-            }
-            b.write(buf, 0, n);
+    /** Counts a refused request and says why, at WARN the first time for each address and reason. */
+    private AccServer.Response refuse(AccServer.Request x, int status, String reason, String problem) {
+        rejected.incrementAndGet();
+        drops.increment(reason);
+        String who = x.remote().getHostAddress();
+        if (warned.size() < 1024 && warned.add(who + " " + reason)) {
+            LOG.warn("HTTP MTP refused a request from {} ({} {}): {}. Further refusals of {} for this reason are only counted",
+                    who, status, reason, problem, who);
+        } else {
+            LOG.debug("HTTP MTP refused a request from {} ({}): {}", who, status, problem);
         }
-        return b.toByteArray();
+        return new AccServer.Response(status, problem, false);
     }
 
     static String boundaryOf(String contentType) {
@@ -307,29 +298,7 @@ public final class HttpMtp implements Gateway {
      * @throws IllegalArgumentException saying what is wrong
      */
     static Inbound parse(String body, String boundary) {
-        List<String> parts = new ArrayList<>();
-        String delim = "--" + boundary;
-        int at = body.indexOf(delim);
-        if (at < 0) {
-            throw new IllegalArgumentException("the body never shows the boundary " + boundary);
-        }
-        while (true) {
-            int start = at + delim.length();
-            if (body.startsWith("--", start)) {
-                break; // the closing delimiter
-            }
-            int next = body.indexOf("\r\n" + delim, start);
-            int nextLf = body.indexOf("\n" + delim, start);
-            int end = next >= 0 ? next : nextLf;
-            if (end < 0) {
-                throw new IllegalArgumentException("a multipart part is never closed by --" + boundary);
-            }
-            parts.add(body.substring(start, end));
-            at = body.indexOf(delim, end);
-        }
-        if (parts.size() < 2) {
-            throw new IllegalArgumentException("a FIPA message has two parts, the envelope and the payload; got " + parts.size());
-        }
+        List<String> parts = split(body, boundary);
         String envXml = content(parts.get(0));
         FipaEnvelope env = FipaEnvelope.parse(new String(envXml.getBytes(StandardCharsets.ISO_8859_1), StandardCharsets.UTF_8));
         if (!env.aclRepresentation().equalsIgnoreCase(FipaEnvelope.STRING_REP)) {
@@ -360,6 +329,42 @@ public final class HttpMtp implements Gateway {
             m.setSender(env.from());
         }
         return new Inbound(env, m);
+    }
+
+    /**
+     * The first two parts of a multipart body, the envelope and the payload (any further part is
+     * not read). Each delimiter is found by one scan from where the last ended: the work is linear
+     * in the body's length however many parts it has.
+     *
+     * @throws IllegalArgumentException if the boundary never shows or a part is never closed
+     */
+    static List<String> split(String body, String boundary) {
+        String delim = "--" + boundary;
+        String close = "\n" + delim;
+        int at = 0;
+        if (!body.startsWith(delim)) {
+            at = body.indexOf(close) + 1;
+            if (at == 0) {
+                throw new IllegalArgumentException("the body never shows the boundary " + boundary);
+            }
+        }
+        List<String> parts = new ArrayList<>(2);
+        while (parts.size() < 2) {
+            int start = at + delim.length();
+            if (body.startsWith("--", start)) {
+                break; // the closing delimiter
+            }
+            int end = body.indexOf(close, start);
+            if (end < 0) {
+                throw new IllegalArgumentException("a multipart part is never closed by --" + boundary);
+            }
+            parts.add(body.substring(start, end > start && body.charAt(end - 1) == '\r' ? end - 1 : end));
+            at = end + 1;
+        }
+        if (parts.size() < 2) {
+            throw new IllegalArgumentException("a FIPA message has two parts, the envelope and the payload; got " + parts.size());
+        }
+        return parts;
     }
 
     /**
@@ -401,13 +406,38 @@ public final class HttpMtp implements Gateway {
             String local = r.localName();
             boolean ours = ctx.platformName().equalsIgnoreCase(r.platform());
             if (ours && (local.equalsIgnoreCase("df") || local.equalsIgnoreCase("ams"))) {
-                sendOut(management.answer(ctx, m, local.equalsIgnoreCase("df")), m.getSender());
+                answer(management.answer(ctx, m, local.equalsIgnoreCase("df")), m.getSender());
                 continue;
             }
             if (!ours || !ctx.deliver(m, r)) {
-                sendOut(notFound(ctx, m, r), m.getSender());
+                answer(notFound(ctx, m, r), m.getSender());
             }
         }
+    }
+
+    /**
+     * Posts the bridge's own answer (a DF or AMS reply, a FAILURE) to the address a request names,
+     * which anyone can choose: at most {@link ReplyLimit}'s rate to each host, so that the bridge
+     * cannot be made to flood a third party. Loop.
+     */
+    private void answer(AclMessage reply, AID to) {
+        String host = null;
+        for (String a : to.addresses()) {
+            if (a.regionMatches(true, 0, "http://", 0, 7)) {
+                try {
+                    host = java.net.URI.create(a).getHost();
+                } catch (IllegalArgumentException e) {
+                    host = a;
+                }
+                break;
+            }
+        }
+        if (host != null && !replyLimit.allow(host)) {
+            drops.record("http", "http-reply-limit", "more answers to " + host + " than " + ReplyLimit.RATE
+                    + " a second; the bridge answers requests naming that address only at that rate");
+            return;
+        }
+        sendOut(reply, to);
     }
 
     /** JADE's AMS FAILURE for an unknown receiver. */
@@ -430,7 +460,7 @@ public final class HttpMtp implements Gateway {
             m.setSender(new AID(sender.name(), addresses().toArray(new String[0])));
         }
         String payload = StringAclCodec.INSTANCE.encodeToString(m);
-        ex.execute(() -> {
+        Runnable post = () -> {
             String problem = null;
             for (String url : receiver.addresses()) {
                 if (!url.regionMatches(true, 0, "http://", 0, 7)) {
@@ -459,6 +489,23 @@ public final class HttpMtp implements Gateway {
                     ctx.deliver(f, sender);
                 });
             }
-        });
+        };
+        try {
+            ex.execute(post);
+        } catch (java.util.concurrent.RejectedExecutionException full) {
+            drops.record("http", "http-out-full", OUT_QUEUE + " messages already wait to be posted to foreign agents; "
+                    + "the sender is told FAILURE");
+            if (message.getPerformative() != Performative.FAILURE && sender != null
+                    && ctx.platformName().equalsIgnoreCase(sender.platform())) {
+                ctx.deliver(MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: the bridge's "
+                        + "queue to foreign platforms is full (" + OUT_QUEUE + " messages)"), sender);
+            }
+        }
+    }
+
+    /** Messages waiting for the out thread. */
+    int outQueued() {
+        ExecutorService ex = out;
+        return ex instanceof java.util.concurrent.ThreadPoolExecutor t ? t.getQueue().size() : 0;
     }
 }
