@@ -26,6 +26,12 @@ import java.util.concurrent.TimeUnit;
 public final class SocketNetwork implements Network {
     /** Largest UDP payload over IPv4. */
     public static final int MAX_DATAGRAM = 65507;
+    /**
+     * Datagrams (or TCP frames) read from one socket in one poll. A socket with more waiting is read
+     * again at the next poll, after the loop has run its timers and the other sockets: a flood on
+     * one port cannot keep the loop from the rest.
+     */
+    static final int READ_BUDGET = 64;
     private static final Logger LOG = LoggerFactory.getLogger(SocketNetwork.class);
 
     private final Selector selector;
@@ -314,7 +320,7 @@ public final class SocketNetwork implements Network {
         int drain(long nowNs) {
             int n = 0;
             try {
-                while (true) {
+                while (n < READ_BUDGET) {
                     receiveBuffer.clear();
                     SocketAddress from = channel.receive(receiveBuffer);
                     if (from == null) {
@@ -326,6 +332,7 @@ public final class SocketNetwork implements Network {
                     n++;
                     receiver.onDatagram(toAddress(from), receiveArray, 0, len, nowNs);
                 }
+                return n;
             } catch (ClosedChannelException e) {
                 return n;
             } catch (IOException e) {

@@ -317,8 +317,8 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
                     if (delivered > 0) {
                         lastActiveNs = nowNs;
                     }
-                    if (n == 0) {
-                        return delivered;
+                    if (n == 0 || delivered >= SocketNetwork.READ_BUDGET) {
+                        return delivered; // more, if any, at the next poll
                     }
                 }
             } catch (IOException e) {

@@ -2,6 +2,7 @@ package io.concord.core.net;
 
 import org.junit.jupiter.api.Test;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -29,6 +30,33 @@ class SocketNetworkTest {
             Endpoint a = net.tryBind("127.0.0.1", 0, IGNORE);
             Endpoint b = net.tryBind("127.0.0.1", 0, IGNORE);
             assertFalse(a.inMemoryTo(b.localAddress()));
+        }
+    }
+
+    @Test
+    void aFloodOnOnePortLeavesTheLoopAfterABoundedReadingAndTheOtherPortsAreRead() throws Exception {
+        try (SocketNetwork net = new SocketNetwork(1 << 20, false);
+             java.nio.channels.DatagramChannel attacker = java.nio.channels.DatagramChannel.open()) {
+            int[] flooded = new int[1];
+            int[] quiet = new int[1];
+            Endpoint target = net.tryBind("127.0.0.1", 0, (from, data, offset, length, nowNs) -> flooded[0]++);
+            Endpoint other = net.tryBind("127.0.0.1", 0, (from, data, offset, length, nowNs) -> quiet[0]++);
+            java.net.InetSocketAddress to = new java.net.InetSocketAddress("127.0.0.1", target.localAddress().port());
+            for (int i = 0; i < 500; i++) {
+                attacker.send(java.nio.ByteBuffer.wrap(new byte[32]), to);
+            }
+            attacker.send(java.nio.ByteBuffer.wrap(new byte[32]),
+                    new java.net.InetSocketAddress("127.0.0.1", other.localAddress().port()));
+            // Loopback datagrams are queued at the receiver when send returns.
+            int first = net.poll(0);
+            assertEquals(SocketNetwork.READ_BUDGET + 1, first, "one poll reads at most the budget from the flooded port");
+            assertEquals(1, quiet[0], "and reads the other port in the same poll");
+            int polls = 1;
+            while (flooded[0] < 500) {
+                assertTrue(net.poll(0) <= SocketNetwork.READ_BUDGET);
+                polls++;
+            }
+            assertEquals((500 + SocketNetwork.READ_BUDGET - 1) / SocketNetwork.READ_BUDGET, polls, "the rest over the next polls, none lost");
         }
     }
 }
