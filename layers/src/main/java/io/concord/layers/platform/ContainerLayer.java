@@ -139,6 +139,11 @@ public final class ContainerLayer extends Layer {
         return roles == null || roles.federation == null ? List.of() : roles.federation.contacted();
     }
 
+    /** The federation with other hosts' containers, or {@code null} without a network. For tests. */
+    Federation federation() {
+        return roles == null ? null : roles.federation;
+    }
+
     public long term() {
         return st.term;
     }
@@ -352,6 +357,8 @@ public final class ContainerLayer extends Layer {
         st.fromAny = env.header(Frames.ENVELOPE_ANY) != null;
         try {
             dispatch(p, m);
+        } catch (PlatformLimit e) {
+            ctx.drop(env, e.reason(), e.getMessage());
         } catch (IllegalArgumentException e) {
             ctx.drop(env, "malformed-platform", e.getMessage());
         } finally {

@@ -26,6 +26,12 @@ import java.util.TreeMap;
  */
 final class Federation implements PlatformMessage.Handler {
     static final String P_NETWORK = "concord-network";
+    /**
+     * Other hosts' containers known at most. Announcements name hosts second hand, and anyone with
+     * the platform key can announce: a new one past the limit takes the place of one never
+     * contacted (heard of longest ago), and is refused if every one known is in contact.
+     */
+    static final int MAX_FACILITATORS = 256;
 
     /** One facilitator: another host's container. */
     static final class Facilitator {
@@ -254,7 +260,7 @@ final class Federation implements PlatformMessage.Handler {
     /** A facilitator heard (or heard of): known from now on; contacted by the smaller name. */
     private void learn(AgentEntry e, String host, long term) {
         Facilitator f = facilitator(e, host, term);
-        if (!f.contacted && f.contactTimer < 0) {
+        if (f != null && !f.contacted && f.contactTimer < 0) {
             if (layer.selfEntry().name().compareTo(e.name()) < 0) {
                 contact(f);
             } else {
@@ -263,11 +269,19 @@ final class Federation implements PlatformMessage.Handler {
         }
     }
 
-    /** The facilitator of that name, made (replacing its host's old one) if new; heard from now. */
+    /**
+     * The facilitator of that name, made (replacing its host's old one) if new; heard from now.
+     * {@code null} if it is new and {@link #MAX_FACILITATORS} in contact are known already.
+     */
     private Facilitator facilitator(AgentEntry e, String host, long term) {
         Facilitator f = fal.get(e.name());
         if (f == null) {
             replaceHost(host, e.name());
+            if (fal.size() >= MAX_FACILITATORS && !forgetOneNeverContacted()) {
+                layer.drop("facilitator-limit", MAX_FACILITATORS + " other hosts' containers are in contact already; "
+                        + e.name() + " of host " + host + " is not taken");
+                return null;
+            }
             f = new Facilitator(e, host);
             f.term = term;
             fal.put(e.name(), f);
@@ -276,6 +290,24 @@ final class Federation implements PlatformMessage.Handler {
         f.entry = e;
         f.lastHeardNs = layer.nowNs();
         return f;
+    }
+
+    /** Forgets the facilitator heard of longest ago that was never in contact; false if every one was. */
+    private boolean forgetOneNeverContacted() {
+        Facilitator oldest = null;
+        for (Facilitator f : fal.values()) {
+            if (!f.contacted && (oldest == null || f.lastHeardNs < oldest.lastHeardNs)) {
+                oldest = f;
+            }
+        }
+        if (oldest == null) {
+            return false;
+        }
+        fal.remove(oldest.entry.name());
+        oldest.contactTimer = layer.cancel(oldest.contactTimer);
+        layer.drop("facilitator-limit", MAX_FACILITATORS + " other hosts' containers known: " + oldest.entry.name()
+                + ", never in contact, is forgotten for a newer one");
+        return true;
     }
 
     /** Asks a facilitator with a smaller name, which opens contacts, to open one with us. */
@@ -327,6 +359,10 @@ final class Federation implements PlatformMessage.Handler {
             return;
         }
         Facilitator f = facilitator(e, w.host(), w.term());
+        if (f == null) {
+            layer.sendQuietly(layer.reply(m, Performative.INFORM, new PlatformMessage.IsNotFacilitator()));
+            return;
+        }
         f.term = w.term();
         f.secret = w.secret();
         f.contacted = true;
@@ -358,7 +394,7 @@ final class Federation implements PlatformMessage.Handler {
             return;
         }
         Facilitator f = facilitator(e, c.host(), c.term());
-        if (f.contactTimer >= 0) {
+        if (f == null || f.contactTimer >= 0) {
             return; // a contact is under way
         }
         f.contacted = false;

@@ -32,6 +32,17 @@ final class PlatformState {
     final Map<Address, Boolean> asked = new LinkedHashMap<>();
     /** Agents heard seeking a container too: the candidates of an election. */
     final Map<String, AgentEntry> seekers = new HashMap<>();
+    /** Candidates held at most: more than a host's port range holds (anyone with the key can ask in any name). */
+    static final int MAX_SEEKERS = 1024;
+
+    /** Takes a candidate, unless {@link #MAX_SEEKERS} others are held already. */
+    boolean addSeeker(AgentEntry e) {
+        if (seekers.size() >= MAX_SEEKERS && !seekers.containsKey(e.name())) {
+            return false;
+        }
+        seekers.put(e.name(), e);
+        return true;
+    }
     /** Agents taken for gone by a failover: no longer candidates. */
     final Set<String> suspects = new HashSet<>();
     /** After a failover, the agent expected to take over, or {@code null}. */

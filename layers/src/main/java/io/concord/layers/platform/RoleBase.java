@@ -66,7 +66,10 @@ abstract class RoleBase implements PlatformMessage.Handler {
         if (st.container != null && kind() != ContainerLayer.Role.SEEKING) {
             answer = new PlatformMessage.ContainerIs(st.term, st.container, st.selfEntry);
         } else {
-            st.seekers.put(asker.name(), asker);
+            if (!st.addSeeker(asker)) {
+                ctx.drop("seekers-limit", PlatformState.MAX_SEEKERS + " agents are seeking a container already; "
+                        + asker.name() + " is not taken as a candidate");
+            }
             answer = new PlatformMessage.Seeking(st.round, st.maxTermSeen, st.selfEntry);
         }
         // Answered to whoever holds the asker's port, as it asked: sealed with the platform key, so

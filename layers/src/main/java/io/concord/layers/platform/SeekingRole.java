@@ -81,7 +81,10 @@ final class SeekingRole extends Follower {
     @Override
     public void onSeeking(PlatformMessage.Seeking s, AclMessage m) {
         super.onSeeking(s, m);
-        st.seekers.put(s.by().name(), s.by());
+        if (!st.addSeeker(s.by())) {
+            ctx.drop("seekers-limit", PlatformState.MAX_SEEKERS + " agents are seeking a container already; "
+                    + s.by().name() + " is not taken as a candidate");
+        }
         boolean waiting = false;
         for (Address a : sentTo) {
             waiting |= !st.asked.get(a);

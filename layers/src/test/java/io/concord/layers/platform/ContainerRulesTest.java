@@ -721,4 +721,81 @@ class ContainerRulesTest {
             assertTrue(c.layer.globalAgents().isEmpty());
         }
     }
+
+    /** Hole 6: what the network can make a container or a seeker hold is bounded, each limit counted. */
+    @Nested
+    class Bounds {
+        final NetworkConfig net = NetworkConfig.defaults().withBroadcast(false).withSeeds(List.of("127.0.0.2"))
+                .withTiming(250, 1_500);
+
+        @Test
+        void aFloodOfQuestionsInNewNamesMakesASeekerHoldAtMostTheCandidateLimit() {
+            OneAgent a = new OneAgent("a", 7001, 7002);
+            a.sent();
+            int n = PlatformState.MAX_SEEKERS + 976;
+            for (int i = 0; i < n; i++) {
+                AgentEntry s = other("s" + i, 20_000 + i, -1_000);
+                a.fromAny(s, Performative.QUERY_REF, P_DISCOVERY, new WhoIsContainer(0, s));
+            }
+            assertEquals(n, a.sent(Seeking.class).size(), "every question is answered");
+            assertEquals(976, a.h.drops().get("seekers-limit"), "the askers past the limit are not held, and counted");
+            a.from(other("b", 7002, -500), Performative.INFORM, P_DISCOVERY, new Seeking(0, 0, other("b", 7002, -500)));
+            assertEquals(Role.CONTAINER, a.role(), "a is the eldest");
+            assertEquals(PlatformState.MAX_SEEKERS, a.sent(ContainerIs.class).size(),
+                    "the new container tells the candidates it holds, and no more");
+        }
+
+        @Test
+        void announcementsOfManyHostsMakeAContainerKnowAtMostTheHostLimitAndKeepItsContacts() {
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), net, null);
+            AgentEntry a = new AgentEntry("a@p", "udp://127.0.0.2:7001", OneAgent.EPOCH - 5_000, List.of());
+            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+                    Page.of(0, 1, body(List.of(a)))));
+            c.sent();
+            // A key holder announces a host that knows 1,000 more: each would be a facilitator to
+            // announce to, and to contact, every period.
+            List<AgentEntry> made = new ArrayList<>();
+            for (int i = 0; i < 1_000; i++) {
+                made.add(new AgentEntry("z" + i + "@p", "udp://10.200." + (1 + i / 200) + "." + (1 + i % 200) + ":7001",
+                        OneAgent.EPOCH, List.of()));
+            }
+            AgentEntry z = new AgentEntry("zz@p", "udp://10.200.9.9:7001", OneAgent.EPOCH, List.of());
+            c.fromAny(z, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "10.200.9.9", 1, z, made));
+            assertEquals(Federation.MAX_FACILITATORS, c.layer.federation().facilitators().size(), "no more hosts known than the limit");
+            assertTrue(c.h.drops().get("facilitator-limit") >= 1_000 + 1 - (Federation.MAX_FACILITATORS - 1));
+            assertTrue(c.layer.federation().facilitators().containsKey("a@p"), "the host in contact is never the one forgotten");
+            assertEquals(List.of("a@p"), names(List.copyOf(c.layer.globalAgents())));
+            c.sent();
+            c.advance(250);
+            long announced = c.sent().stream().filter(o -> o.what() instanceof PlatformMessage.Announce).count();
+            assertEquals(1 + Federation.MAX_FACILITATORS, announced, "an announcement to the seed and to each host known");
+        }
+
+        @Test
+        void aListWhosePagesGrowPastTheLimitIsDroppedAndCounted() {
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), net, null);
+            AgentEntry a = new AgentEntry("a@p", "udp://127.0.0.2:7001", OneAgent.EPOCH - 5_000, List.of());
+            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            // A version announced as 10,000 pages, each of some 8 KiB, whose last page never comes.
+            List<AgentEntry> page = new ArrayList<>();
+            for (int i = 0; i < 60; i++) {
+                page.add(new AgentEntry("agent-with-a-long-name-" + "x".repeat(60) + i + "@p", "udp://127.0.0.2:" + (7002 + i),
+                        OneAgent.EPOCH, List.of()));
+            }
+            String text = body(page);
+            int sent = 0;
+            while ((long) sent * text.length() <= PageAssembler.MAX_BYTES) {
+                c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+                        Page.of(sent, 10_000, text)));
+                sent++;
+            }
+            assertEquals(1, c.h.drops().get("list-too-large"), "the pages held past " + PageAssembler.MAX_BYTES + " bytes are dropped");
+            assertTrue(c.layer.globalAgents().isEmpty());
+            // The next version is taken whole.
+            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 2,
+                    Page.of(0, 1, body(List.of(a)))));
+            assertEquals(List.of("a@p"), names(List.copyOf(c.layer.globalAgents())));
+        }
+    }
 }
