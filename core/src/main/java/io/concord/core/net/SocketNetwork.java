@@ -32,6 +32,13 @@ public final class SocketNetwork implements Network {
      * one port cannot keep the loop from the rest.
      */
     static final int READ_BUDGET = 64;
+    /**
+     * ... and while the agents of this JVM have frames for each other waiting: the loop then looks
+     * at the sockets every few cycles, and reads a few frames from each. A flood at a port is then
+     * left to the kernel, which drops what its buffer cannot hold, at no cost to the loop.
+     */
+    static final int BUSY_READ_BUDGET = 4;
+    private int readBudget = READ_BUDGET;
     private static final Logger LOG = LoggerFactory.getLogger(SocketNetwork.class);
 
     private final Selector selector;
@@ -200,6 +207,7 @@ public final class SocketNetwork implements Network {
             LOG.warn("selector failed: {}", e.toString());
             return local;
         }
+        readBudget = local > 0 ? BUSY_READ_BUDGET : READ_BUDGET;
         return local + (selector.selectedKeys().isEmpty() ? 0 : drainSelected(nowNs));
     }
 
@@ -320,7 +328,7 @@ public final class SocketNetwork implements Network {
         int drain(long nowNs) {
             int n = 0;
             try {
-                while (n < READ_BUDGET) {
+                while (n < readBudget) {
                     receiveBuffer.clear();
                     SocketAddress from = channel.receive(receiveBuffer);
                     if (from == null) {

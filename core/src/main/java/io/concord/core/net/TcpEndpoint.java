@@ -184,8 +184,8 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
         }
         open = false;
         closeQuietly(server);
-        for (Outbound o : outbound.values()) {
-            o.close();
+        for (Outbound o : new java.util.ArrayList<>(outbound.values())) {
+            o.close(); // which takes it out of the map
         }
         for (Inbound i : new HashSet<>(inbound)) {
             i.close();

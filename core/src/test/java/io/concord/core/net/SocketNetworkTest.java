@@ -59,4 +59,32 @@ class SocketNetworkTest {
             assertEquals((500 + SocketNetwork.READ_BUDGET - 1) / SocketNetwork.READ_BUDGET, polls, "the rest over the next polls, none lost");
         }
     }
+
+    @Test
+    void whileTheAgentsOfTheJvmHaveFramesForEachOtherAFloodedPortIsReadAFewFramesAtATime() throws Exception {
+        try (SocketNetwork net = new SocketNetwork(1 << 20, true);
+             java.nio.channels.DatagramChannel attacker = java.nio.channels.DatagramChannel.open()) {
+            int[] flooded = new int[1];
+            Endpoint a = net.tryBind("127.0.0.1", 0, IGNORE);
+            Endpoint b = net.tryBind("127.0.0.1", 0, IGNORE);
+            Endpoint target = net.tryBind("127.0.0.1", 0, (from, data, offset, length, nowNs) -> flooded[0]++);
+            java.net.InetSocketAddress to = new java.net.InetSocketAddress("127.0.0.1", target.localAddress().port());
+            for (int i = 0; i < 500; i++) {
+                attacker.send(java.nio.ByteBuffer.wrap(new byte[32]), to);
+            }
+            int read = 0;
+            for (int i = 0; i < 64; i++) {
+                a.send(b.localAddress(), new byte[8], 0, 8); // in memory: local work for every poll
+                int before = flooded[0];
+                net.poll(0);
+                assertTrue(flooded[0] - before <= SocketNetwork.BUSY_READ_BUDGET,
+                        "a poll with local work read " + (flooded[0] - before) + " datagrams of the flood");
+                read += flooded[0] - before;
+            }
+            assertTrue(read > 0, "the flooded port is still read");
+            int before = flooded[0];
+            net.poll(0);
+            assertEquals(SocketNetwork.READ_BUDGET, flooded[0] - before, "with no local work waiting, the full budget");
+        }
+    }
 }
