@@ -96,6 +96,8 @@ public final class SecurityLayer extends Layer {
     private static final int REKEY = 3;
     private static final long REKEY_EVERY_MS = 1_000;
     private static final int REKEY_MEMORY = 1024;
+    /** REKEY notices sent at most a second, to all sources together. */
+    static final int REKEY_NOTICES_PER_SECOND = 64;
     private static final int RECENT_TAGS = 64;
     private static final int MAX_PAIRS = 4096;
     /**
@@ -104,6 +106,15 @@ public final class SecurityLayer extends Layer {
      * over a real agent's name with another identity.
      */
     static final int MAX_PINS = 16_384;
+    /**
+     * Hellos answered at most: {@link #HELLO_BURST} at once, then {@link #HELLOS_PER_SECOND}. Each
+     * costs a signature check, a key agreement and a signature; a holder of the platform key can
+     * send them under new names as fast as it can sign. A platform's start needs one per peer an
+     * agent talks to (a container: one per member), well within the burst; past it, a hello is
+     * dropped before any signature work ({@code handshake-limit}) and its sender tries again.
+     */
+    static final int HELLO_BURST = 256;
+    static final int HELLOS_PER_SECOND = 64;
     private static final long FIRST_RETRY_MS = 100;
     private static final int MAX_HELLO_ATTEMPTS = 10;
 
@@ -136,7 +147,14 @@ public final class SecurityLayer extends Layer {
             return size() > REKEY_MEMORY;
         }
     };
+    private int helloBurst = HELLO_BURST;
+    private int hellosPerSecond = HELLOS_PER_SECOND;
+    private double helloTokens = HELLO_BURST;
+    private long helloTokensAtNs;
+    private boolean helloTokensStarted;
     private long rekeysSent;
+    private long rekeyWindowSecond = Long.MIN_VALUE;
+    private int rekeysThisSecond;
     private long hellosSent;
     private int recentIndex;
     private long ownId;
@@ -503,6 +521,15 @@ public final class SecurityLayer extends Layer {
         long now = ctx.host().clock().epochMillis();
         Long last = rekeyed.get(src);
         if (last == null || now - last >= REKEY_EVERY_MS) {
+            // ... and at most REKEY_NOTICES_PER_SECOND in all: forged frames with a new source id
+            // each would otherwise cost a sealed notice and a send apiece.
+            if (now / 1_000 != rekeyWindowSecond) {
+                rekeyWindowSecond = now / 1_000;
+                rekeysThisSecond = 0;
+            }
+            if (++rekeysThisSecond > REKEY_NOTICES_PER_SECOND) {
+                return;
+            }
             rekeyed.put(src, now);
             sendRekey(ctx, src, to);
         }
@@ -717,17 +744,24 @@ public final class SecurityLayer extends Layer {
             ctx.drop(env, "replayed-handshake", "a reply from " + name + " to no hello of this agent under way");
             return;
         }
+        // Cheap refusals first: a stale time needs no signature checked to be refused (a changed
+        // one fails the signature below).
+        long age = Math.abs(ctx.host().clock().epochMillis() - ts);
+        if (age > config.handshakeWindowMs()) {
+            ctx.drop(env, "stale", "a handshake " + age + " ms old (window " + config.handshakeWindowMs() + " ms)");
+            return;
+        }
+        if (type == HELLO && !takeHelloToken(ctx.nowNs())) {
+            ctx.drop(env, "handshake-limit", "more hellos than " + helloBurst + " at once and " + hellosPerSecond
+                    + " a second; the hello of " + name + " is not answered (its sender tries again)");
+            return;
+        }
         byte[] signed = new byte[signedLen + 8];
         System.arraycopy(b, off, signed, 0, signedLen);
         Frames.putLong(signed, signedLen, ownId);
         byte[] sig = Arrays.copyOfRange(b, off + signedLen, off + signedLen + 64);
         if (!Identity.verify(signingKey, signed, 0, signed.length, sig)) {
             ctx.drop(env, "masquerade", "the handshake of " + name + " is not signed by the key it presents");
-            return;
-        }
-        long age = Math.abs(ctx.host().clock().epochMillis() - ts);
-        if (age > config.handshakeWindowMs()) {
-            ctx.drop(env, "stale", "a handshake " + age + " ms old (window " + config.handshakeWindowMs() + " ms)");
             return;
         }
         String pinKey = name.toLowerCase(Locale.ROOT);
@@ -784,6 +818,28 @@ public final class SecurityLayer extends Layer {
             pair.pending.poll();
         }
         pair.pending.add(new Pending(challenge, replyChallenge, key, reply));
+    }
+
+    /** Answers hellos at another rate than {@link #HELLO_BURST} and {@link #HELLOS_PER_SECOND}: for tests. */
+    void helloRate(int burst, int perSecond) {
+        helloBurst = burst;
+        hellosPerSecond = perSecond;
+        helloTokens = burst;
+    }
+
+    /** Takes a token for a hello, if one is left. */
+    private boolean takeHelloToken(long nowNs) {
+        if (!helloTokensStarted) {
+            helloTokensStarted = true;
+            helloTokensAtNs = nowNs;
+        }
+        helloTokens = Math.min(helloBurst, helloTokens + (nowNs - helloTokensAtNs) * hellosPerSecond / 1e9);
+        helloTokensAtNs = nowNs;
+        if (helloTokens < 1) {
+            return false;
+        }
+        helloTokens--;
+        return true;
     }
 
     /** The initiator derived the key of one of our replies: use it. */

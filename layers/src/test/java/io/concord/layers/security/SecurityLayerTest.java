@@ -186,7 +186,7 @@ class SecurityLayerTest {
     }
 
     @Test
-    void aFrameFromAStrangerCostsNoStateNoSignatureAndAtMostOneSmallNoticeASecond() {
+    void aFrameFromAStrangerCostsNoStateNoSignatureAndAtMostOneSmallNoticeASecondOf64InAll() {
         SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
         LayerHarness b = agent("b@p", sb);
         java.util.SplittableRandom r = new java.util.SplittableRandom(1);
@@ -199,17 +199,19 @@ class SecurityLayerTest {
         assertEquals(1_100, b.drops().get("no-session-key"), b.drops().toString());
         assertEquals(0, sb.pairCount(), "no state for strangers");
         assertEquals(0, sb.hellosSent(), "no signature for strangers");
-        assertEquals(1_001, sb.rekeysSent(), "one notice per source id a second: 1,000 ids, and id 42 once");
+        assertEquals(SecurityLayer.REKEY_NOTICES_PER_SECOND, sb.rekeysSent(),
+                "one notice per source id a second, and no more than 64 a second in all (1,001 before that cap)");
         Envelope e;
         int n = 0;
         while ((e = b.pollDown()) != null) {
             n++;
             assertTrue(e.length() <= 49, "a notice of 49 bytes for a frame of 48: " + e.length() + " bytes");
         }
-        assertEquals(1_001, n);
+        assertEquals(SecurityLayer.REKEY_NOTICES_PER_SECOND, n);
         clock.advanceMs(1_000);
         b.receiveUp(forged(42, "b@p", 100));
-        assertEquals(1_002, sb.rekeysSent(), "a second later, one more");
+        b.receiveUp(forged(42, "b@p", 101));
+        assertEquals(SecurityLayer.REKEY_NOTICES_PER_SECOND + 1, sb.rekeysSent(), "a second later, one more for id 42");
     }
 
     @Test
@@ -430,6 +432,7 @@ class SecurityLayerTest {
     @Test
     void newNamesBeyondThePinLimitAreRefusedAndNoPinIsForgotten() {
         SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        sb.helloRate(SecurityLayer.MAX_PINS * 2, 1); // the hello rate limit is another test's
         LayerHarness b = agent("b@p", sb);
         LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
         shakeHands(a, b, "pinned first");
@@ -457,5 +460,38 @@ class SecurityLayerTest {
                 () -> new SecurityLayer.Config(SecurityLayer.Protection.HMAC, null, null, 1, 1));
         assertThrows(IllegalArgumentException.class,
                 () -> new SecurityLayer.Config(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY, null, 1, 1));
+    }
+
+    @Test
+    void hellosBeyondTheBurstAndTheRateAreDroppedBeforeAnySignatureWork() {
+        SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+        LayerHarness b = agent("b@p", sb);
+        Identity one = IdentityStore.ephemeral().identityFor("x");
+        int n = SecurityLayer.HELLO_BURST + 100;
+        int replies = 0;
+        for (int i = 0; i < n; i++) {
+            LayerHarness m = agent("m" + i + "@p", keeping(one));
+            m.sendDown(body("x", "b@p"));
+            deliver(next(m), new Address("attacker", 9), b);
+            while (b.pollDown() != null) {
+                replies++;
+            }
+        }
+        assertEquals(SecurityLayer.HELLO_BURST, replies, "a signed reply to each hello of the burst, and no more");
+        assertEquals(100, b.drops().get("handshake-limit"));
+        b.advanceMs(1_000);
+        for (int i = 0; i < 100; i++) {
+            LayerHarness m = agent("late" + i + "@p", keeping(one));
+            m.sendDown(body("x", "b@p"));
+            deliver(next(m), new Address("attacker", 9), b);
+            while (b.pollDown() != null) {
+                replies++;
+            }
+        }
+        assertEquals(SecurityLayer.HELLO_BURST + SecurityLayer.HELLOS_PER_SECOND, replies, "then the rate");
+        // Once the flood has passed, a real agent gets in.
+        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
+        b.advanceMs(1_000);
+        shakeHands(a, b, "after the flood");
     }
 }
