@@ -45,7 +45,7 @@ import io.concord.core.net.Transport;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http",
-            "sim", "hospital", "serial");
+            "sim", "hospital", "serial", "attack");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -106,6 +106,7 @@ public final class BenchMain {
                     case "sim" -> b.sim();
                     case "hospital" -> b.hospital();
                     case "serial" -> b.serial();
+                    case "attack" -> b.attack();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -397,6 +398,35 @@ public final class BenchMain {
         md.append(String.format(Locale.ROOT, "| Concord | %.1f |%n| JADE | %.1f |%n", c, j));
         md.append(String.format(Locale.ROOT, "%nJADE to Concord takes %.2f times the time of JADE to JADE.%n", c / j));
         Files.writeString(reportDir.resolve("http.md"), md.toString());
+    }
+
+    /** The chain on a running platform, quiet and under each attack (see AttackHarness). */
+    private void attack() throws IOException {
+        double seconds = full ? 10 : 3;
+        StringBuilder md = new StringBuilder(header("Under attack", "Six agents of one platform (class 7, every defence on, "
+                + "real sockets on 127.0.0.1) pass a 500-byte secret round a ring, measured quiet and then while an attacker "
+                + "in another JVM floods their ports: forged frames (an outsider: random bytes, Concord headers with random "
+                + "ids and bodies), handshakes from new identities (a key holder: a new agent name, so a signed handshake, "
+                + "each), and TCP streams announcing 1 MiB frames (the platform on TCP). Forged deliveries are messages a "
+                + "link received from anyone but its predecessor; the heap is the platform JVM's used heap, sampled every "
+                + "20 ms during the flood. Both processes share the machine's cores: the control `cpu` is an attacker that only "
+                + "keeps one core busy and sends nothing, so that the chain's slowdown from sharing the CPU is seen apart.",
+                "Median time per round over batches of 50 rounds"));
+        md.append("| attack | attack messages sent | µs per round, quiet | µs per round, attacked | slower | forged delivered "
+                + "| heap MB at most | heap MB after GC | drops counted by the agents |\n|---|---|---|---|---|---|---|---|---|\n");
+        for (String kind : List.of("cpu", "forged", "handshake", "tcp")) {
+            io.concord.bench.harness.AttackHarness.Result r;
+            try {
+                r = io.concord.bench.harness.AttackHarness.run(kind, seconds);
+            } catch (Exception e) {
+                throw new IOException("the attack harness failed for " + kind + ": " + e, e);
+            }
+            System.out.println(r.line());
+            md.append(String.format(Locale.ROOT, "| %s | %d | %.1f | %.1f | %.2f× | %d | %.0f | %.0f | %s |%n", kind,
+                    r.attackSent(), r.usBefore(), r.usDuring(), r.usDuring() / r.usBefore(), r.forged(), r.heapMbMax(),
+                    r.heapMbAfterGc(), r.drops()));
+        }
+        Files.writeString(reportDir.resolve("attack.md"), md.toString());
     }
 
     /** Hosts in network namespaces: join and heal times. Needs root (namespaces). */

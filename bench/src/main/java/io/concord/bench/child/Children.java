@@ -59,6 +59,18 @@ public final class Children implements AutoCloseable {
         in.flush();
     }
 
+    /** Closes child i's input (its signal to stop) and returns the number on its {@code SENT} line, or -1. */
+    public long finish(int i) throws IOException {
+        processes.get(i).getOutputStream().close();
+        String line;
+        while ((line = outputs.get(i).readLine()) != null) {
+            if (line.startsWith("SENT ")) {
+                return Long.parseLong(line.substring(5).trim());
+            }
+        }
+        return -1;
+    }
+
     @Override
     public void close() {
         for (Process p : processes) {
