@@ -190,8 +190,8 @@ final class AccServer implements AutoCloseable {
                     } else {
                         Conn c = (Conn) k.attachment();
                         try {
-                            if (k.isWritable()) {
-                                flush(c, k);
+                            if (k.isWritable() && flush(c, k) && c.len > 0) {
+                                process(c, k, now); // requests that came in behind the one answered
                             }
                             if (k.isValid() && k.isReadable()) {
                                 read(c, k, now);
@@ -421,15 +421,16 @@ final class AccServer implements AutoCloseable {
         flush(c, k);
     }
 
-    private void flush(Conn c, SelectionKey k) throws IOException {
+    /** Writes what waits; true if the connection is open for the next request. */
+    private boolean flush(Conn c, SelectionKey k) throws IOException {
         if (c.pendingOut == null) {
             k.interestOps(SelectionKey.OP_READ);
-            return;
+            return true;
         }
         c.ch.write(c.pendingOut);
         if (c.pendingOut.hasRemaining()) {
             k.interestOps(SelectionKey.OP_WRITE);
-            return;
+            return false;
         }
         c.pendingOut = null;
         if (c.closeAfterWrite) {
@@ -441,12 +442,10 @@ final class AccServer implements AutoCloseable {
             c.len = 0;
             shrink(c);
             k.interestOps(SelectionKey.OP_READ);
-            return;
+            return false;
         }
         k.interestOps(SelectionKey.OP_READ);
-        if (c.len > 0) {
-            process(c, k, nanos.getAsLong()); // a request that came in behind the last one
-        }
+        return true;
     }
 
     private static void consume(Conn c, int n) {
