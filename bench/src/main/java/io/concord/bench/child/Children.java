@@ -21,7 +21,16 @@ public final class Children implements AutoCloseable {
 
     /** Starts a child JVM running {@code mainClass} with the arguments. */
     public void start(Class<?> mainClass, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        startOn(null, mainClass, args);
+    }
+
+    /** ... on the CPUs named (as {@code taskset -c} takes them), or on any if {@code null}. */
+    public void startOn(String cpus, Class<?> mainClass, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>();
+        if (cpus != null) {
+            cmd.addAll(List.of("taskset", "-c", cpus));
+        }
+        cmd.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-XX:+UseSerialGC", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error",
                 "-cp", System.getProperty("java.class.path")));
         for (String prop : new String[]{"concord.idle.spin", "concord.idle.yield"}) {

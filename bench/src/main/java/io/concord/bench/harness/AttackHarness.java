@@ -145,7 +145,8 @@ public final class AttackHarness {
             long sent;
             double during;
             try (Children attacker = new Children()) {
-                attacker.start(AttackChild.class, args.toArray(new String[0]));
+                // -Dconcord.attack.cpus=1 pins the attacker (taskset -c): its CPU use apart from the victims' work.
+                attacker.startOn(System.getProperty("concord.attack.cpus"), AttackChild.class, args.toArray(new String[0]));
                 attacker.awaitReady();
                 Thread sampler = new Thread(() -> {
                     while (!Thread.currentThread().isInterrupted()) {
