@@ -87,4 +87,19 @@ class SocketNetworkTest {
             assertEquals(SocketNetwork.READ_BUDGET, flooded[0] - before, "with no local work waiting, the full budget");
         }
     }
+
+    @Test
+    void aTcpEndpointWithSeveralOutboundStreamsCloses() {
+        try (SocketNetwork net = new SocketNetwork()) {
+            Endpoint a = net.tryBind(Transport.TCP, "127.0.0.1", 0, IGNORE);
+            Endpoint b = net.tryBind(Transport.TCP, "127.0.0.1", 0, IGNORE);
+            Endpoint c = net.tryBind(Transport.TCP, "127.0.0.1", 0, IGNORE);
+            assertTrue(a.send(b.localAddress(), new byte[8], 0, 8));
+            assertTrue(a.send(c.localAddress(), new byte[8], 0, 8));
+            net.poll(0);
+            // Each stream takes itself out of the endpoint's map as it closes: this threw
+            // ConcurrentModificationException when the endpoint closed them while walking that map.
+            a.close();
+        }
+    }
 }
