@@ -1,5 +1,7 @@
 package io.concord.jade;
 
+import io.concord.core.time.TokenBucket;
+
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.LongSupplier;
@@ -17,9 +19,9 @@ final class ReplyLimit {
     static final int HOSTS = 1024;
 
     private final LongSupplier nanos;
-    private final Map<String, double[]> buckets = new LinkedHashMap<>(64, 0.75f, true) {
+    private final Map<String, TokenBucket> buckets = new LinkedHashMap<>(64, 0.75f, true) {
         @Override
-        protected boolean removeEldestEntry(Map.Entry<String, double[]> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<String, TokenBucket> eldest) {
             return size() > HOSTS;
         }
     };
@@ -30,14 +32,7 @@ final class ReplyLimit {
 
     /** Takes a token for that host if one is left. */
     synchronized boolean allow(String host) {
-        long now = nanos.getAsLong();
-        double[] b = buckets.computeIfAbsent(host.toLowerCase(java.util.Locale.ROOT), h -> new double[] {BURST, now});
-        b[0] = Math.min(BURST, b[0] + (now - (long) b[1]) * RATE / 1e9);
-        b[1] = now;
-        if (b[0] < 1) {
-            return false;
-        }
-        b[0]--;
-        return true;
+        return buckets.computeIfAbsent(host.toLowerCase(java.util.Locale.ROOT), h -> new TokenBucket(BURST, RATE))
+                .take(nanos.getAsLong());
     }
 }

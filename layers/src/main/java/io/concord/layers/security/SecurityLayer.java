@@ -147,14 +147,10 @@ public final class SecurityLayer extends Layer {
             return size() > REKEY_MEMORY;
         }
     };
-    private int helloBurst = HELLO_BURST;
-    private int hellosPerSecond = HELLOS_PER_SECOND;
-    private double helloTokens = HELLO_BURST;
-    private long helloTokensAtNs;
-    private boolean helloTokensStarted;
+    private io.concord.core.time.TokenBucket hellos = new io.concord.core.time.TokenBucket(HELLO_BURST, HELLOS_PER_SECOND);
+    private final io.concord.core.time.TokenBucket rekeys = new io.concord.core.time.TokenBucket(REKEY_NOTICES_PER_SECOND,
+            REKEY_NOTICES_PER_SECOND);
     private long rekeysSent;
-    private long rekeyWindowSecond = Long.MIN_VALUE;
-    private int rekeysThisSecond;
     private long hellosSent;
     private int recentIndex;
     private long ownId;
@@ -523,11 +519,7 @@ public final class SecurityLayer extends Layer {
         if (last == null || now - last >= REKEY_EVERY_MS) {
             // ... and at most REKEY_NOTICES_PER_SECOND in all: forged frames with a new source id
             // each would otherwise cost a sealed notice and a send apiece.
-            if (now / 1_000 != rekeyWindowSecond) {
-                rekeyWindowSecond = now / 1_000;
-                rekeysThisSecond = 0;
-            }
-            if (++rekeysThisSecond > REKEY_NOTICES_PER_SECOND) {
+            if (!rekeys.take(ctx.nowNs())) {
                 return;
             }
             rekeyed.put(src, now);
@@ -751,8 +743,8 @@ public final class SecurityLayer extends Layer {
             ctx.drop(env, "stale", "a handshake " + age + " ms old (window " + config.handshakeWindowMs() + " ms)");
             return;
         }
-        if (type == HELLO && !takeHelloToken(ctx.nowNs())) {
-            ctx.drop(env, "handshake-limit", "more hellos than " + helloBurst + " at once and " + hellosPerSecond
+        if (type == HELLO && !hellos.take(ctx.nowNs())) {
+            ctx.drop(env, "handshake-limit", "more hellos than " + hellos.burst() + " at once and " + (int) hellos.perSecond()
                     + " a second; the hello of " + name + " is not answered (its sender tries again)");
             return;
         }
@@ -822,24 +814,7 @@ public final class SecurityLayer extends Layer {
 
     /** Answers hellos at another rate than {@link #HELLO_BURST} and {@link #HELLOS_PER_SECOND}: for tests. */
     void helloRate(int burst, int perSecond) {
-        helloBurst = burst;
-        hellosPerSecond = perSecond;
-        helloTokens = burst;
-    }
-
-    /** Takes a token for a hello, if one is left. */
-    private boolean takeHelloToken(long nowNs) {
-        if (!helloTokensStarted) {
-            helloTokensStarted = true;
-            helloTokensAtNs = nowNs;
-        }
-        helloTokens = Math.min(helloBurst, helloTokens + (nowNs - helloTokensAtNs) * hellosPerSecond / 1e9);
-        helloTokensAtNs = nowNs;
-        if (helloTokens < 1) {
-            return false;
-        }
-        helloTokens--;
-        return true;
+        hellos = new io.concord.core.time.TokenBucket(burst, perSecond);
     }
 
     /** The initiator derived the key of one of our replies: use it. */
