@@ -1,6 +1,5 @@
 package io.concord.jade;
 
-import io.concord.core.layer.DropCounters;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -66,19 +65,23 @@ final class AccServer implements AutoCloseable {
     interface Handler {
         /** On the server's thread; must not block. */
         Response handle(Request request);
+
+        /**
+         * The server refused a request itself ({@code answered}: with a 4xx) or closed a
+         * connection for a limit: to be counted with its reason. On the server's thread.
+         */
+        void dropped(String reason, InetAddress from, String why, boolean answered);
     }
 
     private final Limits limits;
     private final Handler handler;
     private final LongSupplier nanos;
-    private final DropCounters drops;
     private final Selector selector;
     private final ServerSocketChannel server;
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(64 * 1024);
     private final List<Conn> conns = new ArrayList<>();
     private final ConcurrentLinkedQueue<Runnable> tasks = new ConcurrentLinkedQueue<>();
     private final Thread thread;
-    private final Runnable onRefused;
     private volatile boolean running = true;
     private volatile int open;
     private volatile long buffered;
@@ -95,6 +98,7 @@ final class AccServer implements AutoCloseable {
         long requestStartNs = -1;
         ByteBuffer pendingOut;
         boolean closeAfterWrite;
+        boolean closed;
         /** Answered and closing: what the client still sends is read and thrown away, so that it reads the answer. */
         long drainUntilNs = -1;
         long drained;
@@ -109,16 +113,12 @@ final class AccServer implements AutoCloseable {
     /**
      * Binds and starts serving on a thread of its own.
      *
-     * @param onRefused called on each request refused here, before the handler sees it
      * @throws UncheckedIOException if the address cannot be bound, saying which
      */
-    AccServer(String host, int port, Limits limits, Handler handler, LongSupplier nanos, DropCounters drops, Runnable onRefused,
-              String threadName) {
-        this.onRefused = onRefused;
+    AccServer(String host, int port, Limits limits, Handler handler, LongSupplier nanos, String threadName) {
         this.limits = limits;
         this.handler = handler;
         this.nanos = nanos;
-        this.drops = drops;
         try {
             selector = Selector.open();
             server = ServerSocketChannel.open();
@@ -140,12 +140,12 @@ final class AccServer implements AutoCloseable {
         return server.socket().getLocalPort();
     }
 
-    /** Connections open now. Any thread. */
+    /** Connections open at the last sweep (see {@link #sweep()}). Any thread. */
     int open() {
         return open;
     }
 
-    /** Bytes of unanswered requests held now, all connections together. Any thread. */
+    /** Bytes held for unanswered requests at the last sweep, all connections together. Any thread. */
     long buffered() {
         return buffered;
     }
@@ -205,7 +205,6 @@ final class AccServer implements AutoCloseable {
                 if (now - lastSweepNs >= 1_000_000_000L) {
                     expire(now);
                 }
-                updateStats();
             }
         } catch (IOException | RuntimeException e) {
             LOG.error("the HTTP MTP's server stopped: {}", e.toString(), e);
@@ -238,9 +237,9 @@ final class AccServer implements AutoCloseable {
         while ((ch = server.accept()) != null) {
             if (conns.size() >= limits.maxConnections()) {
                 Conn victim = victim();
-                drops.record("http", "http-connections", "more than " + limits.maxConnections()
+                handler.dropped("http-connections", victim.remote, "more than " + limits.maxConnections()
                         + " connections to the ACC; closed the one " + (victim.requestStartNs >= 0
-                        ? "whose request has taken longest" : "idle longest") + " (from " + victim.remote.getHostAddress() + ")");
+                        ? "whose request has taken longest" : "idle longest"), false);
                 closeConn(victim);
             }
             ch.configureBlocking(false);
@@ -276,8 +275,8 @@ final class AccServer implements AutoCloseable {
                     closeConn(c);
                 }
             } else if (c.requestStartNs >= 0 && now - c.requestStartNs > limits.requestTimeoutNs()) {
-                drops.record("http", "http-slow", "a request from " + c.remote.getHostAddress() + " did not arrive whole within "
-                        + limits.requestTimeoutNs() / 1_000_000 + " ms of its first byte; connection closed");
+                handler.dropped("http-slow", c.remote, "a request did not arrive whole within "
+                        + limits.requestTimeoutNs() / 1_000_000 + " ms of its first byte; connection closed", false);
                 closeConn(c);
             } else if (c.requestStartNs < 0 && c.pendingOut == null && now - c.lastActivityNs > limits.idleTimeoutNs()) {
                 closeConn(c); // idle keep-alive: housekeeping, nothing lost
@@ -287,6 +286,7 @@ final class AccServer implements AutoCloseable {
     }
 
     private void closeConn(Conn c) {
+        c.closed = true;
         conns.remove(c);
         try {
             c.ch.close();
@@ -327,7 +327,7 @@ final class AccServer implements AutoCloseable {
 
     /** Answers every request the buffer holds whole; stops while a response is still being written. */
     private void process(Conn c, SelectionKey k, long now) throws IOException {
-        while (c.pendingOut == null && conns.contains(c)) {
+        while (c.pendingOut == null && !c.closed) {
             int start = 0;
             while (start < c.len && (c.buf[start] == '\r' || c.buf[start] == '\n')) {
                 start++;
@@ -401,8 +401,7 @@ final class AccServer implements AutoCloseable {
     }
 
     private void refuse(Conn c, SelectionKey k, int status, String reason, String why) throws IOException {
-        drops.record("http", reason, why + " (from " + c.remote.getHostAddress() + ")");
-        onRefused.run();
+        handler.dropped(reason, c.remote, why, true);
         c.len = 0;
         shrink(c);
         c.requestStartNs = -1;

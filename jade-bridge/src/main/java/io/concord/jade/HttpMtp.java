@@ -162,8 +162,17 @@ public final class HttpMtp implements Gateway {
     public void start(GatewayContext ctx) {
         this.context = ctx;
         try {
-            server = new AccServer(host, port, limits, this::handle, nanos, drops, rejected::incrementAndGet,
-                    "concord-http-in");
+            server = new AccServer(host, port, limits, new AccServer.Handler() {
+                @Override
+                public AccServer.Response handle(AccServer.Request request) {
+                    return HttpMtp.this.handle(request);
+                }
+
+                @Override
+                public void dropped(String reason, java.net.InetAddress from, String why, boolean answered) {
+                    count(reason, from, why, answered);
+                }
+            }, nanos, "concord-http-in");
         } catch (java.io.UncheckedIOException e) {
             throw new IllegalStateException("the HTTP MTP " + e.getMessage() + "; choose another port for the JADE bridge", e);
         }
@@ -256,18 +265,28 @@ public final class HttpMtp implements Gateway {
         return new AccServer.Response(200, null, true);
     }
 
-    /** Counts a refused request and says why, at WARN the first time for each address and reason. */
+    /** Counts a refused request and says why. */
     private AccServer.Response refuse(AccServer.Request x, int status, String reason, String problem) {
-        rejected.incrementAndGet();
-        drops.increment(reason);
-        String who = x.remote().getHostAddress();
-        if (warned.size() < 1024 && warned.add(who + " " + reason)) {
-            LOG.warn("HTTP MTP refused a request from {} ({} {}): {}. Further refusals of {} for this reason are only counted",
-                    who, status, reason, problem, who);
-        } else {
-            LOG.debug("HTTP MTP refused a request from {} ({}): {}", who, status, problem);
-        }
+        count(reason, x.remote(), status + ": " + problem, true);
         return new AccServer.Response(status, problem, false);
+    }
+
+    /**
+     * Counts what the ACC refused or closed, with its reason, and logs it at WARN the first time
+     * for each address and reason (at most 1,024 such pairs; then at DEBUG). Server thread.
+     */
+    private void count(String reason, java.net.InetAddress from, String why, boolean answered) {
+        if (answered) {
+            rejected.incrementAndGet();
+        }
+        drops.increment(reason);
+        String who = from.getHostAddress();
+        if (warned.size() < 1024 && warned.add(who + " " + reason)) {
+            LOG.warn("HTTP MTP refused a request from {} ({}): {}. Further refusals of {} for this reason are only counted",
+                    who, reason, why, who);
+        } else {
+            LOG.debug("HTTP MTP refused a request from {} ({}): {}", who, reason, why);
+        }
     }
 
     static String boundaryOf(String contentType) {
