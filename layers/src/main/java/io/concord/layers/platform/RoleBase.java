@@ -56,6 +56,14 @@ abstract class RoleBase implements PlatformMessage.Handler {
         timers.clear();
     }
 
+    /** Holds a candidate of the election, unless {@link PlatformState#MAX_SEEKERS} are held (counted). */
+    void addSeeker(AgentEntry e) {
+        if (!st.addSeeker(e)) {
+            ctx.drop("seekers-limit", PlatformState.MAX_SEEKERS + " agents are seeking a container already; "
+                    + e.name() + " is not taken as a candidate");
+        }
+    }
+
     // ---- answered alike in every role --------------------------------------------------------
 
     /** Who is container: the one this agent follows, or "seeking" (and the asker is a candidate). */
@@ -66,10 +74,7 @@ abstract class RoleBase implements PlatformMessage.Handler {
         if (st.container != null && kind() != ContainerLayer.Role.SEEKING) {
             answer = new PlatformMessage.ContainerIs(st.term, st.container, st.selfEntry);
         } else {
-            if (!st.addSeeker(asker)) {
-                ctx.drop("seekers-limit", PlatformState.MAX_SEEKERS + " agents are seeking a container already; "
-                        + asker.name() + " is not taken as a candidate");
-            }
+            addSeeker(asker);
             answer = new PlatformMessage.Seeking(st.round, st.maxTermSeen, st.selfEntry);
         }
         // Answered to whoever holds the asker's port, as it asked: sealed with the platform key, so

@@ -81,10 +81,7 @@ final class SeekingRole extends Follower {
     @Override
     public void onSeeking(PlatformMessage.Seeking s, AclMessage m) {
         super.onSeeking(s, m);
-        if (!st.addSeeker(s.by())) {
-            ctx.drop("seekers-limit", PlatformState.MAX_SEEKERS + " agents are seeking a container already; "
-                    + s.by().name() + " is not taken as a candidate");
-        }
+        addSeeker(s.by());
         boolean waiting = false;
         for (Address a : sentTo) {
             waiting |= !st.asked.get(a);
