@@ -14,6 +14,12 @@ public class ConcordChainLink extends Agent {
     private final String secret;
     /** Set once every link has started. */
     public volatile AID next;
+    /**
+     * The link before this one, if set: a message from anyone else is not passed on but counted
+     * in {@link #strangers} (the attack benchmark's forged deliveries).
+     */
+    public volatile AID previous;
+    public final java.util.concurrent.atomic.AtomicLong strangers = new java.util.concurrent.atomic.AtomicLong();
 
     public ConcordChainLink(Rounds rounds, boolean first, String secret) {
         this.rounds = rounds;
@@ -40,7 +46,10 @@ public class ConcordChainLink extends Agent {
                     block();
                     return;
                 }
-                if (!first) {
+                AID from = previous;
+                if (from != null && !from.equals(m.getSender())) {
+                    strangers.incrementAndGet();
+                } else if (!first) {
                     pass(m.getContent());
                 } else if (!secret.equals(m.getContent())) {
                     rounds.fail("the secret came back changed");

@@ -1,13 +1,11 @@
 package io.concord.bench.harness;
 
+import io.concord.bench.Rounds;
 import io.concord.bench.child.AttackChild;
+import io.concord.bench.concord.ConcordChainLink;
 import io.concord.bench.child.Children;
 import io.concord.core.acl.AID;
-import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
 import io.concord.core.net.Address;
 import io.concord.core.net.Transport;
@@ -28,7 +26,6 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * {@code bench/run attack}: a platform of six agents passing a 500-byte secret round a ring (the
@@ -41,7 +38,7 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class AttackHarness {
     static final int AGENTS = 6;
     static final int ROUNDS = 50;
-    static final String SECRET = "s".repeat(492) + "checksum";
+    static final String SECRET = io.concord.bench.jmh.ChainBenchmark.SECRET;
 
     /** What one attack measured. */
     public record Result(String kind, double usBefore, double usDuring, long forged, double heapMbMax, double heapMbAfterGc,
@@ -56,45 +53,6 @@ public final class AttackHarness {
     private AttackHarness() {
     }
 
-    /** A link of the ring: passes what its predecessor sends; counts anything else. */
-    static final class Link extends Agent {
-        final AtomicLong forged = new AtomicLong();
-        volatile AID next;
-        volatile AID previous;
-        boolean first;
-        int left;
-        CountDownLatch done;
-
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour(this) {
-                @Override
-                public void action() {
-                    AclMessage m = receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    if (!m.getSender().equals(previous) || !SECRET.equals(m.getContent())) {
-                        forged.incrementAndGet();
-                        return;
-                    }
-                    if (!first) {
-                        pass();
-                    } else if (--left > 0) {
-                        pass();
-                    } else {
-                        done.countDown();
-                    }
-                }
-            });
-        }
-
-        void pass() {
-            send(new AclMessage(Performative.INFORM).addReceiver(next).setContent(SECRET));
-        }
-    }
-
     public static Result run(String kind, double seconds) throws Exception {
         Transport transport = kind.equals("tcp") ? Transport.TCP : Transport.UDP;
         PlatformKey key = PlatformKey.random();
@@ -103,13 +61,13 @@ public final class AttackHarness {
             Platform p = Platform.builder().runtime(rt).ports(new PortRange(7851, 20, 10)).transport(transport)
                     .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(key).transport(transport)
                             .identities(IdentityStore.ephemeral()).build()).build();
-            List<Link> links = new ArrayList<>();
+            Rounds rounds = new Rounds();
+            List<ConcordChainLink> links = new ArrayList<>();
             List<AID> aids = new ArrayList<>();
             CountDownLatch started = new CountDownLatch(1);
             rt.execute(() -> {
                 for (int i = 0; i < AGENTS; i++) {
-                    Link l = new Link();
-                    l.first = i == 0;
+                    ConcordChainLink l = new ConcordChainLink(rounds, i == 0, SECRET);
                     links.add(l);
                     aids.add(p.startAgent("link" + i, l));
                 }
@@ -122,21 +80,21 @@ public final class AttackHarness {
             }
             List<ContainerLayer> layers = new ArrayList<>();
             for (AID a : aids) {
-                layers.add(onLoop(rt, () -> Platform.containerLayer(rt, a)));
+                layers.add(PlatformHarness.onLoop(rt, () -> Platform.containerLayer(rt, a)));
             }
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-            while (!onLoop(rt, () -> layers.stream().allMatch(l -> l.agents().size() == AGENTS))) {
+            while (!PlatformHarness.onLoop(rt, () -> layers.stream().allMatch(l -> l.agents().size() == AGENTS))) {
                 if (System.nanoTime() > end) {
                     throw new IllegalStateException("the attack platform did not converge in 20 s");
                 }
                 Thread.sleep(20);
             }
-            Link first = links.get(0);
-            measure(rt, first, seconds / 2); // warm-up
-            double before = measure(rt, first, seconds);
+            ConcordChainLink first = links.get(0);
+            measure(rt, rounds, first, seconds / 2); // warm-up
+            double before = measure(rt, rounds, first, seconds);
             List<String> targets = new ArrayList<>();
             for (int i = 0; i < AGENTS; i++) {
-                Address at = onLoop(rt, layers.get(i)::selfEntry).transportAddress();
+                Address at = PlatformHarness.onLoop(rt, layers.get(i)::selfEntry).transportAddress();
                 targets.add(aids.get(i).name() + "=" + at.host() + ":" + at.port());
             }
             List<String> args = new ArrayList<>(List.of(kind, name, HexFormat.of().formatHex(key.bytes())));
@@ -162,18 +120,18 @@ public final class AttackHarness {
                 sampler.setDaemon(true);
                 sampler.start();
                 Thread.sleep(1_000); // the flood builds up
-                during = measure(rt, first, seconds);
+                during = measure(rt, rounds, first, seconds);
                 sampler.interrupt();
                 sent = attacker.finish(0);
             }
             Thread.sleep(2_500); // messages held for the lists are dropped after 2 s: count them too
             long forged = 0;
-            for (Link l : links) {
-                forged += l.forged.get();
+            for (ConcordChainLink l : links) {
+                forged += l.strangers.get();
             }
             Map<String, Long> drops = new TreeMap<>();
             for (AID a : aids) {
-                onLoop(rt, () -> rt.drops(a)).forEach((k, v) -> drops.merge(k, v, Long::sum));
+                PlatformHarness.onLoop(rt, () -> rt.drops(a)).forEach((k, v) -> drops.merge(k, v, Long::sum));
             }
             System.gc();
             double retained = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed() / 1048576.0;
@@ -182,36 +140,18 @@ public final class AttackHarness {
     }
 
     /** Median time per round over batches of {@link #ROUNDS}, for about that many seconds. */
-    private static double measure(AgentRuntime rt, Link first, double seconds) throws Exception {
+    private static double measure(AgentRuntime rt, Rounds rounds, ConcordChainLink first, double seconds) throws Exception {
         List<Double> us = new ArrayList<>();
         long end = System.nanoTime() + (long) (seconds * 1e9);
         while (System.nanoTime() < end || us.size() < 5) {
-            CountDownLatch done = new CountDownLatch(1);
             long t0 = System.nanoTime();
-            rt.execute(() -> {
-                first.left = ROUNDS;
-                first.done = done;
-                first.pass();
-            });
-            if (!done.await(30, TimeUnit.SECONDS)) {
-                throw new IllegalStateException("a batch of " + ROUNDS + " rounds did not finish in 30 s");
-            }
+            rounds.arm(ROUNDS);
+            rt.execute(first::startRound);
+            rounds.await();
             us.add((System.nanoTime() - t0) / 1e3 / ROUNDS);
         }
         double[] a = us.stream().mapToDouble(Double::doubleValue).toArray();
         Arrays.sort(a);
         return a[a.length / 2];
-    }
-
-    private static <T> T onLoop(AgentRuntime rt, java.util.concurrent.Callable<T> f) throws Exception {
-        java.util.concurrent.CompletableFuture<T> out = new java.util.concurrent.CompletableFuture<>();
-        rt.execute(() -> {
-            try {
-                out.complete(f.call());
-            } catch (Exception e) {
-                out.completeExceptionally(e);
-            }
-        });
-        return out.get(10, TimeUnit.SECONDS);
     }
 }

@@ -212,7 +212,8 @@ public final class PlatformHarness {
         return ns / 1e6;
     }
 
-    private static <T> T onLoop(AgentRuntime rt, java.util.function.Supplier<T> s) throws Exception {
+    /** What the supplier returns, computed on the runtime's loop. */
+    static <T> T onLoop(AgentRuntime rt, java.util.function.Supplier<T> s) throws Exception {
         CompletableFuture<T> f = new CompletableFuture<>();
         rt.execute(() -> f.complete(s.get()));
         return f.get(10, TimeUnit.SECONDS);
