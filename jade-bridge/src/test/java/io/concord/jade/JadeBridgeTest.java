@@ -255,6 +255,37 @@ class JadeBridgeTest {
                 .gateway(() -> new HttpMtp("127.0.0.1", concordHttp)).network(null).build();
         concord.startAgent("echo", new ConcordEcho());
         concord.startAgent("inbox", INBOX);
+        awaitListed("echo", "inbox");
+    }
+
+    /**
+     * Waits until the container lists these agents (as the inbox's copy of the list shows): before,
+     * the bridge answers JADE's messages to them with the FIPA FAILURE for an unknown agent.
+     */
+    static void awaitListed(String... locals) throws Exception {
+        java.util.Set<String> want = new java.util.HashSet<>();
+        for (String l : locals) {
+            want.add(l + "@" + CONCORD);
+        }
+        CompletableFuture<Void> listed = new CompletableFuture<>();
+        concord.runtime().execute(() -> {
+            io.concord.layers.platform.ContainerLayer l = Platform.containerLayer(concord.runtime(),
+                    io.concord.core.acl.AID.local("inbox", CONCORD));
+            java.util.function.Consumer<io.concord.layers.platform.ContainerLayer> check = x -> {
+                java.util.Set<String> names = new java.util.HashSet<>();
+                x.agents().forEach(e -> names.add(e.name()));
+                if (x.containerName() != null && names.containsAll(want)) {
+                    listed.complete(null);
+                }
+            };
+            l.addListener(check);
+            check.accept(l);
+        });
+        try {
+            listed.get(20, TimeUnit.SECONDS);
+        } catch (java.util.concurrent.TimeoutException e) {
+            throw new AssertionError("the container did not list " + want + " within 20 s", e);
+        }
     }
 
     @AfterAll
@@ -465,6 +496,7 @@ class JadeBridgeTest {
         for (int i = 0; i < prices.length; i++) {
             concord.startAgent("cseller" + i, new ConcordSeller(prices[i]));
         }
+        awaitListed("cseller0", "cseller1", "cseller2");
         Object outcome = onJade(a -> {
             ACLMessage q = new ACLMessage(ACLMessage.QUERY_REF);
             for (int i = 0; i < prices.length; i++) {

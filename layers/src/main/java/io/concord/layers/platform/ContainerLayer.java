@@ -59,6 +59,9 @@ public final class ContainerLayer extends Layer {
     static final String P_LAL = "concord-lal";
     static final String P_MAINTENANCE = "concord-maintenance";
     static final String P_SERVICES = "concord-services";
+    /** How long a message that only a container can carry waits for one to be elected. */
+    static final long CONTAINER_WAIT_MS = 2_000;
+    static final int MAX_WAITING = 256;
 
     private final PlatformConfig config;
     private final NetworkConfig network;
@@ -79,6 +82,8 @@ public final class ContainerLayer extends Layer {
     private Directory directory;
     private ServiceRequests requests;
     private MembershipGate gate;
+    /** Messages for foreign agents (or the platform's DF and AMS) waiting for a container to carry them. */
+    private WaitRoom forContainer;
 
     public ContainerLayer(PlatformConfig config) {
         this(config, NetworkConfig.defaults());
@@ -197,6 +202,12 @@ public final class ContainerLayer extends Layer {
         io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();
         gate = new MembershipGate(context, layerContext, st.lists, self);
+        forContainer = new WaitRoom(context, CONTAINER_WAIT_MS, MAX_WAITING, (h, why) -> refuse(h.env(),
+                why == WaitRoom.Why.STOPPED ? "stopped" : "no-container", switch (why) {
+                    case FULL -> MAX_WAITING + " messages already wait for a container to carry them to " + h.key();
+                    case EXPIRED -> "no container was elected within " + CONTAINER_WAIT_MS + " ms to carry it to " + h.key();
+                    case STOPPED -> "the agent stopped while its message to " + h.key() + " waited for a container";
+                }, "Foreign agent unreachable: no container of platform " + platform + " to carry the message"));
         roles = new Roles(context, st, network, around, relay, this::publish, gate::listsChanged);
         directory = new Directory(context, roles);
         requests = new ServiceRequests(context, roles);
@@ -208,6 +219,7 @@ public final class ContainerLayer extends Layer {
     public void stop(LayerContext ctx) {
         if (gate != null) {
             gate.stop();
+            forContainer.stop();
         }
         roles.stop();
         publish();
@@ -239,9 +251,10 @@ public final class ContainerLayer extends Layer {
      * Gives a copy the node could not place (not an agent of its runtime) its destination: the
      * route the lists give, else the first address of the receiver's AID. A receiver known by
      * neither is dropped ({@code unknown-receiver}) and its sender told with the FAILURE JADE's AMS
-     * sends, so that its protocol ends instead of waiting.
+     * sends, so that its protocol ends instead of waiting. One that only a container can carry waits
+     * for one while none is known, at most {@link #CONTAINER_WAIT_MS} ({@code no-container} after).
      *
-     * @return false if dropped
+     * @return false if dropped, or waiting (then it goes down by itself once a container is known)
      */
     private boolean place(Envelope env) {
         AID r = env.receiver();
@@ -259,13 +272,35 @@ public final class ContainerLayer extends Layer {
             env.setDestination(a);
             return true;
         }
-        layerContext.drop(env, "unknown-receiver", "no " + host.transport() + " address known for " + r.name());
+        if (waitsForContainer(env)) {
+            forContainer.hold(env, r.name());
+            return false;
+        }
+        refuse(env, "unknown-receiver", "no " + host.transport() + " address known for " + r.name(), "Agent not found: " + r.name());
+        return false;
+    }
+
+    /**
+     * True for an application message that only a container can carry (to a foreign agent the
+     * gateway reaches, or to the platform's DF or AMS) while none is known: in the first moments,
+     * before an election ends, and during a failover.
+     */
+    private boolean waitsForContainer(Envelope env) {
+        AID r = env.receiver();
+        AclMessage m = env.message();
+        return st.container == null && roles != null && roles.kind() != Role.STOPPED && m != null
+                && !ONTOLOGY.equals(m.getOntology()) && (!platform.equals(r.platform()) && relay.reaches(r)
+                || r.name().equals(amsName) || r.name().equals(dfName));
+    }
+
+    /** Drops a message this agent cannot send, and tells its sender with a FAILURE as JADE's AMS words it. */
+    private void refuse(Envelope env, String reason, String why, String failure) {
+        layerContext.drop(env, reason, why);
         AclMessage m = env.message();
         if (m != null && !ONTOLOGY.equals(m.getOntology())) {
-            layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, r,
-                    "Agent not found: " + r.name()), selfAid, null));
+            layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, env.receiver(), failure),
+                    selfAid, null));
         }
-        return false;
     }
 
     /**
@@ -434,6 +469,9 @@ public final class ContainerLayer extends Layer {
 
     private void publish() {
         requests.release();
+        if (st.container != null) {
+            forContainer.release(name -> true, env -> onDown(layerContext, env));
+        }
         for (Consumer<ContainerLayer> l : listeners) {
             l.accept(this);
         }

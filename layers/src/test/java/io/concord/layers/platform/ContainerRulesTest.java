@@ -616,6 +616,59 @@ class ContainerRulesTest {
             assertEquals("m@p", g.out.get(0).getSender().name());
         }
 
+        /** A seeking agent with messages to foreign agents, sent from above as an agent sends them. */
+        private OneAgent seekingWith(Kept g, AclMessage... ms) {
+            OneAgent a = new OneAgent("a", 7001, PlatformConfig.defaults(), g, 7002);
+            a.sent();
+            for (AclMessage m : ms) {
+                a.h.sendDown(Envelope.outgoing(m, m.getReceivers().get(0), null));
+            }
+            return a;
+        }
+
+        private AclMessage toJade(String content) {
+            AclMessage m = new AclMessage(Performative.QUERY_REF);
+            m.setSender(io.concord.core.acl.AID.local("a", OneAgent.PLATFORM));
+            m.addReceiver(new io.concord.core.acl.AID("j@jade", "http://127.0.0.1:7778/acc"));
+            m.setContent(content);
+            return m;
+        }
+
+        @Test
+        void aMessageToAForeignAgentWaitsForTheElectionAndGoesToTheContainerOnceItIsKnown() throws Exception {
+            OneAgent a = seekingWith(new Kept(), toJade("one"), toJade("two"));
+            assertTrue(a.sent().isEmpty(), "no container to carry it yet");
+            assertNull(a.h.pollUp(), "and no FAILURE: the election ends in a moment");
+            AgentEntry c = other("c", 7002, 1_000);
+            a.from(c, Performative.INFORM, P_DISCOVERY, new ContainerIs(3, c, null));
+            a.from(c, Performative.CONFIRM, P_LAL, new Joined(3, 40, 250, c));
+            assertEquals(Role.MEMBER, a.role());
+            List<String> relayed = new ArrayList<>();
+            for (OneAgent.Out o : a.sent()) {
+                if (o.what() instanceof PlatformMessage.RelayOut r) {
+                    assertEquals("c@p", o.to());
+                    relayed.add(io.concord.core.codec.StringAclCodec.INSTANCE.decode(r.acl()).getContent());
+                }
+            }
+            assertEquals(List.of("one", "two"), relayed, "both, in the order sent");
+            assertEquals(0, a.h.drops().total());
+        }
+
+        @Test
+        void aMessageToAForeignAgentThatNoContainerCanCarryGetsTheFipaFailureAfterTheWait() {
+            // Its neighbour never answers, and it asks for longer than the wait: nobody is elected.
+            OneAgent a = new OneAgent("a", 7001, new PlatformConfig(1_000, 3, 60, 40, 500, 3, 60, 4, 5, 3_000), new Kept(), 7002);
+            a.h.sendDown(Envelope.outgoing(toJade("one"), toJade("one").getReceivers().get(0), null));
+            a.advance(ContainerLayer.CONTAINER_WAIT_MS - 1);
+            assertEquals(Role.SEEKING, a.role());
+            assertNull(a.h.pollUp(), "not before the wait");
+            a.advance(1);
+            Envelope f = a.h.pollUp();
+            assertEquals(Performative.FAILURE, f.message().getPerformative());
+            assertTrue(f.message().getContent().contains("no container"), f.message().getContent());
+            assertEquals(1, a.h.drops().get("no-container"));
+        }
+
         @Test
         void aMemberCannotRelayAMessageInAnotherAgentsName() {
             Kept g = new Kept();
