@@ -84,6 +84,7 @@ final class AccServer implements AutoCloseable {
     private final Thread thread;
     private volatile boolean running = true;
     private volatile int open;
+    private volatile int underWay;
     private volatile long buffered;
     private long lastSweepNs;
 
@@ -143,6 +144,11 @@ final class AccServer implements AutoCloseable {
     /** Connections open at the last sweep (see {@link #sweep()}). Any thread. */
     int open() {
         return open;
+    }
+
+    /** Connections with a request begun and not yet whole at the last sweep. Any thread. */
+    int underWay() {
+        return underWay;
     }
 
     /** Bytes held for unanswered requests at the last sweep, all connections together. Any thread. */
@@ -219,16 +225,22 @@ final class AccServer implements AutoCloseable {
                 // closing anyway
             }
             open = 0;
+            underWay = 0;
             buffered = 0;
         }
     }
 
     private void updateStats() {
         long b = 0;
+        int u = 0;
         for (Conn c : conns) {
             b += c.buf.length;
+            if (c.requestStartNs >= 0) {
+                u++;
+            }
         }
         buffered = b;
+        underWay = u;
         open = conns.size();
     }
 

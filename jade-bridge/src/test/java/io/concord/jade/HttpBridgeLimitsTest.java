@@ -181,8 +181,12 @@ class HttpBridgeLimitsTest {
             s.getOutputStream().flush();
             slow.add(s);
         }
-        // Every slow request is under way on the server before the clock moves: the kept-alive
-        // connection's next request is answered after theirs were read (one thread, in order).
+        // Every slow request is under way on the server before the clock moves (the server may
+        // accept a connection in one turn and read its bytes in a later one).
+        for (int i = 0; i < 10_000 && mtp.server().underWay() < 10; i++) {
+            mtp.server().sweep().get(10, TimeUnit.SECONDS);
+        }
+        assertEquals(10, mtp.server().underWay());
         assertOk(exchange(kept, request(body("echo"))));
         mtp.server().sweep().get(10, TimeUnit.SECONDS);
         assertEquals(11, mtp.server().open());
