@@ -190,7 +190,10 @@ final class AgentNode implements StackHost {
 
     @Override
     public <T> T capability(Class<T> type) {
-        return type == io.concord.core.net.Neighbourhood.class ? type.cast(neighbourhood) : null;
+        if (type == io.concord.core.net.Neighbourhood.class) {
+            return type.cast(neighbourhood);
+        }
+        return type == io.concord.core.time.LoopLimits.class ? type.cast(runtime.loopLimits()) : null;
     }
 
     @Override

@@ -51,6 +51,7 @@ public final class AgentRuntime implements AutoCloseable {
     private final String platformName;
     private final String host;
     private final RandomGenerator random;
+    private final io.concord.core.time.LoopLimits loopLimits = new io.concord.core.time.LoopLimits();
     private final Tracer tracer;
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
@@ -717,6 +718,11 @@ public final class AgentRuntime implements AutoCloseable {
 
     public RandomGenerator random() {
         return random;
+    }
+
+    /** The rate limits every agent of this loop shares. Loop thread only. */
+    io.concord.core.time.LoopLimits loopLimits() {
+        return loopLimits;
     }
 
     public Tracer tracer() {

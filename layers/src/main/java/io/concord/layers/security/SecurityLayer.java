@@ -115,6 +115,13 @@ public final class SecurityLayer extends Layer {
      */
     static final int HELLO_BURST = 256;
     static final int HELLOS_PER_SECOND = 64;
+    /**
+     * ... and by all the agents of one loop together (the runtime's {@link io.concord.core.time.LoopLimits}):
+     * the loop's time is what the signature work takes, so its bound must not grow with the number
+     * of agents the loop runs (100 agents at 64 a second each would be its whole time).
+     */
+    static final int LOOP_HELLO_BURST = 1024;
+    static final int LOOP_HELLOS_PER_SECOND = 128;
     private static final long FIRST_RETRY_MS = 100;
     private static final int MAX_HELLO_ATTEMPTS = 10;
 
@@ -148,6 +155,8 @@ public final class SecurityLayer extends Layer {
         }
     };
     private io.concord.core.time.TokenBucket hellos = new io.concord.core.time.TokenBucket(HELLO_BURST, HELLOS_PER_SECOND);
+    /** The loop's hello budget, shared with its other agents; {@code null} on a host that offers none. */
+    private io.concord.core.time.TokenBucket loopHellos;
     private final io.concord.core.time.TokenBucket rekeys = new io.concord.core.time.TokenBucket(REKEY_NOTICES_PER_SECOND,
             REKEY_NOTICES_PER_SECOND);
     private long rekeysSent;
@@ -207,6 +216,8 @@ public final class SecurityLayer extends Layer {
 
     @Override
     public void init(LayerContext ctx) {
+        io.concord.core.time.LoopLimits limits = ctx.host().capability(io.concord.core.time.LoopLimits.class);
+        loopHellos = limits == null ? null : limits.bucket("hellos", LOOP_HELLO_BURST, LOOP_HELLOS_PER_SECOND);
         ownName = ctx.host().nodeName();
         ownId = Frames.id(ownName);
         counter = new java.security.SecureRandom().nextLong() & 0x3FFF_FFFF_FFFF_FFFFL;
@@ -746,6 +757,12 @@ public final class SecurityLayer extends Layer {
         if (type == HELLO && !hellos.take(ctx.nowNs())) {
             ctx.drop(env, "handshake-limit", "more hellos than " + hellos.burst() + " at once and " + (int) hellos.perSecond()
                     + " a second; the hello of " + name + " is not answered (its sender tries again)");
+            return;
+        }
+        if (type == HELLO && loopHellos != null && !loopHellos.take(ctx.nowNs())) {
+            ctx.drop(env, "handshake-limit", "more hellos than " + loopHellos.burst() + " at once and "
+                    + (int) loopHellos.perSecond() + " a second to the agents of this loop together; the hello of " + name
+                    + " is not answered (its sender tries again)");
             return;
         }
         byte[] signed = new byte[signedLen + 8];

@@ -9,6 +9,8 @@ import io.concord.layers.frame.Frames;
 import org.junit.jupiter.api.Test;
 
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -493,5 +495,35 @@ class SecurityLayerTest {
         LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
         b.advanceMs(1_000);
         shakeHands(a, b, "after the flood");
+    }
+    @Test
+    void theAgentsOfOneLoopTogetherAnswerNoMoreHellosThanTheLoopsBudget() {
+        // Five agents on one loop (they share its limits), each able to answer more than the loop may.
+        io.concord.core.time.LoopLimits loop = new io.concord.core.time.LoopLimits();
+        List<LayerHarness> victims = new ArrayList<>();
+        for (int v = 0; v < 5; v++) {
+            SecurityLayer sv = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
+            sv.helloRate(1_000, 1_000);
+            victims.add(LayerHarness.builder().name("v" + v + "@p").clock(clock).offer(io.concord.core.time.LoopLimits.class, loop)
+                    .build(sv));
+        }
+        Identity one = IdentityStore.ephemeral().identityFor("x");
+        int replies = 0;
+        for (int i = 0; i < 1_500; i++) {
+            LayerHarness victim = victims.get(i % victims.size());
+            String to = "v" + (i % victims.size()) + "@p";
+            LayerHarness m = agent("m" + i + "@p", keeping(one));
+            m.sendDown(body("x", to));
+            deliver(next(m), new Address("attacker", 9), victim);
+            while (victim.pollDown() != null) {
+                replies++;
+            }
+        }
+        assertEquals(SecurityLayer.LOOP_HELLO_BURST, replies, "the loop's burst, though each agent alone would answer 300");
+        long limited = 0;
+        for (LayerHarness v : victims) {
+            limited += v.drops().get("handshake-limit");
+        }
+        assertEquals(1_500 - SecurityLayer.LOOP_HELLO_BURST, limited);
     }
 }
