@@ -414,7 +414,8 @@ public final class BenchMain {
                 "Median time per round over batches of 50 rounds"));
         md.append("| attack | attack messages sent | µs per round, quiet | µs per round, attacked | slower | forged delivered "
                 + "| heap MB at most | heap MB after GC | drops counted by the agents |\n|---|---|---|---|---|---|---|---|---|\n");
-        for (String kind : List.of("cpu", "forged", "handshake", "tcp")) {
+        // -Dconcord.attack.kinds=handshake,tcp runs only those (to profile one).
+        for (String kind : System.getProperty("concord.attack.kinds", "cpu,forged,handshake,tcp").split(",")) {
             io.concord.bench.harness.AttackHarness.Result r;
             try {
                 r = io.concord.bench.harness.AttackHarness.run(kind, seconds);

@@ -74,8 +74,9 @@ public final class AttackChild {
                     }
                     default -> throw new IllegalArgumentException("unknown attack " + kind);
                 }
-            } catch (Exception e) {
+            } catch (Exception | Error e) {
                 System.out.println("FAILED " + e);
+                System.out.flush();
             }
         }, "attack");
         flood.setDaemon(true);

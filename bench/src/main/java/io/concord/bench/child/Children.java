@@ -72,12 +72,21 @@ public final class Children implements AutoCloseable {
     public long finish(int i) throws IOException {
         processes.get(i).getOutputStream().close();
         String line;
+        StringBuilder said = new StringBuilder();
         while ((line = outputs.get(i).readLine()) != null) {
             if (line.startsWith("SENT ")) {
                 return Long.parseLong(line.substring(5).trim());
             }
+            said.append(line).append('\n');
         }
-        return -1;
+        int exit;
+        try {
+            exit = processes.get(i).waitFor();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            exit = -1;
+        }
+        throw new IOException("child " + i + " ended (exit " + exit + ") without saying what it sent; it printed: " + said);
     }
 
     @Override

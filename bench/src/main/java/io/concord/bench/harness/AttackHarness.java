@@ -119,7 +119,9 @@ public final class AttackHarness {
                 }, "heap-sampler");
                 sampler.setDaemon(true);
                 sampler.start();
-                Thread.sleep(1_000); // the flood builds up
+                // The flood builds up for as long as it is then measured: meanwhile the JIT compiles
+                // the paths the attack takes (its first seconds, interpreted, cost the chain 3-5x).
+                Thread.sleep(Long.getLong("concord.attack.buildupMs", (long) (seconds * 1_000)));
                 during = measure(rt, rounds, first, seconds);
                 sampler.interrupt();
                 sent = attacker.finish(0);
