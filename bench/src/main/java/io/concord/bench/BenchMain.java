@@ -410,7 +410,9 @@ public final class BenchMain {
                 + "each), and TCP streams announcing 1 MiB frames (the platform on TCP). Forged deliveries are messages a "
                 + "link received from anyone but its predecessor; the heap is the platform JVM's used heap, sampled every "
                 + "20 ms during the flood. Both processes share the machine's cores: the control `cpu` is an attacker that only "
-                + "keeps one core busy and sends nothing, so that the chain's slowdown from sharing the CPU is seen apart.",
+                + "keeps one core busy and sends nothing, so that the chain's slowdown from sharing the CPU is seen apart. "
+                + "The flood runs as long before the measurement as the measurement lasts: its first seconds, before the "
+                + "JIT has compiled the paths it takes, cost the chain 3 to 5 times.",
                 "Median time per round over batches of 50 rounds"));
         md.append("| attack | attack messages sent | µs per round, quiet | µs per round, attacked | slower | forged delivered "
                 + "| heap MB at most | heap MB after GC | drops counted by the agents |\n|---|---|---|---|---|---|---|---|---|\n");
