@@ -207,7 +207,8 @@ public final class ContainerLayer extends Layer {
                     case FULL -> MAX_WAITING + " messages already wait for a container to carry them to " + h.key();
                     case EXPIRED -> "no container was elected within " + CONTAINER_WAIT_MS + " ms to carry it to " + h.key();
                     case STOPPED -> "the agent stopped while its message to " + h.key() + " waited for a container";
-                }, "Foreign agent unreachable: no container of platform " + platform + " to carry the message"));
+                }, why == WaitRoom.Why.STOPPED ? null : "Foreign agent unreachable: no container of platform " + platform
+                        + " to carry the message"));
         roles = new Roles(context, st, network, around, relay, this::publish, gate::listsChanged);
         directory = new Directory(context, roles);
         requests = new ServiceRequests(context, roles);
@@ -293,11 +294,14 @@ public final class ContainerLayer extends Layer {
                 || r.name().equals(amsName) || r.name().equals(dfName));
     }
 
-    /** Drops a message this agent cannot send, and tells its sender with a FAILURE as JADE's AMS words it. */
+    /**
+     * Drops a message this agent cannot send, and tells its sender with a FAILURE as JADE's AMS
+     * words it ({@code failure}; {@code null}: the sender is stopping, nobody to tell).
+     */
     private void refuse(Envelope env, String reason, String why, String failure) {
         layerContext.drop(env, reason, why);
         AclMessage m = env.message();
-        if (m != null && !ONTOLOGY.equals(m.getOntology())) {
+        if (failure != null && m != null && !ONTOLOGY.equals(m.getOntology())) {
             layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, env.receiver(), failure),
                     selfAid, null));
         }
