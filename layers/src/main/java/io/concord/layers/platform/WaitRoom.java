@@ -59,7 +59,7 @@ final class WaitRoom {
 
     /** True if a message waits for that key. */
     boolean holds(String key) {
-        return !held.isEmpty() && perKey.containsKey(key);
+        return perKey.containsKey(key);
     }
 
     private Held leave(Held h) {

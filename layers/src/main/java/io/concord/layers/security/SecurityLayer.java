@@ -754,16 +754,15 @@ public final class SecurityLayer extends Layer {
             ctx.drop(env, "stale", "a handshake " + age + " ms old (window " + config.handshakeWindowMs() + " ms)");
             return;
         }
-        if (type == HELLO && !hellos.take(ctx.nowNs())) {
-            ctx.drop(env, "handshake-limit", "more hellos than " + hellos.burst() + " at once and " + (int) hellos.perSecond()
-                    + " a second; the hello of " + name + " is not answered (its sender tries again)");
-            return;
-        }
-        if (type == HELLO && loopHellos != null && !loopHellos.take(ctx.nowNs())) {
-            ctx.drop(env, "handshake-limit", "more hellos than " + loopHellos.burst() + " at once and "
-                    + (int) loopHellos.perSecond() + " a second to the agents of this loop together; the hello of " + name
-                    + " is not answered (its sender tries again)");
-            return;
+        if (type == HELLO) {
+            io.concord.core.time.TokenBucket over = !hellos.take(ctx.nowNs()) ? hellos
+                    : loopHellos != null && !loopHellos.take(ctx.nowNs()) ? loopHellos : null;
+            if (over != null) {
+                ctx.drop(env, "handshake-limit", "more hellos than " + over.burst() + " at once and " + (int) over.perSecond()
+                        + " a second" + (over == loopHellos ? " to the agents of this loop together" : "") + "; the hello of "
+                        + name + " is not answered (its sender tries again)");
+                return;
+            }
         }
         byte[] signed = new byte[signedLen + 8];
         System.arraycopy(b, off, signed, 0, signedLen);
