@@ -47,9 +47,13 @@ final class MembershipGate {
         return name.equals(self) || lists.route(name, ctx.nowNs()) != null;
     }
 
-    /** Passes an application message up if its sender is a member; else it waits for the lists. */
+    /**
+     * Passes an application message up if its sender is a member; else it waits for the lists.
+     * A member never has a message waiting here: a name becomes a member only when the routes are
+     * rebuilt, which calls {@link #listsChanged} and lets its messages out first, so order holds.
+     */
     void admit(Envelope env, String sender) {
-        if (member(sender) && !room.holds(sender)) {
+        if (member(sender)) {
             admitted++;
             layer.passUp(env);
             return;

@@ -3,7 +3,6 @@ package io.concord.layers.platform;
 import io.concord.core.layer.Envelope;
 
 import java.util.ArrayDeque;
-import java.util.HashMap;
 import java.util.Iterator;
 import java.util.function.Consumer;
 import java.util.function.Predicate;
@@ -32,8 +31,6 @@ final class WaitRoom {
     private final int max;
     private final GiveUp giveUp;
     private final ArrayDeque<Held> held = new ArrayDeque<>();
-    /** How many wait for each key: asked of every message that passes, so not a walk of the room. */
-    private final HashMap<String, Integer> perKey = new HashMap<>();
     private long timer = -1;
     private long waited;
 
@@ -47,24 +44,13 @@ final class WaitRoom {
     /** Holds a message; the eldest leaves if the room is full. */
     void hold(Envelope env, String key) {
         if (held.size() >= max) {
-            giveUp.accept(leave(held.poll()), Why.FULL);
+            giveUp.accept(held.poll(), Why.FULL);
         }
         held.add(new Held(env, key, ctx.nowNs()));
-        perKey.merge(key, 1, Integer::sum);
         waited++;
         if (timer < 0) {
             timer = ctx.after(waitMs, this::expire);
         }
-    }
-
-    /** True if a message waits for that key. */
-    boolean holds(String key) {
-        return perKey.containsKey(key);
-    }
-
-    private Held leave(Held h) {
-        perKey.computeIfPresent(h.key(), (k, n) -> n == 1 ? null : n - 1);
-        return h;
     }
 
     /** Lets out, in the order they came, the messages whose key is now {@code ready}. */
@@ -76,7 +62,6 @@ final class WaitRoom {
             Held h = it.next();
             if (ready.test(h.key())) {
                 it.remove();
-                leave(h);
                 out.accept(h.env());
             }
         }
@@ -89,7 +74,7 @@ final class WaitRoom {
         timer = -1;
         long now = ctx.nowNs();
         while (!held.isEmpty() && now - held.peek().sinceNs() >= waitMs * 1_000_000L) {
-            giveUp.accept(leave(held.poll()), Why.EXPIRED);
+            giveUp.accept(held.poll(), Why.EXPIRED);
         }
         if (!held.isEmpty()) {
             long leftMs = Math.max(1, waitMs - (now - held.peek().sinceNs()) / 1_000_000L);
@@ -111,7 +96,7 @@ final class WaitRoom {
     void stop() {
         timer = ctx.cancel(timer);
         while (!held.isEmpty()) {
-            giveUp.accept(leave(held.poll()), Why.STOPPED);
+            giveUp.accept(held.poll(), Why.STOPPED);
         }
     }
 }
