@@ -1,8 +1,6 @@
 package io.concord.bench.jmh;
 
 import io.concord.bench.Platforms;
-import io.concord.bench.RoundDriver;
-import io.concord.bench.Rounds;
 
 import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.jade.JadeBooks;
@@ -17,7 +15,6 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -27,7 +24,7 @@ import java.util.List;
  * INFORM quotes (a buyer timeout for missing ones), REQUEST to the cheapest, AGREE. Time per round.
  */
 @State(Scope.Benchmark)
-public class BooksBenchmark {
+public class BooksBenchmark extends RoundBenchmark {
     public static final int ROUNDS = 50;
     static final long TIMEOUT_MS = 1_000;
 
@@ -37,8 +34,6 @@ public class BooksBenchmark {
     @Param({"1", "5", "10", "15"})
     public int s;
 
-    private final RoundDriver driver = new RoundDriver();
-    private final Rounds rounds = driver.rounds;
     private ConcordBooks.Buyer buyer;
 
     static int price(int i) {
@@ -73,10 +68,5 @@ public class BooksBenchmark {
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
         driver.runBatch(ROUNDS);
-    }
-
-    @TearDown(Level.Trial)
-    public void stop() {
-        driver.close();
     }
 }

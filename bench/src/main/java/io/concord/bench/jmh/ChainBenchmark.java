@@ -1,8 +1,6 @@
 package io.concord.bench.jmh;
 
 import io.concord.bench.Platforms;
-import io.concord.bench.RoundDriver;
-import io.concord.bench.Rounds;
 
 import io.concord.bench.concord.ConcordChainLink;
 import io.concord.bench.jade.JadeChainLink;
@@ -17,7 +15,6 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -27,7 +24,7 @@ import java.util.List;
  * round a ring; the first checks it came back unchanged and starts the next round. Time per round.
  */
 @State(Scope.Benchmark)
-public class ChainBenchmark {
+public class ChainBenchmark extends RoundBenchmark {
     public static final int ROUNDS = 50;
     public static final String SECRET = "s".repeat(492) + "checksum";
 
@@ -37,8 +34,6 @@ public class ChainBenchmark {
     @Param({"2", "6", "10", "19"})
     public int n;
 
-    private final RoundDriver driver = new RoundDriver();
-    private final Rounds rounds = driver.rounds;
     private ConcordChainLink first;
 
     @Setup(Level.Trial)
@@ -75,10 +70,5 @@ public class ChainBenchmark {
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
         driver.runBatch(ROUNDS);
-    }
-
-    @TearDown(Level.Trial)
-    public void stop() {
-        driver.close();
     }
 }

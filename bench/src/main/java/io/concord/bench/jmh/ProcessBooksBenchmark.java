@@ -1,8 +1,6 @@
 package io.concord.bench.jmh;
 
 import io.concord.bench.Platforms;
-import io.concord.bench.RoundDriver;
-import io.concord.bench.Rounds;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ProcessAgent;
 
@@ -20,14 +18,13 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 
 import java.util.ArrayList;
 import java.util.List;
 
 /** The book buyer with one process per agent: the buyer here, every seller in a JVM of its own. */
 @State(Scope.Benchmark)
-public class ProcessBooksBenchmark {
+public class ProcessBooksBenchmark extends RoundBenchmark {
     public static final int ROUNDS = 20;
 
     @Param({Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE})
@@ -36,8 +33,6 @@ public class ProcessBooksBenchmark {
     @Param({"1", "5"})
     public int s;
 
-    private final RoundDriver driver = new RoundDriver();
-    private final Rounds rounds = driver.rounds;
     private final Children children = driver.children;
     private ConcordBooks.Buyer buyer;
 
@@ -75,10 +70,5 @@ public class ProcessBooksBenchmark {
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
         driver.runBatch(ROUNDS);
-    }
-
-    @TearDown(Level.Trial)
-    public void stop() {
-        driver.close();
     }
 }

@@ -1,8 +1,6 @@
 package io.concord.bench.jmh;
 
 import io.concord.bench.Platforms;
-import io.concord.bench.RoundDriver;
-import io.concord.bench.Rounds;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ProcessAgent;
 
@@ -20,7 +18,6 @@ import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
-import org.openjdk.jmh.annotations.TearDown;
 
 import java.util.List;
 
@@ -30,7 +27,7 @@ import java.util.List;
  * peripheral container per agent.
  */
 @State(Scope.Benchmark)
-public class ProcessChainBenchmark {
+public class ProcessChainBenchmark extends RoundBenchmark {
     public static final int ROUNDS = 20;
 
     @Param({Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLOSED, Platforms.JADE})
@@ -39,8 +36,6 @@ public class ProcessChainBenchmark {
     @Param({"2", "6"})
     public int n;
 
-    private final RoundDriver driver = new RoundDriver();
-    private final Rounds rounds = driver.rounds;
     private final Children children = driver.children;
     private ConcordChainLink first;
 
@@ -78,10 +73,5 @@ public class ProcessChainBenchmark {
     @OperationsPerInvocation(ROUNDS)
     public void round() throws Exception {
         driver.runBatch(ROUNDS);
-    }
-
-    @TearDown(Level.Trial)
-    public void stop() {
-        driver.close();
     }
 }
