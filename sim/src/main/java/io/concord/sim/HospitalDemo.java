@@ -291,6 +291,11 @@ public final class HospitalDemo {
 
     /** The ward and the staff's terminal as two JVMs; true if every transport was done. */
     static boolean runProcesses(Options o) throws Exception {
+        return runProcesses(o, line -> { });
+    }
+
+    /** As {@link #runProcesses(Options)}, and each line the two JVMs print also goes to {@code seen}. */
+    static boolean runProcesses(Options o, Consumer<String> seen) throws Exception {
         HospitalMap map = o.map() == null ? HospitalMap.defaultHospital() : HospitalMap.load(o.map());
         intro(map, o);
         OUT.printf(Locale.ROOT, "Two JVMs on this machine: the ward (world, doors' and chairs' agents) and the staff's terminal "
@@ -299,6 +304,7 @@ public final class HospitalDemo {
         Process ward = spawn("ward", o);
         CountDownLatch wardReady = new CountDownLatch(1);
         pump(ward, "ward ", line -> {
+            seen.accept("[ward ] " + line);
             if (line.contains("ward ready")) {
                 wardReady.countDown();
             }
@@ -309,7 +315,7 @@ public final class HospitalDemo {
             return false;
         }
         Process staff = spawn("staff", o);
-        pump(staff, "staff", line -> { });
+        pump(staff, "staff", line -> seen.accept("[staff] " + line));
         boolean ended = staff.waitFor((long) (o.maxSeconds() / o.speed()) + 120, TimeUnit.SECONDS);
         int code = ended ? staff.exitValue() : -1;
         if (!ended) {

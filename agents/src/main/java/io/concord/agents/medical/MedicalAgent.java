@@ -256,6 +256,14 @@ public class MedicalAgent extends Agent {
                     acceptances.add(reply);
                 }
                 if (winner == null) {
+                    boolean refused = responses.stream().anyMatch(r -> r.getPerformative() == Performative.REFUSE);
+                    if (!refused && round < settings.maxAuctions()) {
+                        // Nobody answered in time (a proposal late on a busy or lossy network, or a
+                        // chair listed a moment ago): that is no answer yet, so the task is auctioned again.
+                        log.accept(getLocalName() + ": no chair answered " + id + " in time; it is auctioned again");
+                        auction(id, from, to, tp, unload, round + 1, f);
+                        return;
+                    }
                     f.complete(new Outcome(id, false, null, "no chair proposed", round));
                     log.accept(getLocalName() + ": nobody can do " + id);
                 }

@@ -99,6 +99,24 @@ class HospitalAgentsTest {
         }
     }
 
+    /**
+     * A proposal that comes after the auction's deadline (the network lost everything for longer
+     * than the chairs had to answer) is no answer: the task is auctioned again and done, not given up.
+     */
+    @Test
+    void anAuctionNobodyAnsweredInTimeIsHeldAgain() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
+            r.sim.network().setFaultPlan(new FaultPlan(1, 0, 0, 0, 50_000, 0, 0));
+            var f = r.medical.transport(3, 9, 0, 30);
+            r.sim.runFor(2_500);
+            r.sim.network().setFaultPlan(FaultPlan.NONE);
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertTrue(r.log.contains("medical: no chair answered T1 in time; it is auctioned again"), String.join("\n", r.log));
+            assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", ScenarioTest.tail(r.log, 30)));
+            assertEquals(2, f.join().auctions());
+        }
+    }
+
     @Test
     void aWardBehindAnOfflineDoorIsUnreachableAndTheChairSaysSo() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
