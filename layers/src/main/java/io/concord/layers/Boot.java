@@ -28,7 +28,7 @@ import java.util.Properties;
  * java -cp app.jar io.concord.layers.Boot -agents "seller1:org.example.Seller(42);buyer:org.example.Buyer"
  *      [-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp]
  *      [-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port]
- *      [-conf platform.properties] [-watch]
+ *      [-console [host:]port] [-conf platform.properties] [-watch]
  * </pre>
  *
  * A configuration file holds the same settings as Java properties ({@code name}, {@code ports},
@@ -107,6 +107,9 @@ public final class Boot {
         if (s.containsKey("http")) {
             b.gateway(httpGateway(s.get("http"), s.getOrDefault("host", "127.0.0.1"), s));
         }
+        if (s.containsKey("console")) {
+            b.console(s.get("console")).consoleOut(out);
+        }
         List<Agent> agents = new ArrayList<>();
         for (AgentSpec spec : specs) {
             agents.add(instantiate(spec));
@@ -159,7 +162,7 @@ public final class Boot {
 
     /** The options that take a value; all but {@code conf} may also stand in a configuration file, as may {@code watch}. */
     private static final List<String> VALUED = List.of("agents", "name", "ports", "profile", "transport", "host", "conf",
-            "seeds", "discovery-port", "http", "http-platforms", "http-hosts", "key");
+            "seeds", "discovery-port", "http", "http-platforms", "http-hosts", "key", "console");
 
     static Map<String, String> settings(String[] args) {
         Map<String, String> cli = new LinkedHashMap<>();
@@ -352,6 +355,6 @@ public final class Boot {
     static String usage() {
         return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
                 + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
-                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-http-platforms name,...] [-http-hosts address,...] [-key platform.key] [-conf file.properties] [-watch]";
+                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-http-platforms name,...] [-http-hosts address,...] [-key platform.key] [-console [host:]port] [-conf file.properties] [-watch]";
     }
 }

@@ -17,10 +17,25 @@ import java.util.concurrent.atomic.LongAdder;
 public final class DropCounters {
     private static final Logger LOG = LoggerFactory.getLogger(DropCounters.class);
     private final Map<String, LongAdder> counts = new ConcurrentHashMap<>();
+    /** The same drops by the layer that made them ({@code "node"} when no layer is named): layer to reason to count. */
+    private final Map<String, Map<String, LongAdder>> byLayer = new ConcurrentHashMap<>();
 
     /** Counts one drop. */
     public void increment(String reason) {
         counts.computeIfAbsent(reason, r -> new LongAdder()).increment();
+        layerCount(NODE, reason).increment();
+    }
+
+    /** The layer name under which drops counted without one are kept. */
+    public static final String NODE = "node";
+
+    private LongAdder layerCount(String layer, String reason) {
+        Map<String, LongAdder> m = byLayer.get(layer);
+        if (m == null) {
+            m = byLayer.computeIfAbsent(layer, l -> new ConcurrentHashMap<>());
+        }
+        LongAdder a = m.get(reason);
+        return a != null ? a : m.computeIfAbsent(reason, r -> new LongAdder());
     }
 
     /** Reasons that are part of normal operation (a copy sent on purpose against loss): never warned about. */
@@ -36,6 +51,7 @@ public final class DropCounters {
      * so that a counted drop (a copy, many times a second) allocates nothing.
      */
     public void record(String node, String layer, String reason, String detail) {
+        layerCount(layer == null ? NODE : layer, reason).increment();
         LongAdder a = counts.get(reason);
         if (a == null) {
             a = counts.computeIfAbsent(reason, r -> new LongAdder());
@@ -71,6 +87,17 @@ public final class DropCounters {
     public Map<String, Long> snapshot() {
         Map<String, Long> m = new TreeMap<>();
         counts.forEach((k, v) -> m.put(k, v.sum()));
+        return m;
+    }
+
+    /** A sorted copy by layer: layer to reason to count (layer {@link #NODE} for drops no layer made). */
+    public Map<String, Map<String, Long>> snapshotByLayer() {
+        Map<String, Map<String, Long>> m = new TreeMap<>();
+        byLayer.forEach((layer, reasons) -> {
+            Map<String, Long> r = new TreeMap<>();
+            reasons.forEach((k, v) -> r.put(k, v.sum()));
+            m.put(layer, r);
+        });
         return m;
     }
 

@@ -35,6 +35,7 @@ public final class Platform implements AutoCloseable {
     private final PortRange ports;
     private final Supplier<List<Layer>> stack;
     private final Transport transport;
+    private volatile AutoCloseable console;
 
     private Platform(Builder b, AgentRuntime runtime, boolean owns) {
         this.runtime = runtime;
@@ -47,8 +48,11 @@ public final class Platform implements AutoCloseable {
         Supplier<Gateway> gateways = b.gateway;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
+            io.concord.layers.observe.ObserverLayer observer = new io.concord.layers.observe.ObserverLayer();
+            l.add(observer);
             l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get()));
             l.addAll(safety.get());
+            observer.stack(l);
             return l;
         };
     }
@@ -78,8 +82,26 @@ public final class Platform implements AutoCloseable {
         private Supplier<List<Layer>> safety;
         private AgentRuntime runtime;
         private io.concord.layers.security.PlatformKey key;
+        private String console;
+        private java.io.PrintStream consoleOut = System.out;
 
         private Builder() {
+        }
+
+        /**
+         * Serves the web console on {@code [host:]port} (127.0.0.1 unless a host is given; on any
+         * other address every request needs the token it prints). Needs {@code concord-console}
+         * on the class path.
+         */
+        public Builder console(String hostPort) {
+            this.console = Objects.requireNonNull(hostPort, "console");
+            return this;
+        }
+
+        /** Where the console prints its address; standard output by default. */
+        public Builder consoleOut(java.io.PrintStream out) {
+            this.consoleOut = Objects.requireNonNull(out, "consoleOut");
+            return this;
         }
 
         /** The platform name, the part after {@code @}; agents of one platform must agree on it. */
@@ -170,12 +192,27 @@ public final class Platform implements AutoCloseable {
          * @throws IllegalArgumentException naming the bad setting
          */
         public Platform build() {
-            if (runtime != null) {
-                return new Platform(this, runtime, false);
+            ConsoleProvider consoles = null;
+            if (console != null) {
+                consoles = java.util.ServiceLoader.load(ConsoleProvider.class).findFirst().orElseThrow(() -> new IllegalStateException(
+                        "the console needs concord-console on the class path (io.concord:concord-console)"));
             }
-            AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).transport(transport).build();
-            Platform p = new Platform(this, rt, true);
-            rt.start();
+            Platform p;
+            if (runtime != null) {
+                p = new Platform(this, runtime, false);
+            } else {
+                AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).transport(transport).build();
+                p = new Platform(this, rt, true);
+                rt.start();
+            }
+            if (consoles != null) {
+                try {
+                    p.console = consoles.start(p, console, consoleOut);
+                } catch (RuntimeException e) {
+                    p.close();
+                    throw e;
+                }
+            }
             return p;
         }
     }
@@ -189,6 +226,11 @@ public final class Platform implements AutoCloseable {
     public AID startAgent(String localName, Agent agent, Object... args) {
         AgentOptions o = AgentOptions.defaults().withPortRange(ports).withStack(stack).withTransport(transport);
         return runtime.startAgentWith(localName, agent, o, args);
+    }
+
+    /** The console this platform serves ({@link Builder#console}), or {@code null}. */
+    public AutoCloseable console() {
+        return console;
     }
 
     /** The runtime that runs this platform's agents here. */
@@ -226,6 +268,15 @@ public final class Platform implements AutoCloseable {
     /** Stops every agent of this JVM (they leave the platform cleanly) and the runtime if it made it. */
     @Override
     public void close() {
+        AutoCloseable c = console;
+        console = null;
+        if (c != null) {
+            try {
+                c.close();
+            } catch (Exception e) {
+                // the console's server is stopping anyway
+            }
+        }
         if (ownsRuntime) {
             runtime.close();
         }

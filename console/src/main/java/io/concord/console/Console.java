@@ -1,0 +1,227 @@
+package io.concord.console;
+
+import io.concord.core.acl.AID;
+import io.concord.layers.platform.Platform;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.UnknownHostException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.TreeMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+/**
+ * The web console: a page any JVM of the platform can serve, showing the platform's lists, the
+ * safety counters, the messages between the agents a browser picks, the bench's reports and the
+ * views an application adds (the hospital's map). Opt-in; binds 127.0.0.1 unless told otherwise,
+ * and on any other address asks every request for the token.
+ *
+ * <pre>{@code
+ * Console c = Console.start(platform, Console.Config.port(7070));
+ * System.out.println("console: " + c.uri());
+ * }</pre>
+ */
+public final class Console implements AutoCloseable {
+
+    /**
+     * Settings.
+     *
+     * @param host        the address to bind: 127.0.0.1 by default; any other asks for the token
+     * @param port        the port (0: any free one)
+     * @param token       the token; {@code null}: a random one when the address is not loopback
+     * @param reports     the bench's report directory shown in the bench view ({@code bench/report} if it exists)
+     * @param keep        sniffed messages kept for browsers that open later
+     * @param maxBrowsers event streams open at once
+     * @param agentName   the console agent's local name
+     */
+    public record Config(String host, int port, String token, Path reports, int keep, int maxBrowsers, String agentName) {
+        public Config {
+            Objects.requireNonNull(host, "host");
+            if (port < 0 || port > 65535) {
+                throw new IllegalArgumentException("the console's port must be 0 to 65535, got " + port);
+            }
+            if (keep < 1 || maxBrowsers < 1) {
+                throw new IllegalArgumentException("keep and maxBrowsers must be at least 1");
+            }
+            if (token != null && token.length() < 16) {
+                throw new IllegalArgumentException("a console token must have at least 16 characters");
+            }
+        }
+
+        /** Loopback, this port, the defaults. */
+        public static Config port(int port) {
+            Path reports = Path.of("bench", "report");
+            return new Config("127.0.0.1", port, null, Files.isDirectory(reports) ? reports : null, 1_000, 16, "console");
+        }
+
+        /**
+         * From {@code [host:]port}, as {@code Boot -console} and the demo's {@code --console} take it.
+         *
+         * @throws IllegalArgumentException saying what is wrong
+         */
+        public static Config parse(String hostPort) {
+            String s = hostPort.trim();
+            String host = "127.0.0.1";
+            int colon = s.lastIndexOf(':');
+            if (colon >= 0) {
+                host = s.substring(0, colon);
+                s = s.substring(colon + 1);
+            }
+            if (host.startsWith("[") && host.endsWith("]")) {
+                host = host.substring(1, host.length() - 1);
+            }
+            int port;
+            try {
+                port = Integer.parseInt(s);
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("the console is given as [host:]port, e.g. 7070 or 0.0.0.0:7070; got '" + hostPort + "'");
+            }
+            return port(port).withHost(host.isEmpty() ? "127.0.0.1" : host);
+        }
+
+        public Config withHost(String h) {
+            return new Config(h, port, token, reports, keep, maxBrowsers, agentName);
+        }
+
+        public Config withToken(String t) {
+            return new Config(host, port, t, reports, keep, maxBrowsers, agentName);
+        }
+
+        public Config withReports(Path r) {
+            return new Config(host, port, token, r, keep, maxBrowsers, agentName);
+        }
+
+        public Config withKeep(int k) {
+            return new Config(host, port, token, reports, k, maxBrowsers, agentName);
+        }
+
+        public Config withAgentName(String n) {
+            return new Config(host, port, token, reports, keep, maxBrowsers, n);
+        }
+    }
+
+    private final Platform platform;
+    private final Config config;
+    private final Hub hub;
+    private final List<ConsoleView> views = new CopyOnWriteArrayList<>();
+    private final ConsoleAgent agent;
+    private final AID aid;
+    private final ConsoleServer server;
+    private final String token;
+
+    private Console(Platform platform, Config config) {
+        this.platform = platform;
+        this.config = config;
+        InetAddress bind;
+        try {
+            bind = InetAddress.getByName(config.host());
+        } catch (UnknownHostException e) {
+            throw new IllegalArgumentException("the console cannot bind '" + config.host() + "': no such address", e);
+        }
+        this.token = bind.isLoopbackAddress() ? config.token() : config.token() != null ? config.token() : newToken();
+        this.hub = new Hub(config.keep(), config.maxBrowsers());
+        this.agent = new ConsoleAgent(hub, views);
+        try {
+            this.server = new ConsoleServer(new InetSocketAddress(bind, config.port()), token, !bind.isLoopbackAddress(), hub, this);
+        } catch (IOException e) {
+            throw new UncheckedIOException("the console cannot listen on " + config.host() + ":" + config.port() + ": " + e.getMessage()
+                    + " (is another program on that port? give another with [host:]port, or 0 for any)", e);
+        }
+        this.aid = platform.startAgent(config.agentName(), agent);
+        server.start();
+    }
+
+    private static String newToken() {
+        byte[] b = new byte[16];
+        new SecureRandom().nextBytes(b);
+        return HexFormat.of().formatHex(b);
+    }
+
+    /**
+     * Starts the console's agent on the platform and its web server.
+     *
+     * @throws IllegalArgumentException if the address cannot be bound here
+     * @throws UncheckedIOException     if the port is taken
+     */
+    public static Console start(Platform platform, Config config) {
+        return new Console(platform, config);
+    }
+
+    /** Adds a view (a tab); browsers see it when they load the page. */
+    public Console addView(ConsoleView v) {
+        if (!v.id().matches("[a-z0-9-]{1,32}")) {
+            throw new IllegalArgumentException("a view's id is 1 to 32 of a-z, 0-9 and '-', got '" + v.id() + "'");
+        }
+        views.add(v);
+        return this;
+    }
+
+    List<ConsoleView> views() {
+        return views;
+    }
+
+    Config config() {
+        return config;
+    }
+
+    Platform platform() {
+        return platform;
+    }
+
+    /** The page's address, with the token if one is needed. */
+    public String uri() {
+        InetSocketAddress a = server.address();
+        String host = a.getAddress().isAnyLocalAddress() ? "127.0.0.1" : a.getAddress().getHostAddress();
+        if (host.contains(":")) {
+            host = "[" + host + "]";
+        }
+        return "http://" + host + ":" + a.getPort() + "/" + (token == null ? "" : "?token=" + token);
+    }
+
+    /** The port it listens on. */
+    public int port() {
+        return server.address().getPort();
+    }
+
+    /** The token every request must carry, or {@code null} on loopback without one. */
+    public String token() {
+        return token;
+    }
+
+    /** The console agent's name on the platform. */
+    public AID agent() {
+        return aid;
+    }
+
+    /**
+     * What the console refused or dropped, by reason: {@code console-slow-client} (events a slow
+     * browser could not take), {@code console-busy} (streams refused over the limit),
+     * {@code console-malformed} (agent reports that were not JSON), and the HTTP answers 4xx by code.
+     */
+    public Map<String, Long> drops() {
+        Map<String, Long> m = new TreeMap<>(server.refusals());
+        m.put("console-slow-client", hub.slowDrops.get());
+        m.put("console-busy", hub.refused.get());
+        m.put("console-malformed", agent.malformed.get());
+        return m;
+    }
+
+    /** Browsers with an event stream open. */
+    public int browsers() {
+        return hub.open();
+    }
+
+    @Override
+    public void close() {
+        server.stop();
+        agent.doDelete();   // it leaves the platform cleanly (from any thread)
+    }
+}

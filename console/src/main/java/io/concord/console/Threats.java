@@ -1,0 +1,51 @@
+package io.concord.console;
+
+import java.util.List;
+
+/**
+ * Drop reasons grouped by the EN 50159 threat their defence stands against (docs/security.md),
+ * plus the limits that keep a flood from growing memory or work, and the rest.
+ */
+final class Threats {
+    static final List<String> ORDER = List.of("repetition", "deletion", "insertion", "resequence", "corruption", "delay",
+            "masquerade", "flooding", "other");
+
+    private Threats() {
+    }
+
+    /** The threat a drop reason counts against. */
+    static String of(String reason) {
+        switch (reason) {
+            case "copy", "repeated", "replayed-handshake" -> {
+                return "repetition";
+            }
+            case "lost", "nak-limit" -> {
+                return "deletion";
+            }
+            case "misdirected", "no-session-key", "not-member", "unsolicited", "no-handshake", "unknown-receiver" -> {
+                return "insertion";
+            }
+            case "reorder-overflow" -> {
+                return "resequence";
+            }
+            case "corrupt", "bad-tag", "malformed", "malformed-frame", "malformed-handshake", "malformed-platform",
+                 "tcp-malformed", "too-large", "list-too-large", "http-malformed", "http-too-large" -> {
+                return "corruption";
+            }
+            case "stale", "from-future", "expired", "unexpected-time" -> {
+                return "delay";
+            }
+            case "masquerade", "identification", "bad-secret", "unauthenticated", "foreign-platform", "unprotected",
+                 "crossed-handshake" -> {
+                return "masquerade";
+            }
+            default -> {
+                if (reason.endsWith("-limit") || reason.endsWith("-full") || reason.startsWith("http-")
+                        || reason.equals("tcp-connect-timeout") || reason.equals("pair-evicted")) {
+                    return "flooding";
+                }
+                return "other";
+            }
+        }
+    }
+}

@@ -1,0 +1,413 @@
+'use strict';
+// The Concord console: plain JavaScript, no build step. Every text from the platform goes in by
+// textContent, never as HTML.
+(function () {
+  const token = new URLSearchParams(location.search).get('token');
+  const SVG = 'http://www.w3.org/2000/svg';
+  const $ = (id) => document.getElementById(id);
+  const state = { tab: 'platform', platform: null, safety: null, views: [], view: null, sniffed: [], picked: new Set(),
+    conversation: '', source: null, safetyPick: null };
+
+  function url(path, params) {
+    const u = new URL(path, location.href);
+    for (const [k, v] of Object.entries(params || {})) { if (v !== '' && v != null) u.searchParams.set(k, v); }
+    if (token) u.searchParams.set('token', token);
+    return u.toString();
+  }
+  function el(tag, text, cls) {
+    const e = document.createElement(tag);
+    if (text != null) e.textContent = text;
+    if (cls) e.className = cls;
+    return e;
+  }
+  function svg(tag, attrs, text) {
+    const e = document.createElementNS(SVG, tag);
+    for (const [k, v] of Object.entries(attrs || {})) e.setAttribute(k, v);
+    if (text != null) e.textContent = text;
+    return e;
+  }
+  function ago(ms) {
+    if (!ms) return '';
+    const s = Math.max(0, Math.round((Date.now() - ms) / 1000));
+    return s < 120 ? s + ' s ago' : Math.round(s / 60) + ' min ago';
+  }
+
+  // ---- the event stream: one per page, its topics follow the tab ------------------------------
+  function topics() {
+    const t = ['platform'];
+    if (state.tab === 'safety') t.push('safety');
+    if (state.tab === 'sniffer') t.push('sniff');
+    if (state.tab === 'view' && state.view) t.push('view-' + state.view.id);
+    return t.join(',');
+  }
+  function connect() {
+    if (state.source) state.source.close();
+    state.sniffed = [];
+    drawDiagram();
+    const src = new EventSource(url('api/events', { topics: topics(), sniff: [...state.picked].join(','),
+      conversation: state.conversation }));
+    state.source = src;
+    src.onopen = () => { $('status').textContent = 'live'; $('status').className = 'status'; };
+    src.onerror = () => {
+      $('status').textContent = 'reconnecting…';
+      $('status').className = 'status down';
+      // Refused (too many browsers) or the server restarted: the browser gives up; try again.
+      if (src.readyState === EventSource.CLOSED && state.source === src) setTimeout(() => { if (state.source === src) connect(); }, 1000);
+    };
+    src.addEventListener('platform', (e) => { state.platform = JSON.parse(e.data); drawPlatform(); });
+    src.addEventListener('safety', (e) => { state.safety = JSON.parse(e.data); drawSafety(); });
+    src.addEventListener('sniff', (e) => {
+      state.sniffed.push(JSON.parse(e.data));
+      if (state.sniffed.length > 500) state.sniffed.shift();
+      drawDiagram();
+    });
+    for (const v of state.views) {
+      src.addEventListener('view-' + v.id, (e) => { if (state.view && state.view.id === v.id) drawScene(JSON.parse(e.data)); });
+    }
+  }
+
+  // ---- tabs -----------------------------------------------------------------------------------
+  function show(tab, view) {
+    state.tab = tab;
+    state.view = view || null;
+    document.querySelectorAll('nav button').forEach((b) => b.classList.toggle('active',
+      b.dataset.tab === tab && (!view || b.dataset.view === view.id)));
+    document.querySelectorAll('.tab').forEach((s) => s.classList.toggle('active', s.id === tab));
+    if (tab === 'bench') loadBench();
+    if (tab === 'view') drawForm();
+    connect();
+  }
+  document.querySelectorAll('nav button[data-tab]').forEach((b) => b.addEventListener('click', () => show(b.dataset.tab)));
+
+  // ---- platform -------------------------------------------------------------------------------
+  function matches(a, q) {
+    if (!q) return true;
+    q = q.toLowerCase();
+    return a.services.some((s) => (s.type || '').toLowerCase().includes(q) || (s.name || '').toLowerCase().includes(q));
+  }
+  function fillAgents(tbody, list, q, container) {
+    tbody.replaceChildren();
+    let n = 0;
+    for (const a of list) {
+      if (!matches(a, q)) continue;
+      n++;
+      const tr = el('tr');
+      tr.dataset.agent = a.name;
+      const name = el('td', a.name);
+      if (a.name === container) name.appendChild(el('span', 'container', 'container-tag'));
+      tr.appendChild(name);
+      tr.appendChild(el('td', a.address));
+      const s = el('td');
+      for (const d of a.services) s.appendChild(el('span', d.type + (d.name ? ': ' + d.name : ''), 'svc'));
+      tr.appendChild(s);
+      tr.appendChild(el('td', ago(a.startMs)));
+      tbody.appendChild(tr);
+    }
+    return n;
+  }
+  function drawPlatform() {
+    const p = state.platform;
+    if (!p) return;
+    $('platform-name').textContent = 'platform ' + p.platform;
+    const box = $('container-box');
+    box.replaceChildren();
+    box.appendChild(el('strong', p.container ? 'Container: ' + p.container : 'No container elected yet'));
+    if (p.container) box.appendChild(el('span', ' — term ' + p.term + ', since ' + ago(p.containerSinceMs)));
+    box.appendChild(el('div', 'This console is ' + p.console + ' (' + p.role.toLowerCase() + ').', 'hint'));
+    const q = $('search').value.trim();
+    const n = fillAgents($('lal').tBodies[0], p.lal, q, p.container) + fillAgents($('gal').tBodies[0], p.gal, q, p.container);
+    $('search-count').textContent = q ? n + ' agents offer a matching service' : (p.lal.length + p.gal.length) + ' agents';
+    const f = $('facilitators');
+    f.replaceChildren();
+    for (const x of p.facilitators) f.appendChild(el('li', x));
+    if (!p.facilitators.length) f.appendChild(el('li', 'none', 'hint'));
+    drawPicker();
+  }
+  $('search').addEventListener('input', drawPlatform);
+
+  // ---- safety ---------------------------------------------------------------------------------
+  function drawSafety() {
+    const s = state.safety;
+    if (!s) return;
+    const head = $('safety-table').tHead;
+    head.replaceChildren();
+    const hr = el('tr');
+    ['agent', 'role', 'clock offset'].forEach((h) => hr.appendChild(el('th', h)));
+    for (const t of s.threats) hr.appendChild(el('th', t));
+    head.appendChild(hr);
+    const body = $('safety-table').tBodies[0];
+    body.replaceChildren();
+    for (const a of s.agents) {
+      const tr = el('tr', null, 'pick');
+      tr.dataset.agent = a.agent;
+      tr.appendChild(el('td', a.agent));
+      tr.appendChild(el('td', a.role.toLowerCase()));
+      tr.appendChild(el('td', a.clockSynced ? (a.clockOffsetUs / 1000).toFixed(1) + ' ms' : 'own clock', 'num'));
+      for (const t of s.threats) {
+        const td = el('td', a.threats[t] + (a.perMinute[t] ? ' (+' + a.perMinute[t] + ' in the last minute)' : ''), 'num');
+        td.dataset.threat = t;
+        if (a.perMinute[t] > 0) td.classList.add('hot');
+        tr.appendChild(td);
+      }
+      tr.addEventListener('click', () => { state.safetyPick = a.agent; drawSafetyDetail(); });
+      body.appendChild(tr);
+    }
+    drawSafetyDetail();
+    $('safety-console').textContent = 'The console itself: ' + s.consoleDrops + ' events dropped for slow browsers, '
+      + s.consoleMalformed + ' malformed reports.';
+  }
+  function drawSafetyDetail() {
+    const s = state.safety;
+    const a = s && s.agents.find((x) => x.agent === state.safetyPick);
+    if (!a) { $('safety-detail').textContent = ''; return; }
+    const lines = [a.agent + ' — drops by layer and reason:'];
+    for (const [layer, reasons] of Object.entries(a.layers)) {
+      for (const [r, v] of Object.entries(reasons)) {
+        if (!r.endsWith('@threat')) lines.push('  ' + layer + ' / ' + r + ' (' + reasons[r + '@threat'] + '): ' + v);
+      }
+    }
+    if (lines.length === 1) lines.push('  none');
+    $('safety-detail').textContent = lines.join('\n');
+  }
+
+  // ---- sniffer --------------------------------------------------------------------------------
+  function drawPicker() {
+    const p = state.platform;
+    const box = $('sniff-agents');
+    const names = p ? p.lal.concat(p.gal).map((a) => a.name).filter((n) => n !== p.console) : [];
+    if (box.dataset.names === names.join(',')) return;
+    box.dataset.names = names.join(',');
+    box.replaceChildren();
+    for (const n of names) {
+      const l = el('label', null, 'sniff-pick');
+      const c = el('input');
+      c.type = 'checkbox';
+      c.value = n;
+      c.checked = state.picked.has(n);
+      c.addEventListener('change', () => {
+        if (c.checked) state.picked.add(n); else state.picked.delete(n);
+        connect();
+      });
+      l.appendChild(c);
+      l.appendChild(document.createTextNode(' ' + n));
+      box.appendChild(l);
+    }
+  }
+  $('sniff-conversation').addEventListener('change', (e) => { state.conversation = e.target.value.trim(); connect(); });
+  $('sniff-clear').addEventListener('click', () => { state.sniffed = []; drawDiagram(); $('message').textContent = ''; });
+
+  function visible() {
+    // A message seen by both its agents is drawn once: as sent, or as received if its sender is not sniffed.
+    const sniffedAgents = new Set(state.sniffed.map((m) => m.by));
+    return state.sniffed.filter((m) => m.dir === 'sent' || !sniffedAgents.has(m.from) || state.conversation);
+  }
+  function drawDiagram() {
+    const d = $('diagram');
+    d.replaceChildren();
+    const msgs = visible().filter((m, i, all) => m.dir === 'sent' || !all.some((o) => o.dir === 'sent'
+      && o.from === m.from && o.to === m.to && o.message === m.message));
+    const lanes = [];
+    for (const a of [...state.picked]) if (!lanes.includes(a)) lanes.push(a);
+    for (const m of msgs) for (const a of [m.from, m.to]) if (!lanes.includes(a)) lanes.push(a);
+    const W = 170, top = 40, step = 28;
+    const height = top + 20 + msgs.length * step;
+    d.setAttribute('width', Math.max(400, lanes.length * W + 40));
+    d.setAttribute('height', Math.max(120, height));
+    lanes.forEach((a, i) => {
+      const x = 20 + i * W + W / 2;
+      d.appendChild(svg('rect', { x: x - 75, y: 5, width: 150, height: 24, rx: 4, fill: '#e3effd', stroke: '#7aa7d6' }));
+      d.appendChild(svg('text', { x: x, y: 21, 'text-anchor': 'middle' }, a.split('@')[0]));
+      d.appendChild(svg('line', { x1: x, y1: 29, x2: x, y2: Math.max(120, height), stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
+    });
+    msgs.forEach((m, i) => {
+      const y = top + 10 + i * step;
+      const x1 = 20 + lanes.indexOf(m.from) * W + W / 2;
+      const x2 = 20 + lanes.indexOf(m.to) * W + W / 2;
+      const g = svg('g', { class: 'arrow', 'data-performative': m.performative });
+      const color = /FAILURE|REFUSE|NOT-UNDERSTOOD/.test(m.performative) ? '#c0392b' : '#2d6cb5';
+      g.appendChild(svg('line', { x1: x1, y1: y, x2: x2 + (x2 > x1 ? -6 : 6), y2: y, stroke: color, 'stroke-width': 1.6 }));
+      const dir = x2 > x1 ? -1 : 1;
+      g.appendChild(svg('polygon', { points: `${x2},${y} ${x2 + dir * 8},${y - 4} ${x2 + dir * 8},${y + 4}`, fill: color }));
+      g.appendChild(svg('text', { x: (x1 + x2) / 2, y: y - 4, 'text-anchor': 'middle', fill: color },
+        m.performative + (m.conversation ? ' · ' + m.conversation : '') + (m.missed ? ' (+' + m.missed + ' missed)' : '')));
+      g.addEventListener('click', () => { $('message').textContent = m.message; });
+      d.appendChild(g);
+    });
+  }
+
+  // ---- application views (the hospital) -------------------------------------------------------
+  function loadViews() {
+    fetch(url('api/views')).then((r) => r.json()).then((vs) => {
+      state.views = vs;
+      const box = $('view-tabs');
+      box.replaceChildren();
+      for (const v of vs) {
+        const b = el('button', v.title);
+        b.dataset.tab = 'view';
+        b.dataset.view = v.id;
+        b.addEventListener('click', () => show('view', v));
+        box.appendChild(b);
+      }
+      connect();
+    });
+  }
+  function drawForm() {
+    const f = $('view-form');
+    f.replaceChildren();
+    $('view-said').textContent = '';
+    f.dataset.fields = '';
+  }
+  function ensureForm(scene) {
+    const f = $('view-form');
+    const forms = scene.forms || [];
+    const key = JSON.stringify(forms);
+    if (f.dataset.fields === key) return;
+    f.dataset.fields = key;
+    f.replaceChildren();
+    for (const form of forms) {
+      f.appendChild(el('h3', form.title));
+      for (const fl of form.fields) {
+        const l = el('label', fl.label + ' ');
+        const i = el('input');
+        i.name = fl.name;
+        i.value = fl.value != null ? fl.value : '';
+        l.appendChild(i);
+        f.appendChild(l);
+      }
+      const b = el('button', form.button);
+      b.type = 'button';
+      b.id = 'action-' + form.action;
+      b.addEventListener('click', () => {
+        const body = new URLSearchParams();
+        for (const fl of form.fields) body.set(fl.name, f.elements[fl.name].value);
+        fetch(url('api/views/' + state.view.id + '/' + form.action), { method: 'POST', body: body,
+          headers: { 'X-Concord-Console': '1' } })
+          .then((r) => r.text().then((t) => { $('view-said').textContent = r.ok ? JSON.parse(t).message : t; }));
+      });
+      f.appendChild(b);
+    }
+  }
+  function drawScene(scene) {
+    ensureForm(scene);
+    const s = $('view-scene');
+    const [x0, y0, x1, y1] = scene.bounds;
+    // y grows up in the world, down on the screen: flip it.
+    s.setAttribute('viewBox', `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`);
+    s.replaceChildren();
+    for (const sh of scene.shapes) {
+      let e;
+      const id = sh.id ? { id: sh.id } : {};
+      if (sh.type === 'line') {
+        const pts = [];
+        for (let i = 0; i < sh.points.length; i += 2) pts.push(sh.points[i] + ',' + (-sh.points[i + 1]));
+        e = svg('polyline', Object.assign({ points: pts.join(' '), fill: 'none', stroke: sh.color || '#333',
+          'stroke-width': sh.width || 0.1, 'stroke-linecap': 'round', 'stroke-dasharray': sh.dash || '' }, id));
+      } else if (sh.type === 'circle') {
+        e = svg('circle', Object.assign({ cx: sh.x, cy: -sh.y, r: sh.r, fill: sh.color || '#333',
+          stroke: sh.stroke || 'none', 'stroke-width': 0.05 }, id));
+      } else if (sh.type === 'text') {
+        e = svg('text', Object.assign({ x: sh.x, y: -sh.y, 'font-size': sh.size || 0.6, fill: sh.color || '#333',
+          'text-anchor': 'middle' }, id), sh.text);
+      } else {
+        continue;
+      }
+      for (const [k, v] of Object.entries(sh.data || {})) e.setAttribute('data-' + k, v);
+      if (sh.title) e.appendChild(svg('title', {}, sh.title));
+      s.appendChild(e);
+    }
+    const t = $('view-tables');
+    t.replaceChildren();
+    for (const tb of scene.tables || []) {
+      t.appendChild(el('h3', tb.title));
+      const table = el('table');
+      table.id = tb.id || '';
+      const hr = el('tr');
+      tb.columns.forEach((c) => hr.appendChild(el('th', c)));
+      table.appendChild(hr);
+      for (const r of tb.rows) {
+        const tr = el('tr');
+        r.forEach((c) => tr.appendChild(el('td', c)));
+        table.appendChild(tr);
+      }
+      if (!tb.rows.length) { const tr = el('tr'); const td = el('td', 'none', 'hint'); td.colSpan = tb.columns.length; tr.appendChild(td); table.appendChild(tr); }
+      t.appendChild(table);
+    }
+  }
+
+  // ---- bench ----------------------------------------------------------------------------------
+  function loadBench() {
+    fetch(url('api/bench')).then((r) => r.json()).then((files) => {
+      const l = $('bench-list');
+      l.replaceChildren();
+      if (!files.length) l.appendChild(el('li', 'No bench report here: run bench/run, or start the console where bench/report is.', 'hint'));
+      for (const f of files.filter((x) => x.endsWith('.md'))) {
+        const li = el('li');
+        const a = el('a', f);
+        a.href = '#';
+        a.addEventListener('click', (e) => { e.preventDefault(); openReport(f); });
+        li.appendChild(a);
+        l.appendChild(li);
+      }
+      if (files.includes('README.md') && !$('bench-page').childNodes.length) openReport('README.md');
+    });
+  }
+  function inline(parent, text) {
+    // **bold**, `code`, ![alt](img) and [text](link) in a line; the rest as text.
+    const re = /(\*\*[^*]+\*\*|`[^`]+`|!\[[^\]]*\]\([^)]+\)|\[[^\]]+\]\([^)]+\))/g;
+    let last = 0, m;
+    while ((m = re.exec(text))) {
+      parent.appendChild(document.createTextNode(text.slice(last, m.index)));
+      const t = m[0];
+      if (t.startsWith('**')) parent.appendChild(el('strong', t.slice(2, -2)));
+      else if (t.startsWith('`')) parent.appendChild(el('code', t.slice(1, -1)));
+      else if (t.startsWith('![')) {
+        const src = t.slice(t.indexOf('(') + 1, -1);
+        const img = el('img');
+        img.alt = t.slice(2, t.indexOf(']'));
+        if (/^[A-Za-z0-9._-]+\.(png|svg)$/.test(src)) img.src = url('api/bench/' + src);
+        parent.appendChild(img);
+      } else {
+        const href = t.slice(t.indexOf('(') + 1, -1);
+        const a = el('a', t.slice(1, t.indexOf(']')));
+        if (/^[A-Za-z0-9._-]+\.md$/.test(href)) { a.href = '#'; a.addEventListener('click', (e) => { e.preventDefault(); openReport(href); }); }
+        parent.appendChild(a);
+      }
+      last = m.index + t.length;
+    }
+    parent.appendChild(document.createTextNode(text.slice(last)));
+    return parent;
+  }
+  function openReport(name) {
+    fetch(url('api/bench/' + name)).then((r) => r.text()).then((md) => {
+      const page = $('bench-page');
+      page.replaceChildren();
+      const lines = md.split('\n');
+      for (let i = 0; i < lines.length; i++) {
+        const line = lines[i];
+        if (line.startsWith('```')) {
+          const code = [];
+          for (i++; i < lines.length && !lines[i].startsWith('```'); i++) code.push(lines[i]);
+          page.appendChild(el('pre', code.join('\n')));
+        } else if (/^#{1,4} /.test(line)) {
+          page.appendChild(inline(el('h' + (line.indexOf(' ') + 1)), line.replace(/^#+ /, '')));
+        } else if (line.startsWith('|')) {
+          const table = el('table');
+          for (; i < lines.length && lines[i].startsWith('|'); i++) {
+            if (/^\|[\s:|-]+\|$/.test(lines[i])) continue;
+            const tr = el('tr');
+            lines[i].slice(1, -1).split('|').forEach((c) => tr.appendChild(inline(el('td'), c.trim())));
+            table.appendChild(tr);
+          }
+          i--;
+          page.appendChild(table);
+        } else if (/^\s*[-*] /.test(line)) {
+          page.appendChild(inline(el('li'), line.replace(/^\s*[-*] /, '')));
+        } else if (line.trim()) {
+          page.appendChild(inline(el('p'), line));
+        }
+      }
+    });
+  }
+
+  loadViews();
+})();

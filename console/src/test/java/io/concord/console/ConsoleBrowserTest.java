@@ -1,0 +1,176 @@
+package io.concord.console;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.PortRange;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.openqa.selenium.By;
+import org.openqa.selenium.WebElement;
+
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.URI;
+import java.util.List;
+import java.util.Random;
+import java.util.stream.Collectors;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The console in a real headless Chromium: each view as a user sees it, with a screenshot of each in target/screenshots. */
+class ConsoleBrowserTest {
+    static Platform platform;
+    static Console console;
+    static Browser browser;
+
+    /** Offers books; agrees to every request. */
+    static final class Seller extends Agent {
+        @Override
+        protected void setup() {
+            Platform.of(this).register(ServiceDescription.of("book-selling", getLocalName()));
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                    } else if (m.getPerformative() == Performative.REQUEST) {
+                        myAgent.send(m.createReply().setPerformative(Performative.AGREE).setContent("agreed: " + m.getContent()));
+                    }
+                }
+            });
+        }
+    }
+
+    /** Sends what the test asks it to. */
+    static final class Buyer extends Agent {
+    }
+
+    @BeforeAll
+    static void start() {
+        platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build();
+        platform.startAgent("seller1", new Seller());
+        platform.startAgent("seller2", new Seller());
+        platform.startAgent("buyer", new Buyer());
+        console = Console.start(platform, Console.Config.port(0).withReports(java.nio.file.Path.of("..", "bench", "report")));
+        browser = new Browser();
+    }
+
+    @AfterAll
+    static void stop() {
+        if (browser != null) {
+            browser.close();
+        }
+        console.close();
+        platform.close();
+    }
+
+    private static List<String> rows(String table) {
+        return browser.driver.findElements(By.cssSelector("#" + table + " tbody tr")).stream()
+                .map(r -> r.getAttribute("data-agent")).collect(Collectors.toList());
+    }
+
+    private static void tab(String name) {
+        browser.driver.findElement(By.cssSelector("nav button[data-tab='" + name + "']")).click();
+    }
+
+    @Test
+    void thePlatformViewListsTheAgentsAndFollowsAKilledOne() {
+        browser.driver.get(console.uri());
+        tab("platform");
+        browser.until(d -> rows("lal").containsAll(List.of("seller1@console-ui", "seller2@console-ui", "buyer@console-ui",
+                "console@console-ui")));
+        String box = browser.driver.findElement(By.id("container-box")).getText();
+        assertTrue(box.startsWith("Container: ") && box.contains("term"), box);
+        // The yellow pages' search box.
+        browser.driver.findElement(By.id("search")).sendKeys("book-selling");
+        browser.until(d -> rows("lal").equals(List.of("seller1@console-ui", "seller2@console-ui")));
+        browser.screenshot("console-platform");
+        browser.driver.findElement(By.id("search")).clear();
+        browser.driver.findElement(By.id("search")).sendKeys(" ");
+        // Killed: it leaves the list.
+        platform.runtime().crashAgent(new AID("seller2@console-ui"));
+        browser.until(d -> !rows("lal").contains("seller2@console-ui") && rows("lal").contains("seller1@console-ui"));
+    }
+
+    @Test
+    void theSnifferDrawsARequestAndItsReplyInOrder() {
+        browser.driver.get(console.uri());
+        tab("sniffer");
+        WebElement pick = browser.until(d -> d.findElement(By.cssSelector("#sniff-agents input[value='buyer@console-ui']")));
+        pick.click();
+        // Once the buyer is sniffed (the subscription is agreed), its request and the reply are drawn.
+        Agent buyer = platform.runtime().agent(new AID("buyer@console-ui"));
+        browser.until(d -> {
+            if (d.findElements(By.cssSelector("#diagram g.arrow")).size() >= 2) {
+                return true;
+            }
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(new AID("seller1@console-ui"));
+            m.setConversationId("order-" + System.nanoTime());
+            m.setContent("(sell (book :title \"Dune\"))");
+            buyer.send(m);
+            return false;
+        });
+        List<WebElement> arrows = browser.driver.findElements(By.cssSelector("#diagram g.arrow"));
+        assertEquals("REQUEST", arrows.get(0).getAttribute("data-performative"));
+        assertEquals("AGREE", arrows.get(1).getAttribute("data-performative"));
+        arrows.get(0).click();
+        String whole = browser.driver.findElement(By.id("message")).getText();
+        assertTrue(whole.startsWith("(REQUEST") && whole.contains(":sender") && whole.contains("Dune"), whole);
+        browser.screenshot("console-sniffer");
+    }
+
+    @Test
+    void theSafetyViewCountsForgedFrames() throws Exception {
+        browser.driver.get(console.uri());
+        tab("safety");
+        browser.until(d -> d.findElements(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).size() == 1);
+        long before = total("seller1@console-ui");
+        // Forged frames to seller1's port: bytes an attacker made up.
+        Agent seller = platform.runtime().agent(new AID("seller1@console-ui"));
+        URI at = URI.create(seller.getAID().addresses().get(0).replace("udp://", "udp://x@"));
+        Random r = new Random(50159);
+        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            for (int i = 0; i < 50; i++) {
+                byte[] b = new byte[48 + r.nextInt(100)];
+                r.nextBytes(b);
+                s.send(new DatagramPacket(b, b.length, InetAddress.getLoopbackAddress(), at.getPort()));
+            }
+        }
+        browser.until(d -> total("seller1@console-ui") > before);
+        browser.driver.findElement(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).click();
+        browser.until(d -> d.findElement(By.id("safety-detail")).getText().contains("seller1@console-ui"));
+        browser.screenshot("console-safety");
+    }
+
+    private static long total(String agent) {
+        List<WebElement> row = browser.driver.findElements(By.cssSelector("#safety-table tbody tr[data-agent='" + agent + "'] td[data-threat]"));
+        long t = 0;
+        for (WebElement td : row) {
+            t += Long.parseLong(td.getText().split(" ")[0]);
+        }
+        return t;
+    }
+
+    @Test
+    void theBenchViewShowsTheReports() {
+        browser.driver.get(console.uri());
+        tab("bench");
+        browser.until(d -> d.findElements(By.cssSelector("#bench-list a")).size() > 3);
+        browser.driver.findElements(By.cssSelector("#bench-list a")).stream().filter(a -> a.getText().equals("chain.md")).findFirst()
+                .orElseThrow().click();
+        browser.until(d -> d.findElements(By.cssSelector("#bench-page h1, #bench-page h2")).size() > 0
+                && d.findElements(By.cssSelector("#bench-page img")).size() > 0);
+        browser.screenshot("console-bench");
+    }
+}

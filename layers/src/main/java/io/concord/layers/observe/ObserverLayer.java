@@ -1,0 +1,255 @@
+package io.concord.layers.observe;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.layer.Envelope;
+import io.concord.core.layer.Layer;
+import io.concord.core.layer.LayerContext;
+import io.concord.core.time.TokenBucket;
+import io.concord.layers.platform.ContainerLayer;
+import io.concord.layers.temporal.TemporalLayer;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The agent's own observation service, on top of its stack: what the console (or any member of
+ * the platform) may ask an agent about itself, in ACL, over the platform. It sits above the
+ * container layer, so under class 7 only an authenticated member reaches it (the membership gate);
+ * nothing here reads the network.
+ *
+ * <ul>
+ * <li>{@code SUBSCRIBE}, ontology {@value #ONTOLOGY}, content {@code sniff}: AGREE, then for every
+ * application message this agent sends or receives an INFORM to the subscriber (same
+ * conversation id) whose content is one JSON event (see {@code docs/console.md}). A subscription
+ * lasts {@link #LEASE_MS} and is renewed by subscribing again; CANCEL ends it. At most
+ * {@link #MAX_SNIFFERS} subscribers; at most {@link #EVENTS_PER_SECOND} events a second each
+ * (burst {@link #EVENT_BURST}), the rest counted ({@code sniff-limit}) and reported as
+ * {@code missed} in the next event.</li>
+ * <li>{@code QUERY-REF}, ontology {@value #ONTOLOGY}, content {@code status}: INFORM with this
+ * agent's role, container and term, platform clock offset, and its drops by layer and reason.</li>
+ * </ul>
+ */
+public final class ObserverLayer extends Layer {
+    public static final String ONTOLOGY = "concord-observe";
+    public static final long LEASE_MS = 30_000;
+    public static final int MAX_SNIFFERS = 8;
+    public static final int EVENTS_PER_SECOND = 500;
+    public static final int EVENT_BURST = 1_000;
+    /** A sniffed message longer than this is cut in its event ({@code "cut": true}). */
+    public static final int MAX_TEXT = 8 * 1024;
+
+    private static final class Sniffer {
+        final AID who;
+        final String conversation;
+        long untilNs;
+        long missed;
+        final TokenBucket bucket = new TokenBucket(EVENT_BURST, EVENTS_PER_SECOND);
+
+        Sniffer(AID who, String conversation) {
+            this.who = who;
+            this.conversation = conversation;
+        }
+    }
+
+    private final Map<String, Sniffer> sniffers = new LinkedHashMap<>();
+    private List<io.concord.core.layer.Layer> stack = List.of();
+    private LayerContext ctx;
+    private AID self;
+
+    @Override
+    public String name() {
+        return "observer";
+    }
+
+    /** The agent's layers, so that status can read the container's and the clock's state. */
+    public void stack(List<io.concord.core.layer.Layer> layers) {
+        this.stack = List.copyOf(layers);
+    }
+
+    @Override
+    public void start(LayerContext c) {
+        this.ctx = c;
+        ContainerLayer container = find(ContainerLayer.class);
+        self = container != null && container.selfEntry() != null ? container.selfEntry().aid() : new AID(c.host().nodeName());
+    }
+
+    @Override
+    public void stop(LayerContext c) {
+        sniffers.clear();
+    }
+
+    /** Subscribers now (tests, the console). */
+    public int sniffers() {
+        return sniffers.size();
+    }
+
+    private <T> T find(Class<T> type) {
+        for (io.concord.core.layer.Layer l : stack) {
+            if (type.isInstance(l)) {
+                return type.cast(l);
+            }
+        }
+        return null;
+    }
+
+    @Override
+    public void onDown(LayerContext c, Envelope env) {
+        AclMessage m = env.message();
+        if (!sniffers.isEmpty() && m != null && !ONTOLOGY.equals(m.getOntology())) {
+            event("sent", m, env.receiver());
+        }
+        c.passDown(env);
+    }
+
+    @Override
+    public void onUp(LayerContext c, Envelope env) {
+        AclMessage m = env.message();
+        if (m != null && ONTOLOGY.equals(m.getOntology()) && m.getSender() != null) {
+            switch (m.getPerformative()) {
+                case SUBSCRIBE, QUERY_REF, CANCEL -> {
+                    serve(m);
+                    return;
+                }
+                default -> {
+                    // an answer to this agent's own request: the agent's business
+                }
+            }
+        }
+        if (!sniffers.isEmpty() && m != null && !ONTOLOGY.equals(m.getOntology())) {
+            event("received", m, self);
+        }
+        c.passUp(env);
+    }
+
+    private void serve(AclMessage m) {
+        String content = m.getContent() == null ? "" : m.getContent().trim();
+        String key = m.getSender().name() + " " + m.getConversationId();
+        if (m.getPerformative() == Performative.CANCEL) {
+            sniffers.remove(key);
+            return;
+        }
+        if (m.getPerformative() == Performative.SUBSCRIBE && content.equals("sniff")) {
+            long now = ctx.nowNs();
+            sniffers.values().removeIf(s -> s.untilNs - now < 0);
+            Sniffer s = sniffers.get(key);
+            if (s == null) {
+                if (sniffers.size() >= MAX_SNIFFERS) {
+                    ctx.drop(Envelope.outgoing(m, self, null), "sniff-limit",
+                            m.getSender().name() + " asked to sniff " + self.name() + ", which has " + MAX_SNIFFERS + " sniffers already");
+                    answer(m, Performative.REFUSE, "{\"reason\":\"" + MAX_SNIFFERS + " sniffers already\"}");
+                    return;
+                }
+                s = new Sniffer(m.getSender(), m.getConversationId());
+                sniffers.put(key, s);
+            }
+            s.untilNs = now + LEASE_MS * 1_000_000;
+            answer(m, Performative.AGREE, "{\"lease-ms\":" + LEASE_MS + "}");
+            return;
+        }
+        if (m.getPerformative() == Performative.QUERY_REF && content.equals("status")) {
+            answer(m, Performative.INFORM, status());
+            return;
+        }
+        answer(m, Performative.NOT_UNDERSTOOD, "{\"reason\":\"" + ONTOLOGY + " knows SUBSCRIBE sniff, CANCEL and QUERY-REF status\"}");
+    }
+
+    /** This agent's status as JSON. */
+    public String status() {
+        StringBuilder b = new StringBuilder(256).append('{');
+        Json.field(b, "agent", self.name()).append(',');
+        ContainerLayer c = find(ContainerLayer.class);
+        if (c != null) {
+            Json.field(b, "role", c.role().name()).append(',');
+            Json.field(b, "container", c.containerName()).append(',');
+            b.append("\"term\":").append(c.term()).append(',');
+        }
+        TemporalLayer t = find(TemporalLayer.class);
+        if (t != null) {
+            b.append("\"clockOffsetUs\":").append(t.clock().offsetUs()).append(",\"clockSynced\":").append(t.clock().isSynced()).append(',');
+        }
+        b.append("\"atMs\":").append(ctx.host().clock().epochMillis()).append(",\"drops\":{");
+        boolean first = true;
+        for (Map.Entry<String, Map<String, Long>> l : ctx.host().drops().snapshotByLayer().entrySet()) {
+            if (!first) {
+                b.append(',');
+            }
+            first = false;
+            Json.string(b, l.getKey()).append(":{");
+            boolean f2 = true;
+            for (Map.Entry<String, Long> r : l.getValue().entrySet()) {
+                if (!f2) {
+                    b.append(',');
+                }
+                f2 = false;
+                Json.string(b, r.getKey()).append(':').append(r.getValue());
+            }
+            b.append('}');
+        }
+        return b.append("}}").toString();
+    }
+
+    private void answer(AclMessage m, Performative p, String json) {
+        AclMessage r = m.createReply().setPerformative(p);
+        r.setContent(json);
+        r.setSender(self);
+        ctx.passDown(Envelope.outgoing(r, m.getSender(), null));
+    }
+
+    private void event(String dir, AclMessage m, AID to) {
+        long now = ctx.nowNs();
+        List<String> gone = null;
+        String json = null;
+        for (Map.Entry<String, Sniffer> e : sniffers.entrySet()) {
+            Sniffer s = e.getValue();
+            if (s.untilNs - now < 0) {
+                (gone == null ? gone = new ArrayList<>() : gone).add(e.getKey());
+                continue;
+            }
+            if (s.who.equals(m.getSender()) || s.who.equals(to)) {
+                continue;   // the sniffer's own conversation with this agent is not news to it
+            }
+            if (!s.bucket.take(now)) {
+                s.missed++;
+                ctx.host().drops().record(ctx.host().nodeName(), name(), "sniff-limit",
+                        "more than " + EVENTS_PER_SECOND + " messages a second to report to " + s.who.name());
+                continue;
+            }
+            if (json == null) {
+                json = eventJson(dir, m, to);
+            }
+            AclMessage inform = new AclMessage(Performative.INFORM);
+            inform.addReceiver(s.who);
+            inform.setSender(self);
+            inform.setOntology(ONTOLOGY);
+            inform.setConversationId(s.conversation);
+            inform.setContent(s.missed == 0 ? json : json.substring(0, json.length() - 1) + ",\"missed\":" + s.missed + "}");
+            s.missed = 0;
+            ctx.passDown(Envelope.outgoing(inform, s.who, null));
+        }
+        if (gone != null) {
+            gone.forEach(sniffers::remove);
+        }
+    }
+
+    private String eventJson(String dir, AclMessage m, AID to) {
+        String text = m.toString();
+        boolean cut = text.length() > MAX_TEXT;
+        StringBuilder b = new StringBuilder(text.length() + 256).append('{');
+        Json.field(b, "dir", dir).append(',');
+        Json.field(b, "by", self.name()).append(',');
+        b.append("\"atMs\":").append(ctx.host().clock().epochMillis()).append(',');
+        Json.field(b, "from", m.getSender() == null ? null : m.getSender().name()).append(',');
+        Json.field(b, "to", to == null ? null : to.name()).append(',');
+        Json.field(b, "performative", m.getPerformative().name().replace('_', '-')).append(',');
+        Json.field(b, "conversation", m.getConversationId()).append(',');
+        Json.field(b, "message", cut ? text.substring(0, MAX_TEXT) : text);
+        if (cut) {
+            b.append(",\"cut\":true");
+        }
+        return b.append('}').toString();
+    }
+}

@@ -1,0 +1,133 @@
+package io.concord.layers.platform;
+
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.testkit.FaultPlan;
+import io.concord.layers.Profile;
+import io.concord.layers.observe.ObserverLayer;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+import java.util.stream.Collectors;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The agents' observation service (what the console sniffs and asks), over the platform itself. */
+class ObserverTest {
+
+    private static PlatformWorld world() {
+        return new PlatformWorld(11, FaultPlan.NONE, Profile.CLASS_7);
+    }
+
+    private static AclMessage ask(Performative p, String to, String content, String conversation) {
+        AclMessage m = new AclMessage(p);
+        m.addReceiver(AID.local(to, "sim"));
+        m.setOntology(ObserverLayer.ONTOLOGY);
+        m.setConversationId(conversation);
+        m.setContent(content);
+        return m;
+    }
+
+    private static List<String> events(PlatformServicesTest.Inbox s) {
+        return s.got.stream().filter(m -> m.getPerformative() == Performative.INFORM).map(AclMessage::getContent)
+                .collect(Collectors.toList());
+    }
+
+    @Test
+    void aSnifferSeesWhatTheAgentSendsAndReceivesUntilItCancels() {
+        try (PlatformWorld w = world()) {
+            PlatformServicesTest.Inbox b = new PlatformServicesTest.Inbox();
+            PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+            w.start("a");
+            w.everStarted.add("b@sim");
+            w.live.put("b", w.platform.startAgent("b", b));
+            w.everStarted.add("sniffer@sim");
+            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            Agent a = w.rt.agent(w.live.get("a"));
+            Agent sn = w.rt.agent(w.live.get("sniffer"));
+            sn.send(ask(Performative.SUBSCRIBE, "a", "sniff", "s1"));
+            assertTrue(w.sim.runUntil(() -> s.got.stream().anyMatch(m -> m.getPerformative() == Performative.AGREE), 2_000));
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(AID.local("b", "sim"));
+            m.setConversationId("c7");
+            m.setContent("a \"quoted\" request");
+            a.send(m);
+            assertTrue(w.sim.runUntil(() -> !b.got.isEmpty(), 2_000));
+            b.send(b.got.get(0).createReply().setPerformative(Performative.AGREE).setContent("yes"));
+            assertTrue(w.sim.runUntil(() -> events(s).size() >= 2, 2_000), events(s).toString());
+            List<String> ev = events(s);
+            assertTrue(ev.get(0).startsWith("{\"dir\":\"sent\",\"by\":\"a@sim\""), ev.get(0));
+            assertTrue(ev.get(0).contains("\"from\":\"a@sim\",\"to\":\"b@sim\",\"performative\":\"REQUEST\",\"conversation\":\"c7\""), ev.get(0));
+            assertTrue(ev.get(0).contains("a \\\\\\\"quoted\\\\\\\" request"), "the message whole, escaped: " + ev.get(0));
+            assertTrue(ev.get(1).contains("\"dir\":\"received\"") && ev.get(1).contains("\"performative\":\"AGREE\""), ev.get(1));
+            // Cancelled: nothing more.
+            sn.send(ask(Performative.CANCEL, "a", "sniff", "s1"));
+            w.sim.runFor(500);
+            a.send(m.copy());
+            w.sim.runFor(1_000);
+            assertEquals(2, events(s).size(), events(s).toString());
+        }
+    }
+
+    @Test
+    void aSubscriptionEndsWithItsLeaseUnlessRenewed() {
+        try (PlatformWorld w = world()) {
+            PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+            w.start("a");
+            w.start("b");
+            w.everStarted.add("sniffer@sim");
+            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            Agent a = w.rt.agent(w.live.get("a"));
+            w.rt.agent(w.live.get("sniffer")).send(ask(Performative.SUBSCRIBE, "a", "sniff", "s1"));
+            w.sim.runFor(ObserverLayer.LEASE_MS + 1_000);
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(AID.local("b", "sim"));
+            m.setContent("after the lease");
+            a.send(m);
+            w.sim.runFor(1_000);
+            assertEquals(List.of(), events(s));
+        }
+    }
+
+    @Test
+    void statusTellsTheRoleTheClockAndTheDropsByLayer() {
+        try (PlatformWorld w = world()) {
+            PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+            w.start("a");
+            w.everStarted.add("sniffer@sim");
+            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "a", "status", "q1"));
+            assertTrue(w.sim.runUntil(() -> !events(s).isEmpty(), 2_000));
+            String st = events(s).get(0);
+            assertTrue(st.startsWith("{\"agent\":\"a@sim\",\"role\":\""), st);
+            assertTrue(st.contains("\"container\":\"") && st.contains("\"clockOffsetUs\":") && st.contains("\"drops\":{"), st);
+            w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "a", "what?", "q2"));
+            assertTrue(w.sim.runUntil(() -> s.got.stream().anyMatch(m -> m.getPerformative() == Performative.NOT_UNDERSTOOD), 2_000));
+        }
+    }
+
+    @Test
+    void atMostEightSniffersAndTheNinthIsRefusedAndCounted() {
+        try (PlatformWorld w = world()) {
+            PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+            w.start("a");
+            w.everStarted.add("sniffer@sim");
+            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            for (int i = 0; i <= ObserverLayer.MAX_SNIFFERS; i++) {
+                w.rt.agent(w.live.get("sniffer")).send(ask(Performative.SUBSCRIBE, "a", "sniff", "s" + i));
+            }
+            assertTrue(w.sim.runUntil(() -> s.got.size() > ObserverLayer.MAX_SNIFFERS, 2_000));
+            assertEquals(ObserverLayer.MAX_SNIFFERS, s.got.stream().filter(m -> m.getPerformative() == Performative.AGREE).count());
+            assertEquals(1, s.got.stream().filter(m -> m.getPerformative() == Performative.REFUSE).count());
+            assertEquals(1L, w.rt.drops(w.live.get("a")).get("sniff-limit"));
+        }
+    }
+}
