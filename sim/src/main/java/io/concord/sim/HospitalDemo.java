@@ -80,7 +80,7 @@ public final class HospitalDemo {
 
     /** Settings of a run. */
     record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
-                   double maxSeconds, String serial, boolean augmented) {
+                   double maxSeconds, String serial, boolean augmented, String console) {
         List<String> childArgs() {
             List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
                     "--chairs", Integer.toString(chairs), "--picture", picture.toAbsolutePath().toString(),
@@ -93,6 +93,9 @@ public final class HospitalDemo {
             }
             if (augmented) {
                 a.add("--augmented");
+            }
+            if (console != null) {
+                a.addAll(List.of("--console", console));
             }
             return a;
         }
@@ -109,7 +112,7 @@ public final class HospitalDemo {
         } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
             System.err.println("usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
-                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT [--augmented]]");
+                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT [--augmented]] [--console [host:]port]");
             System.exit(2);
             return;
         }
@@ -138,6 +141,7 @@ public final class HospitalDemo {
         double max = 1800;
         String serial = null;
         boolean augmented = false;
+        String console = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--virtual")) {
@@ -161,6 +165,7 @@ public final class HospitalDemo {
                     case "--chairs" -> chairs = Integer.parseInt(v);
                     case "--max-seconds" -> max = Double.parseDouble(v);
                     case "--serial" -> serial = v;
+                    case "--console" -> console = v;
                     case "--tasks" -> {
                         tasks = new ArrayList<>();
                         for (String t : v.split(",")) {
@@ -188,7 +193,17 @@ public final class HospitalDemo {
         if (serial != null) {
             speed = 1;   // the board (real or emulated) keeps real time
         }
-        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented);
+        if (console != null && virtual) {
+            throw new IllegalArgumentException("--console shows the hospital as it runs in real time: it cannot run with --virtual");
+        }
+        if (console != null) {
+            try {
+                io.concord.console.Console.Config.parse(console);
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("--console: " + e.getMessage());
+            }
+        }
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console);
     }
 
     private static void check(HospitalMap map, Options o) {
@@ -321,6 +336,10 @@ public final class HospitalDemo {
         if (!ended) {
             staff.destroyForcibly();
         }
+        if (o.console() != null && ward.isAlive()) {
+            OUT.println("The staff's transports ended; the ward and its console go on (ask for more transports there). Ctrl-C stops them.");
+            ward.waitFor();
+        }
         ward.destroy();   // its shutdown hook writes the picture
         if (!ward.waitFor(20, TimeUnit.SECONDS)) {
             ward.destroyForcibly();
@@ -363,6 +382,13 @@ public final class HospitalDemo {
         Consumer<String> log = line -> OUT.printf(Locale.ROOT, "t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
         Hospital hospital = Hospital.start(platform, world, log);
         world.attach(rt, o.speed());
+        if (o.console() != null) {
+            HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
+            platform.startAgent("desk", desk);
+            io.concord.console.Console c = io.concord.console.Console.start(platform, io.concord.console.Console.Config.parse(o.console()));
+            c.addView(new HospitalView(world, hospital, desk));
+            OUT.println("console: " + c.uri() + "  (the hospital, the platform, the safety counters and the sniffer)");
+        }
         if (o.serial() != null) {
             // chair1 is on its serial port; the world keeps the doors (and any other chairs).
             rt.execute(() -> {

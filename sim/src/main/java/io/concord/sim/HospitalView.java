@@ -1,0 +1,300 @@
+package io.concord.sim;
+
+import io.concord.agents.chair.Pose;
+import io.concord.agents.control.ControlAgent;
+import io.concord.agents.control.TaskView;
+import io.concord.agents.door.DoorAgent;
+import io.concord.agents.map.Door;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Wall;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.console.ConsoleView;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.ServiceDescription;
+import io.concord.sim.world.HospitalWorld;
+import io.concord.sim.world.SimChair;
+import io.concord.sim.world.WorldDoor;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * The hospital in the console: the map (walls, doors in their live state, route nodes), every
+ * chair with its pose, planned route and task, the transports asked for and the chairs' bids; and
+ * a form to ask for a transport, which the front desk agent sends to the Medical agent of the
+ * yellow pages as a FIPA REQUEST (so it works with the Medical agent in another JVM).
+ */
+public final class HospitalView implements ConsoleView {
+    private final HospitalWorld world;
+    private final Hospital hospital;
+    private final FrontDesk desk;
+    private final ObjectMapper json = new ObjectMapper();
+    private final double[] bounds;
+
+    /** The agent behind the form: asks the Medical agent, keeps what it answered. */
+    public static final class FrontDesk extends Agent {
+        /** A transport asked for here. */
+        record Asked(String id, int from, int to, double priority, String state, String detail) {
+        }
+
+        private final List<Asked> asked = new ArrayList<>();
+
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    for (int i = 0; i < asked.size(); i++) {
+                        Asked a = asked.get(i);
+                        if (!a.id().equals(m.getConversationId())) {
+                            continue;
+                        }
+                        String state = switch (m.getPerformative()) {
+                            case AGREE -> "agreed";
+                            case INFORM -> "done";
+                            case FAILURE -> "failed";
+                            case REFUSE -> "refused";
+                            default -> a.state();
+                        };
+                        String detail = a.detail();
+                        try {
+                            Content c = Content.parse(m.getContent());
+                            detail = c.get("chair") != null && !c.get("chair").isEmpty() ? "by " + c.get("chair")
+                                    : c.get("reason") != null ? c.get("reason") : detail;
+                        } catch (IllegalArgumentException e) {
+                            detail = "an answer that is not content: " + m.getContent();
+                        }
+                        asked.set(i, new Asked(a.id(), a.from(), a.to(), a.priority(), state, detail));
+                    }
+                }
+            });
+        }
+
+        /** Sends the request; returns what to tell the user. Loop thread. */
+        String ask(int from, int to, double priority, double unloadS) {
+            List<AgentEntry> medical = Platform.of(this).search(ServiceDescription.ofType(Services.MEDICAL));
+            if (medical.isEmpty()) {
+                throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
+            }
+            String id = "desk-" + (asked.size() + 1);
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(medical.get(0).aid());
+            m.setConversationId(id);
+            m.setContent(Content.of("transport").with("from", from).with("to", to).with("priority", priority).with("unload", unloadS).toString());
+            send(m);
+            asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.get(0).aid().localName()));
+            if (asked.size() > 200) {
+                asked.remove(0);
+            }
+            return "asked " + medical.get(0).aid().localName() + " for a transport from node " + from + " to node " + to + " (" + id + ")";
+        }
+    }
+
+    public HospitalView(HospitalWorld world, Hospital hospital, FrontDesk desk) {
+        this.world = world;
+        this.hospital = hospital;
+        this.desk = desk;
+        HospitalMap map = world.map();
+        double x0 = Double.MAX_VALUE;
+        double y0 = Double.MAX_VALUE;
+        double x1 = -Double.MAX_VALUE;
+        double y1 = -Double.MAX_VALUE;
+        for (Wall w : map.walls()) {
+            x0 = Math.min(x0, Math.min(w.from().x(), w.to().x()));
+            y0 = Math.min(y0, Math.min(w.from().y(), w.to().y()));
+            x1 = Math.max(x1, Math.max(w.from().x(), w.to().x()));
+            y1 = Math.max(y1, Math.max(w.from().y(), w.to().y()));
+        }
+        this.bounds = new double[] {x0 - 1, y0 - 1, x1 + 1, y1 + 1};
+    }
+
+    @Override
+    public String id() {
+        return "hospital";
+    }
+
+    @Override
+    public String title() {
+        return "Hospital";
+    }
+
+    @Override
+    public List<String> actions() {
+        return List.of("transport");
+    }
+
+    @Override
+    public String act(String action, Map<String, String> p) {
+        int from = integer(p, "from");
+        int to = integer(p, "to");
+        double priority = number(p, "priority", 0);
+        double unload = number(p, "unload", 60);
+        HospitalMap map = world.map();
+        if (!map.hasNode(from) || !map.hasNode(to)) {
+            throw new IllegalArgumentException("no route node " + (map.hasNode(from) ? to : from) + " in " + map.name());
+        }
+        if (priority < 0 || priority > 3 || unload < 0 || unload > 3_600) {
+            throw new IllegalArgumentException("priority is 0 to 3 and unload 0 to 3600 s");
+        }
+        return desk.ask(from, to, priority, unload);
+    }
+
+    private static int integer(Map<String, String> p, String k) {
+        try {
+            return Integer.parseInt(p.getOrDefault(k, "").trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(k + " must be a node number, got '" + p.getOrDefault(k, "") + "'");
+        }
+    }
+
+    private static double number(Map<String, String> p, String k, double dflt) {
+        String v = p.getOrDefault(k, "").trim();
+        try {
+            return v.isEmpty() ? dflt : Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(k + " must be a number, got '" + v + "'");
+        }
+    }
+
+    @Override
+    public String snapshot() {
+        HospitalMap map = world.map();
+        ObjectNode o = json.createObjectNode();
+        ArrayNode b = o.putArray("bounds");
+        for (double d : bounds) {
+            b.add(d);
+        }
+        o.put("worldTimeS", world.worldTimeNs() / 1e9);
+        ArrayNode shapes = o.putArray("shapes");
+        for (Wall w : map.walls()) {
+            line(shapes, "#3b4252", Math.max(0.1, w.thicknessM()), w.from().x(), w.from().y(), w.to().x(), w.to().y());
+        }
+        for (Node n : map.nodes()) {
+            shapes.addObject().put("type", "circle").put("x", n.at().x()).put("y", n.at().y()).put("r", 0.22).put("color", "#c8cfdb")
+                    .put("title", "node " + n.id() + (n.name() == null ? "" : ": " + n.name()));
+            shapes.addObject().put("type", "text").put("x", n.at().x()).put("y", n.at().y() - 0.6).put("size", 0.45)
+                    .put("color", "#7b8494").put("text", Integer.toString(n.id()));
+        }
+        for (WorldDoor wd : world.doors()) {
+            Door d = wd.spec();
+            DoorAgent a = hospital.door(wd.id());
+            String state = a == null ? "unknown" : a.state().name().toLowerCase(Locale.ROOT);
+            String color = switch (state) {
+                case "closed" -> "#c0392b";
+                case "opening", "closing" -> "#e08e0b";
+                case "open" -> "#27ae60";
+                default -> "#7f8c8d";
+            };
+            ObjectNode s = line(shapes, color, 0.35, d.from().x(), d.from().y(), d.to().x(), d.to().y());
+            s.put("id", "door-" + wd.id()).put("title", "door " + wd.id() + ": " + state);
+            s.putObject("data").put("state", state).put("open", String.format(Locale.ROOT, "%.2f", wd.openFraction()));
+        }
+        ArrayNode chairs = json.createArrayNode();
+        ArrayNode tasks = json.createArrayNode();
+        for (SimChair c : world.chairs()) {
+            ControlAgent ctl = hospital.control(c.name());
+            Pose p = c.truePose();
+            if (ctl != null) {
+                List<Integer> route = ctl.route();
+                if (route != null && !route.isEmpty()) {
+                    ObjectNode path = shapes.addObject().put("type", "line").put("color", "#2d6cb5").put("width", 0.12).put("dash", "0.4 0.3");
+                    ArrayNode pts = path.putArray("points");
+                    pts.add(p.x()).add(p.y());
+                    // What is left of the route: from the leg the chair is on.
+                    List<Integer> left = route.stream().filter(map::hasNode).toList();
+                    int from = 0;
+                    double best = Double.MAX_VALUE;
+                    for (int i = 0; i + 1 < left.size(); i++) {
+                        double d = toSegment(p, map.node(left.get(i)).at(), map.node(left.get(i + 1)).at());
+                        if (d < best - 1e-9) {
+                            best = d;
+                            from = i + 1;
+                        }
+                    }
+                    for (int i = from; i < left.size(); i++) {
+                        pts.add(map.node(left.get(i)).at().x()).add(map.node(left.get(i)).at().y());
+                    }
+                    path.put("id", "route-" + c.name());
+                }
+            }
+            ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
+                    .put("color", "#2d6cb5").put("stroke", "#ffffff").put("id", "chair-" + c.name()).put("title", c.name());
+            body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()));
+            line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
+            shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330").put("text", c.name());
+            TaskView current = null;
+            if (ctl != null) {
+                for (TaskView t : ctl.tasks()) {
+                    if (current == null && t.state().ordinal() >= TaskView.State.QUEUED.ordinal() && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
+                        current = t;
+                    }
+                    tasks.add(json.createArrayNode().add(c.name()).add(t.id()).add(t.from() + " → " + t.to())
+                            .add(t.state().name().toLowerCase(Locale.ROOT)).add(String.format(Locale.ROOT, "%.0f s", t.costS()))
+                            .add(t.reason() == null ? "" : t.reason()));
+                }
+            }
+            chairs.add(json.createArrayNode().add(c.name()).add(String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y()))
+                    .add(String.format(Locale.ROOT, "%.2f m/s", c.forwardSpeed()))
+                    .add(current == null ? "idle" : current.id() + " " + current.state().name().toLowerCase(Locale.ROOT)));
+        }
+        ArrayNode tables = o.putArray("tables");
+        table(tables, "chairs", "Chairs at " + String.format(Locale.ROOT, "t = %.0f s", world.worldTimeNs() / 1e9),
+                List.of("chair", "pose", "speed", "task"), chairs);
+        ArrayNode asked = json.createArrayNode();
+        for (FrontDesk.Asked a : List.copyOf(desk.asked)) {
+            asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
+        }
+        table(tables, "transports", "Transports asked here", List.of("id", "from → to", "state", ""), asked);
+        table(tables, "bids", "The chairs' tasks and bids (the Medical agent's auctions)", List.of("chair", "task", "from → to", "state", "cost", ""), tasks);
+        ArrayNode forms = o.putArray("forms");
+        ObjectNode f = forms.addObject().put("title", "Ask for a transport").put("action", "transport").put("button", "Ask the Medical agent");
+        ArrayNode fields = f.putArray("fields");
+        fields.addObject().put("name", "from").put("label", "from node").put("value", "3");
+        fields.addObject().put("name", "to").put("label", "to node").put("value", "9");
+        fields.addObject().put("name", "priority").put("label", "priority (0, 1.5, 3)").put("value", "3");
+        fields.addObject().put("name", "unload").put("label", "load/unload s").put("value", "30");
+        return o.toString();
+    }
+
+    private static double toSegment(Pose p, io.concord.agents.map.Point a, io.concord.agents.map.Point b) {
+        double dx = b.x() - a.x();
+        double dy = b.y() - a.y();
+        double len2 = dx * dx + dy * dy;
+        double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / len2));
+        return Math.hypot(p.x() - (a.x() + t * dx), p.y() - (a.y() + t * dy));
+    }
+
+    private ObjectNode line(ArrayNode shapes, String color, double width, double... pts) {
+        ObjectNode s = shapes.addObject().put("type", "line").put("color", color).put("width", width);
+        ArrayNode a = s.putArray("points");
+        for (double p : pts) {
+            a.add(p);
+        }
+        return s;
+    }
+
+    private void table(ArrayNode tables, String id, String title, List<String> columns, ArrayNode rows) {
+        ObjectNode t = tables.addObject().put("id", id).put("title", title);
+        ArrayNode c = t.putArray("columns");
+        columns.forEach(c::add);
+        t.set("rows", rows);
+    }
+}
