@@ -44,7 +44,7 @@ import io.concord.core.net.Transport;
  * {@code books}, {@code udp}.
  */
 public final class BenchMain {
-    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http",
+    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
             "sim", "hospital", "serial", "attack");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
@@ -105,6 +105,7 @@ public final class BenchMain {
                     case "http" -> b.http();
                     case "sim" -> b.sim();
                     case "hospital" -> b.hospital();
+                    case "console" -> b.console();
                     case "serial" -> b.serial();
                     case "attack" -> b.attack();
                     default -> throw new IllegalStateException(name);
@@ -552,6 +553,28 @@ public final class BenchMain {
         }
         md.append("\n## Windows\n").append(windows);
         Files.writeString(reportDir.resolve("sim.md"), md.toString());
+    }
+
+    private void console() throws IOException {
+        io.concord.bench.harness.ConsoleCost.Outcome o;
+        try {
+            o = io.concord.bench.harness.ConsoleCost.run(full);
+        } catch (IOException | RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IllegalStateException("the console benchmark failed", e);
+        }
+        System.out.printf(Locale.ROOT, "RESULT console chain n=%d without_us=%.1f open_us=%.1f sniff_us=%.1f open_cost=%.1f%% sniff_cost=%.1f%%%n",
+                o.links(), o.withoutUs(), o.openUs(), o.sniffUs(), o.openCost() * 100, o.sniffCost() * 100);
+        StringBuilder md = new StringBuilder(header("What the console costs", "The chain of " + o.links() + " links on a class-7 "
+                + "Platform (the container layer and the observer layer on every agent), rounds of 50, median per round; "
+                + "phases alternate (" + o.phases() + " of each): no console; the console serving a browser that shows the "
+                + "platform and safety views (every agent asked for its status every 2 s); and also sniffing one link. "
+                + "Target: under 5 % with the console open.", "Wall clock"));
+        md.append(String.format(Locale.ROOT, "| phase | µs per round | cost |%n|---|---|---|%n| no console | %.1f | |%n"
+                + "| console open (platform, safety) | %.1f | %+.1f %% |%n| and the sniffer on link3 | %.1f | %+.1f %% |%n",
+                o.withoutUs(), o.openUs(), o.openCost() * 100, o.sniffUs(), o.sniffCost() * 100));
+        Files.writeString(reportDir.resolve("console.md"), md.toString());
     }
 
     private void hospital() throws IOException {
