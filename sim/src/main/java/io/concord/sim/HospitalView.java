@@ -12,9 +12,10 @@ import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
 import io.concord.console.ConsoleView;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.Inbox;
 import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
@@ -54,38 +55,33 @@ public final class HospitalView implements ConsoleView {
 
         @Override
         protected void setup() {
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    for (int i = 0; i < asked.size(); i++) {
-                        Asked a = asked.get(i);
-                        if (!a.id().equals(m.getConversationId())) {
-                            continue;
-                        }
-                        String state = switch (m.getPerformative()) {
-                            case AGREE -> "agreed";
-                            case INFORM -> "done";
-                            case FAILURE -> "failed";
-                            case REFUSE -> "refused";
-                            default -> a.state();
-                        };
-                        String detail = a.detail();
-                        try {
-                            Content c = Content.parse(m.getContent());
-                            detail = c.get("chair") != null && !c.get("chair").isEmpty() ? "by " + c.get("chair")
-                                    : c.get("reason") != null ? c.get("reason") : detail;
-                        } catch (IllegalArgumentException e) {
-                            detail = "an answer that is not content: " + m.getContent();
-                        }
-                        asked.set(i, new Asked(a.id(), a.from(), a.to(), a.priority(), state, detail));
-                    }
+            Inbox.each(this, MessageTemplate.matchAll(), this::answered);
+        }
+
+        /** The Medical agent's AGREE, INFORM, FAILURE or REFUSE to one of the desk's requests. */
+        private void answered(AclMessage m) {
+            for (int i = 0; i < asked.size(); i++) {
+                Asked a = asked.get(i);
+                if (!a.id().equals(m.getConversationId())) {
+                    continue;
                 }
-            });
+                String state = switch (m.getPerformative()) {
+                    case AGREE -> "agreed";
+                    case INFORM -> "done";
+                    case FAILURE -> "failed";
+                    case REFUSE -> "refused";
+                    default -> a.state();
+                };
+                String detail = a.detail();
+                try {
+                    Content c = Content.parse(m.getContent());
+                    detail = c.get("chair") != null && !c.get("chair").isEmpty() ? "by " + c.get("chair")
+                            : c.get("reason") != null ? c.get("reason") : detail;
+                } catch (IllegalArgumentException e) {
+                    detail = "an answer that is not content: " + m.getContent();
+                }
+                asked.set(i, new Asked(a.id(), a.from(), a.to(), a.priority(), state, detail));
+            }
         }
 
         /** Sends the request; returns what to tell the user. Loop thread. */

@@ -13,7 +13,7 @@ import io.concord.agents.map.Node;
 import io.concord.agents.map.Point;
 import io.concord.agents.proto.Asks;
 import io.concord.agents.proto.Content;
-import io.concord.agents.proto.Inbox;
+import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;

@@ -2,7 +2,7 @@ package io.concord.agents.door;
 
 import io.concord.agents.map.Door;
 import io.concord.agents.proto.Content;
-import io.concord.agents.proto.Inbox;
+import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;

@@ -1,7 +1,7 @@
 package io.concord.agents.medical;
 
 import io.concord.agents.proto.Content;
-import io.concord.agents.proto.Inbox;
+import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;

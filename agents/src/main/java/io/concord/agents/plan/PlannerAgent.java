@@ -3,7 +3,7 @@ package io.concord.agents.plan;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Asks;
 import io.concord.agents.proto.Content;
-import io.concord.agents.proto.Inbox;
+import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;

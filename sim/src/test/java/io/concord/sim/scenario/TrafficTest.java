@@ -38,7 +38,7 @@ class TrafficTest {
         protected void setup() {
             asks = new Asks(this);
             addBehaviour(asks);
-            io.concord.agents.proto.Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM)
+            io.concord.core.agent.Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM)
                     .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), m -> orders.add(Content.parse(m.getContent())));
         }
 

@@ -1,10 +1,7 @@
-package io.concord.agents.proto;
+package io.concord.core.agent;
 
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
-import io.concord.core.agent.Agent;
-import io.concord.core.agent.Behaviour;
-import io.concord.core.agent.CyclicBehaviour;
 
 import java.util.function.Consumer;
 
