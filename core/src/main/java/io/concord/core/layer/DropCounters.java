@@ -16,26 +16,29 @@ import java.util.concurrent.atomic.LongAdder;
  */
 public final class DropCounters {
     private static final Logger LOG = LoggerFactory.getLogger(DropCounters.class);
-    private final Map<String, LongAdder> counts = new ConcurrentHashMap<>();
-    /** The same drops by the layer that made them ({@code "node"} when no layer is named): layer to reason to count. */
+    /**
+     * The drops by the layer that made them ({@link #NODE} when no layer is named): layer to
+     * reason to count. The counts by reason are sums over it, so a drop updates one counter.
+     */
     private final Map<String, Map<String, LongAdder>> byLayer = new ConcurrentHashMap<>();
-
-    /** Counts one drop. */
-    public void increment(String reason) {
-        counts.computeIfAbsent(reason, r -> new LongAdder()).increment();
-        layerCount(NODE, reason).increment();
-    }
 
     /** The layer name under which drops counted without one are kept. */
     public static final String NODE = "node";
 
-    private LongAdder layerCount(String layer, String reason) {
+    /** Counts one drop. */
+    public void increment(String reason) {
+        counter(NODE, reason).increment();
+    }
+
+    /** The counter of a layer's reason, or {@code null} before its first drop. */
+    private LongAdder existing(String layer, String reason) {
         Map<String, LongAdder> m = byLayer.get(layer);
-        if (m == null) {
-            m = byLayer.computeIfAbsent(layer, l -> new ConcurrentHashMap<>());
-        }
-        LongAdder a = m.get(reason);
-        return a != null ? a : m.computeIfAbsent(reason, r -> new LongAdder());
+        return m == null ? null : m.get(reason);
+    }
+
+    private LongAdder counter(String layer, String reason) {
+        LongAdder a = existing(layer, reason);
+        return a != null ? a : byLayer.computeIfAbsent(layer, l -> new ConcurrentHashMap<>()).computeIfAbsent(reason, r -> new LongAdder());
     }
 
     /** Reasons that are part of normal operation (a copy sent on purpose against loss): never warned about. */
@@ -51,34 +54,45 @@ public final class DropCounters {
      * so that a counted drop (a copy, many times a second) allocates nothing.
      */
     public void record(String node, String layer, String reason, String detail) {
-        layerCount(layer == null ? NODE : layer, reason).increment();
-        LongAdder a = counts.get(reason);
+        String l = layer == null ? NODE : layer;
+        LongAdder a = existing(l, reason);
         if (a == null) {
-            a = counts.computeIfAbsent(reason, r -> new LongAdder());
-            if (layer != null) {
-                detail = layer + ": " + detail;
-            }
-            if (EXPECTED.contains(reason)) {
-                LOG.debug("{} dropped a message ({}): {}", node, reason, detail);
-            } else {
-                LOG.warn("{} dropped a message ({}): {}. Further drops for this reason are only counted; "
-                    + "see AgentRuntime.drops()", node, reason, detail);
+            boolean first = get(reason) == 0;
+            a = counter(l, reason);
+            if (first) {
+                if (layer != null) {
+                    detail = layer + ": " + detail;
+                }
+                if (EXPECTED.contains(reason)) {
+                    LOG.debug("{} dropped a message ({}): {}", node, reason, detail);
+                } else {
+                    LOG.warn("{} dropped a message ({}): {}. Further drops for this reason are only counted; "
+                        + "see AgentRuntime.drops()", node, reason, detail);
+                }
             }
         }
         a.increment();
     }
 
-    /** Drops counted for a reason. */
+    /** Drops counted for a reason, by any layer. */
     public long get(String reason) {
-        LongAdder a = counts.get(reason);
-        return a == null ? 0 : a.sum();
+        long t = 0;
+        for (Map<String, LongAdder> m : byLayer.values()) {
+            LongAdder a = m.get(reason);
+            if (a != null) {
+                t += a.sum();
+            }
+        }
+        return t;
     }
 
     /** All drops. */
     public long total() {
         long t = 0;
-        for (LongAdder a : counts.values()) {
-            t += a.sum();
+        for (Map<String, LongAdder> m : byLayer.values()) {
+            for (LongAdder a : m.values()) {
+                t += a.sum();
+            }
         }
         return t;
     }
@@ -86,7 +100,7 @@ public final class DropCounters {
     /** A sorted copy: reason to count. */
     public Map<String, Long> snapshot() {
         Map<String, Long> m = new TreeMap<>();
-        counts.forEach((k, v) -> m.put(k, v.sum()));
+        byLayer.values().forEach(reasons -> reasons.forEach((k, v) -> m.merge(k, v.sum(), Long::sum)));
         return m;
     }
 
