@@ -55,6 +55,8 @@ public final class ObserverLayer extends Layer {
         }
     }
 
+    private static final String RATE_DETAIL = "more than " + EVENTS_PER_SECOND + " messages a second to report to a sniffer";
+
     private final Map<String, Sniffer> sniffers = new LinkedHashMap<>();
     private List<io.concord.core.layer.Layer> stack = List.of();
     private LayerContext ctx;
@@ -138,8 +140,7 @@ public final class ObserverLayer extends Layer {
             Sniffer s = sniffers.get(key);
             if (s == null) {
                 if (sniffers.size() >= MAX_SNIFFERS) {
-                    ctx.drop(Envelope.outgoing(m, self, null), "sniff-limit",
-                            m.getSender().name() + " asked to sniff " + self.name() + ", which has " + MAX_SNIFFERS + " sniffers already");
+                    limit(m.getSender().name() + " asked to sniff " + self.name() + ", which has " + MAX_SNIFFERS + " sniffers already");
                     answer(m, Performative.REFUSE, "{\"reason\":\"" + MAX_SNIFFERS + " sniffers already\"}");
                     return;
                 }
@@ -214,8 +215,7 @@ public final class ObserverLayer extends Layer {
             }
             if (!s.bucket.take(now)) {
                 s.missed++;
-                ctx.host().drops().record(ctx.host().nodeName(), name(), "sniff-limit",
-                        "more than " + EVENTS_PER_SECOND + " messages a second to report to " + s.who.name());
+                limit(RATE_DETAIL);   // a constant: the flooded path allocates nothing
                 continue;
             }
             if (json == null) {
@@ -233,6 +233,11 @@ public final class ObserverLayer extends Layer {
         if (gone != null) {
             gone.forEach(sniffers::remove);
         }
+    }
+
+    /** Counts what the service refused to do ({@code sniff-limit}). */
+    private void limit(String detail) {
+        ctx.host().drops().record(ctx.host().nodeName(), name(), "sniff-limit", detail);
     }
 
     private String eventJson(String dir, AclMessage m, AID to) {

@@ -32,6 +32,13 @@ class ObserverTest {
         return m;
     }
 
+    /** Starts a keeping agent and waits until the lists hold it. */
+    private static void join(PlatformWorld w, String name, PlatformServicesTest.Inbox agent) {
+        w.everStarted.add(name + "@sim");
+        w.live.put(name, w.platform.startAgent(name, agent));
+        assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+    }
+
     private static List<String> events(PlatformServicesTest.Inbox s) {
         return s.got.stream().filter(m -> m.getPerformative() == Performative.INFORM).map(AclMessage::getContent)
                 .collect(Collectors.toList());
@@ -43,11 +50,8 @@ class ObserverTest {
             PlatformServicesTest.Inbox b = new PlatformServicesTest.Inbox();
             PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
             w.start("a");
-            w.everStarted.add("b@sim");
-            w.live.put("b", w.platform.startAgent("b", b));
-            w.everStarted.add("sniffer@sim");
-            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
-            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            join(w, "b", b);
+            join(w, "sniffer", s);
             Agent a = w.rt.agent(w.live.get("a"));
             Agent sn = w.rt.agent(w.live.get("sniffer"));
             sn.send(ask(Performative.SUBSCRIBE, "a", "sniff", "s1"));
@@ -80,9 +84,7 @@ class ObserverTest {
             PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
             w.start("a");
             w.start("b");
-            w.everStarted.add("sniffer@sim");
-            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
-            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            join(w, "sniffer", s);
             Agent a = w.rt.agent(w.live.get("a"));
             w.rt.agent(w.live.get("sniffer")).send(ask(Performative.SUBSCRIBE, "a", "sniff", "s1"));
             w.sim.runFor(ObserverLayer.LEASE_MS + 1_000);
@@ -100,9 +102,7 @@ class ObserverTest {
         try (PlatformWorld w = world()) {
             PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
             w.start("a");
-            w.everStarted.add("sniffer@sim");
-            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
-            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            join(w, "sniffer", s);
             w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "a", "status", "q1"));
             assertTrue(w.sim.runUntil(() -> !events(s).isEmpty(), 2_000));
             String st = events(s).get(0);
@@ -118,9 +118,7 @@ class ObserverTest {
         try (PlatformWorld w = world()) {
             PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
             w.start("a");
-            w.everStarted.add("sniffer@sim");
-            w.live.put("sniffer", w.platform.startAgent("sniffer", s));
-            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            join(w, "sniffer", s);
             for (int i = 0; i <= ObserverLayer.MAX_SNIFFERS; i++) {
                 w.rt.agent(w.live.get("sniffer")).send(ask(Performative.SUBSCRIBE, "a", "sniff", "s" + i));
             }
