@@ -69,22 +69,11 @@ public final class Console implements AutoCloseable {
          */
         public static Config parse(String hostPort) {
             String s = hostPort.trim();
-            String host = "127.0.0.1";
-            int colon = s.lastIndexOf(':');
-            if (colon >= 0) {
-                host = s.substring(0, colon);
-                s = s.substring(colon + 1);
-            }
-            if (host.startsWith("[") && host.endsWith("]")) {
-                host = host.substring(1, host.length() - 1);
-            }
-            int port;
-            try {
-                port = Integer.parseInt(s);
-            } catch (NumberFormatException e) {
+            io.concord.core.net.Address a = s.contains(":") ? io.concord.core.net.Address.parse(s) : null;
+            if (a == null && !s.matches("[0-9]{1,5}")) {
                 throw new IllegalArgumentException("the console is given as [host:]port, e.g. 7070 or 0.0.0.0:7070; got '" + hostPort + "'");
             }
-            return port(port).withHost(host.isEmpty() ? "127.0.0.1" : host);
+            return a != null ? port(a.port()).withHost(a.host()) : port(Integer.parseInt(s));
         }
 
         public Config withHost(String h) {

@@ -4,7 +4,8 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.acl.MessageTemplate;
+import io.concord.core.agent.Inbox;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.layers.observe.ObserverLayer;
 import io.concord.layers.platform.AgentEntry;
@@ -54,7 +55,7 @@ final class ConsoleAgent extends Agent {
     private final Map<String, Deque<long[]>> history = new HashMap<>();
     private final Map<String, Long> viewDue = new HashMap<>();
     final AtomicLong malformed = new AtomicLong();
-    private String lastPlatform;
+    private boolean listsChanged = true;
     private String container;
     private long term = -1;
     private long containerSinceMs;
@@ -68,37 +69,32 @@ final class ConsoleAgent extends Agent {
 
     @Override
     protected void setup() {
-        addBehaviour(new CyclicBehaviour() {
-            @Override
-            public void action() {
-                AclMessage m = myAgent.receive();
-                if (m == null) {
-                    block();
-                } else {
-                    take(m);
-                }
-            }
-        });
+        Inbox.each(this, MessageTemplate.matchOntology(ObserverLayer.ONTOLOGY), this::take);
         addBehaviour(new TickerBehaviour(this, TICK_MS) {
             @Override
             protected void onTick() {
                 tick();
             }
         });
-        Platform.containerLayer(runtime(), getAID()).addListener(c -> platform());
+        // A change only marks the lists dirty (and notes when the container changed): the event is
+        // built at most once a tick, however many changes a tick sees.
+        Platform.containerLayer(runtime(), getAID()).addListener(c -> {
+            listsChanged = true;
+            if (c.containerName() != null && (!c.containerName().equals(container) || c.term() != term)) {
+                container = c.containerName();
+                term = c.term();
+                containerSinceMs = currentTimeMillis();
+            }
+        });
     }
 
-    /** The lists changed (or a tick): a new platform event if what it shows changed. */
+    /** A new platform event, if the lists changed since the last one. */
     private void platform() {
         ContainerLayer c = Platform.containerLayer(runtime(), getAID());
-        if (c == null) {
+        if (c == null || !listsChanged) {
             return;
         }
-        if (c.containerName() != null && (!c.containerName().equals(container) || c.term() != term)) {
-            container = c.containerName();
-            term = c.term();
-            containerSinceMs = currentTimeMillis();
-        }
+        listsChanged = false;
         ObjectNode o = json.createObjectNode();
         o.put("platform", runtime().platformName());
         o.put("console", getAID().name());
@@ -110,11 +106,7 @@ final class ConsoleAgent extends Agent {
         o.set("gal", entries(c.globalAgents()));
         ArrayNode f = o.putArray("facilitators");
         c.facilitators().forEach(f::add);
-        String s = o.toString();
-        if (!s.equals(lastPlatform)) {
-            lastPlatform = s;
-            hub.publish("platform", s);
-        }
+        hub.publish("platform", o.toString());
     }
 
     private ArrayNode entries(java.util.Collection<AgentEntry> list) {
@@ -145,6 +137,9 @@ final class ConsoleAgent extends Agent {
 
     private void tick() {
         platform();
+        if (hub.open() == 0 && sniffing.isEmpty()) {
+            return;   // nobody watches: nothing to ask the agents
+        }
         long now = currentTimeMillis();
         Set<String> known = known();
         // Sniffing: what the open browsers picked, renewed before the lease ends.
@@ -181,7 +176,7 @@ final class ConsoleAgent extends Agent {
                 }
                 send(observe(Performative.QUERY_REF, a, "status", "status-" + (++conversations)));
             }
-            status.put(getAID().name(), parse(Platform.containerLayer(runtime(), getAID()) == null ? null : selfStatus()));
+            status.put(getAID().name(), parse(selfStatus()));
             status.keySet().retainAll(withSelf(known));
             history.keySet().retainAll(withSelf(known));
             publishSafety(now);
@@ -232,7 +227,7 @@ final class ConsoleAgent extends Agent {
     }
 
     private void take(AclMessage m) {
-        if (!ObserverLayer.ONTOLOGY.equals(m.getOntology()) || m.getPerformative() != Performative.INFORM || m.getSender() == null) {
+        if (m.getPerformative() != Performative.INFORM || m.getSender() == null) {
             return;   // AGREEs to subscriptions, anything else: nothing to show
         }
         String conv = m.getConversationId() == null ? "" : m.getConversationId();
@@ -287,12 +282,13 @@ final class ConsoleAgent extends Agent {
             Map<String, Long> byThreat = new LinkedHashMap<>();
             Threats.ORDER.forEach(t -> byThreat.put(t, 0L));
             ObjectNode layers = a.putObject("layers");
+            ObjectNode threatOf = a.putObject("threatOf");
             s.path("drops").fields().forEachRemaining(l -> {
                 ObjectNode ln = layers.putObject(l.getKey());
                 l.getValue().fields().forEachRemaining(r -> {
                     long v = r.getValue().asLong();
                     ln.put(r.getKey(), v);
-                    ln.put(r.getKey() + "@threat", Threats.of(r.getKey()));
+                    threatOf.put(r.getKey(), Threats.of(r.getKey()));
                     byThreat.merge(Threats.of(r.getKey()), v, Long::sum);
                 });
             });

@@ -206,13 +206,8 @@ final class ConsoleServer {
     }
 
     private void last(HttpExchange x, String topic) throws IOException {
-        String e = hub.last(topic);
-        if (e == null) {
-            answer(x, 200, "application/json", "null");
-            return;
-        }
-        int data = e.indexOf("data: ");
-        answer(x, 200, "application/json", e.substring(data + 6, e.length() - 2));
+        String json = hub.last(topic);
+        answer(x, 200, "application/json", json == null ? "null" : json);
     }
 
     private void views(HttpExchange x) throws IOException {

@@ -1,7 +1,6 @@
 package io.concord.console;
 
 import java.util.ArrayDeque;
-import java.util.Collections;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -29,7 +28,6 @@ final class Hub {
         final Set<String> sniff;
         final String conversation;
         final ArrayBlockingQueue<String> queue = new ArrayBlockingQueue<>(QUEUE);
-        final AtomicLong dropped = new AtomicLong();
         final AtomicLong chars = new AtomicLong();
         volatile boolean closed;
 
@@ -84,9 +82,9 @@ final class Hub {
             }
             Client c = new Client(topics, sniff, conversation);
             for (String t : topics) {
-                String e = last.get(t);
-                if (e != null) {
-                    offer(c, e);
+                String json = last.get(t);
+                if (json != null) {
+                    offer(c, frame(t, json));
                 }
             }
             synchronized (sniffed) {
@@ -136,7 +134,7 @@ final class Hub {
         return s;
     }
 
-    /** The last event of a topic (for a plain GET), or {@code null}. */
+    /** The last event of a topic, as JSON (for a plain GET), or {@code null}. */
     String last(String topic) {
         return last.get(topic);
     }
@@ -144,7 +142,7 @@ final class Hub {
     /** Sends an event of a topic to every stream that listens to it; kept for streams opened later. */
     void publish(String topic, String json) {
         String event = frame(topic, json);
-        last.put(topic, event);
+        last.put(topic, json);
         for (Client c : clients) {
             if (c.topics.contains(topic)) {
                 offer(c, event);
@@ -168,15 +166,8 @@ final class Hub {
         }
     }
 
-    int kept() {
-        synchronized (sniffed) {
-            return sniffed.size();
-        }
-    }
-
     private void offer(Client c, String event) {
         if (c.chars.get() + event.length() > MAX_CHARS || !c.queue.offer(event)) {
-            c.dropped.incrementAndGet();
             slowDrops.incrementAndGet();
         } else {
             c.chars.addAndGet(event.length());
@@ -185,9 +176,5 @@ final class Hub {
 
     static String frame(String topic, String json) {
         return "event: " + topic + "\ndata: " + json + "\n\n";
-    }
-
-    List<Client> clients() {
-        return Collections.unmodifiableList(clients);
     }
 }

@@ -162,9 +162,7 @@
     if (!a) { $('safety-detail').textContent = ''; return; }
     const lines = [a.agent + ' — drops by layer and reason:'];
     for (const [layer, reasons] of Object.entries(a.layers)) {
-      for (const [r, v] of Object.entries(reasons)) {
-        if (!r.endsWith('@threat')) lines.push('  ' + layer + ' / ' + r + ' (' + reasons[r + '@threat'] + '): ' + v);
-      }
+      for (const [r, v] of Object.entries(reasons)) lines.push('  ' + layer + ' / ' + r + ' (' + a.threatOf[r] + '): ' + v);
     }
     if (lines.length === 1) lines.push('  none');
     $('safety-detail').textContent = lines.join('\n');
