@@ -2,9 +2,10 @@ package io.concord.console;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.Inbox;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
@@ -37,17 +38,8 @@ class ConsoleBrowserTest {
         @Override
         protected void setup() {
             Platform.of(this).register(ServiceDescription.of("book-selling", getLocalName()));
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                    } else if (m.getPerformative() == Performative.REQUEST) {
-                        myAgent.send(m.createReply().setPerformative(Performative.AGREE).setContent("agreed: " + m.getContent()));
-                    }
-                }
-            });
+            Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST),
+                    m -> send(m.createReply().setPerformative(Performative.AGREE).setContent("agreed: " + m.getContent())));
         }
     }
 
