@@ -250,6 +250,8 @@ public final class HttpMtp implements Gateway {
             if (at != null) {
                 checkForeignSender(in, at.platformName());
             }
+        } catch (BadAcl e) {
+            return refuse(x, 400, "http-bad-acl", e.getMessage());
         } catch (IllegalArgumentException e) {
             return refuse(x, 400, "http-malformed", e.getMessage());
         }
@@ -307,6 +309,13 @@ public final class HttpMtp implements Gateway {
         return b.isEmpty() ? null : b;
     }
 
+    /** A request whose envelope is fine but whose ACL message does not parse. */
+    static final class BadAcl extends IllegalArgumentException {
+        BadAcl(String message) {
+            super(message);
+        }
+    }
+
     /** An accepted request: its envelope and its ACL message. */
     record Inbound(FipaEnvelope envelope, AclMessage message) {
     }
@@ -337,7 +346,7 @@ public final class HttpMtp implements Gateway {
         try {
             m = StringAclCodec.INSTANCE.decode(payload.trim());
         } catch (AclParseException e) {
-            throw new IllegalArgumentException("the payload is not a FIPA string ACL message: " + e.getMessage());
+            throw new BadAcl("the payload is not a FIPA string ACL message: " + e.getMessage());
         }
         if (m.getSender() == null) {
             if (env.from() == null) {
@@ -478,7 +487,23 @@ public final class HttpMtp implements Gateway {
         if (sender != null && ctx.platformName().equalsIgnoreCase(sender.platform())) {
             m.setSender(new AID(sender.name(), addresses().toArray(new String[0])));
         }
-        String payload = StringAclCodec.INSTANCE.encodeToString(m);
+        String payload;
+        try {
+            payload = StringAclCodec.INSTANCE.encodeForJade(m);
+        } catch (IllegalArgumentException unwritable) {
+            drops.record("http", "http-unwritable", unwritable.getMessage());
+            if (warned.size() < 1024 && warned.add(receiver.platform() + " http-unwritable")) {
+                LOG.warn("HTTP MTP did not send {}'s message to {}: {}. The sender is told FAILURE; further such "
+                        + "messages to {} are only counted", sender == null ? "an agent" : sender.name(), receiver.name(),
+                        unwritable.getMessage(), receiver.platform());
+            }
+            if (message.getPerformative() != Performative.FAILURE && sender != null
+                    && ctx.platformName().equalsIgnoreCase(sender.platform())) {
+                ctx.deliver(MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: "
+                        + unwritable.getMessage()), sender);
+            }
+            return;
+        }
         Runnable post = () -> {
             String problem = null;
             for (String url : receiver.addresses()) {

@@ -7,22 +7,52 @@ import java.time.ZoneId;
 import java.time.ZoneOffset;
 import java.time.ZonedDateTime;
 import java.time.format.DateTimeFormatter;
+import java.util.Calendar;
+import java.util.GregorianCalendar;
+import java.util.TimeZone;
 
 /**
  * FIPA date-times ({@code YYYYMMDDThhmmssSSS}, SC00070): absolute in UTC with a trailing
  * {@code Z}, absolute in local time without it (as JADE reads them), or relative to now with a
  * leading {@code +}.
+ *
+ * <p>The calendar is JADE's ({@link GregorianCalendar}): Gregorian from 15 October 1582, Julian
+ * before, so a date JADE writes for an instant before 1582 is read as the same instant, and the
+ * other way round. Years run from 1 to 9999, the four digits the format has.
  */
 public final class FipaDates {
     private static final DateTimeFormatter UTC =
             DateTimeFormatter.ofPattern("uuuuMMdd'T'HHmmssSSS'Z'").withZone(ZoneOffset.UTC);
+    /** 1582-10-15T00:00Z, the first instant of the Gregorian calendar (from here on java.time agrees). */
+    static final long GREGORIAN_CUTOVER_MS = -12219292800000L;
+    /** 10000-01-01T00:00Z: from here the year needs five digits. */
+    private static final long YEAR_10000_MS = 253402300800000L;
 
     private FipaDates() {
     }
 
-    /** Formats epoch milliseconds as {@code YYYYMMDDThhmmssSSSZ} in UTC. */
+    /**
+     * Formats epoch milliseconds as {@code YYYYMMDDThhmmssSSSZ} in UTC.
+     *
+     * @throws IllegalArgumentException if the instant is outside the years 1 to 9999
+     */
     public static String format(long epochMs) {
-        return UTC.format(java.time.Instant.ofEpochMilli(epochMs));
+        if (epochMs >= GREGORIAN_CUTOVER_MS) {
+            if (epochMs >= YEAR_10000_MS) {
+                throw new IllegalArgumentException("a FIPA date-time has a four-digit year; " + epochMs
+                        + " ms is after the year 9999");
+            }
+            return UTC.format(java.time.Instant.ofEpochMilli(epochMs));
+        }
+        GregorianCalendar c = new GregorianCalendar(TimeZone.getTimeZone("UTC"));
+        c.setTimeInMillis(epochMs);
+        if (c.get(Calendar.ERA) == GregorianCalendar.BC) {
+            throw new IllegalArgumentException("a FIPA date-time has a four-digit year from 1; " + epochMs
+                    + " ms is before the year 1");
+        }
+        return String.format("%04d%02d%02dT%02d%02d%02d%03dZ", c.get(Calendar.YEAR), c.get(Calendar.MONTH) + 1,
+                c.get(Calendar.DAY_OF_MONTH), c.get(Calendar.HOUR_OF_DAY), c.get(Calendar.MINUTE),
+                c.get(Calendar.SECOND), c.get(Calendar.MILLISECOND));
     }
 
     /**
@@ -67,11 +97,30 @@ public final class FipaDates {
                 return now.plusYears(f[0]).plusMonths(f[1]).plusDays(f[2]).plusHours(f[3]).plusMinutes(f[4])
                         .plusSeconds(f[5]).plusNanos(f[6] * 1_000_000L).toInstant().toEpochMilli();
             }
-            LocalDateTime ldt = LocalDateTime.of(f[0], f[1], f[2], f[3], f[4], f[5], f[6] * 1_000_000);
-            ZoneId zone = utc ? ZoneOffset.UTC : ZoneId.systemDefault();
-            return ldt.atZone(zone).toInstant().toEpochMilli();
-        } catch (java.time.DateTimeException | ArithmeticException e) {
+            if (f[0] > 1582 || (f[0] == 1582 && (f[1] > 10 || (f[1] == 10 && f[2] >= 15)))) {
+                LocalDateTime ldt = LocalDateTime.of(f[0], f[1], f[2], f[3], f[4], f[5], f[6] * 1_000_000);
+                ZoneId zone = utc ? ZoneOffset.UTC : ZoneId.systemDefault();
+                return ldt.atZone(zone).toInstant().toEpochMilli();
+            }
+            return julian(f, utc);
+        } catch (java.time.DateTimeException | ArithmeticException | IllegalArgumentException e) {
             throw new AclParseException(at, "a valid calendar date-time", "'" + v + "' (" + e.getMessage() + ")");
         }
+    }
+
+    /** A date before 15 October 1582, in the Julian calendar as JADE's GregorianCalendar reads it. */
+    private static long julian(int[] f, boolean utc) {
+        if (f[0] < 1) {
+            throw new IllegalArgumentException("the year 0 does not exist; years run from 0001");
+        }
+        if (f[0] == 1582 && f[1] == 10 && f[2] > 4) {
+            throw new IllegalArgumentException("4 October 1582 (Julian) was followed by 15 October (Gregorian)");
+        }
+        GregorianCalendar c = new GregorianCalendar(utc ? TimeZone.getTimeZone("UTC") : TimeZone.getDefault());
+        c.setLenient(false);
+        c.clear();
+        c.set(f[0], f[1] - 1, f[2], f[3], f[4], f[5]);
+        c.set(Calendar.MILLISECOND, f[6]);
+        return c.getTimeInMillis();
     }
 }

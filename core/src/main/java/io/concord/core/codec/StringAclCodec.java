@@ -70,145 +70,247 @@ public final class StringAclCodec implements AclCodec {
         return decode(new String(data, offset, length, charset));
     }
 
-    /** Writes a message in JADE's layout. */
+    /**
+     * Writes a message in JADE's layout so that this codec reads back exactly the same message,
+     * whatever it holds (Concord's own hops, logs). What JADE 4.3 cannot read in some field, such as
+     * a protocol name that is not a word, is still written (quoted); {@link #encodeForJade} refuses
+     * such a message instead.
+     *
+     * @throws IllegalArgumentException only for a {@code :reply-by} outside the years 1 to 9999
+     */
     public String encodeToString(AclMessage m) {
-        StringBuilder sb = new StringBuilder(256);
-        sb.append('(').append(m.getPerformative().wireName()).append('\n');
-        if (m.getSender() != null) {
-            sb.append(" :sender  ");
-            writeAid(sb, m.getSender());
-            sb.append('\n');
-        }
-        if (!m.getReceivers().isEmpty()) {
-            sb.append(" :receiver  ");
-            writeAidSet(sb, m.getReceivers());
-            sb.append('\n');
-        }
-        if (!m.getReplyTo().isEmpty()) {
-            sb.append(" :reply-to  ");
-            writeAidSet(sb, m.getReplyTo());
-            sb.append('\n');
-        }
-        boolean base64 = false;
-        if (m.hasByteSequenceContent()) {
-            sb.append(" :content  ");
-            writeQuoted(sb, Base64.getEncoder().encodeToString(m.getByteSequenceContent()));
-            sb.append('\n');
-            base64 = true;
-        } else if (m.getContent() != null) {
-            sb.append(" :content  ");
-            writeContent(sb, m.getContent());
-            sb.append('\n');
-        }
-        slot(sb, "reply-with", m.getReplyWith());
-        slot(sb, "in-reply-to", m.getInReplyTo());
-        slot(sb, "encoding", m.getEncoding());
-        slot(sb, "language", m.getLanguage());
-        slot(sb, "ontology", m.getOntology());
-        if (m.hasReplyBy()) {
-            sb.append(" :reply-by  ").append(FipaDates.format(m.getReplyByEpochMs()));
-        }
-        if (m.getProtocol() != null) {
-            sb.append("\n :protocol  ");
-            writeValue(sb, m.getProtocol());
-        }
-        if (m.getConversationId() != null) {
-            sb.append("\n :conversation-id  ");
-            writeValue(sb, m.getConversationId());
-        }
-        if (base64) {
-            sb.append(" :X-JADE-Encoding Base64");
-        }
-        for (Map.Entry<String, String> e : m.getUserDefinedParameters().entrySet()) {
-            sb.append(" :X-");
-            sb.append(e.getKey());
-            sb.append(' ');
-            writeValue(sb, e.getValue());
-        }
-        sb.append(" )");
-        return sb.toString();
-    }
-
-    private static void slot(StringBuilder sb, String name, String value) {
-        if (value != null) {
-            sb.append(" :").append(name).append("  ");
-            writeValue(sb, value);
-            sb.append(' ');
-        }
-    }
-
-    private static void writeAidSet(StringBuilder sb, List<AID> aids) {
-        sb.append("(set ");
-        for (AID a : aids) {
-            writeAid(sb, a);
-            sb.append(' ');
-        }
-        sb.append(')');
-    }
-
-    private static void writeAid(StringBuilder sb, AID aid) {
-        sb.append("( agent-identifier :name ");
-        writeValue(sb, aid.name());
-        sb.append(' ');
-        if (!aid.addresses().isEmpty()) {
-            sb.append(" :addresses (sequence ");
-            for (String a : aid.addresses()) {
-                writeValue(sb, a);
-                sb.append(' ');
-            }
-            sb.append(')');
-        }
-        if (!aid.resolvers().isEmpty()) {
-            sb.append(" :resolvers (sequence ");
-            for (AID r : aid.resolvers()) {
-                writeAid(sb, r);
-                sb.append(' ');
-            }
-            sb.append(')');
-        }
-        for (Map.Entry<String, String> e : aid.userDefined().entrySet()) {
-            sb.append(" :X-").append(e.getKey()).append(' ');
-            writeValue(sb, e.getValue());
-        }
-        sb.append(')');
-    }
-
-    private static void writeContent(StringBuilder sb, String content) {
-        if (content.endsWith("\\")) {
-            writeByteString(sb, content);
-        } else {
-            writeQuoted(sb, content);
-        }
+        return new Writer(false).message(m);
     }
 
     /**
-     * JADE escapes only the quote, so a value ending in a backslash would escape its closing quote:
-     * such a value is written as a byte string, which needs no escaping at all.
+     * Writes a message so that JADE 4.3's parser reads back every field as it is here.
+     *
+     * @throws IllegalArgumentException naming the field JADE cannot read, and why: a {@code :protocol}
+     *         that is not a word, an address with spaces, parentheses, quotes or non-ASCII characters,
+     *         more than one value ending in a backslash with non-ASCII text, a {@code :reply-by}
+     *         outside the years 1 to 9999
      */
-    private static void writeByteString(StringBuilder sb, String v) {
-        sb.append('#').append(v.getBytes(StandardCharsets.UTF_8).length).append('"').append(v);
+    public String encodeForJade(AclMessage m) {
+        return new Writer(true).message(m);
     }
 
-    private static void writeValue(StringBuilder sb, String v) {
-        if (isPlainWord(v)) {
-            sb.append(v);
-        } else if (v.endsWith("\\")) {
-            writeByteString(sb, v);
-        } else {
-            writeQuoted(sb, v);
+    /**
+     * One message's writer.
+     *
+     * <p>JADE escapes only the quote, so a quoted value that ends in a backslash looks as if its
+     * closing quote were escaped. JADE's lexer takes the longest string it can, so it still reads
+     * such a value right when no other quote follows it in the message: the writer puts one such
+     * value (the content first) as the message's last slot. Any other one is written as a byte
+     * string {@code #n"...}, which needs no escaping; JADE counts its length in characters where
+     * FIPA counts bytes, so for JADE that only works for ASCII text.
+     */
+    private static final class Writer {
+        private final boolean forJade;
+        private final StringBuilder sb = new StringBuilder(256);
+        private String lastSlot;
+        private String lastValue;
+
+        Writer(boolean forJade) {
+            this.forJade = forJade;
         }
-    }
 
-    private static void writeQuoted(StringBuilder sb, String v) {
-        sb.append('"');
-        for (int i = 0; i < v.length(); i++) {
-            char c = v.charAt(i);
-            if (c == '"') {
-                sb.append('\\');
+        String message(AclMessage m) {
+            sb.append('(').append(m.getPerformative().wireName()).append('\n');
+            if (m.getSender() != null) {
+                sb.append(" :sender  ");
+                writeAid(m.getSender());
+                sb.append('\n');
             }
-            sb.append(c);
+            if (!m.getReceivers().isEmpty()) {
+                sb.append(" :receiver  ");
+                writeAidSet(m.getReceivers());
+                sb.append('\n');
+            }
+            if (!m.getReplyTo().isEmpty()) {
+                sb.append(" :reply-to  ");
+                writeAidSet(m.getReplyTo());
+                sb.append('\n');
+            }
+            boolean base64 = false;
+            if (m.hasByteSequenceContent() && m.getByteSequenceContent().length == 0) {
+                // JADE reads :X-JADE-Encoding only with some content; "no bytes" reads as empty text.
+                sb.append(" :content  \"\"\n");
+            } else if (m.hasByteSequenceContent()) {
+                sb.append(" :content  ");
+                writeQuoted(Base64.getEncoder().encodeToString(m.getByteSequenceContent()));
+                sb.append('\n');
+                base64 = true;
+            } else if (m.getContent() != null) {
+                String c = m.getContent();
+                if (!goesLast("content", c)) {
+                    sb.append(" :content  ");
+                    writeQuoted(c);
+                    sb.append('\n');
+                }
+            }
+            slot("reply-with", m.getReplyWith());
+            slot("in-reply-to", m.getInReplyTo());
+            slot("encoding", m.getEncoding());
+            slot("language", m.getLanguage());
+            slot("ontology", m.getOntology());
+            if (m.hasReplyBy()) {
+                sb.append(" :reply-by  ").append(FipaDates.format(m.getReplyByEpochMs()));
+            }
+            if (m.getProtocol() != null) {
+                sb.append("\n :protocol  ");
+                writeProtocol(m.getProtocol());
+            }
+            if (m.getConversationId() != null && !goesLast("conversation-id", m.getConversationId())) {
+                sb.append("\n :conversation-id  ");
+                writeValue("conversation-id", m.getConversationId());
+            }
+            if (base64) {
+                sb.append(" :X-JADE-Encoding Base64");
+            }
+            for (Map.Entry<String, String> e : m.getUserDefinedParameters().entrySet()) {
+                if (!goesLast("X-" + e.getKey(), e.getValue())) {
+                    sb.append(" :X-").append(e.getKey()).append(' ');
+                    writeValue("X-" + e.getKey(), e.getValue());
+                }
+            }
+            if (lastSlot != null) {
+                sb.append("\n :").append(lastSlot).append("  ");
+                writeQuoted(lastValue);
+            }
+            sb.append(" )");
+            return sb.toString();
         }
-        sb.append('"');
+
+        private void slot(String name, String value) {
+            if (value != null && !goesLast(name, value)) {
+                sb.append(" :").append(name).append("  ");
+                writeValue(name, value);
+                sb.append(' ');
+            }
+        }
+
+        /**
+         * Keeps the slot for the end of the message if its value must be quoted (content always is)
+         * and ends in a backslash, and the last place is still free (the content asks first).
+         */
+        private boolean goesLast(String slot, String v) {
+            if (lastSlot != null || !v.endsWith("\\") || (!slot.equals("content") && isPlainWord(v))) {
+                return false;
+            }
+            lastSlot = slot;
+            lastValue = v;
+            return true;
+        }
+
+        private void writeAidSet(List<AID> aids) {
+            sb.append("(set ");
+            for (AID a : aids) {
+                writeAid(a);
+                sb.append(' ');
+            }
+            sb.append(')');
+        }
+
+        private void writeAid(AID aid) {
+            sb.append("( agent-identifier :name ");
+            writeValue("the AID name", aid.name());
+            sb.append(' ');
+            if (!aid.addresses().isEmpty()) {
+                sb.append(" :addresses (sequence ");
+                for (String a : aid.addresses()) {
+                    writeAddress(aid, a);
+                    sb.append(' ');
+                }
+                sb.append(')');
+            }
+            if (!aid.resolvers().isEmpty()) {
+                sb.append(" :resolvers (sequence ");
+                for (AID r : aid.resolvers()) {
+                    writeAid(r);
+                    sb.append(' ');
+                }
+                sb.append(')');
+            }
+            for (Map.Entry<String, String> e : aid.userDefined().entrySet()) {
+                sb.append(" :X-").append(e.getKey()).append(' ');
+                writeValue("the AID slot X-" + e.getKey(), e.getValue());
+            }
+            sb.append(')');
+        }
+
+        /** JADE reads {@code :protocol} only as a bare word. */
+        private void writeProtocol(String v) {
+            if (isPlainWord(v)) {
+                sb.append(v);
+            } else if (forJade) {
+                throw new IllegalArgumentException("the protocol '" + v + "' cannot be sent to JADE, whose parser reads "
+                        + ":protocol only as a word (printable ASCII without spaces, quotes or parentheses, not "
+                        + "starting with a digit, '-', '#' or ':'); name the protocol like fipa-request");
+            } else {
+                writeValue("protocol", v);
+            }
+        }
+
+        /** JADE reads an address bare or quoted, but not one with spaces, parentheses or quotes. */
+        private void writeAddress(AID aid, String a) {
+            if (isPlainWord(a)) {
+                sb.append(a);
+                return;
+            }
+            if (forJade) {
+                for (int i = 0; i < a.length(); i++) {
+                    char c = a.charAt(i);
+                    if (c <= 0x20 || c >= 0x7f || c == '"' || c == '(' || c == ')') {
+                        throw new IllegalArgumentException("the address '" + a + "' of " + aid.name() + " cannot be sent "
+                                + "to JADE, whose parser reads no spaces, quotes, parentheses or non-ASCII characters in "
+                                + "an address; write it as a URL (percent-encoded)");
+                    }
+                }
+                if (a.endsWith("\\")) {
+                    throw new IllegalArgumentException("the address '" + a + "' of " + aid.name() + " cannot be sent "
+                            + "to JADE: it is not a word and ends in a backslash");
+                }
+            }
+            writeValue("an address", a);
+        }
+
+        /** Bare if a word, else quoted; a quoted value that ends in a backslash as a byte string. */
+        private void writeValue(String slot, String v) {
+            if (isPlainWord(v)) {
+                sb.append(v);
+            } else if (!v.endsWith("\\")) {
+                writeQuoted(v);
+            } else {
+                writeByteString(slot, v);
+            }
+        }
+
+        private void writeByteString(String slot, String v) {
+            for (int i = 0; i < v.length(); i++) {
+                if (v.charAt(i) >= 0x80) {
+                    if (forJade) {
+                        throw new IllegalArgumentException(slot + " '" + v + "' cannot be sent to JADE: it ends in a "
+                                + "backslash, which JADE's quoting cannot express except as the message's last value "
+                                + "(taken by " + lastSlot + "), and it is not ASCII, so it cannot be a byte string "
+                                + "JADE counts the same way");
+                    }
+                    break;
+                }
+            }
+            sb.append('#').append(v.getBytes(StandardCharsets.UTF_8).length).append('"').append(v);
+        }
+
+        private void writeQuoted(String v) {
+            sb.append('"');
+            for (int i = 0; i < v.length(); i++) {
+                char c = v.charAt(i);
+                if (c == '"') {
+                    sb.append('\\');
+                }
+                sb.append(c);
+            }
+            sb.append('"');
+        }
     }
 
     /**
@@ -216,7 +318,7 @@ public final class StringAclCodec implements AclCodec {
      * or whitespace, and not starting like a number, a byte string or a parameter name.
      */
     static boolean isPlainWord(String v) {
-        if (v.isEmpty() || "#0123456789-:".indexOf(v.charAt(0)) >= 0 || v.endsWith("\\")) {
+        if (v.isEmpty() || "#0123456789-:".indexOf(v.charAt(0)) >= 0) {
             return false;
         }
         for (int i = 0; i < v.length(); i++) {
@@ -230,18 +332,61 @@ public final class StringAclCodec implements AclCodec {
 
     /** Reads one message; the whole input must be that message (trailing whitespace allowed). */
     public AclMessage decode(String text) throws AclParseException {
-        return new Reader(text, clock).message();
+        Reader r = new Reader(text, clock, NO_CHOICES);
+        AclParseException first;
+        try {
+            return r.message();
+        } catch (AclParseException e) {
+            first = e;
+        }
+        // A string with an escaped-looking quote inside may have ended there (a value ending in a
+        // backslash, as JADE writes it): try the shorter readings, the latest string first.
+        int[] choices = r.nextChoices();
+        for (int attempt = 0; choices != null && attempt < MAX_READINGS; attempt++) {
+            r = new Reader(text, clock, choices);
+            try {
+                return r.message();
+            } catch (AclParseException e) {
+                choices = r.nextChoices();
+            }
+        }
+        throw first;
     }
+
+    private static final int[] NO_CHOICES = new int[0];
+    /** At most this many other readings of ambiguous strings are tried after the first fails. */
+    static final int MAX_READINGS = 32;
 
     /** A recursive-descent reader over the string, with a bounded nesting depth. */
     private static final class Reader {
         private final String s;
         private final Clock clock;
         private int pos;
+        /** For each ambiguous string met so far, in order: how many ends it could have, and which was taken (0 = the last). */
+        private final int[] forced;
+        private int[] ends = new int[4];
+        private int[] taken = new int[4];
+        private int met;
 
-        Reader(String s, Clock clock) {
+        Reader(String s, Clock clock, int[] forced) {
             this.s = s;
             this.clock = clock;
+            this.forced = forced;
+        }
+
+        /**
+         * The choices for the next reading after this one failed: the latest ambiguous string that
+         * can still end earlier does, the ones before keep theirs; null if none can.
+         */
+        int[] nextChoices() {
+            for (int j = met - 1; j >= 0; j--) {
+                if (taken[j] + 1 < ends[j]) {
+                    int[] next = java.util.Arrays.copyOf(taken, j + 1);
+                    next[j]++;
+                    return next;
+                }
+            }
+            return null;
         }
 
         AclMessage message() throws AclParseException {
@@ -458,29 +603,62 @@ public final class StringAclCodec implements AclCodec {
             return word("a value (a word, a \"string\" or an expression)");
         }
 
+        /**
+         * A quoted string as JADE's lexer reads it: {@code \"} stands for a quote, and the string
+         * runs to the first quote without a backslash before it; if none follows, to the last
+         * quote. A quote with a backslash before it may also have been the end (JADE escapes only
+         * quotes, so a value ending in a backslash is written {@code "...\"}): such strings are
+         * ambiguous, and a later reading may end them earlier.
+         */
         private String quoted() throws AclParseException {
             int start = pos;
-            pos++;
-            StringBuilder sb = null;
-            int runStart = pos;
-            while (pos < s.length()) {
-                char c = s.charAt(pos);
-                if (c == '\\' && pos + 1 < s.length() && s.charAt(pos + 1) == '"') {
-                    if (sb == null) {
-                        sb = new StringBuilder();
+            int end = -1;
+            int candidates = 0;
+            int lastCandidate = -1;
+            for (int p = start + 1; p < s.length(); p++) {
+                if (s.charAt(p) == '"') {
+                    if (s.charAt(p - 1) != '\\') {
+                        end = p;
+                        break;
                     }
-                    sb.append(s, runStart, pos).append('"');
-                    pos += 2;
-                    runStart = pos;
-                } else if (c == '"') {
-                    String out = sb == null ? s.substring(runStart, pos) : sb.append(s, runStart, pos).toString();
-                    pos++;
-                    return out;
-                } else {
-                    pos++;
+                    candidates++;
+                    lastCandidate = p;
                 }
             }
-            throw new AclParseException(start, "a closing '\"' for the string opened here", "the end of the input");
+            if (end < 0) {
+                if (lastCandidate < 0) {
+                    throw new AclParseException(start, "a closing '\"' for the string opened here", "the end of the input");
+                }
+                end = lastCandidate; // the longest string, as JADE reads it
+                candidates--;
+            }
+            if (candidates > 0) {
+                end = chooseEnd(start, end, candidates);
+            }
+            pos = end + 1;
+            String body = s.substring(start + 1, end);
+            return body.indexOf("\\\"") < 0 ? body : body.replace("\\\"", "\"");
+        }
+
+        /** Picks one of an ambiguous string's ends: the longest unless this reading says otherwise. */
+        private int chooseEnd(int start, int longest, int shorter) {
+            if (met == ends.length) {
+                ends = java.util.Arrays.copyOf(ends, met * 2);
+                taken = java.util.Arrays.copyOf(taken, met * 2);
+            }
+            int choice = met < forced.length ? forced[met] : 0;
+            ends[met] = shorter + 1;
+            taken[met] = choice;
+            met++;
+            if (choice == 0) {
+                return longest;
+            }
+            // The choice-th escaped quote counted back from the longest end.
+            int p = longest;
+            for (int k = 0; k < choice; k++) {
+                p = s.lastIndexOf("\\\"", p - 2) + 1;
+            }
+            return p;
         }
 
         private boolean isByteStringAhead() {
