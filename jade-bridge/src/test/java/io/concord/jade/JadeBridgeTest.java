@@ -365,6 +365,41 @@ class JadeBridgeTest {
         assertEquals("echo@" + CONCORD + " http://127.0.0.1:" + concordHttp + "/acc", found);
     }
 
+    /**
+     * JADE writes content ending in a backslash as {@code "...\"}; before, Concord refused it with
+     * HTTP 400 and JADE reported "No valid address". Both ways, with real JADE.
+     */
+    @Test
+    void contentEndingInABackslashCrossesBothWays() throws Exception {
+        Object reply = onJade(a -> {
+            ACLMessage req = new ACLMessage(ACLMessage.REQUEST);
+            req.addReceiver(concordAid("echo"));
+            req.setConversationId("bs1");
+            req.setContent("C:\\temp\\");
+            a.send(req);
+            ACLMessage r = a.blockingReceive(MessageTemplate.MatchConversationId("bs1"), 30_000);
+            return r == null ? "nothing" : ACLMessage.getPerformative(r.getPerformative()) + " " + r.getContent();
+        });
+        assertEquals("INFORM echo:C:\\temp\\", reply);
+    }
+
+    /**
+     * A protocol name JADE's parser cannot read (not a word) would make JADE reject the whole
+     * message; the bridge does not send it, tells the sender FAILURE with the reason, and counts it.
+     */
+    @Test
+    void aMessageJadeCannotReadIsNotSentAndItsSenderIsTold() throws Exception {
+        AclMessage req = new AclMessage(Performative.REQUEST);
+        req.addReceiver(new io.concord.core.acl.AID("jecho@" + JADE, "http://127.0.0.1:" + jadeHttp + "/acc"));
+        req.setConversationId("unwritable1");
+        req.setProtocol("my protocol");
+        req.setContent("hello");
+        INBOX.send(req);
+        AclMessage r = poll(m -> "unwritable1".equals(m.getConversationId()));
+        assertEquals(Performative.FAILURE, r.getPerformative());
+        assertTrue(r.getContent().contains("protocol 'my protocol'"), r.getContent());
+    }
+
     @Test
     void unknownReceiversGetTheFipaFailureBothWays() throws Exception {
         Object reply = onJade(a -> {

@@ -104,8 +104,11 @@ public final class Boot {
         } catch (IllegalArgumentException e) {
             throw new BootException("-seeds is written host[:port],... and -discovery-port a port number: " + e.getMessage(), e);
         }
+        String acc = null;
         if (s.containsKey("http")) {
-            b.gateway(httpGateway(s.get("http"), s.getOrDefault("host", "127.0.0.1"), s));
+            String[] hostPort = hostPort(s.get("http"), s.getOrDefault("host", "127.0.0.1"));
+            b.gateway(httpGateway(hostPort, s));
+            acc = "http://" + hostPort[0] + ":" + hostPort[1] + "/acc";
         }
         if (s.containsKey("console")) {
             b.console(s.get("console")).consoleOut(out);
@@ -119,6 +122,9 @@ public final class Boot {
             p = b.build();
         } catch (IllegalArgumentException | IllegalStateException e) {
             throw new BootException(e.getMessage(), e);
+        }
+        if (acc != null) {
+            out.println(accLine(acc, p.name()));
         }
         boolean watch = Boolean.parseBoolean(s.getOrDefault("watch", "false"));
         try {
@@ -290,9 +296,20 @@ public final class Boot {
         }
     }
 
-    /** {@code -http 7779} or {@code -http host:7779}: the JADE bridge's HTTP MTP, from concord-jade-bridge. */
-    private static java.util.function.Supplier<io.concord.layers.platform.Gateway> httpGateway(String spec, String host,
-                                                                                            Map<String, String> settings) {
+    /**
+     * The line that tells a JADE user what to write: the ACC's address, and whether JADE on other
+     * machines can reach it.
+     */
+    static String accLine(String acc, String platform) {
+        boolean loopback = acc.startsWith("http://127.") || acc.startsWith("http://localhost:");
+        return "JADE bridge: JADE agents reach the agents of this platform as <name>@" + platform + " at " + acc
+                + " (new AID(\"<name>@" + platform + "\", AID.ISGUID).addAddresses(\"" + acc + "\"))"
+                + (loopback ? "; this is a loopback address, reachable by JADE on this machine only: for JADE on other "
+                + "machines give -host <this machine's LAN address> (or -http <LAN address>:<port>)" : "");
+    }
+
+    /** {@code -http 7779} or {@code -http host:7779}, the host defaulting to {@code -host}. */
+    private static String[] hostPort(String spec, String host) {
         String h = host;
         String p = spec.trim();
         int colon = p.lastIndexOf(':');
@@ -300,12 +317,22 @@ public final class Boot {
             h = p.substring(0, colon);
             p = p.substring(colon + 1);
         }
-        int port;
         try {
-            port = Integer.parseInt(p);
+            int port = Integer.parseInt(p);
+            if (port < 1 || port > 65535) {
+                throw new NumberFormatException();
+            }
         } catch (NumberFormatException e) {
-            throw new BootException("-http is written port or host:port, got '" + spec + "'");
+            throw new BootException("-http is written port or host:port with a port from 1 to 65535, got '" + spec + "'");
         }
+        return new String[]{h, p};
+    }
+
+    /** The JADE bridge's HTTP MTP, from concord-jade-bridge. */
+    private static java.util.function.Supplier<io.concord.layers.platform.Gateway> httpGateway(String[] hostPort,
+                                                                                            Map<String, String> settings) {
+        String h = hostPort[0];
+        int port = Integer.parseInt(hostPort[1]);
         io.concord.layers.platform.GatewayProvider http = null;
         for (io.concord.layers.platform.GatewayProvider g : java.util.ServiceLoader.load(io.concord.layers.platform.GatewayProvider.class)) {
             if (g.kind().equals("http")) {
