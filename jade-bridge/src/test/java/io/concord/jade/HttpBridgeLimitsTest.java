@@ -222,6 +222,24 @@ class HttpBridgeLimitsTest {
         assertEquals(7, mtp.rejected());
     }
 
+    /**
+     * A payload that does not parse is answered 400 with the parser's reason and counted as
+     * {@code http-bad-acl}, apart from malformed HTTP; content as JADE writes it when it ends in a
+     * backslash is accepted (it was answered 400 before, and JADE reported "No valid address").
+     */
+    @Test
+    void anAclMessageThatDoesNotParseGetsItsReasonAndItsOwnCount() throws Exception {
+        start(256);
+        String bad = exchange(connect(), request(body("echo").replace(":content  \"ping\"", ":content  \"ping\" :bogus 1")));
+        assertTrue(bad.startsWith("HTTP/1.1 400") && bad.contains("not a FIPA string ACL message")
+                && bad.contains("':bogus'"), bad);
+        assertEquals(1, drops("http-bad-acl"));
+        assertEquals(0, drops("http-malformed"));
+        assertOk(exchange(connect(), request(body("echo").replace(":content  \"ping\"", ":content  \"ends with backslash\\\""))),
+                "JADE's writing of content ending in a backslash");
+        assertEquals(1, drops("http-bad-acl"));
+    }
+
     @Test
     void aBodyOfManyPartsCostsOneReadingWhateverItsShape() throws Exception {
         start(256);

@@ -132,8 +132,8 @@ public final class StringAclCodec implements AclCodec {
                 sb.append('\n');
             }
             boolean base64 = false;
-            if (m.hasByteSequenceContent() && m.getByteSequenceContent().length == 0) {
-                // JADE reads :X-JADE-Encoding only with some content; "no bytes" reads as empty text.
+            if (forJade && m.hasByteSequenceContent() && m.getByteSequenceContent().length == 0) {
+                // JADE reads :X-JADE-Encoding only with some content: for JADE, "no bytes" is empty text.
                 sb.append(" :content  \"\"\n");
             } else if (m.hasByteSequenceContent()) {
                 sb.append(" :content  ");
