@@ -497,11 +497,7 @@ public final class HttpMtp implements Gateway {
                         + "messages to {} are only counted", sender == null ? "an agent" : sender.name(), receiver.name(),
                         unwritable.getMessage(), receiver.platform());
             }
-            if (message.getPerformative() != Performative.FAILURE && sender != null
-                    && ctx.platformName().equalsIgnoreCase(sender.platform())) {
-                ctx.deliver(MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: "
-                        + unwritable.getMessage()), sender);
-            }
+            tellSender(ctx, message, receiver, unwritable.getMessage());
             return;
         }
         Runnable post = () -> {
@@ -526,24 +522,26 @@ public final class HttpMtp implements Gateway {
             }
             String why = problem == null ? "no http address" : problem;
             LOG.debug("HTTP MTP could not reach {}: {}", receiver.name(), why);
-            if (message.getPerformative() != Performative.FAILURE && sender != null
-                    && ctx.platformName().equalsIgnoreCase(sender.platform())) {
-                ctx.execute(() -> {
-                    AclMessage f = MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: " + why);
-                    ctx.deliver(f, sender);
-                });
-            }
+            ctx.execute(() -> tellSender(ctx, message, receiver, why));
         };
         try {
             ex.execute(post);
         } catch (java.util.concurrent.RejectedExecutionException full) {
             drops.record("http", "http-out-full", OUT_QUEUE + " messages already wait to be posted to foreign agents; "
                     + "the sender is told FAILURE");
-            if (message.getPerformative() != Performative.FAILURE && sender != null
-                    && ctx.platformName().equalsIgnoreCase(sender.platform())) {
-                ctx.deliver(MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: the bridge's "
-                        + "queue to foreign platforms is full (" + OUT_QUEUE + " messages)"), sender);
-            }
+            tellSender(ctx, message, receiver, "the bridge's queue to foreign platforms is full (" + OUT_QUEUE + " messages)");
+        }
+    }
+
+    /**
+     * The FIPA FAILURE "Foreign agent unreachable" to the sender of a message that was not posted,
+     * if the sender is an agent of this platform and the message is not itself a FAILURE. On the loop.
+     */
+    private static void tellSender(GatewayContext ctx, AclMessage message, AID receiver, String why) {
+        AID sender = message.getSender();
+        if (message.getPerformative() != Performative.FAILURE && sender != null
+                && ctx.platformName().equalsIgnoreCase(sender.platform())) {
+            ctx.deliver(MtsFailure.of(ctx.platformName(), message, receiver, "Foreign agent unreachable: " + why), sender);
         }
     }
 
