@@ -56,6 +56,19 @@ public final class FipaDates {
     }
 
     /**
+     * As {@link #format}, but never refuses: an instant outside the years 1 to 9999 is written with
+     * java.time's signed year of more or fewer digits (which FIPA's format cannot hold, so no reader
+     * takes it back), for logs and for messages that never leave Concord.
+     */
+    public static String formatAnyYear(long epochMs) {
+        try {
+            return format(epochMs);
+        } catch (IllegalArgumentException outside) {
+            return UTC.format(java.time.Instant.ofEpochMilli(epochMs));
+        }
+    }
+
+    /**
      * Parses a FIPA date-time.
      *
      * @param at    where the value started in the input, for the error

@@ -76,7 +76,7 @@ public final class StringAclCodec implements AclCodec {
      * a protocol name that is not a word, is still written (quoted); {@link #encodeForJade} refuses
      * such a message instead.
      *
-     * @throws IllegalArgumentException only for a {@code :reply-by} outside the years 1 to 9999
+     * Never throws: {@code toString} and Concord's own hops use it.
      */
     public String encodeToString(AclMessage m) {
         return new Writer(false).message(m);
@@ -154,7 +154,8 @@ public final class StringAclCodec implements AclCodec {
             slot("language", m.getLanguage());
             slot("ontology", m.getOntology());
             if (m.hasReplyBy()) {
-                sb.append(" :reply-by  ").append(FipaDates.format(m.getReplyByEpochMs()));
+                sb.append(" :reply-by  ").append(forJade ? FipaDates.format(m.getReplyByEpochMs())
+                        : FipaDates.formatAnyYear(m.getReplyByEpochMs()));
             }
             if (m.getProtocol() != null) {
                 sb.append("\n :protocol  ");

@@ -114,6 +114,9 @@ class StringAclCodecTest {
             assertThrows(AclParseException.class, () -> read("(INFORM :reply-by 00000101T000000000Z)"), "no year 0");
             assertThrows(IllegalArgumentException.class, () -> FipaDates.format(-62135769600001L), "before the year 1");
             assertThrows(IllegalArgumentException.class, () -> FipaDates.format(253402300800000L), "after 9999");
+            AclMessage far = new AclMessage(Performative.INFORM).setReplyByEpochMs(253402300800000L);
+            assertThrows(IllegalArgumentException.class, () -> codec.encodeForJade(far), "JADE cannot read the year 10000");
+            assertTrue(far.toString().contains(":reply-by"), "toString and Concord's own hops never throw");
         }
 
         @Test
