@@ -45,7 +45,7 @@ import io.concord.core.net.Transport;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
-            "sim", "hospital", "serial", "attack");
+            "sim", "hospital", "serial", "attack", "idle");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -108,6 +108,7 @@ public final class BenchMain {
                     case "console" -> b.console();
                     case "serial" -> b.serial();
                     case "attack" -> b.attack();
+                    case "idle" -> b.idle();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -399,6 +400,65 @@ public final class BenchMain {
         md.append(String.format(Locale.ROOT, "| Concord | %.1f |%n| JADE | %.1f |%n", c, j));
         md.append(String.format(Locale.ROOT, "%nJADE to Concord takes %.2f times the time of JADE to JADE.%n", c / j));
         Files.writeString(reportDir.resolve("http.md"), md.toString());
+    }
+
+    /**
+     * Idle cost: platforms of 3, 20 and 100 idle agents, Concord's and JADE's, each in a JVM of its
+     * own, all at once (idle, they hardly compete); the CPU time each JVM uses over a window after a
+     * warm-up long enough for the JIT to have compiled what the platform's maintenance runs.
+     */
+    private void idle() throws IOException {
+        List<Integer> sizes = List.of(3, 20, 100);
+        long warmupS = Long.getLong("concord.idle.warmup", full ? 180 : 60);
+        long windowS = Long.getLong("concord.idle.seconds", full ? 60 : 30);
+        Map<String, TreeMap<Integer, Double>> pct = Charts.series(List.of("concord", "jade"));
+        try (io.concord.bench.child.Children kids = new io.concord.bench.child.Children()) {
+            int port = 7600;
+            for (int n : sizes) {
+                kids.start(io.concord.bench.child.IdlePlatform.class, "idle" + n, Integer.toString(port), Integer.toString(n));
+                port += n + 30;
+                kids.start(io.concord.bench.jade.JadeIdle.class, Integer.toString(n));
+            }
+            kids.awaitReady();
+            sleepS(warmupS);
+            long[] before = new long[sizes.size() * 2];
+            for (int i = 0; i < before.length; i++) {
+                before[i] = kids.cpuNanos(i);
+            }
+            long t0 = System.nanoTime();
+            sleepS(windowS);
+            double wallNs = System.nanoTime() - t0;
+            for (int k = 0; k < sizes.size(); k++) {
+                double c = (kids.cpuNanos(2 * k) - before[2 * k]) / wallNs * 100;
+                double j = (kids.cpuNanos(2 * k + 1) - before[2 * k + 1]) / wallNs * 100;
+                pct.get("concord").put(sizes.get(k), c);
+                pct.get("jade").put(sizes.get(k), j);
+                System.out.printf(Locale.ROOT, "RESULT idle %d concord_cpu_pct=%.3f jade_cpu_pct=%.3f ratio=%.2f%n",
+                        sizes.get(k), c, j, c / j);
+            }
+        }
+        StringBuilder md = new StringBuilder(header("Idle cost", "Platforms of N agents that do nothing, each platform in a JVM "
+                + "of its own: Concord (Boot's defaults: class 7, one runtime, its agents electing a container among them) and "
+                + "JADE 4.3 (a main container, no MTP, plain `jade.core.Agent`s). All six JVMs run at once. The CPU time each "
+                + "JVM used (every thread: the loop, the JIT, the GC) over " + windowS + " s, after " + warmupS + " s of warm-up, "
+                + "in per cent of one core.", "Process CPU time"));
+        md.append("| agents | Concord % of a core | JADE % of a core | Concord / JADE |\n|---|---|---|---|\n");
+        for (int n : sizes) {
+            double c = pct.get("concord").get(n);
+            double j = pct.get("jade").get(n);
+            md.append(String.format(Locale.ROOT, "| %d | %.3f | %.3f | %.2f |%n", n, c, j, c / j));
+        }
+        Charts.line(reportDir.resolve("idle.png"), "Idle cost: % of a core", "agents", "% of one core", pct);
+        md.append("\n![idle](idle.png)\n");
+        Files.writeString(reportDir.resolve("idle.md"), md.toString());
+    }
+
+    private static void sleepS(long s) {
+        try {
+            Thread.sleep(s * 1000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     /** The chain on a running platform, quiet and under each attack (see AttackHarness). */

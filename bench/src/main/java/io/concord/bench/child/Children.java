@@ -61,6 +61,11 @@ public final class Children implements AutoCloseable {
         return out;
     }
 
+    /** The CPU time child i has used so far (user and system, all its threads), in ns; -1 if unknown. */
+    public long cpuNanos(int i) {
+        return processes.get(i).info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(-1L);
+    }
+
     /** Sends a command line to child i. */
     public void tell(int i, String line) throws IOException {
         OutputStream in = processes.get(i).getOutputStream();

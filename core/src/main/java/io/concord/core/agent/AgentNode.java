@@ -116,6 +116,26 @@ final class AgentNode implements StackHost {
         stack.receiveUp(Envelope.incoming(from, data, offset, length, nowNs));
     }
 
+    /** Frames of this agent are held back by its stack (a receiver is slower): its behaviours wait. */
+    boolean backpressured;
+
+    @Override
+    public boolean inboxFull() {
+        return agent.inboxFull();
+    }
+
+    @Override
+    public void backpressure(boolean on) {
+        runtime.backpressure(this, on);
+    }
+
+    /** The agent took its full mailbox down: the stack lets its senders go on. On the loop. */
+    void inboxDrained() {
+        if (!crashed && endpoint.isOpen()) {
+            stack.fireEvent(new io.concord.core.layer.StackEvent(INBOX_DRAINED, null, false));
+        }
+    }
+
     /** The top of the stack: into the mailbox. */
     void deliver(Envelope env) {
         deliverMessage(env.message());
@@ -188,10 +208,34 @@ final class AgentNode implements StackHost {
         }
     };
 
+    /**
+     * The runtime's agents, as far as this node reaches them in memory (over a network that may
+     * lose frames, such as the test kit's, none is taken for co-located).
+     */
+    private final CoLocated coLocated = new CoLocated() {
+        @Override
+        public boolean here(io.concord.core.net.Address address) {
+            return endpoint.inMemoryTo(address) && runtime.coLocated().here(address);
+        }
+
+        @Override
+        public Runnable whenGone(io.concord.core.net.Address address, Runnable callback) {
+            // Not for an agent that has gone itself meanwhile (a whole runtime crashing at once).
+            return runtime.coLocated().whenGone(address, () -> {
+                if (endpoint.isOpen()) {
+                    callback.run();
+                }
+            });
+        }
+    };
+
     @Override
     public <T> T capability(Class<T> type) {
         if (type == io.concord.core.net.Neighbourhood.class) {
             return type.cast(neighbourhood);
+        }
+        if (type == CoLocated.class) {
+            return type.cast(coLocated);
         }
         return type == io.concord.core.time.LoopLimits.class ? type.cast(runtime.loopLimits()) : null;
     }

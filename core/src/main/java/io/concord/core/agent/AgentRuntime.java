@@ -326,6 +326,7 @@ public final class AgentRuntime implements AutoCloseable {
             throw new IllegalStateException("the stack of " + aid.name() + " could not start: " + e.getMessage(), e);
         }
         directory.put(aid, node);
+        byAddress.put(ep.localAddress(), node);
         agent.bind(this, node, aid, args);
         if (tracer.enabled()) {
             tracer.trace(nowNs, aid.name(), "start", ep.localAddress().toString());
@@ -420,6 +421,58 @@ public final class AgentRuntime implements AutoCloseable {
         return a;
     }
 
+    private long pauses;
+
+    /**
+     * How many times an agent of this runtime was paused because a receiver did not take its
+     * messages as fast as it sent them (flow control; see the sequence layer). Loop thread.
+     */
+    public long pauses() {
+        return pauses;
+    }
+
+    /** Who watches which address of this runtime for its agent's leaving. */
+    private final Map<Address, List<Runnable>> goneWatchers = new HashMap<>();
+    private final Map<Address, AgentNode> byAddress = new HashMap<>();
+
+    private final CoLocated coLocated = new CoLocated() {
+        @Override
+        public boolean here(Address address) {
+            AgentNode n = byAddress.get(address);
+            return n != null && n.endpoint.isOpen();
+        }
+
+        @Override
+        public Runnable whenGone(Address address, Runnable callback) {
+            if (!here(address)) {
+                execute(callback);
+                return () -> { };
+            }
+            Runnable once = new Runnable() {
+                private boolean done;
+
+                @Override
+                public void run() {
+                    if (!done) {
+                        done = true;
+                        callback.run();
+                    }
+                }
+            };
+            goneWatchers.computeIfAbsent(address, k -> new ArrayList<>()).add(once);
+            return () -> {
+                List<Runnable> l = goneWatchers.get(address);
+                if (l != null && l.remove(once) && l.isEmpty()) {
+                    goneWatchers.remove(address);
+                }
+            };
+        }
+    };
+
+    CoLocated coLocated() {
+        return coLocated;
+    }
+
     private void removeAgent(AgentNode node, boolean takeDown) {
         directory.remove(node.aid);
         if (!takeDown) {
@@ -429,8 +482,17 @@ public final class AgentRuntime implements AutoCloseable {
         node.agent.terminate(takeDown);
         node.stack.stop();
         node.endpoint.close();
+        Address at = node.endpoint.localAddress();
+        byAddress.remove(at, node);
+        List<Runnable> watchers = goneWatchers.remove(at);
         if (tracer.enabled()) {
             tracer.trace(nowNs, node.aid.name(), takeDown ? "stop" : "crash", "");
+        }
+        if (watchers != null) {
+            // Told on the next cycle, not in the middle of this removal (or of a whole crash).
+            for (Runnable w : watchers) {
+                tasks.add(w);
+            }
         }
     }
 
@@ -455,10 +517,14 @@ public final class AgentRuntime implements AutoCloseable {
             work++;
         }
         work += network.poll(nowNs);
+        arrived = work > 0;
         work += wheel.poll(nowNs, this::onTimer);
         work += runReady();
         return work;
     }
+
+    /** Whether the last {@link #doWork} found a task or a datagram: work that no timer foretold. */
+    private boolean arrived;
 
     private int runReady() {
         int n = ready.size();
@@ -469,6 +535,9 @@ public final class AgentRuntime implements AutoCloseable {
             if (agent.getState() == Agent.State.DELETED) {
                 continue;
             }
+            if (node.backpressured && !agent.inboxFull() && !agent.deleteRequested()) {
+                continue; // made ready again when its stack lets its frames go
+            }
             boolean more = !agent.deleteRequested() && agent.runRound();
             if (agent.deleteRequested()) {
                 removeAgent(node, true);
@@ -477,6 +546,20 @@ public final class AgentRuntime implements AutoCloseable {
             }
         }
         return n;
+    }
+
+    /**
+     * The node's stack holds frames back for a slower receiver: its behaviours wait until it
+     * holds none (unless its own mailbox is full: it may be the one its receiver waits for).
+     */
+    void backpressure(AgentNode node, boolean on) {
+        if (on && !node.backpressured) {
+            pauses++;
+        }
+        node.backpressured = on;
+        if (!on) {
+            makeReady(node);
+        }
     }
 
     void makeReady(AgentNode node) {
@@ -586,10 +669,12 @@ public final class AgentRuntime implements AutoCloseable {
         // The idle budget (spinning first, then yielding) adapts between 0 and its configured
         // length: waiting awake pays when work comes back within the window (a quick reply, no
         // kernel wake-up), and only wastes a CPU when it does not. Count both outcomes; halve or
-        // double the budget. Yielding rather than spinning lets other processes of a busy machine
-        // run meanwhile: with more agent processes than cores, a spinning one holds a core that a
-        // peer needs to answer it.
+        // double the budget. Only a task or a datagram counts as work that came while awake: a
+        // timer was foreseen, and the park ends for it anyway. Yielding rather than spinning lets
+        // other processes of a busy machine run meanwhile: with more agent processes than cores,
+        // a spinning one holds a core that a peer needs to answer it.
         final int maxBudget = idleSpinIterations + idleYieldIterations;
+        final long resolutionNs = network.awaitResolutionNs();
         int budget = maxBudget;
         int wins = 0;
         int losses = 0;
@@ -602,9 +687,10 @@ public final class AgentRuntime implements AutoCloseable {
             } catch (RuntimeException | Error e) {
                 LOG.error("loop cycle failed; going on", e);
                 work = 1;
+                arrived = true;
             }
             if (work > 0) {
-                if (idle > 0) {
+                if (idle > 0 && arrived) {
                     wins++; // work came while waiting awake
                 }
                 idle = 0;
@@ -622,14 +708,6 @@ public final class AgentRuntime implements AutoCloseable {
                 idle++;
                 continue;
             }
-            long nextTimerNs = wheel.earliestDeadline();
-            if (nextTimerNs != Long.MAX_VALUE && nextTimerNs - clock.nanoTime() < network.awaitResolutionNs()
-                    && tasks.isEmpty()) {
-                // A timer is due sooner than a park can end (select() counts whole milliseconds):
-                // wait for it awake, or it fires up to a millisecond late.
-                Thread.yield();
-                continue;
-            }
             if (budget == maxBudget && idle > 0) {
                 windowNs = clock.nanoTime() - idleSinceNs; // how long a full wait lasts here
             }
@@ -637,13 +715,17 @@ public final class AgentRuntime implements AutoCloseable {
             long parkedAtNs = clock.nanoTime();
             if (tasks.isEmpty() && running) {
                 long next = wheel.earliestDeadline();
-                long timeout = next == Long.MAX_VALUE ? TimeUnit.SECONDS.toNanos(1) : next - clock.nanoTime();
+                long timeout = next == Long.MAX_VALUE ? TimeUnit.SECONDS.toNanos(1) : next - parkedAtNs;
                 if (timeout > 0) {
-                    network.await(timeout);
+                    // The network's wait counts in coarse units (select(): whole milliseconds).
+                    // Round up, never down: a timer fires within one unit of its deadline and
+                    // never early, and the loop does not wake to yield away the remainder.
+                    network.await(resolutionNs <= 1 ? timeout : (timeout + resolutionNs - 1) / resolutionNs * resolutionNs);
                 }
             }
             parked = false;
             // Woken sooner than a full wait would have lasted: waiting awake would have caught it.
+            // (A timer cannot end a park that soon: the park lasts at least one unit of the wait.)
             if (clock.nanoTime() - parkedAtNs < Math.max(windowNs, 20_000)) {
                 wins++;
             } else {

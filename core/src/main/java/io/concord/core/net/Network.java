@@ -82,8 +82,8 @@ public interface Network extends AutoCloseable {
     void await(long timeoutNs);
 
     /**
-     * The shortest wait {@link #await} can make: a loop waits awake for anything due sooner, or it
-     * would wake late. 0 by default.
+     * The unit in which {@link #await} counts: a loop rounds its waits up to it, so that a timer
+     * fires within one unit of its deadline, never early. 0 (exact) by default.
      */
     default long awaitResolutionNs() {
         return 0;

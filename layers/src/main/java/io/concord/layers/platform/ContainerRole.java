@@ -22,6 +22,8 @@ final class ContainerRole extends RoleBase {
     private final Map<String, Long> heldSeq = new HashMap<>();
     private final Set<String> cycleAwaiting = new HashSet<>();
     private long cycleTimer = -1;
+    /** Cancels the watch on each listed member of this runtime, by name. */
+    private final Map<String, Runnable> localWatches = new HashMap<>();
     private long pushTimer = -1;
     private int cycles;
     private long cycleStartNs;
@@ -111,6 +113,7 @@ final class ContainerRole extends RoleBase {
         AgentLists lists = st.lists;
         AgentEntry old = lists.lal.put(e.name(), keepServices(lists.lal.get(e.name()), e));
         lastHeard.put(e.name(), ctx.nowNs());
+        listed(e);
         if (old == null || !old.equals(lists.lal.get(e.name()))) {
             st.seq++;
             roles.rebuildRoutes();
@@ -121,6 +124,56 @@ final class ContainerRole extends RoleBase {
         st.timeoutMs = ctx.config().timeoutMs(lists.lal.size());
         ctx.sendQuietly(roles.replyOf(m, Performative.CONFIRM, new PlatformMessage.Joined(st.term, st.periodMs, st.timeoutMs, st.selfEntry)));
         roles.publish();
+    }
+
+    /**
+     * A member was listed: one of this runtime is watched for leaving it; one of another runtime
+     * needs the cycle at its period (the cycle may be waiting longer, with only members of this
+     * runtime listed).
+     */
+    private void listed(AgentEntry e) {
+        if (e.name().equals(ctx.self())) {
+            return;
+        }
+        if (ctx.here(e)) {
+            watchLocal(e);
+        } else if (cycleTimer >= 0 && cycleDueNs - ctx.nowNs() > st.periodMs * 1_000_000L) {
+            cycleTimer = cancel(cycleTimer);
+            cycleDueNs = ctx.nowNs() + st.periodMs * 1_000_000L;
+            cycleTimer = after(st.periodMs, this::cycle);
+        }
+    }
+
+    /** A member of this runtime is watched for leaving it: removed at once when it does (crashed). */
+    private void watchLocal(AgentEntry e) {
+        String name = e.name();
+        if (localWatches.containsKey(name)) {
+            return;
+        }
+        Address at = e.transportAddress();
+        localWatches.put(name, ctx.coLocated().whenGone(at, () -> {
+            localWatches.remove(name);
+            AgentEntry now = st.lists.lal.get(name);
+            if (now != null && at.equals(now.transportAddress())) {
+                st.lists.lal.remove(name);
+                lastHeard.remove(name);
+                heldSeq.remove(name);
+                st.seq++;
+                roles.rebuildRoutes();
+                ctx.trace("removed", name + " left this runtime");
+                schedulePush();
+                roles.publish();
+            }
+        }));
+    }
+
+    @Override
+    void leave() {
+        for (Runnable w : localWatches.values()) {
+            w.run();
+        }
+        localWatches.clear();
+        super.leave();
     }
 
     /** A rejoining agent that lost its own copy keeps the services the list holds for it. */
@@ -140,6 +193,7 @@ final class ContainerRole extends RoleBase {
         }
         AgentEntry e = i.entries().get(0);
         lastHeard.put(e.name(), ctx.nowNs());
+        listed(e);
         AgentEntry was = st.lists.lal.put(e.name(), e);
         if (!e.equals(was)) {
             st.seq++;
@@ -239,6 +293,12 @@ final class ContainerRole extends RoleBase {
 
     // ---- maintenance (fig. 5.9) -----------------------------------------------------------------
 
+    /**
+     * A member in this agent's runtime gets an alive every this many cycles: it needs none to know
+     * this agent is alive, and watches for it to leave the runtime (see {@link MemberRole}).
+     */
+    static final int LOCAL_ALIVE_EVERY = 25;
+
     private void cycle() {
         cycleTimer = -1;
         roles.gatewayRetry(); // its port may have been held by the previous container a moment ago
@@ -249,8 +309,13 @@ final class ContainerRole extends RoleBase {
         // be waiting to be read.
         boolean late = cycleDueNs > 0 && now - cycleDueNs > st.periodMs * 500_000L;
         List<String> dead = new ArrayList<>();
-        for (String n : lists.lal.keySet()) {
+        for (AgentEntry e : lists.lal.values()) {
+            String n = e.name();
             if (n.equals(ctx.self())) {
+                continue;
+            }
+            if (ctx.here(e)) {
+                lastHeard.put(n, now); // alive while it is in this runtime: it is watched for leaving
                 continue;
             }
             Long heard = lastHeard.get(n);
@@ -275,13 +340,33 @@ final class ContainerRole extends RoleBase {
         st.timeoutMs = ctx.config().timeoutMs(lists.lal.size());
         cycleStartNs = now;
         cycleAwaiting.clear();
-        cycleAwaiting.addAll(lists.lal.keySet());
-        cycleAwaiting.remove(ctx.self());
         PlatformMessage alive = new PlatformMessage.Alive(st.term, st.seq, st.periodMs, st.timeoutMs, st.selfEntry);
+        // A member in this runtime lives and dies with this loop, and is told at once when this
+        // agent leaves it: it is heard by being here, and gets an alive only every few cycles (for
+        // the list's version, and as a check that this agent is still its container). An idle JVM
+        // of agents then does next to nothing between cycles.
+        // With no member elsewhere, the cycle itself comes only every few periods.
+        boolean remote = false;
         for (AgentEntry e : lists.lal.values()) {
-            if (!e.name().equals(ctx.self())) {
-                ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), alive);
+            if (!e.name().equals(ctx.self()) && !ctx.here(e)) {
+                remote = true;
+                break;
             }
+        }
+        boolean localAlive = !remote || cycles % LOCAL_ALIVE_EVERY == 0;
+        for (AgentEntry e : lists.lal.values()) {
+            if (e.name().equals(ctx.self())) {
+                continue;
+            }
+            if (ctx.here(e)) {
+                watchLocal(e);
+                if (!localAlive) {
+                    continue;
+                }
+            } else {
+                cycleAwaiting.add(e.name());
+            }
+            ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), alive);
         }
         // Keep asking the potential agents of the range that are not listed: a container elected
         // while one of them was slow to answer finds the other container this way.
@@ -297,8 +382,9 @@ final class ContainerRole extends RoleBase {
                 }
             }
         }
-        cycleDueNs = now + st.periodMs * 1_000_000L;
-        cycleTimer = after(st.periodMs, this::cycle);
+        long next = remote ? st.periodMs : st.periodMs * LOCAL_ALIVE_EVERY;
+        cycleDueNs = now + next * 1_000_000L;
+        cycleTimer = after(next, this::cycle);
         if (!dead.isEmpty()) {
             roles.publish();
         }

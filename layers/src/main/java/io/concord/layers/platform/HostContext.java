@@ -90,6 +90,11 @@ final class HostContext implements PlatformContext {
     }
 
     @Override
+    public io.concord.core.agent.CoLocated coLocated() {
+        return host.capability(io.concord.core.agent.CoLocated.class);
+    }
+
+    @Override
     public java.util.random.RandomGenerator random() {
         return host.random();
     }

@@ -13,6 +13,8 @@ import java.util.List;
  */
 final class MemberRole extends Follower {
     private long watchTimer = -1;
+    /** Cancels the watch on the container's leaving this runtime; null when not watching. */
+    private Runnable watchingLocal;
 
     MemberRole(Roles roles) {
         super(roles);
@@ -26,9 +28,40 @@ final class MemberRole extends Follower {
     @Override
     void resetWatch() {
         watchTimer = cancel(watchTimer);
+        unwatchLocal();
         long t = st.timeoutMs > 0 ? st.timeoutMs : ctx.config().timeoutMs(Math.max(1, st.lists.lal.size()));
+        AgentEntry c = st.container;
+        if (c != null && roles.join.target() == null && ctx.here(c)) {
+            // The container runs in this runtime: told at once when it leaves, and its alive comes
+            // only every few cycles (ContainerRole.LOCAL_ALIVE_EVERY); the timeout covers those.
+            String name = c.name();
+            watchingLocal = ctx.coLocated().whenGone(c.transportAddress(), () -> {
+                watchingLocal = null;
+                if (st.container != null && st.container.name().equals(name)) {
+                    watchTimer = cancel(watchTimer);
+                    failover("the container " + name + " left this runtime");
+                }
+            });
+            long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
+            t += period * ContainerRole.LOCAL_ALIVE_EVERY;
+        }
         long deadline = ctx.nowNs() + t * 1_000_000L;
-        watchTimer = after(t, () -> onWatch(deadline, t, false));
+        long timeout = t;
+        watchTimer = after(t, () -> onWatch(deadline, timeout, false));
+    }
+
+    /** Cancels the watch on a container of this runtime, if any. */
+    private void unwatchLocal() {
+        if (watchingLocal != null) {
+            watchingLocal.run();
+            watchingLocal = null;
+        }
+    }
+
+    @Override
+    void leave() {
+        unwatchLocal();
+        super.leave();
     }
 
     /**

@@ -39,6 +39,21 @@ interface PlatformContext {
 
     java.util.random.RandomGenerator random();
 
+    /**
+     * The agents of this agent's runtime, reached in memory: they live and die with this loop, so
+     * they need no alive messages to be known alive. {@code null} where the node offers none.
+     */
+    default io.concord.core.agent.CoLocated coLocated() {
+        return null;
+    }
+
+    /** True if the entry's agent runs in this agent's runtime, reached in memory. */
+    default boolean here(AgentEntry e) {
+        io.concord.core.agent.CoLocated c = coLocated();
+        Address a = e.transportAddress();
+        return c != null && a != null && c.here(a);
+    }
+
     /** A platform message from this agent to one receiver: the platform's ontology and language, the protocol given. */
     AclMessage message(Performative act, String protocol, AID to, String content);
 
