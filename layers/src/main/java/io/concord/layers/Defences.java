@@ -21,6 +21,11 @@ public final class Defences {
     public static boolean acceptanceWindow = true;
     /** The parser layer compares a message's sender with the agent its frame authenticated. */
     public static boolean identification = true;
+    /**
+     * The sequence layer keeps at most the receiver's window of frames unacknowledged, holds the
+     * rest (slowing the sending agent), and the receiver closes its window while its mailbox is full.
+     */
+    public static boolean flowControl = true;
 
     private Defences() {
     }
@@ -34,5 +39,6 @@ public final class Defences {
         hmacTag = true;
         acceptanceWindow = true;
         identification = true;
+        flowControl = true;
     }
 }

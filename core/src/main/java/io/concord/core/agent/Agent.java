@@ -151,23 +151,56 @@ public abstract class Agent {
 
     /** The first message in the mailbox, or {@code null}. Never blocks. */
     public final AclMessage receive() {
+        AclMessage m;
         synchronized (mailboxLock) {
-            return mailbox.poll();
+            m = mailbox.poll();
+        }
+        if (m != null && inboxFull) {
+            taken();
+        }
+        return m;
+    }
+
+    /**
+     * More than half the mailbox's capacity waits: senders are asked to hold back (their window
+     * shut) until it is down to a quarter.
+     */
+    private volatile boolean inboxFull;
+
+    final boolean inboxFull() {
+        return inboxFull;
+    }
+
+    /** A message was taken from a full mailbox: at a quarter of its capacity, the senders are let go on. */
+    private void taken() {
+        int size;
+        synchronized (mailboxLock) {
+            size = mailbox.size();
+        }
+        if (inboxFull && size <= runtime.mailboxCapacity() / 4) {
+            inboxFull = false;
+            AgentNode n = node;
+            runtime.execute(n::inboxDrained);
         }
     }
 
     /** The first message in the mailbox that the template matches, or {@code null}. Never blocks. */
     public final AclMessage receive(MessageTemplate template) {
+        AclMessage found = null;
         synchronized (mailboxLock) {
             for (Iterator<AclMessage> it = mailbox.iterator(); it.hasNext(); ) {
                 AclMessage m = it.next();
                 if (template.match(m)) {
                     it.remove();
-                    return m;
+                    found = m;
+                    break;
                 }
             }
-            return null;
         }
+        if (found != null && inboxFull) {
+            taken();
+        }
+        return found;
     }
 
     /** Messages waiting in the mailbox. */
@@ -349,6 +382,9 @@ public abstract class Agent {
                 return false;
             }
             mailbox.add(msg);
+            if (mailbox.size() > capacity / 2) {
+                inboxFull = true;
+            }
             if (blockingWaiters > 0) {
                 mailboxLock.notifyAll();
             }

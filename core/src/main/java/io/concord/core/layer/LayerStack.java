@@ -111,7 +111,9 @@ public final class LayerStack {
         try {
             c.layer.onDown(c, env);
         } catch (SendRejectedException e) {
-            drop(c.name, env, e.reason(), e.getMessage());
+            if (e.countOnce()) { // by the layer that refused, not again by each above it
+                drop(c.name, env, e.reason(), e.getMessage());
+            }
             throw e;
         } catch (RuntimeException e) {
             c.failed(env, e);

@@ -17,6 +17,15 @@ public class SendRejectedException extends RuntimeException {
         this.reason = reason;
     }
 
+    private boolean counted;
+
+    /** True the first time: the stack counts the drop once, where the layer refused. */
+    boolean countOnce() {
+        boolean first = !counted;
+        counted = true;
+        return first;
+    }
+
     /** The drop reason. */
     public String reason() {
         return reason;

@@ -43,6 +43,26 @@ public interface StackHost {
         return null;
     }
 
+    /**
+     * True while the node's agent has more messages waiting than it should be sent more (half its
+     * mailbox's capacity): a layer that paces senders closes their window meanwhile. When it has
+     * taken them down to a quarter, the stack gets the event {@link #INBOX_DRAINED} (going down).
+     */
+    default boolean inboxFull() {
+        return false;
+    }
+
+    /** The event type fired down the stack when a full mailbox has been taken down again. */
+    String INBOX_DRAINED = "inbox-drained";
+
+    /**
+     * A layer holds frames the agent sent because a receiver is not taking them as fast
+     * ({@code true}), or holds none any more ({@code false}): the node pauses the agent's
+     * behaviours meanwhile, so that a fast sender is slowed to its receiver's pace.
+     */
+    default void backpressure(boolean on) {
+    }
+
     /** Runs a task on the node's loop; callable from any thread. */
     default void execute(Runnable task) {
         task.run();

@@ -69,12 +69,17 @@ public final class Simulation implements AutoCloseable {
 
     /** A runtime on a virtual host, with the given stack factory (top first), or the default if null. */
     public AgentRuntime newRuntime(String host, Supplier<List<Layer>> stack) {
+        return newRuntime(host, stack, b -> b);
+    }
+
+    /** ... with more settings of the runtime (its mailboxes' capacity, say). */
+    public AgentRuntime newRuntime(String host, Supplier<List<Layer>> stack, java.util.function.UnaryOperator<AgentRuntime.Builder> more) {
         AgentRuntime.Builder b = AgentRuntime.builder().clock(clock).network(network).host(host)
                 .platformName(platformName).random(random.split()).tracer(trace);
         if (stack != null) {
             b.stack(stack);
         }
-        AgentRuntime rt = b.build();
+        AgentRuntime rt = more.apply(b).build();
         runtimes.add(rt);
         return rt;
     }

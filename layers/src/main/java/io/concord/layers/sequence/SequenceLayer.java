@@ -90,6 +90,12 @@ public final class SequenceLayer extends Layer {
         final int[] ringLen;
         long probeTimer = -1;
         int probes;
+        /** Frames past the acknowledged ones the receiver takes (its window); -1 until it says. */
+        int credit = -1;
+        /** Frames the agent sent that wait for the receiver's window to open, in order. */
+        final java.util.ArrayDeque<Envelope> held = new java.util.ArrayDeque<>();
+        /** Counted among the receivers that hold the agent back. */
+        boolean holding;
 
         Out(int size) {
             ring = new byte[size][];
@@ -112,6 +118,8 @@ public final class SequenceLayer extends Layer {
         int nakRetries;
         int sinceAck;
         long ackTimer = -1;
+        /** The last acknowledgement told the sender that this agent's mailbox was full (window 0). */
+        boolean closed;
         final Map<Integer, Long> oldStreams = new LinkedHashMap<>();
         final long[] resendAllowed = new long[8];
 
@@ -121,22 +129,33 @@ public final class SequenceLayer extends Layer {
         }
     }
 
+    /**
+     * Frames held per receiver while its window is shut; one more is refused to the sending agent
+     * ({@code flow-control}). The agent is paused as soon as any is held, so only an agent that
+     * sends this many in one action of a behaviour meets the limit.
+     */
+    public static final int MAX_HELD = 4096;
+
     private final Config config;
     private final Map<Long, Out> outs;
+    /** Receivers with frames held for them: while any, the agent is paused. */
+    private int congested;
     private final Map<Long, In> ins;
     private int stream;
 
     public SequenceLayer(Config config) {
         this.config = config;
-        this.outs = lru(config.maxPeers());
-        this.ins = lru(config.maxPeers());
+        // A receiver with frames held for it is never forgotten: they would be lost, and the agent
+        // stay paused.
+        this.outs = lru(config.maxPeers(), out -> !out.holding);
+        this.ins = lru(config.maxPeers(), in -> true);
     }
 
-    private static <V> Map<Long, V> lru(int max) {
+    private static <V> Map<Long, V> lru(int max, java.util.function.Predicate<V> forgettable) {
         return new LinkedHashMap<>(64, 0.75f, true) {
             @Override
             protected boolean removeEldestEntry(Map.Entry<Long, V> eldest) {
-                return size() > max;
+                return size() > max && forgettable.test(eldest.getValue());
             }
         };
     }
@@ -188,6 +207,54 @@ public final class SequenceLayer extends Layer {
         }
         Out o = outs.computeIfAbsent(env.peerId(), k -> new Out(config.retransmitBuffer()));
         o.address = env.destination();
+        if (io.concord.layers.Defences.flowControl && (!o.held.isEmpty() || !windowOpen(o))) {
+            hold(ctx, env, o);
+            return;
+        }
+        transmit(ctx, env, o);
+    }
+
+    /** Frames this sender may have unacknowledged: the receiver's window, at most its reorder window. */
+    private boolean windowOpen(Out o) {
+        int window = o.credit < 0 ? config.reorderWindow() : Math.min(config.reorderWindow(), o.credit);
+        return o.nextSeq - 1 - o.acked < window;
+    }
+
+    private void hold(LayerContext ctx, Envelope env, Out o) {
+        if (o.held.size() >= MAX_HELD) {
+            throw new io.concord.core.layer.SendRejectedException("flow-control", MAX_HELD + " messages to " + o.address
+                    + " wait already for it to take the ones before (it is slower than this sender, or gone); "
+                    + "send fewer in one action of a behaviour: the agent is paused until the receiver catches up");
+        }
+        env.detachData();
+        o.held.add(env);
+        if (!o.holding) {
+            o.holding = true;
+            if (congested++ == 0) {
+                ctx.host().backpressure(true);
+            }
+        }
+        if (o.probeTimer < 0) {
+            // A window that opens again is announced; if that announcement is lost, a probe asks.
+            long peer = env.peerId();
+            o.probeTimer = ctx.host().schedule(ctx.nowNs() + config.probeTimeoutMs() * 1_000_000L, () -> probe(ctx, peer, o));
+        }
+    }
+
+    /** Sends what is held for a receiver as far as its window allows. */
+    private void release(LayerContext ctx, Out o) {
+        while (!o.held.isEmpty() && (windowOpen(o) || !io.concord.layers.Defences.flowControl)) {
+            transmit(ctx, o.held.poll(), o);
+        }
+        if (o.held.isEmpty() && o.holding) {
+            o.holding = false;
+            if (--congested == 0) {
+                ctx.host().backpressure(false);
+            }
+        }
+    }
+
+    private void transmit(LayerContext ctx, Envelope env, Out o) {
         long seq = o.nextSeq++;
         int at = env.prepend(HEADER_BYTES);
         byte[] d = env.data();
@@ -212,11 +279,15 @@ public final class SequenceLayer extends Layer {
 
     private void probe(LayerContext ctx, long peer, Out o) {
         o.probeTimer = -1;
-        if (o.acked >= o.nextSeq - 1) {
+        boolean shut = o.acked >= o.nextSeq - 1 && !o.held.isEmpty(); // all taken, the window shut
+        if (o.acked >= o.nextSeq - 1 && !shut) {
             o.probes = 0;
             return;
         }
-        if (++o.probes > config.maxProbes()) {
+        if (shut) {
+            // A receiver that keeps its window shut is slow, not gone: it answers each probe.
+            o.probes = Math.min(o.probes + 1, 4);
+        } else if (++o.probes > config.maxProbes()) {
             ctx.drop(Envelope.control(peer, o.address, new byte[0], 0, 0), "unacknowledged",
                     (o.nextSeq - 1 - o.acked) + " frames to " + o.address + " were never acknowledged; is the peer gone?");
             o.probes = 0;
@@ -277,8 +348,13 @@ public final class SequenceLayer extends Layer {
     }
 
     private void sendControl(LayerContext ctx, long peer, Address to, int kind, int streamId, long seq, long[] list, int n, long since) {
+        sendControl(ctx, peer, to, kind, streamId, seq, list, n, since, config.reorderWindow());
+    }
+
+    private void sendControl(LayerContext ctx, long peer, Address to, int kind, int streamId, long seq, long[] list, int n, long since,
+                             int credit) {
         boolean acknowledging = kind == ACK || kind == NAK;
-        int len = HEADER_BYTES + (kind == NAK ? 2 + 8 * n : 0) + (acknowledging ? 12 : 0);
+        int len = HEADER_BYTES + (kind == NAK ? 2 + 8 * n : 0) + (acknowledging ? 12 : 0) + (kind == ACK ? 4 : 0);
         byte[] b = new byte[Frames.HEADROOM + len + 40];
         int o = Frames.HEADROOM;
         b[o] = (byte) kind;
@@ -290,7 +366,11 @@ public final class SequenceLayer extends Layer {
                 Frames.putLong(b, o + 15 + 8 * i, list[i]);
             }
         }
-        if (acknowledging) {
+        if (kind == ACK) {
+            Frames.putInt(b, o + len - 16, stream);
+            Frames.putLong(b, o + len - 12, since);
+            Frames.putInt(b, o + len - 4, credit);
+        } else if (acknowledging) {
             Frames.putInt(b, o + len - 12, stream);
             Frames.putLong(b, o + len - 8, since);
         }
@@ -327,9 +407,17 @@ public final class SequenceLayer extends Layer {
                         && !sameSession(ctx, peer, out, Frames.getInt(d, o + HEADER_BYTES), Frames.getLong(d, o + HEADER_BYTES + 4))) {
                     return;
                 }
-                if (out != null && streamId == stream && seq > out.acked) {
-                    out.acked = Math.min(seq, out.nextSeq - 1);
-                    if (out.acked >= out.nextSeq - 1 && out.probeTimer >= 0) {
+                if (out != null && streamId == stream) {
+                    if (seq > out.acked) {
+                        out.acked = Math.min(seq, out.nextSeq - 1);
+                    }
+                    // The window of the latest acknowledgement only: one overtaken by a later one
+                    // (reordered, or a late copy) must not open a window the receiver shut since.
+                    if (env.length() >= HEADER_BYTES + 16 && seq >= out.acked) {
+                        out.credit = Math.max(0, Frames.getInt(d, o + HEADER_BYTES + 12));
+                    }
+                    release(ctx, out);
+                    if (out.acked >= out.nextSeq - 1 && out.held.isEmpty() && out.probeTimer >= 0) {
                         ctx.host().cancel(out.probeTimer);
                         out.probeTimer = -1;
                         out.probes = 0;
@@ -435,6 +523,7 @@ public final class SequenceLayer extends Layer {
             ctx.drop(env, "malformed-frame", "sequence number " + seq);
             return;
         }
+        long before = in.highest;
         in.highest = Math.max(in.highest, seq);
         if (in.since == 0) {
             in.since = seq;
@@ -474,7 +563,13 @@ public final class SequenceLayer extends Layer {
             in.buffer[slot] = env;
             in.bufferSeq[slot] = seq;
             in.buffered++;
-            sendNak(ctx, peer, in);
+            // Asked for at once only when a new gap opens (the numbers between the highest seen
+            // and this one); a frame that arrives while an older gap is open asks for nothing
+            // again: the NAK timer repeats the question. Asking for every gap at every arrival
+            // had the sender repeat a window's frames once per frame of it.
+            if (seq > before + 1) {
+                sendNak(ctx, peer, in, Math.max(before + 1, in.expected), seq - 1);
+            }
         }
         if (in.buffered > 0) {
             scheduleNak(ctx, peer, in);
@@ -520,10 +615,15 @@ public final class SequenceLayer extends Layer {
     }
 
     private void sendNak(LayerContext ctx, long peer, In in) {
+        sendNak(ctx, peer, in, in.expected, in.highest);
+    }
+
+    /** Asks for the frames missing between two sequence numbers (within the window; at most 64). */
+    private void sendNak(LayerContext ctx, long peer, In in, long from, long to) {
         long[] missing = new long[MAX_NAK_ENTRIES];
         int n = 0;
-        long upTo = Math.min(in.highest, in.expected + config.reorderWindow() - 1);
-        for (long s = in.expected; s <= upTo && n < MAX_NAK_ENTRIES; s++) {
+        long upTo = Math.min(to, in.expected + config.reorderWindow() - 1);
+        for (long s = Math.max(from, in.expected); s <= upTo && n < MAX_NAK_ENTRIES; s++) {
             int slot = (int) (s % config.reorderWindow());
             if (in.buffer[slot] == null || in.bufferSeq[slot] != s) {
                 missing[n++] = s;
@@ -579,13 +679,24 @@ public final class SequenceLayer extends Layer {
             ctx.host().cancel(in.ackTimer);
             in.ackTimer = -1;
         }
-        sendControl(ctx, peer, in.address, ACK, in.stream, in.expected - 1, null, 0, in.since);
+        // The window: the reorder window while the agent keeps up with its mailbox, shut while
+        // the mailbox is full; announced again when the agent has taken it down.
+        in.closed = io.concord.layers.Defences.flowControl && ctx.host().inboxFull();
+        sendControl(ctx, peer, in.address, ACK, in.stream, in.expected - 1, null, 0, in.since, in.closed ? 0 : config.reorderWindow());
     }
 
     // ---- resend requests from above ----------------------------------------------------------------
 
     @Override
     public void onEvent(LayerContext ctx, StackEvent event) {
+        if (!event.up() && io.concord.core.layer.StackHost.INBOX_DRAINED.equals(event.type())) {
+            for (Map.Entry<Long, In> e : ins.entrySet()) {
+                if (e.getValue().closed) {
+                    sendAck(ctx, e.getKey(), e.getValue());
+                }
+            }
+            return;
+        }
         if (!event.up() && RESEND_REQUEST.equals(event.type()) && event.payload() instanceof Envelope refused) {
             long[] id = refused.header(ENVELOPE_HEADER);
             In in = id == null ? null : ins.get(id[0]);
