@@ -95,7 +95,9 @@ public final class ParserLayer extends Layer {
             bytes = new byte[Frames.HEADROOM + aclBytes + 40];
             System.arraycopy(lastBytes, Frames.HEADROOM, bytes, Frames.HEADROOM, aclBytes);
         } else {
-            BinaryAclCodec.Writer w = new BinaryAclCodec.Writer(Frames.HEADROOM + 256);
+            // Room for the headers, the content (it is copied once, not grown into) and the tags below.
+            String text = env.message().hasByteSequenceContent() ? null : env.message().getContent();
+            BinaryAclCodec.Writer w = new BinaryAclCodec.Writer(Frames.HEADROOM + 320 + (text == null ? 0 : text.length()));
             w.skip(Frames.HEADROOM);
             BinaryAclCodec.INSTANCE.encode(env.message(), w);
             bytes = w.array();
