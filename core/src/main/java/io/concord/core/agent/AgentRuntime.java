@@ -616,6 +616,10 @@ public final class AgentRuntime implements AutoCloseable {
         tasks.add(task);
         if (parked) {
             network.wakeup();
+            Thread loop = loopThread;
+            if (loop != null) {
+                java.util.concurrent.locks.LockSupport.unpark(loop);
+            }
         }
     }
 
@@ -716,11 +720,15 @@ public final class AgentRuntime implements AutoCloseable {
             if (tasks.isEmpty() && running) {
                 long next = wheel.earliestDeadline();
                 long timeout = next == Long.MAX_VALUE ? TimeUnit.SECONDS.toNanos(1) : next - parkedAtNs;
-                if (timeout > 0) {
-                    // The network's wait counts in coarse units (select(): whole milliseconds).
-                    // Round up, never down: a timer fires within one unit of its deadline and
-                    // never early, and the loop does not wake to yield away the remainder.
-                    network.await(resolutionNs <= 1 ? timeout : (timeout + resolutionNs - 1) / resolutionNs * resolutionNs);
+                if (timeout > 0 && timeout < resolutionNs) {
+                    // The network's wait counts in coarse units (select(): whole milliseconds), and
+                    // a timer is due within one: sleep exactly until it instead of yielding the CPU
+                    // away meanwhile (a task from another thread unparks; a datagram waits for the
+                    // timer, less than a millisecond).
+                    java.util.concurrent.locks.LockSupport.parkNanos(timeout);
+                } else if (timeout > 0) {
+                    // Whole units only, so as to wake before the deadline; the rest as above.
+                    network.await(resolutionNs <= 1 ? timeout : timeout / resolutionNs * resolutionNs);
                 }
             }
             parked = false;

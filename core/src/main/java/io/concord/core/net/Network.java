@@ -82,8 +82,8 @@ public interface Network extends AutoCloseable {
     void await(long timeoutNs);
 
     /**
-     * The unit in which {@link #await} counts: a loop rounds its waits up to it, so that a timer
-     * fires within one unit of its deadline, never early. 0 (exact) by default.
+     * The unit in which {@link #await} counts: a loop waits whole units on the network and the
+     * rest of a timer's wait by parking the thread. 0 (exact) by default.
      */
     default long awaitResolutionNs() {
         return 0;
