@@ -126,6 +126,16 @@ public final class ContainerLayer extends Layer {
         return List.copyOf(st.lists.lal.values());
     }
 
+    /** How many agents the LAL holds, without copying it. Loop thread only. */
+    public int agentCount() {
+        return st.lists.lal.size();
+    }
+
+    /** How many agents the GAL holds, without copying it. Loop thread only. */
+    public int globalAgentCount() {
+        return st.lists.gal.size();
+    }
+
     /**
      * How long the last complete maintenance cycle took on the container: from its alive messages
      * to the last agent's confirmation, in ns; -1 if none completed yet. Safe from any thread.

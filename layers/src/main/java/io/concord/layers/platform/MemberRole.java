@@ -143,6 +143,36 @@ final class MemberRole extends Follower {
         }
     }
 
+    /**
+     * A page of what changed in the GAL: applied, once all its pages are in, by a member that
+     * holds the version it starts from, from the container it follows; ignored otherwise (the
+     * member's next confirmation shows it behind, and the container sends the whole list).
+     */
+    @Override
+    public void onGalDelta(PlatformMessage.GalDelta d, AclMessage m) {
+        String from = m.getSender().name();
+        AgentLists lists = st.lists;
+        if (st.container == null || !st.container.name().equals(from) || !from.equals(lists.galFrom) || lists.gseq != d.from()) {
+            return;
+        }
+        List<AgentEntry> changed = roles.galAssembler.add(from + "/" + d.from() + ">" + d.gseq(), d.page());
+        if (changed == null) {
+            return;
+        }
+        int removed = Math.min(d.removed(), changed.size());
+        for (int i = 0; i < changed.size(); i++) {
+            AgentEntry e = changed.get(i);
+            if (i < removed) {
+                lists.gal.remove(e.name());
+            } else if (!lists.lal.containsKey(e.name())) {
+                lists.gal.put(e.name(), e);
+            }
+        }
+        lists.gseq = d.gseq();
+        roles.rebuildRoutes();
+        roles.publish();
+    }
+
     /** A page of the GAL: only the container this agent follows gives it. */
     @Override
     public void onGal(PlatformMessage.GalPage p, AclMessage m) {

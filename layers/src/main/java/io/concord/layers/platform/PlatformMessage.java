@@ -37,6 +37,8 @@ sealed interface PlatformMessage {
         default void onLalRequest(LalRequest r, AclMessage m) { }
         default void onLalCopy(LalCopy c, AclMessage m) { }
         default void onGal(GalPage p, AclMessage m) { }
+
+        default void onGalDelta(GalDelta d, AclMessage m) { }
         default void onRelayOut(RelayOut r, AclMessage m) { }
         default void onRelayIn(RelayIn r, AclMessage m) { }
         default void onAnnounce(Announce a, AclMessage m) { }
@@ -245,6 +247,24 @@ sealed interface PlatformMessage {
         }
     }
 
+    /**
+     * A page of what changed in the Global Agent List from version {@code from} to {@code gseq}:
+     * the first {@code removed} entries of all its pages together are removed from the list, the
+     * others added or changed. A member holding version {@code from} applies it; any other waits
+     * for the whole list, which its container sends when the member's confirmation shows it behind.
+     */
+    record GalDelta(long term, long from, long gseq, int removed, Page page) implements PlatformMessage {
+        public String encode() {
+            String head = Lines.content("gal-delta", Lines.params("term", term, "from", from, "gseq", gseq, "removed", removed,
+                    "page", page.index(), "pages", page.count()), List.of());
+            return page.body().isEmpty() ? head : head + "\n" + page.body();
+        }
+
+        public void to(Handler h, AclMessage m) {
+            h.onGalDelta(this, m);
+        }
+    }
+
     // ---- the gateway relay (concord-services) --------------------------------------------------
 
     /** A member's message to a foreign agent, for its container's gateway to carry out. */
@@ -424,6 +444,8 @@ sealed interface PlatformMessage {
             case "lal-copy" -> new LalCopy(optLong(c, "term"), optLong(c, "seq"), p.getOrDefault("container", ""),
                     new Page((int) optLong(c, "page"), (int) Math.max(1, optLong(c, "pages")), Page.body(text), c.entries()));
             case "gal" -> new GalPage(optLong(c, "term"), c.longParam("gseq"), Page.decode(c, text, "GAL"));
+            case "gal-delta" -> new GalDelta(optLong(c, "term"), c.longParam("from"), c.longParam("gseq"),
+                    (int) Math.max(0, Math.min(Integer.MAX_VALUE, optLong(c, "removed"))), Page.decode(c, text, "GAL change"));
             case "announce" -> new Announce(c.longParam("term"), c.param("host"), optLong(c, "seq"), c.senderEntry(m),
                     c.entries().subList(1, c.entries().size()));
             case "who-is-facilitator" -> new WhoIsFacilitator(c.param("secret"), c.longParam("term"), c.param("host"),

@@ -214,6 +214,24 @@ public final class SequenceLayer extends Layer {
         transmit(ctx, env, o);
     }
 
+    /**
+     * Acknowledged frames are kept for their slot's reuse, but not large ones: a container that
+     * sent a list of many pages to a hundred members held them all (at 5,000 agents over 50
+     * simulated hosts, gigabytes).
+     */
+    private void forgetLarge(Out o, long from, long to) {
+        for (long s = Math.max(from + 1, to - config.retransmitBuffer() + 1); s <= to; s++) {
+            int slot = (int) (s % config.retransmitBuffer());
+            byte[] kept = o.ring[slot];
+            if (kept != null && kept.length > LARGE_FRAME && o.ringSeq[slot] == s) {
+                o.ring[slot] = null;
+            }
+        }
+    }
+
+    /** Frames above this size are not kept once acknowledged. */
+    private static final int LARGE_FRAME = 1_536;
+
     /** Frames this sender may have unacknowledged: the receiver's window, at most its reorder window. */
     private boolean windowOpen(Out o) {
         int window = o.credit < 0 ? config.reorderWindow() : Math.min(config.reorderWindow(), o.credit);
@@ -409,7 +427,9 @@ public final class SequenceLayer extends Layer {
                 }
                 if (out != null && streamId == stream) {
                     if (seq > out.acked) {
+                        long was = out.acked;
                         out.acked = Math.min(seq, out.nextSeq - 1);
+                        forgetLarge(out, was, out.acked);
                     }
                     // The window of the latest acknowledgement only: one overtaken by a later one
                     // (reordered, or a late copy) must not open a window the receiver shut since.

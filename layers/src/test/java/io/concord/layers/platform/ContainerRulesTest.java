@@ -743,6 +743,7 @@ class ContainerRulesTest {
             c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
                     PlatformMessage.Page.of(0, 1, body(List.of(a, b)))));
             assertEquals(List.of("a@p", "b@p"), names(List.copyOf(c.layer.globalAgents())));
+            c.advance(ContainerRole.GAL_PUSH_DELAY_MS); // changes arriving together go out together
             assertTrue(c.sent().stream().anyMatch(o -> o.what() instanceof PlatformMessage.GalPage && o.to().equals("m@p")),
                     "the member gets the GAL");
         }

@@ -39,6 +39,44 @@ class NetworkSimulationTest {
                 + String.join("\n", failures));
     }
 
+    /**
+     * Once the hosts agree, a change of one host's list reaches the other hosts' agents as that
+     * change (a gal-delta of the agents added, or removed), not as the whole list again: the whole
+     * list at every change cost N agents times N entries, and ran a simulated network of 2,000
+     * agents out of memory. (A member that misses a change is sent the whole list when its
+     * confirmation shows it behind: manySeedsConverge runs that under loss.)
+     */
+    @Test
+    void aChangeOfOneHostsListReachesTheOthersAsThatChange() {
+        try (NetworkWorld w = new NetworkWorld(5, FaultPlan.NONE, Profile.CLASS_3)) {
+            java.util.Map<String, Integer> accepted = new java.util.TreeMap<>();
+            w.sim.trace().addListener((ns, node, event, detail) -> {
+                if (event.equals("platform-accept") && node.startsWith("h2") && (detail.contains(" gal-delta ") || detail.contains(" gal "))) {
+                    accepted.merge(detail.contains(" gal-delta ") ? "delta" : "whole", 1, Integer::sum);
+                }
+            });
+            for (String h : List.of("h1", "h2", "h3")) {
+                w.addHost(h);
+                // (A change of more than half the list goes whole: h1 is the larger host.)
+                for (int i = 0; i < (h.equals("h1") ? 10 : 4); i++) {
+                    w.start(h, h + "a" + i);
+                }
+            }
+            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
+            w.sim.runFor(1_000);
+            accepted.clear();
+            w.start("h1", "h1new");
+            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
+            w.sim.runFor(1_000);
+            assertEquals(java.util.Map.of("delta", 3), accepted, "each of h2's three members got the one new entry as a change (its container makes the list)");
+            accepted.clear();
+            w.crashHost("h3");
+            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
+            w.sim.runFor(1_000);
+            assertEquals(java.util.Map.of("delta", 3), accepted, "and the lost host's agents as a removal");
+        }
+    }
+
     static String scenario(long seed) {
         SplittableRandom r = new SplittableRandom(seed * 0x9E3779B97F4A7C15L + 1);
         int hosts = 2 + r.nextInt(3);
