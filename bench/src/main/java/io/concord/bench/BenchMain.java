@@ -45,7 +45,7 @@ import io.concord.core.net.Transport;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
-            "sim", "hospital", "serial", "attack", "idle");
+            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -109,11 +109,14 @@ public final class BenchMain {
                     case "serial" -> b.serial();
                     case "attack" -> b.attack();
                     case "idle" -> b.idle();
+                    case "throughput" -> b.throughput();
+                    case "scale" -> b.scale();
                     default -> throw new IllegalStateException(name);
                 }
             }
         }
         b.index();
+        System.exit(0); // JADE leaves threads behind that would keep this JVM up
     }
 
     private ChainedOptionsBuilder options(Class<?> benchmark) {
@@ -451,6 +454,102 @@ public final class BenchMain {
         Charts.line(reportDir.resolve("idle.png"), "Idle cost: % of a core", "agents", "% of one core", pct);
         md.append("\n![idle](idle.png)\n");
         Files.writeString(reportDir.resolve("idle.md"), md.toString());
+    }
+
+    /** Sustained messages per second, Concord against JADE and raw UDP (see ThroughputHarness). */
+    private void throughput() throws IOException {
+        double warm = full ? 5 : 2;
+        double window = full ? 10 : 3;
+        List<String> groups = new ArrayList<>();
+        Map<String, Map<String, List<Double>>> bars = new TreeMap<>();
+        StringBuilder md = new StringBuilder(header("Throughput", "Sustained messages per second on 127.0.0.1: S senders "
+                + "and R receivers (`1to1`: 1 and 1; `16to1`: 16 senders to one receiver; `16pairs`: 16 and 16, sender i to "
+                + "receiver i), all in one JVM (`onejvm`) or the receivers in a second JVM (`processes`), with 100 and 1,000 "
+                + "bytes of content. Concord: class 7, every defence on, one runtime (one loop thread) per JVM; each sender "
+                + "sends as fast as it is let (32 messages an action of a cyclic behaviour) and nothing paces it but the "
+                + "platform's flow control. JADE 4.3: one main container (and a peripheral container for the receivers); "
+                + "JADE has no flow control (its queues grow until the heap is gone), so its senders keep a window of 2,048 "
+                + "messages that the receivers acknowledge every 256. UDP: raw datagrams of the content's size, one thread "
+                + "sending from S sockets as fast as the kernel takes them, one receiving on R sockets through a selector; "
+                + "nothing is acknowledged, so its rate is what arrives. Received messages counted over " + window + " s after "
+                + warm + " s; then the senders stop, and what was sent and never arrived is `lost`.",
+                "Messages received per second"));
+        md.append("| shape | JVMs | bytes | Concord msg/s | JADE msg/s | UDP msg/s | Concord / JADE | Concord / UDP | lost (Concord / JADE) | Concord senders paused |\n")
+                .append("|---|---|---|---|---|---|---|---|---|---|\n");
+        for (String mode : List.of("onejvm", "processes")) {
+            for (String shape : List.of("1to1", "16to1", "16pairs")) {
+                for (int bytes : List.of(100, 1000)) {
+                    Map<String, io.concord.bench.harness.ThroughputHarness.Result> r = new TreeMap<>();
+                    for (String platform : List.of("concord", "jade", "udp")) {
+                        try {
+                            r.put(platform, io.concord.bench.harness.ThroughputHarness.run(platform, shape, mode.equals("processes"),
+                                    bytes, warm, window));
+                        } catch (Exception e) {
+                            throw new IOException("throughput " + platform + " " + shape + " " + mode + " " + bytes + " failed: " + e, e);
+                        }
+                    }
+                    double c = r.get("concord").msgsPerS();
+                    double j = r.get("jade").msgsPerS();
+                    double u = r.get("udp").msgsPerS();
+                    System.out.printf(Locale.ROOT, "RESULT throughput %s %s %d concord_msgs_s=%.0f jade_msgs_s=%.0f udp_msgs_s=%.0f ratio=%.2f udp_ratio=%.2f concord_lost=%d%n",
+                            shape, mode, bytes, c, j, u, c / j, c / u, r.get("concord").lost());
+                    md.append(String.format(Locale.ROOT, "| %s | %s | %d | %.0f | %.0f | %.0f | %.2f | %.2f | %d / %d | %d |%n", shape,
+                            mode, bytes, c, j, u, c / j, c / u, r.get("concord").lost(), r.get("jade").lost(), r.get("concord").pauses()));
+                    String group = shape + " " + bytes + "B";
+                    if (!groups.contains(group)) {
+                        groups.add(group);
+                    }
+                    Map<String, List<Double>> perMode = bars.computeIfAbsent(mode, k -> new java.util.LinkedHashMap<>());
+                    perMode.computeIfAbsent("Concord", k -> new ArrayList<>()).add(c);
+                    perMode.computeIfAbsent("JADE", k -> new ArrayList<>()).add(j);
+                    perMode.computeIfAbsent("UDP", k -> new ArrayList<>()).add(u);
+                }
+            }
+        }
+        for (String mode : List.of("onejvm", "processes")) {
+            String png = "throughput-" + mode + ".png";
+            Charts.bars(reportDir.resolve(png), "Messages per second, " + (mode.equals("onejvm") ? "one JVM" : "receivers in a second JVM"),
+                    "messages per second", groups, bars.get(mode));
+            md.append("\n![").append(mode).append("](").append(png).append(")\n");
+        }
+        Files.writeString(reportDir.resolve("throughput.md"), md.toString());
+    }
+
+    /** The platform from 10 to 5,000 agents over 1 to 50 hosts, simulated (see ScaleHarness). */
+    private void scale() throws IOException {
+        int[][] points = {{10, 1}, {100, 10}, {500, 10}, {1000, 10}, {1000, 20}, {2000, 20}, {5000, 50}};
+        StringBuilder md = new StringBuilder(header("Scale beyond one host", "N agents over H hosts in the test kit's "
+                + "deterministic simulation (seed 7): each host a runtime with its platform (default configuration, class 3: "
+                + "the message counts are those of class 7 but for the handshakes at first contact), its agents started at "
+                + "once, the hosts finding each other by broadcast on one virtual network (50 µs a datagram, no loss). Every "
+                + "agent is taken for a process of its own (the test kit's network can lose frames, so the runtime does not "
+                + "vouch for its agents as it does on one real JVM): each gets its container's alive messages. converge: "
+                + "virtual time until every host has one container followed by all its agents, each holding its host's list "
+                + "and every other host's agents; msgs and bytes: datagrams (each safety frame is sent twice against loss) "
+                + "per agent per maintenance cycle over 5 s, steady; heal: after the last host is lost whole, virtual time "
+                + "until the others agree without it (the federation takes a host for gone after 1.5 s of silence). "
+                + "Virtual time counts the network, not the CPU.", "Virtual time; wall time of the simulation for scale"));
+        md.append("| agents | hosts | converged | converge ms | heal ms | maintenance period ms | datagrams per agent per cycle "
+                + "| bytes per agent per cycle | kB per agent to converge | kB per agent to heal | wall s |\n"
+                + "|---|---|---|---|---|---|---|---|---|---|---|\n");
+        Map<String, TreeMap<Integer, Double>> perAgent = Charts.series(List.of("datagrams per agent per cycle",
+                "kB per agent per cycle"));
+        Map<String, TreeMap<Integer, Double>> times = Charts.series(List.of("converge ms", "heal ms"));
+        for (int[] p : points) {
+            io.concord.bench.harness.ScaleHarness.Result r = io.concord.bench.harness.ScaleHarness.run(p[0], p[1], 7);
+            System.out.println(r.line());
+            md.append(String.format(Locale.ROOT, "| %d | %d | %s | %.1f | %.0f | %.0f | %.2f | %.0f | %.1f | %.1f | %.1f |%n", r.agents(),
+                    r.hosts(), r.converged() && r.healed() ? "yes" : "NO", r.convergeMs(), r.healMs(), r.periodMs(),
+                    r.msgsPerCyclePerAgent(), r.bytesPerCyclePerAgent(), r.convergeKbPerAgent(), r.healKbPerAgent(), r.wallS()));
+            perAgent.get("datagrams per agent per cycle").put(r.agents(), r.msgsPerCyclePerAgent());
+            perAgent.get("kB per agent per cycle").put(r.agents(), r.bytesPerCyclePerAgent() / 1000);
+            times.get("converge ms").put(r.agents(), r.convergeMs());
+            times.get("heal ms").put(r.agents(), r.healMs());
+        }
+        Charts.line(reportDir.resolve("scale-cost.png"), "Maintenance cost per agent per cycle", "agents", "per agent per cycle", perAgent);
+        Charts.line(reportDir.resolve("scale-time.png"), "Converge and heal (virtual time)", "agents", "ms", times);
+        md.append("\n![cost](scale-cost.png)\n\n![time](scale-time.png)\n");
+        Files.writeString(reportDir.resolve("scale.md"), md.toString());
     }
 
     private static void sleepS(long s) {

@@ -66,6 +66,18 @@ public final class Children implements AutoCloseable {
         return processes.get(i).info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(-1L);
     }
 
+    /** Sends a command line to child i and returns the first line it prints that starts with {@code answer}. */
+    public String ask(int i, String line, String answer) throws IOException {
+        tell(i, line);
+        String got;
+        while ((got = outputs.get(i).readLine()) != null) {
+            if (got.startsWith(answer)) {
+                return got;
+            }
+        }
+        throw new IOException("child " + i + " ended before it answered " + line);
+    }
+
     /** Sends a command line to child i. */
     public void tell(int i, String line) throws IOException {
         OutputStream in = processes.get(i).getOutputStream();

@@ -108,6 +108,102 @@ public final class Charts {
         ImageIO.write(img, "png", file.toFile());
     }
 
+    /**
+     * Grouped bars: for each group (a label under the axis), one bar per series, in the series'
+     * order and colours; each bar's value is written above it.
+     */
+    public static void bars(Path file, String title, String yLabel, List<String> groups, Map<String, List<Double>> series)
+            throws IOException {
+        int w = Math.max(820, 90 + 110 * groups.size() + 200);
+        int h = 480;
+        int left = 90;
+        int right = 200;
+        int top = 50;
+        int bottom = 70;
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, w, h);
+        double maxY = 0;
+        for (List<Double> v : series.values()) {
+            for (Double d : v) {
+                if (d != null) {
+                    maxY = Math.max(maxY, d);
+                }
+            }
+        }
+        maxY = maxY == 0 ? 1 : maxY * 1.15;
+        int pw = w - left - right;
+        int ph = h - top - bottom;
+        g.setColor(Color.BLACK);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 16));
+        g.drawString(title, left, 30);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.drawLine(left, top + ph, left + pw, top + ph);
+        g.drawLine(left, top, left, top + ph);
+        for (int i = 0; i <= 5; i++) {
+            double v = maxY * i / 5;
+            int y = top + ph - (int) (ph * i / 5.0);
+            g.setColor(new Color(0xdddddd));
+            g.drawLine(left + 1, y, left + pw, y);
+            g.setColor(Color.BLACK);
+            g.drawString(compact(v), left - 55, y + 4);
+        }
+        int groupW = pw / Math.max(1, groups.size());
+        int n = series.size();
+        int barW = Math.max(4, (groupW - 16) / Math.max(1, n));
+        for (int gi = 0; gi < groups.size(); gi++) {
+            int gx = left + gi * groupW + 8;
+            int k = 0;
+            for (Map.Entry<String, List<Double>> s : series.entrySet()) {
+                Double v = gi < s.getValue().size() ? s.getValue().get(gi) : null;
+                if (v != null) {
+                    int bh = (int) (ph * v / maxY);
+                    g.setColor(COLORS[k % COLORS.length]);
+                    g.fillRect(gx + k * barW, top + ph - bh, barW - 2, bh);
+                    g.setColor(Color.DARK_GRAY);
+                    g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 9));
+                    g.drawString(compact(v), gx + k * barW, top + ph - bh - 3);
+                }
+                k++;
+            }
+            g.setColor(Color.BLACK);
+            g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+            String label = groups.get(gi);
+            int sp = label.indexOf(' ');
+            g.drawString(sp < 0 ? label : label.substring(0, sp), gx, top + ph + 16);
+            if (sp >= 0) {
+                g.drawString(label.substring(sp + 1), gx, top + ph + 30);
+            }
+        }
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.rotate(-Math.PI / 2);
+        g.drawString(yLabel, -(top + ph / 2 + 40), 20);
+        g.rotate(Math.PI / 2);
+        int k = 0;
+        for (String name : series.keySet()) {
+            g.setColor(COLORS[k % COLORS.length]);
+            g.fillRect(left + pw + 20, top + 10 + 22 * k, 14, 14);
+            g.setColor(Color.BLACK);
+            g.drawString(name, left + pw + 40, top + 22 + 22 * k);
+            k++;
+        }
+        g.dispose();
+        ImageIO.write(img, "png", file.toFile());
+    }
+
+    /** 1234567 as 1.2M, 45600 as 45.6k. */
+    static String compact(double v) {
+        if (v >= 1e6) {
+            return String.format(java.util.Locale.ROOT, "%.1fM", v / 1e6);
+        }
+        if (v >= 1e3) {
+            return String.format(java.util.Locale.ROOT, "%.1fk", v / 1e3);
+        }
+        return String.format(java.util.Locale.ROOT, "%.2f", v);
+    }
+
     public static Map<String, TreeMap<Integer, Double>> series(List<String> names) {
         Map<String, TreeMap<Integer, Double>> m = new LinkedHashMap<>();
         names.forEach(n -> m.put(n, new TreeMap<>()));

@@ -43,6 +43,7 @@ public final class VirtualNetwork implements Network {
     private final Set<String> downHosts = new HashSet<>();
     private long sequence;
     private long sent;
+    private long sentBytes;
     private long delivered;
     private long dropped;
 
@@ -108,6 +109,11 @@ public final class VirtualNetwork implements Network {
         return sent;
     }
 
+    /** Bytes of the datagrams counted by {@link #sentCount()}. */
+    public long sentBytes() {
+        return sentBytes;
+    }
+
     public long deliveredCount() {
         return delivered;
     }
@@ -135,6 +141,7 @@ public final class VirtualNetwork implements Network {
      */
     private void sendTcp(Address from, Address to, byte[] data, int offset, int length) {
         sent++;
+        sentBytes += length;
         if (blocked(from.host(), to.host())) {
             dropped++;
             return;
@@ -236,6 +243,7 @@ public final class VirtualNetwork implements Network {
     private void sendOne(Address from, Address to, VirtualEndpoint target, byte[] data, int offset, int length) {
         Address hostOf = target != null ? target.local : to;
         sent++;
+        sentBytes += length;
         if (blocked(from.host(), hostOf.host()) || random.nextDouble() < plan.dropRate()) {
             dropped++;
             return;
