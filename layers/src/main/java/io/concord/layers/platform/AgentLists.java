@@ -81,11 +81,24 @@ final class AgentLists {
     }
 
     private void put(AgentEntry e) {
-        Address a = e.transportAddress();
-        if (a != null) {
-            routes.put(e.name(), new Route(a, e.aid()));
+        Route r = SHARED_ROUTES.get(e);
+        if (r == null) {
+            Address a = e.transportAddress();
+            if (a == null) {
+                return;
+            }
+            r = new Route(a, e.aid());
+            if (SHARED_ROUTES.size() >= Lines.MAX_SHARED) {
+                SHARED_ROUTES.clear();
+            }
+            SHARED_ROUTES.put(e, r);
         }
+        routes.put(e.name(), r);
     }
+
+    /** Routes shared by every agent of this JVM, as the entries are (see {@link Lines}); immutable. */
+    private static final java.util.concurrent.ConcurrentHashMap<AgentEntry, Route> SHARED_ROUTES =
+            new java.util.concurrent.ConcurrentHashMap<>();
 
     /** Every agent this agent knows: the LAL, then the GAL's agents the LAL does not hold. */
     List<AgentEntry> all() {
