@@ -38,7 +38,7 @@ final class AgentLists {
     /** The GAL's version, and the agent it came from (this agent's container, or itself). */
     long gseq;
     String galFrom;
-    private final Map<String, Route> routes = new HashMap<>();
+    private Map<String, Route> routes = new HashMap<>();
     private final LinkedHashMap<String, Route> recentRoutes = new LinkedHashMap<>(16, 0.75f, true);
     private final Map<String, Long> recentSince = new HashMap<>();
 
@@ -62,21 +62,26 @@ final class AgentLists {
 
     /** The lists changed: the routes follow, and the old ones enter their grace. */
     void rebuildRoutes(long nowNs) {
-        for (Map.Entry<String, Route> e : routes.entrySet()) {
-            recentRoutes.put(e.getKey(), e.getValue());
-            recentSince.put(e.getKey(), nowNs);
-        }
-        while (recentRoutes.size() > MAX_RECENT) {
-            String eldest = recentRoutes.keySet().iterator().next();
-            recentRoutes.remove(eldest);
-            recentSince.remove(eldest);
-        }
-        routes.clear();
+        Map<String, Route> was = routes;
+        routes = new HashMap<>(Math.max(16, was.size() * 4 / 3 + 1));
         for (AgentEntry e : gal.values()) {
             put(e);
         }
         for (AgentEntry e : lal.values()) {
             put(e);
+        }
+        // Only the routes that went: keeping every route of the lists in the grace map too cost
+        // each agent two more maps of the whole list (at 5,000 agents, gigabytes in one JVM).
+        for (Map.Entry<String, Route> e : was.entrySet()) {
+            if (!routes.containsKey(e.getKey())) {
+                recentRoutes.put(e.getKey(), e.getValue());
+                recentSince.put(e.getKey(), nowNs);
+            }
+        }
+        while (recentRoutes.size() > MAX_RECENT) {
+            String eldest = recentRoutes.keySet().iterator().next();
+            recentRoutes.remove(eldest);
+            recentSince.remove(eldest);
         }
     }
 
