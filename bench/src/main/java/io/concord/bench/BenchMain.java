@@ -533,8 +533,7 @@ public final class BenchMain {
         md.append("| agents | hosts | converged | converge ms | heal ms | maintenance period ms | datagrams per agent per cycle "
                 + "| bytes per agent per cycle | kB per agent to converge | kB per agent to heal | wall s |\n"
                 + "|---|---|---|---|---|---|---|---|---|---|---|\n");
-        Map<String, TreeMap<Integer, Double>> perAgent = Charts.series(List.of("datagrams per agent per cycle",
-                "kB per agent per cycle"));
+        Map<String, TreeMap<Integer, Double>> perAgent = Charts.series(List.of("datagrams", "kB"));
         Map<String, TreeMap<Integer, Double>> times = Charts.series(List.of("converge ms", "heal ms"));
         String heap = System.getProperty("concord.scale.heap", "14g");
         for (int[] p : points) {
@@ -572,8 +571,8 @@ public final class BenchMain {
             md.append(String.format(Locale.ROOT, "| %d | %d | %s | %.1f | %.0f | %.0f | %.2f | %.0f | %.1f | %.1f | %.1f |%n", r.agents(),
                     r.hosts(), r.converged() && r.healed() ? "yes" : "NO", r.convergeMs(), r.healMs(), r.periodMs(),
                     r.msgsPerCyclePerAgent(), r.bytesPerCyclePerAgent(), r.convergeKbPerAgent(), r.healKbPerAgent(), r.wallS()));
-            perAgent.get("datagrams per agent per cycle").put(r.agents(), r.msgsPerCyclePerAgent());
-            perAgent.get("kB per agent per cycle").put(r.agents(), r.bytesPerCyclePerAgent() / 1000);
+            perAgent.get("datagrams").put(r.agents(), r.msgsPerCyclePerAgent());
+            perAgent.get("kB").put(r.agents(), r.bytesPerCyclePerAgent() / 1000);
             times.get("converge ms").put(r.agents(), r.convergeMs());
             times.get("heal ms").put(r.agents(), r.healMs());
         }
