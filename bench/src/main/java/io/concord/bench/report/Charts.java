@@ -56,20 +56,7 @@ public final class Charts {
         maxY *= 1.1;
         int pw = w - left - right;
         int ph = h - top - bottom;
-        g.setColor(Color.BLACK);
-        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 16));
-        g.drawString(title, left, 30);
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
-        g.drawLine(left, top + ph, left + pw, top + ph);
-        g.drawLine(left, top, left, top + ph);
-        for (int i = 0; i <= 5; i++) {
-            double v = maxY * i / 5;
-            int y = top + ph - (int) (ph * i / 5.0);
-            g.setColor(new Color(0xdddddd));
-            g.drawLine(left + 1, y, left + pw, y);
-            g.setColor(Color.BLACK);
-            g.drawString(String.format("%.0f", v), left - 45, y + 4);
-        }
+        axes(g, title, left, top, pw, ph, maxY, v -> String.format("%.0f", v), 45);
         double spanX = Math.max(1, maxX - minX);
         java.util.TreeSet<Integer> xs = new java.util.TreeSet<>();
         series.values().forEach(s -> xs.addAll(s.keySet()));
@@ -136,20 +123,7 @@ public final class Charts {
         maxY = maxY == 0 ? 1 : maxY * 1.15;
         int pw = w - left - right;
         int ph = h - top - bottom;
-        g.setColor(Color.BLACK);
-        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 16));
-        g.drawString(title, left, 30);
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
-        g.drawLine(left, top + ph, left + pw, top + ph);
-        g.drawLine(left, top, left, top + ph);
-        for (int i = 0; i <= 5; i++) {
-            double v = maxY * i / 5;
-            int y = top + ph - (int) (ph * i / 5.0);
-            g.setColor(new Color(0xdddddd));
-            g.drawLine(left + 1, y, left + pw, y);
-            g.setColor(Color.BLACK);
-            g.drawString(compact(v), left - 55, y + 4);
-        }
+        axes(g, title, left, top, pw, ph, maxY, Charts::compact, 55);
         int groupW = pw / Math.max(1, groups.size());
         int n = series.size();
         int barW = Math.max(4, (groupW - 16) / Math.max(1, n));
@@ -191,6 +165,25 @@ public final class Charts {
         }
         g.dispose();
         ImageIO.write(img, "png", file.toFile());
+    }
+
+    /** The title, the two axes, and five grid lines with their values, written by {@code label}. */
+    private static void axes(Graphics2D g, String title, int left, int top, int pw, int ph, double maxY,
+                             java.util.function.DoubleFunction<String> label, int labelWidth) {
+        g.setColor(Color.BLACK);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 16));
+        g.drawString(title, left, 30);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.drawLine(left, top + ph, left + pw, top + ph);
+        g.drawLine(left, top, left, top + ph);
+        for (int i = 0; i <= 5; i++) {
+            double v = maxY * i / 5;
+            int y = top + ph - (int) (ph * i / 5.0);
+            g.setColor(new Color(0xdddddd));
+            g.drawLine(left + 1, y, left + pw, y);
+            g.setColor(Color.BLACK);
+            g.drawString(label.apply(v), left - labelWidth, y + 4);
+        }
     }
 
     /** 1234567 as 1.2M, 45600 as 45.6k. */

@@ -34,25 +34,8 @@ class CoLocatedTest {
                         .identities(IdentityStore.ephemeral()).build()).build();
     }
 
-    /** Completes when the condition holds over the agents' container layers, checked on the loop at every change. */
     private static CompletableFuture<Void> when(Platform p, List<AID> agents, Predicate<List<ContainerLayer>> cond) {
-        CompletableFuture<Void> f = new CompletableFuture<>();
-        p.runtime().execute(() -> {
-            List<ContainerLayer> layers = new ArrayList<>();
-            for (AID a : agents) {
-                layers.add(Platform.containerLayer(p.runtime(), a));
-            }
-            Runnable check = () -> {
-                if (!f.isDone() && cond.test(layers)) {
-                    f.complete(null);
-                }
-            };
-            for (ContainerLayer l : layers) {
-                l.addListener(x -> check.run());
-            }
-            check.run();
-        });
-        return f;
+        return PlatformSocketsTest.when(p, agents, cond);
     }
 
     /** One container, followed by all, listing exactly {@code n} agents in every copy. */

@@ -43,7 +43,7 @@ class PlatformSocketsTest {
     }
 
     /** Completes when the condition holds over the agents' layers, checked on the loop at every change. */
-    private static CompletableFuture<Void> when(Platform p, List<AID> agents, java.util.function.Predicate<List<ContainerLayer>> cond) {
+    static CompletableFuture<Void> when(Platform p, List<AID> agents, java.util.function.Predicate<List<ContainerLayer>> cond) {
         CompletableFuture<Void> f = new CompletableFuture<>();
         p.runtime().execute(() -> {
             List<ContainerLayer> layers = new ArrayList<>();
