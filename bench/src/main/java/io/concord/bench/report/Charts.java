@@ -33,11 +33,9 @@ public final class Charts {
         int right = 200;
         int top = 50;
         int bottom = 60;
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        BufferedImage img = canvas(w, h);
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setColor(Color.WHITE);
-        g.fillRect(0, 0, w, h);
         double maxY = 0;
         int minX = Integer.MAX_VALUE;
         int maxX = Integer.MIN_VALUE;
@@ -86,9 +84,7 @@ public final class Charts {
                 px0 = px;
                 py0 = py;
             }
-            g.fillRect(left + pw + 20, top + 10 + 22 * k, 14, 14);
-            g.setColor(Color.BLACK);
-            g.drawString(s.getKey(), left + pw + 40, top + 22 + 22 * k);
+            legend(g, k, s.getKey(), left + pw, top);
             k++;
         }
         g.dispose();
@@ -107,11 +103,9 @@ public final class Charts {
         int right = 200;
         int top = 50;
         int bottom = 70;
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        BufferedImage img = canvas(w, h);
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setColor(Color.WHITE);
-        g.fillRect(0, 0, w, h);
         double maxY = 0;
         for (List<Double> v : series.values()) {
             for (Double d : v) {
@@ -158,13 +152,27 @@ public final class Charts {
         int k = 0;
         for (String name : series.keySet()) {
             g.setColor(COLORS[k % COLORS.length]);
-            g.fillRect(left + pw + 20, top + 10 + 22 * k, 14, 14);
-            g.setColor(Color.BLACK);
-            g.drawString(name, left + pw + 40, top + 22 + 22 * k);
-            k++;
+            legend(g, k++, name, left + pw, top);
         }
         g.dispose();
         ImageIO.write(img, "png", file.toFile());
+    }
+
+    /** A white picture. */
+    private static BufferedImage canvas(int w, int h) {
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, w, h);
+        g.dispose();
+        return img;
+    }
+
+    /** The k-th line of the legend, right of the plot: a square in the current colour, and the name. */
+    private static void legend(Graphics2D g, int k, String name, int plotRight, int top) {
+        g.fillRect(plotRight + 20, top + 10 + 22 * k, 14, 14);
+        g.setColor(Color.BLACK);
+        g.drawString(name, plotRight + 40, top + 22 + 22 * k);
     }
 
     /** The title, the two axes, and five grid lines with their values, written by {@code label}. */

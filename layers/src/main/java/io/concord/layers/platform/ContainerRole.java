@@ -316,6 +316,7 @@ final class ContainerRole extends RoleBase {
         // be waiting to be read.
         boolean late = cycleDueNs > 0 && now - cycleDueNs > st.periodMs * 500_000L;
         List<String> dead = new ArrayList<>();
+        boolean remote = false; // a member elsewhere: the cycle keeps its period
         for (AgentEntry e : lists.lal.values()) {
             String n = e.name();
             if (n.equals(ctx.self())) {
@@ -325,6 +326,7 @@ final class ContainerRole extends RoleBase {
                 lastHeard.put(n, now); // alive while it is in this runtime: it is watched for leaving
                 continue;
             }
+            remote = true;
             Long heard = lastHeard.get(n);
             if (heard == null) {
                 lastHeard.put(n, now);
@@ -353,13 +355,6 @@ final class ContainerRole extends RoleBase {
         // the list's version, and as a check that this agent is still its container). An idle JVM
         // of agents then does next to nothing between cycles.
         // With no member elsewhere, the cycle itself comes only every few periods.
-        boolean remote = false;
-        for (AgentEntry e : lists.lal.values()) {
-            if (!e.name().equals(ctx.self()) && !ctx.here(e)) {
-                remote = true;
-                break;
-            }
-        }
         boolean localAlive = !remote || cycles % LOCAL_ALIVE_EVERY == 0;
         for (AgentEntry e : lists.lal.values()) {
             if (e.name().equals(ctx.self())) {
