@@ -61,6 +61,33 @@ class SequenceLayerTest {
         return e.data()[e.offset()];
     }
 
+    /** An ack of the sender's stream up to {@code seq}, from session 7, with the given window. */
+    private static Envelope ack(Envelope sentData, long seq, int window) {
+        byte[] b = new byte[SequenceLayer.HEADER_BYTES + 16];
+        b[0] = 1;
+        System.arraycopy(sentData.data(), sentData.offset() + 1, b, 1, 4); // the sender's stream
+        Frames.putLong(b, 5, seq);
+        Frames.putInt(b, 13, 7);
+        Frames.putLong(b, 17, 1);
+        Frames.putInt(b, 25, window);
+        Envelope e = Envelope.incoming(B, b, 0, b.length, 0);
+        e.setPeerId(B_ID);
+        return e;
+    }
+
+    @Test
+    void onlyTheLatestAcknowledgementsWindowCounts() {
+        List<Envelope> f = sendAll("m1", "m2", "m3");
+        sender.receiveUp(ack(f.get(0), 3, 0)); // all taken, and the window shut: its mailbox is full
+        sender.sendDown(payload("m4"));
+        assertNull(sender.pollDown(), "held while the window is shut");
+        sender.receiveUp(ack(f.get(0), 2, 256)); // an older ack, overtaken (reordered, or a late copy)
+        assertNull(sender.pollDown(), "an overtaken acknowledgement opens nothing");
+        sender.receiveUp(ack(f.get(0), 3, 256)); // the receiver's agent took its mailbox down
+        Envelope next = sender.pollDown();
+        assertEquals(0, kind(next), "the held frame goes as the window opens");
+    }
+
     @Test
     void deliversInOrderWhateverOrderFramesArriveIn() {
         List<Envelope> f = sendAll("one", "two", "three", "four");
