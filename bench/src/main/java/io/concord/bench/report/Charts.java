@@ -54,7 +54,9 @@ public final class Charts {
         maxY *= 1.1;
         int pw = w - left - right;
         int ph = h - top - bottom;
-        axes(g, title, left, top, pw, ph, maxY, v -> String.format("%.0f", v), 45);
+        // Whole numbers, unless the scale is small (an idle cost in % of a core read 1, 1, 1, 0, 0, 0).
+        String grid = maxY < 10 ? "%.2f" : "%.0f";
+        axes(g, title, left, top, pw, ph, maxY, v -> String.format(java.util.Locale.ROOT, grid, v), 45);
         double spanX = Math.max(1, maxX - minX);
         java.util.TreeSet<Integer> xs = new java.util.TreeSet<>();
         series.values().forEach(s -> xs.addAll(s.keySet()));
