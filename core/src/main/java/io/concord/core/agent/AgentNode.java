@@ -237,6 +237,9 @@ final class AgentNode implements StackHost {
         if (type == CoLocated.class) {
             return type.cast(coLocated);
         }
+        if (type == io.concord.core.net.Channels.class) {
+            return runtime.network() instanceof io.concord.core.net.Channels c ? type.cast(c) : null;
+        }
         return type == io.concord.core.time.LoopLimits.class ? type.cast(runtime.loopLimits()) : null;
     }
 

@@ -23,7 +23,7 @@ import java.util.concurrent.TimeUnit;
  * Real sockets, UDP and TCP, non-blocking, all registered with one {@link Selector} so that a
  * single loop serves every agent of a JVM. TCP is described in {@link TcpEndpoint}.
  */
-public final class SocketNetwork implements Network {
+public final class SocketNetwork implements Network, Channels {
     /** Largest UDP payload over IPv4. */
     public static final int MAX_DATAGRAM = 65507;
     /**
@@ -82,6 +82,27 @@ public final class SocketNetwork implements Network {
         int onReady(SelectionKey key, long nowNs);
 
         void close();
+    }
+
+    @Override
+    public SelectionKey register(java.nio.channels.SelectableChannel channel, int ops, Ready ready) throws IOException {
+        java.util.Objects.requireNonNull(ready, "ready");
+        return channel.register(selector, ops, new Handler() {
+            @Override
+            public int onReady(SelectionKey key, long nowNs) {
+                ready.onReady(key, nowNs);
+                return 1;
+            }
+
+            @Override
+            public void close() {
+                try {
+                    channel.close();
+                } catch (IOException ignored) {
+                    // closing anyway
+                }
+            }
+        });
     }
 
     @Override

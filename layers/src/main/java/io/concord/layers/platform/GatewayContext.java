@@ -15,6 +15,23 @@ public interface GatewayContext {
     void execute(Runnable task);
 
     /**
+     * The loop's selector, to serve the gateway's sockets on the loop itself (no thread hand-off
+     * between the socket and the agents); {@code null} where the platform's network has none (the
+     * test kit's virtual network): the gateway then runs a selector thread of its own.
+     */
+    default io.concord.core.net.Channels channels() {
+        return null;
+    }
+
+    /**
+     * Runs a task on the loop after {@code ms} milliseconds (by the platform's clock). Loop only;
+     * offered wherever {@link #channels()} is.
+     */
+    default void after(long ms, Runnable task) {
+        throw new UnsupportedOperationException("this platform lends no loop to its gateway");
+    }
+
+    /**
      * Delivers a message from a foreign agent to an agent of this platform by name (relayed by the
      * container to wherever the agent runs). Loop only.
      *

@@ -138,6 +138,16 @@ final class GatewayRelay implements PlatformMessage.Handler {
         }
 
         @Override
+        public io.concord.core.net.Channels channels() {
+            return ctx.channels();
+        }
+
+        @Override
+        public void after(long ms, Runnable task) {
+            ctx.after(ms, task);
+        }
+
+        @Override
         public boolean deliver(AclMessage message, AID receiver) {
             String name = receiver.name();
             if (name.equalsIgnoreCase(ctx.self())) {

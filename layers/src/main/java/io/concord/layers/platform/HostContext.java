@@ -95,6 +95,11 @@ final class HostContext implements PlatformContext {
     }
 
     @Override
+    public io.concord.core.net.Channels channels() {
+        return host.capability(io.concord.core.net.Channels.class);
+    }
+
+    @Override
     public java.util.random.RandomGenerator random() {
         return host.random();
     }

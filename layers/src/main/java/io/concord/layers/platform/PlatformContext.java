@@ -47,6 +47,11 @@ interface PlatformContext {
         return null;
     }
 
+    /** The loop's selector, for a gateway that serves sockets on the loop; {@code null} where the network has none. */
+    default io.concord.core.net.Channels channels() {
+        return null;
+    }
+
     /** True if the entry's agent runs in this agent's runtime, reached in memory. */
     default boolean here(AgentEntry e) {
         io.concord.core.agent.CoLocated c = coLocated();
