@@ -10,7 +10,6 @@ import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
 import java.nio.channels.SelectionKey;
-import java.nio.channels.Selector;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
@@ -20,11 +19,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.LongSupplier;
 
 /**
- * The ACC's HTTP/1.1 server: non-blocking, one thread for every connection, with every resource a
+ * The ACC's HTTP/1.1 server: non-blocking, one loop for every connection, with every resource a
  * client can make it hold bounded. A request costs the memory of the bytes that actually arrived
  * (an announced length allocates nothing), at most {@link Limits#maxHead} of head and
  * {@link Limits#maxBody} of body; it must arrive whole within {@link Limits#requestTimeoutNs} of its
@@ -32,7 +30,8 @@ import java.util.function.LongSupplier;
  * held the server longest without finishing a request (or, failing that, the one idle longest). Every
  * connection closed for a limit is counted in the drop counters with its reason.
  *
- * <p>The handler runs on the server's thread and must not block. Leading blank lines before a
+ * <p>It runs on a {@link BridgeLoop}: the platform's own, or a thread of the bridge's. The handler
+ * runs on that loop and must not block. Leading blank lines before a
  * request are skipped (JADE writes two after each). Bodies need a {@code Content-Length}: chunked
  * requests are refused with 411, as JADE never sends them.
  */
@@ -63,12 +62,12 @@ final class AccServer implements AutoCloseable {
     }
 
     interface Handler {
-        /** On the server's thread; must not block. */
+        /** On the server's loop; must not block. */
         Response handle(Request request);
 
         /**
          * The server refused a request itself ({@code answered}: with a 4xx) or closed a
-         * connection for a limit: to be counted with its reason. On the server's thread.
+         * connection for a limit: to be counted with its reason. On the server's loop.
          */
         void dropped(String reason, InetAddress from, String why, boolean answered);
     }
@@ -76,17 +75,14 @@ final class AccServer implements AutoCloseable {
     private final Limits limits;
     private final Handler handler;
     private final LongSupplier nanos;
-    private final Selector selector;
+    private final BridgeLoop loop;
     private final ServerSocketChannel server;
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(64 * 1024);
     private final List<Conn> conns = new ArrayList<>();
-    private final ConcurrentLinkedQueue<Runnable> tasks = new ConcurrentLinkedQueue<>();
-    private final Thread thread;
-    private volatile boolean running = true;
+    private boolean closed;
     private volatile int open;
     private volatile int underWay;
     private volatile long buffered;
-    private long lastSweepNs;
 
     /** One client connection and what it has sent that is not answered yet. */
     private static final class Conn {
@@ -112,28 +108,26 @@ final class AccServer implements AutoCloseable {
     }
 
     /**
-     * Binds and starts serving on a thread of its own.
+     * Binds and serves on the loop given (the platform's, or the bridge's own thread). Call on
+     * that loop.
      *
      * @throws UncheckedIOException if the address cannot be bound, saying which
      */
-    AccServer(String host, int port, Limits limits, Handler handler, LongSupplier nanos, String threadName) {
+    AccServer(String host, int port, Limits limits, Handler handler, LongSupplier nanos, BridgeLoop loop) {
         this.limits = limits;
         this.handler = handler;
         this.nanos = nanos;
+        this.loop = loop;
         try {
-            selector = Selector.open();
             server = ServerSocketChannel.open();
             server.setOption(StandardSocketOptions.SO_REUSEADDR, true);
             server.bind(new InetSocketAddress(host, port), 128);
             server.configureBlocking(false);
-            server.register(selector, SelectionKey.OP_ACCEPT);
+            loop.register(server, SelectionKey.OP_ACCEPT, (k, now) -> onAccept(nanos.getAsLong()));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot listen on " + host + ":" + port + " (" + e.getMessage() + ")", e);
         }
-        lastSweepNs = nanos.getAsLong();
-        thread = new Thread(this::run, threadName);
-        thread.setDaemon(true);
-        thread.start();
+        loop.after(1_000, this::everySecond);
     }
 
     /** The port bound. */
@@ -159,74 +153,58 @@ final class AccServer implements AutoCloseable {
     /** Closes connections past their time now (by the injected clock); completes when done. Any thread. */
     CompletableFuture<Void> sweep() {
         CompletableFuture<Void> done = new CompletableFuture<>();
-        tasks.add(() -> {
+        loop.execute(() -> {
             expire(nanos.getAsLong());
             done.complete(null);
         });
-        selector.wakeup();
         return done;
     }
 
+    /** Closes the server and every connection. On the loop. */
     @Override
     public void close() {
-        running = false;
-        selector.wakeup();
+        closed = true;
+        for (Conn c : new ArrayList<>(conns)) {
+            closeConn(c);
+        }
         try {
-            thread.join(5_000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+            server.close();
+        } catch (IOException ignored) {
+            // closing anyway
+        }
+        open = 0;
+        underWay = 0;
+        buffered = 0;
+    }
+
+    private void everySecond() {
+        if (!closed) {
+            expire(nanos.getAsLong());
+            loop.after(1_000, this::everySecond);
         }
     }
 
-    private void run() {
+    private void onAccept(long now) {
         try {
-            while (running) {
-                selector.select(1_000);
-                Runnable t;
-                while ((t = tasks.poll()) != null) {
-                    t.run();
-                }
-                long now = nanos.getAsLong();
-                for (SelectionKey k : selector.selectedKeys()) {
-                    if (!k.isValid()) {
-                        continue;
-                    }
-                    if (k.isAcceptable()) {
-                        accept(now);
-                    } else {
-                        Conn c = (Conn) k.attachment();
-                        try {
-                            if (k.isWritable() && flush(c, k) && c.len > 0) {
-                                process(c, k, now); // requests that came in behind the one answered
-                            }
-                            if (k.isValid() && k.isReadable()) {
-                                read(c, k, now);
-                            }
-                        } catch (IOException e) {
-                            closeConn(c);
-                        }
-                    }
-                }
-                selector.selectedKeys().clear();
-                if (now - lastSweepNs >= 1_000_000_000L) {
-                    expire(now);
-                }
+            accept(now);
+        } catch (IOException e) {
+            LOG.debug("the HTTP MTP could not accept a connection: {}", e.toString());
+        }
+    }
+
+    private void onConn(Conn c, SelectionKey k, long now) {
+        try {
+            if (k.isWritable() && flush(c, k) && c.len > 0) {
+                process(c, k, now); // requests that came in behind the one answered
             }
-        } catch (IOException | RuntimeException e) {
-            LOG.error("the HTTP MTP's server stopped: {}", e.toString(), e);
-        } finally {
-            for (Conn c : new ArrayList<>(conns)) {
-                closeConn(c);
+            if (k.isValid() && k.isReadable()) {
+                read(c, k, now);
             }
-            try {
-                server.close();
-                selector.close();
-            } catch (IOException ignored) {
-                // closing anyway
-            }
-            open = 0;
-            underWay = 0;
-            buffered = 0;
+        } catch (IOException e) {
+            closeConn(c);
+        } catch (RuntimeException e) {
+            LOG.warn("the HTTP MTP closed a connection from {} after a failure: {}", c.remote.getHostAddress(), e.toString(), e);
+            closeConn(c);
         }
     }
 
@@ -258,7 +236,7 @@ final class AccServer implements AutoCloseable {
             ch.setOption(StandardSocketOptions.TCP_NODELAY, true);
             InetSocketAddress remote = (InetSocketAddress) ch.getRemoteAddress();
             Conn c = new Conn(ch, remote.getAddress(), now);
-            ch.register(selector, SelectionKey.OP_READ, c);
+            loop.register(ch, SelectionKey.OP_READ, (k, at) -> onConn(c, k, nanos.getAsLong())); // the server's clock, injected
             conns.add(c);
         }
     }
@@ -280,7 +258,6 @@ final class AccServer implements AutoCloseable {
     }
 
     private void expire(long now) {
-        lastSweepNs = now;
         for (Conn c : new ArrayList<>(conns)) {
             if (c.drainUntilNs >= 0) {
                 if (now >= c.drainUntilNs) {
@@ -473,7 +450,12 @@ final class AccServer implements AutoCloseable {
 
     /** The offset just past the blank line that ends the head, or -1. */
     static int headEnd(byte[] b, int len) {
-        for (int i = 0; i + 1 < len; i++) {
+        return headEnd(b, 0, len);
+    }
+
+    /** The offset just past the blank line that ends a head starting at {@code from}, or -1. */
+    static int headEnd(byte[] b, int from, int len) {
+        for (int i = from; i + 1 < len; i++) {
             if (b[i] == '\n') {
                 if (b[i + 1] == '\n') {
                     return i + 2;

@@ -18,7 +18,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.ExecutorService;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -33,14 +33,17 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class HttpMtp implements Gateway {
     private static final Logger LOG = LoggerFactory.getLogger(HttpMtp.class);
     static final int MAX_BODY = 1 << 20;
-    /** Messages to foreign agents waiting for the out thread; beyond, the sender is told FAILURE. */
+    /** Messages to foreign agents waiting to be posted; beyond, the sender is told FAILURE. */
     static final int OUT_QUEUE = 4096;
 
     private final String host;
     private final int port;
     private final String advertisedHost;
     private AccServer server;
-    private ExecutorService out;
+    private BridgeLoop loop;
+    private MtpClient client;
+    /** Messages given to the client and not done yet; any thread reads it to refuse past {@link #OUT_QUEUE}. */
+    private final java.util.concurrent.atomic.AtomicInteger outQueued = new java.util.concurrent.atomic.AtomicInteger();
     private final AccServer.Limits limits;
     private final java.util.function.LongSupplier nanos;
     private final DropCounters drops = new DropCounters();
@@ -48,7 +51,6 @@ public final class HttpMtp implements Gateway {
     private final ReplyLimit replyLimit;
     private volatile GatewayContext context;
     private final AgentManagement management = new AgentManagement(this::addresses);
-    private final MtpClient client = new MtpClient();
     private volatile Trust trust = Trust.ANY;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong rejected = new AtomicLong();
@@ -161,49 +163,64 @@ public final class HttpMtp implements Gateway {
     @Override
     public void start(GatewayContext ctx) {
         this.context = ctx;
-        try {
-            server = new AccServer(host, port, limits, new AccServer.Handler() {
-                @Override
-                public AccServer.Response handle(AccServer.Request request) {
-                    return HttpMtp.this.handle(request);
-                }
+        BridgeLoop l = BridgeLoop.of(ctx, "concord-http");
+        CompletableFuture<Void> started = new CompletableFuture<>();
+        Runnable open = () -> {
+            try {
+                server = new AccServer(host, port, limits, new AccServer.Handler() {
+                    @Override
+                    public AccServer.Response handle(AccServer.Request request) {
+                        return HttpMtp.this.handle(request);
+                    }
 
-                @Override
-                public void dropped(String reason, java.net.InetAddress from, String why, boolean answered) {
-                    count(reason, from, why, answered);
-                }
-            }, nanos, "concord-http-in");
-        } catch (java.io.UncheckedIOException e) {
-            throw new IllegalStateException("the HTTP MTP " + e.getMessage() + "; choose another port for the JADE bridge", e);
+                    @Override
+                    public void dropped(String reason, java.net.InetAddress from, String why, boolean answered) {
+                        count(reason, from, why, answered);
+                    }
+                }, nanos, l);
+                client = new MtpClient(l, nanos);
+                started.complete(null);
+            } catch (RuntimeException e) {
+                started.completeExceptionally(e);
+            }
+        };
+        if (l.inLoop()) {
+            open.run();
+        } else {
+            l.execute(open);
         }
-        out = new java.util.concurrent.ThreadPoolExecutor(1, 1, 0, java.util.concurrent.TimeUnit.SECONDS,
-                new java.util.concurrent.ArrayBlockingQueue<>(OUT_QUEUE), r -> daemon(r, "concord-http-out"));
-        LOG.info("HTTP MTP of platform {} at {}", ctx.platformName(), addresses());
-    }
-
-    private static Thread daemon(Runnable r, String name) {
-        Thread t = new Thread(r, name);
-        t.setDaemon(true);
-        return t;
+        try {
+            started.join();
+        } catch (java.util.concurrent.CompletionException e) {
+            l.close();
+            Throwable c = e.getCause();
+            if (c instanceof java.io.UncheckedIOException u) {
+                throw new IllegalStateException("the HTTP MTP " + u.getMessage() + "; choose another port for the JADE bridge", u);
+            }
+            throw c instanceof RuntimeException r ? r : e;
+        }
+        loop = l;
+        LOG.info("HTTP MTP of platform {} at {} ({})", ctx.platformName(), addresses(),
+                l instanceof BridgeLoop.Platform ? "on the platform's loop" : "on a thread of its own");
     }
 
     @Override
     public void stop() {
-        if (server != null) {
+        BridgeLoop l = loop;
+        if (l == null) {
+            return;
+        }
+        loop = null;
+        Runnable close = () -> {
             server.close();
-            server = null;
+            client.close("the HTTP MTP stopped (its container is changing or the platform stops)");
+        };
+        if (l.inLoop()) {
+            close.run();
+        } else {
+            l.execute(close);
         }
-        if (out != null) {
-            ExecutorService o = out;
-            o.shutdownNow();
-            try {
-                o.awaitTermination(5, java.util.concurrent.TimeUnit.SECONDS);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            client.close();
-            out = null;
-        }
+        l.close();
     }
 
     @Override
@@ -229,7 +246,7 @@ public final class HttpMtp implements Gateway {
 
     // ---- inbound ----------------------------------------------------------------------------------
 
-    /** On the server's thread: checks a whole request and hands its message to the loop. */
+    /** On the loop: checks a whole request and hands its message to its agent. */
     private AccServer.Response handle(AccServer.Request x) {
         if (!x.method().equals("POST")) {
             return refuse(x, 405, "http-malformed", "the ACC accepts POST only");
@@ -261,7 +278,12 @@ public final class HttpMtp implements Gateway {
         }
         received.incrementAndGet();
         if (at != null) {
-            at.execute(() -> deliver(at, in));
+            BridgeLoop l = loop;
+            if (l instanceof BridgeLoop.Platform) {
+                deliver(at, in); // the agents' own loop: no hand-off
+            } else {
+                at.execute(() -> deliver(at, in));
+            }
         }
         // Keep-alive for good requests: JADE then reuses its sockets (it keeps up to 10 per platform).
         return new AccServer.Response(200, null, true);
@@ -478,8 +500,7 @@ public final class HttpMtp implements Gateway {
     @Override
     public void sendOut(AclMessage message, AID receiver) {
         GatewayContext ctx = context;
-        ExecutorService ex = out;
-        if (ctx == null || ex == null) {
+        if (ctx == null || loop == null) {
             return;
         }
         AclMessage m = message.copy();
@@ -500,37 +521,66 @@ public final class HttpMtp implements Gateway {
             tellSender(ctx, message, receiver, unwritable.getMessage());
             return;
         }
-        Runnable post = () -> {
-            String problem = null;
-            for (String url : receiver.addresses()) {
-                if (!url.regionMatches(true, 0, "http://", 0, 7)) {
-                    continue;
-                }
-                if (!trust.mayReach(receiver, url)) {
-                    problem = url + " is not among the JADE platforms this bridge trusts";
-                    continue;
-                }
-                try {
-                    int status = client.post(url, receiver, m.getSender(), payload);
-                    if (status == 200) {
-                        return;
-                    }
-                    problem = url + " answered " + status;
-                } catch (IOException | RuntimeException e) {
-                    problem = url + ": " + e.getMessage();
-                }
-            }
-            String why = problem == null ? "no http address" : problem;
-            LOG.debug("HTTP MTP could not reach {}: {}", receiver.name(), why);
-            ctx.execute(() -> tellSender(ctx, message, receiver, why));
-        };
-        try {
-            ex.execute(post);
-        } catch (java.util.concurrent.RejectedExecutionException full) {
+        if (outQueued.incrementAndGet() > OUT_QUEUE) {
+            outQueued.decrementAndGet();
             drops.record("http", "http-out-full", OUT_QUEUE + " messages already wait to be posted to foreign agents; "
                     + "the sender is told FAILURE");
             tellSender(ctx, message, receiver, "the bridge's queue to foreign platforms is full (" + OUT_QUEUE + " messages)");
+            return;
         }
+        List<String> urls = new ArrayList<>();
+        String problem = null;
+        for (String url : receiver.addresses()) {
+            if (!url.regionMatches(true, 0, "http://", 0, 7)) {
+                continue;
+            }
+            if (!trust.mayReach(receiver, url)) {
+                problem = url + " is not among the JADE platforms this bridge trusts";
+            } else {
+                urls.add(url);
+            }
+        }
+        if (urls.isEmpty()) {
+            outQueued.decrementAndGet();
+            tellSender(ctx, message, receiver, problem == null ? "no http address" : problem);
+            return;
+        }
+        BridgeLoop l = loop;
+        Runnable post = () -> post(ctx, message, receiver, m, payload, urls, 0);
+        if (l.inLoop()) {
+            post.run();
+        } else {
+            l.execute(post);
+        }
+    }
+
+    /** Posts to the receiver's next address; on failure tries the one after, and tells the sender when none is left. Loop. */
+    private void post(GatewayContext ctx, AclMessage original, AID receiver, AclMessage m, String payload, List<String> urls, int at) {
+        MtpClient c = client;
+        String url = urls.get(at);
+        byte[] request;
+        try {
+            request = MtpClient.request(url, receiver, m.getSender(), payload);
+        } catch (IllegalArgumentException e) {
+            done(ctx, original, receiver, m, payload, urls, at, url + ": " + e.getMessage());
+            return;
+        }
+        c.post(new MtpClient.Post(url, request, problem -> done(ctx, original, receiver, m, payload, urls, at, problem)));
+    }
+
+    private void done(GatewayContext ctx, AclMessage original, AID receiver, AclMessage m, String payload, List<String> urls,
+                      int at, String problem) {
+        if (problem == null) {
+            outQueued.decrementAndGet();
+            return;
+        }
+        if (at + 1 < urls.size() && loop != null) {
+            post(ctx, original, receiver, m, payload, urls, at + 1);
+            return;
+        }
+        outQueued.decrementAndGet();
+        LOG.debug("HTTP MTP could not reach {}: {}", receiver.name(), problem);
+        ctx.execute(() -> tellSender(ctx, original, receiver, problem));
     }
 
     /**
@@ -545,9 +595,8 @@ public final class HttpMtp implements Gateway {
         }
     }
 
-    /** Messages waiting for the out thread. */
+    /** Messages given to the client and not yet posted or given up. Any thread. */
     int outQueued() {
-        ExecutorService ex = out;
-        return ex instanceof java.util.concurrent.ThreadPoolExecutor t ? t.getQueue().size() : 0;
+        return outQueued.get();
     }
 }

@@ -4,90 +4,380 @@ import io.concord.core.acl.AID;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
 import java.net.InetSocketAddress;
-import java.net.Socket;
+import java.net.StandardSocketOptions;
 import java.net.URI;
+import java.nio.ByteBuffer;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HexFormat;
 import java.util.Locale;
 import java.util.Map;
+import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 
 /**
- * The HTTP MTP's client: POSTs a message to another platform's ACC as JADE sends and reads it
- * (a multipart body of the XML envelope and the ACL string), on a kept-alive connection when the
- * peer allows. Used by the gateway's one out thread only.
+ * The HTTP MTP's client: POSTs a message to another platform's ACC as JADE sends and reads it (a
+ * multipart body of the XML envelope and the ACL string), non-blocking, on the bridge's loop. One
+ * connection per ACC (host and port), kept alive when the peer allows, carries that ACC's messages
+ * one after the other in the order they were given: a JADE agent gets a Concord agent's messages
+ * in the order it sent them. Every method runs on the loop.
  */
 final class MtpClient {
-    // Kept-alive connections to other platforms' ACCs, by host:port; used by the out thread only.
-    private final Map<String, Connection> connections = new java.util.HashMap<>();
+    static final long CONNECT_TIMEOUT_NS = 5_000_000_000L;
+    static final long RESPONSE_TIMEOUT_NS = 10_000_000_000L;
+    /** JADE keeps an idle connection 60 s; a little less here, so that the peer never closes one under a request. */
+    static final long IDLE_NS = 50_000_000_000L;
+    /** What a response's head and JADE's bodiless page may take. */
+    static final int MAX_RESPONSE = 16 * 1024;
 
-    /** Closes every kept-alive connection (on the out thread). */
-    void close() {
-        for (Connection c : connections.values()) {
-            try {
-                c.socket().close();
-            } catch (IOException ignored) {
-                // closing anyway
-            }
-        }
-        connections.clear();
+    private final BridgeLoop loop;
+    private final LongSupplier nanos;
+    private final Map<String, Acc> accs = new HashMap<>();
+    private boolean closed;
+
+    MtpClient(BridgeLoop loop, LongSupplier nanos) {
+        this.loop = loop;
+        this.nanos = nanos;
+        loop.after(1_000, this::everySecond);
     }
 
-    /** A socket and its buffered input: a response is read a buffer at a time, not a byte a system call. */
-    private record Connection(Socket socket, InputStream in) {
-        static Connection open(String host, int port) throws IOException {
-            Socket s = new Socket();
-            try {
-                s.setTcpNoDelay(true); // one write, sent at once: no Nagle wait for a delayed ACK
-                s.connect(new InetSocketAddress(host, port), 5_000);
-                s.setSoTimeout(10_000);
-                return new Connection(s, new java.io.BufferedInputStream(s.getInputStream(), 4096));
-            } catch (IOException e) {
-                s.close();
-                throw e;
-            }
-        }
+    /** A message to post and what to do when it is done: {@code done} gets null if the ACC answered 200, else why not. */
+    record Post(String url, byte[] request, Consumer<String> done) {
     }
 
-    /** One POST, as JADE reads it, on a kept-alive connection when the peer allows; returns the status. */
-    int post(String url, AID receiver, AID sender, String payload) throws IOException {
-        URI u = URI.create(url);
-        int p = u.getPort() < 0 ? 80 : u.getPort();
-        byte[] request = request(url, u.getHost(), p, receiver, sender, payload);
-        String key = u.getHost() + ":" + p;
-        for (int attempt = 0; ; attempt++) {
-            Connection c = connections.remove(key);
-            boolean reused = c != null;
-            if (c == null) {
-                c = Connection.open(u.getHost(), p);
+    /** Requests in flight or waiting, all ACCs together. */
+    int queued() {
+        int n = 0;
+        for (Acc a : accs.values()) {
+            n += a.waiting.size() + (a.conn != null && a.conn.current != null ? 1 : 0);
+        }
+        return n;
+    }
+
+    /** Posts, after the messages already waiting for the same ACC. */
+    void post(Post p) {
+        if (closed) {
+            p.done().accept("the HTTP MTP is stopping");
+            return;
+        }
+        URI u = URI.create(p.url());
+        int port = u.getPort() < 0 ? 80 : u.getPort();
+        String key = u.getHost() + ":" + port;
+        Acc a = accs.computeIfAbsent(key, k -> new Acc(u.getHost(), port));
+        a.waiting.add(p);
+        a.pump();
+    }
+
+    /** Closes every connection; what waits is told {@code why}. */
+    void close(String why) {
+        closed = true;
+        for (Acc a : new ArrayList<>(accs.values())) {
+            a.failAll(why);
+        }
+        accs.clear();
+    }
+
+    private void everySecond() {
+        if (closed) {
+            return;
+        }
+        long now = nanos.getAsLong();
+        for (Acc a : new ArrayList<>(accs.values())) {
+            a.expire(now);
+        }
+        loop.after(1_000, this::everySecond);
+    }
+
+    /** One foreign ACC: its connection and the messages waiting for it. */
+    private final class Acc {
+        final String host;
+        final int port;
+        final ArrayDeque<Post> waiting = new ArrayDeque<>();
+        Conn conn;
+
+        Acc(String host, int port) {
+            this.host = host;
+            this.port = port;
+        }
+
+        /** Starts the next request if the connection is free, opening one if needed. */
+        void pump() {
+            if (waiting.isEmpty()) {
+                return;
             }
-            try {
-                OutputStream o = c.socket().getOutputStream();
-                o.write(request);
-                o.flush();
-                Response r = readResponse(c.in(), url);
-                if (r.keepAlive()) {
-                    connections.put(key, c);
+            if (conn == null) {
+                try {
+                    conn = new Conn(this);
+                } catch (IOException e) {
+                    failAll("cannot connect to " + host + ":" + port + ": " + e.getMessage());
+                    return;
+                }
+            }
+            if (conn.connected && conn.current == null) {
+                conn.start(waiting.poll());
+            }
+        }
+
+        void failAll(String why) {
+            Conn c = conn;
+            conn = null;
+            if (c != null) {
+                c.close();
+                if (c.current != null) {
+                    c.current.done().accept(why);
+                }
+            }
+            Post p;
+            while ((p = waiting.poll()) != null) {
+                p.done().accept(why);
+            }
+        }
+
+        /** The connection failed: the request it carried fails or, if the peer closed a kept-alive connection under it, goes again. */
+        void failed(Conn c, String why) {
+            c.close();
+            if (conn == c) {
+                conn = null;
+            }
+            Post p = c.current;
+            c.current = null;
+            if (!c.connected) {
+                failAll(why); // the ACC cannot be reached: everything waiting for it would wait the same
+                return;
+            }
+            if (p != null) {
+                if (c.reused && c.in == 0 && !c.retried) {
+                    waiting.addFirst(p); // once more on a new connection
+                    retryNext = true;
                 } else {
-                    c.socket().close();
+                    p.done().accept(why);
                 }
-                return r.status();
-            } catch (IOException e) {
-                c.socket().close();
-                if (!reused || attempt > 0) {
-                    throw e;
+            }
+            pump();
+        }
+
+        boolean retryNext;
+
+        void expire(long now) {
+            Conn c = conn;
+            if (c == null) {
+                if (waiting.isEmpty()) {
+                    accs.remove(host + ":" + port, this);
                 }
-                // the peer closed a kept-alive connection meanwhile: once more on a new one
+                return;
+            }
+            if (!c.connected && now - c.sinceNs > CONNECT_TIMEOUT_NS) {
+                failAll("no connection to " + host + ":" + port + " within " + CONNECT_TIMEOUT_NS / 1_000_000 + " ms");
+            } else if (c.current != null && now - c.sinceNs > RESPONSE_TIMEOUT_NS) {
+                c.reused = false; // no second try for an ACC that does not answer
+                failed(c, host + ":" + port + " did not answer within " + RESPONSE_TIMEOUT_NS / 1_000_000 + " ms");
+            } else if (c.connected && c.current == null && now - c.sinceNs > IDLE_NS) {
+                c.close();
+                conn = null;
             }
         }
     }
 
-    private record Response(int status, boolean keepAlive) {
+    /** A connection to an ACC and the one request it carries. */
+    private final class Conn {
+        final Acc acc;
+        final SocketChannel ch;
+        final SelectionKey key;
+        boolean connected;
+        boolean reused;
+        boolean retried;
+        Post current;
+        ByteBuffer out;
+        byte[] resp = new byte[512];
+        int in;
+        long sinceNs;
+
+        Conn(Acc acc) throws IOException {
+            this.acc = acc;
+            sinceNs = nanos.getAsLong();
+            ch = SocketChannel.open();
+            try {
+                ch.configureBlocking(false);
+                ch.setOption(StandardSocketOptions.TCP_NODELAY, true); // one write, sent at once
+                connected = ch.connect(new InetSocketAddress(acc.host, acc.port));
+                key = loop.register(ch, connected ? 0 : SelectionKey.OP_CONNECT, (k, now) -> onReady(k));
+            } catch (IOException | RuntimeException e) {
+                ch.close();
+                throw e instanceof IOException io ? io : new IOException(e.getMessage(), e);
+            }
+        }
+
+        void start(Post p) {
+            current = p;
+            retried = acc.retryNext;
+            acc.retryNext = false;
+            out = ByteBuffer.wrap(p.request());
+            in = 0;
+            sinceNs = nanos.getAsLong();
+            write();
+        }
+
+        private void write() {
+            try {
+                ch.write(out);
+            } catch (IOException e) {
+                acc.failed(this, current.url() + ": " + e.getMessage());
+                return;
+            }
+            key.interestOps(out.hasRemaining() ? SelectionKey.OP_WRITE : SelectionKey.OP_READ);
+        }
+
+        private void onReady(SelectionKey k) {
+            if (!k.isValid()) {
+                return;
+            }
+            if (k.isConnectable()) {
+                try {
+                    ch.finishConnect();
+                } catch (IOException e) {
+                    acc.failed(this, "cannot connect to " + acc.host + ":" + acc.port + ": " + e.getMessage());
+                    return;
+                }
+                connected = true;
+                sinceNs = nanos.getAsLong();
+                key.interestOps(0);
+                acc.pump();
+                return;
+            }
+            if (k.isWritable()) {
+                write();
+                return;
+            }
+            if (k.isReadable()) {
+                read();
+            }
+        }
+
+        private void read() {
+            int n;
+            try {
+                if (in == resp.length) {
+                    if (resp.length >= MAX_RESPONSE) {
+                        acc.failed(this, current == null ? "unasked bytes" : current.url() + " answered more than "
+                                + MAX_RESPONSE + " bytes");
+                        return;
+                    }
+                    resp = java.util.Arrays.copyOf(resp, resp.length * 2);
+                }
+                n = ch.read(ByteBuffer.wrap(resp, in, resp.length - in));
+            } catch (IOException e) {
+                acc.failed(this, (current == null ? acc.host : current.url()) + ": " + e.getMessage());
+                return;
+            }
+            if (n < 0) {
+                acc.failed(this, (current == null ? acc.host : current.url()) + " closed the connection before answering");
+                return;
+            }
+            if (current == null) {
+                for (int i = in; i < in + n; i++) {
+                    if (resp[i] != '\r' && resp[i] != '\n') {
+                        acc.failed(this, "unasked bytes from " + acc.host); // a peer that talks unasked is dropped
+                        return;
+                    }
+                }
+                return; // the blank lines JADE writes after an answer
+            }
+            in += n;
+            Response r = Response.parse(resp, in);
+            if (r == null) {
+                return; // more to come
+            }
+            Post p = current;
+            current = null;
+            in = 0;
+            sinceNs = nanos.getAsLong();
+            reused = true;
+            if (r.keepAlive()) {
+                key.interestOps(SelectionKey.OP_READ); // an idle connection the peer closes is seen at once
+                if (resp.length > 4096) {
+                    resp = new byte[512];
+                }
+            } else {
+                close();
+                acc.conn = null;
+            }
+            p.done().accept(r.status() == 200 ? null : p.url() + " answered " + r.status());
+            acc.pump();
+        }
+
+        void close() {
+            key.cancel();
+            try {
+                ch.close();
+            } catch (IOException ignored) {
+                // closed anyway
+            }
+        }
     }
 
-    private static byte[] request(String url, String host, int port, AID receiver, AID sender, String payload) {
+    /** A whole response's status and whether its connection stays open. */
+    record Response(int status, boolean keepAlive) {
+        /**
+         * Reads a response from the bytes that arrived: the status line (after any blank lines),
+         * the headers, and, when the connection stays open, the body: by its Content-Length, or
+         * JADE's fixed HTML page, which has none. {@code null} until it is whole.
+         */
+        static Response parse(byte[] b, int len) {
+            String text = new String(b, 0, len, StandardCharsets.ISO_8859_1);
+            int start = 0;
+            while (start < len && (b[start] == '\r' || b[start] == '\n')) {
+                start++;
+            }
+            int headEnd = AccServer.headEnd(b, start, len);
+            if (headEnd < 0) {
+                return null;
+            }
+            String[] lines = text.substring(start, headEnd).split("\r?\n");
+            if (!lines[0].startsWith("HTTP/1.")) {
+                return new Response(-1, false);
+            }
+            String[] w = lines[0].split(" ");
+            int status;
+            try {
+                status = w.length > 1 ? Integer.parseInt(w[1]) : -1;
+            } catch (NumberFormatException e) {
+                status = -1;
+            }
+            boolean keepAlive = lines[0].startsWith("HTTP/1.1");
+            int length = -1;
+            for (int i = 1; i < lines.length; i++) {
+                String l = lines[i].toLowerCase(Locale.ROOT);
+                if (l.startsWith("connection:")) {
+                    keepAlive = l.substring(11).trim().equals("keep-alive");
+                } else if (l.startsWith("content-length:")) {
+                    try {
+                        length = Integer.parseInt(l.substring(15).trim());
+                    } catch (NumberFormatException e) {
+                        return new Response(status, false);
+                    }
+                }
+            }
+            if (!keepAlive) {
+                return new Response(status, false);
+            }
+            if (length >= 0) {
+                return len - headEnd >= length ? new Response(status, true) : null;
+            }
+            // JADE's page: <html><body><h1>200 OK</h1></body></html>, without a length.
+            // (what follows it, if anything, is blank lines, skipped before the next response)
+            return text.toLowerCase(Locale.ROOT).indexOf("</html>", headEnd) >= 0 ? new Response(status, true) : null;
+        }
+    }
+
+    /** The bytes of one POST, as JADE writes it. */
+    static byte[] request(String url, AID receiver, AID sender, String payload) {
+        URI u = URI.create(url);
+        int port = u.getPort() < 0 ? 80 : u.getPort();
         byte[] acl = payload.getBytes(StandardCharsets.UTF_8);
         FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length);
         byte[] rnd = new byte[16];
@@ -99,74 +389,12 @@ final class MtpClient {
                 + "\r\nContent-Type: application/text; charset=UTF-8\r\n\r\n").getBytes(StandardCharsets.UTF_8));
         body.writeBytes(acl);
         body.writeBytes(("\r\n--" + boundary + "--\r\n").getBytes(StandardCharsets.UTF_8));
-        String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + host
+        String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + u.getHost()
                 + ":" + port + "\r\nContent-Type: multipart/mixed ; boundary=\"" + boundary + "\"\r\nContent-Length: "
                 + body.size() + "\r\nConnection: Keep-Alive\r\n\r\n";
         ByteArrayOutputStream all = new ByteArrayOutputStream(head.length() + body.size());
         all.writeBytes(head.getBytes(StandardCharsets.US_ASCII));
         all.writeBytes(body.toByteArray());
         return all.toByteArray();
-    }
-
-    /**
-     * Reads a response: the status line (after any blank lines), the headers, and the body when the
-     * connection stays open: by Content-Length, or JADE's fixed HTML page, which has none.
-     */
-    private static Response readResponse(InputStream in, String url) throws IOException {
-        String line;
-        do {
-            line = readLine(in);
-            if (line == null) {
-                throw new IOException("no HTTP status from " + url);
-            }
-        } while (line.isEmpty());
-        if (!line.startsWith("HTTP/1.")) {
-            throw new IOException("not an HTTP response from " + url + ": " + line);
-        }
-        String[] w = line.split(" ");
-        int status = w.length > 1 ? Integer.parseInt(w[1]) : 500;
-        boolean keepAlive = line.startsWith("HTTP/1.1");
-        int length = -1;
-        while ((line = readLine(in)) != null && !line.isEmpty()) {
-            String l = line.toLowerCase(Locale.ROOT);
-            if (l.startsWith("connection:")) {
-                keepAlive = l.substring(11).trim().equals("keep-alive");
-            } else if (l.startsWith("content-length:")) {
-                length = Integer.parseInt(l.substring(15).trim());
-            }
-        }
-        if (!keepAlive) {
-            return new Response(status, false);
-        }
-        if (length >= 0) {
-            in.readNBytes(length);
-            return new Response(status, true);
-        }
-        // JADE's page: <html><body><h1>200 OK</h1></body></html>, without a length.
-        StringBuilder b = new StringBuilder();
-        int c;
-        while (b.length() < 4096 && (c = in.read()) >= 0) {
-            b.append((char) c);
-            if (b.length() >= 7 && b.substring(b.length() - 7).equalsIgnoreCase("</html>")) {
-                return new Response(status, true);
-            }
-        }
-        return new Response(status, false);
-    }
-
-    private static String readLine(InputStream in) throws IOException {
-        StringBuilder b = new StringBuilder();
-        int c;
-        while ((c = in.read()) >= 0) {
-            if (c == '\n') {
-                int n = b.length();
-                return n > 0 && b.charAt(n - 1) == '\r' ? b.substring(0, n - 1) : b.toString();
-            }
-            b.append((char) c);
-            if (b.length() > 8192) {
-                throw new IOException("an HTTP header line longer than 8 KiB");
-            }
-        }
-        return b.length() == 0 ? null : b.toString();
     }
 }
