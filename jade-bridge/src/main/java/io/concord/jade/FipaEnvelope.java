@@ -1,16 +1,10 @@
 package io.concord.jade;
 
 import io.concord.core.acl.AID;
-import org.w3c.dom.Document;
-import org.w3c.dom.Element;
-import org.w3c.dom.Node;
-import org.w3c.dom.NodeList;
-
-import javax.xml.XMLConstants;
-import javax.xml.parsers.DocumentBuilder;
-import javax.xml.parsers.DocumentBuilderFactory;
-import java.io.ByteArrayInputStream;
-import java.nio.charset.StandardCharsets;
+import javax.xml.stream.XMLInputFactory;
+import javax.xml.stream.XMLStreamConstants;
+import javax.xml.stream.XMLStreamException;
+import javax.xml.stream.XMLStreamReader;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
@@ -80,83 +74,169 @@ public record FipaEnvelope(List<AID> to, AID from, String aclRepresentation, int
     }
 
     /**
-     * Parses an envelope; the last {@code params} block wins for each field, as FIPA says.
+     * The streaming reader's factory, made once (finding and configuring one per envelope cost more
+     * than reading the envelope). What arrives over HTTP is anyone's: no DTD, so no external or
+     * expanding entities (a FIPA envelope has none).
+     */
+    private static final XMLInputFactory XML = xmlInputFactory();
+
+    private static XMLInputFactory xmlInputFactory() {
+        XMLInputFactory f = XMLInputFactory.newFactory();
+        f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
+        f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
+        f.setProperty(XMLInputFactory.IS_REPLACING_ENTITY_REFERENCES, false);
+        f.setProperty(XMLInputFactory.IS_NAMESPACE_AWARE, false);
+        return f;
+    }
+
+    /**
+     * Parses an envelope in one pass over its text (StAX, no tree); the last {@code params} block
+     * wins for each field, as FIPA says.
      *
      * @throws IllegalArgumentException saying what is wrong
      */
     public static FipaEnvelope parse(String xml) {
-        Document d;
         try {
-            DocumentBuilderFactory f = DocumentBuilderFactory.newInstance();
-            f.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-            f.setFeature(XMLConstants.FEATURE_SECURE_PROCESSING, true);
-            f.setXIncludeAware(false);
-            f.setExpandEntityReferences(false);
-            DocumentBuilder db = f.newDocumentBuilder();
-            db.setErrorHandler(null);
-            d = db.parse(new ByteArrayInputStream(xml.trim().getBytes(StandardCharsets.UTF_8)));
-        } catch (Exception e) {
+            return read(XML.createXMLStreamReader(new java.io.StringReader(xml.trim())));
+        } catch (XMLStreamException | RuntimeException e) {
+            if (e instanceof IllegalArgumentException bad && !(e instanceof NumberFormatException)) {
+                throw bad;
+            }
             throw new IllegalArgumentException("the envelope is not well-formed XML: " + e.getMessage());
         }
-        Element root = d.getDocumentElement();
-        if (!root.getTagName().equals("envelope")) {
-            throw new IllegalArgumentException("the envelope's root element is <" + root.getTagName() + ">, not <envelope>");
-        }
-        List<AID> to = new ArrayList<>();
-        List<AID> intended = new ArrayList<>();
-        AID from = null;
-        String rep = null;
-        String enc = null;
-        String date = null;
-        int length = -1;
-        NodeList params = root.getElementsByTagName("params");
-        for (int i = 0; i < params.getLength(); i++) {
-            for (Node n = params.item(i).getFirstChild(); n != null; n = n.getNextSibling()) {
-                if (!(n instanceof Element e)) {
-                    continue;
-                }
-                switch (e.getTagName()) {
-                    case "to" -> to.addAll(aids(e));
-                    case "intended-receiver" -> intended.addAll(aids(e));
-                    case "from" -> from = aids(e).isEmpty() ? null : aids(e).get(0);
-                    case "acl-representation" -> rep = e.getTextContent().trim();
-                    case "payload-encoding" -> enc = e.getTextContent().trim();
-                    case "date" -> date = e.getTextContent().trim();
-                    case "payload-length" -> {
-                        try {
-                            length = Integer.parseInt(e.getTextContent().trim());
-                        } catch (NumberFormatException x) {
-                            throw new IllegalArgumentException("a bad payload-length '" + e.getTextContent() + "'");
-                        }
-                    }
-                    default -> { }
-                }
-            }
-        }
-        if (to.isEmpty() && intended.isEmpty()) {
-            throw new IllegalArgumentException("the envelope names no receiver (neither <to> nor <intended-receiver>)");
-        }
-        if (rep == null) {
-            throw new IllegalArgumentException("the envelope has no <acl-representation>");
-        }
-        return new FipaEnvelope(to, from, rep, length, enc, date, intended);
     }
 
-    private static List<AID> aids(Element parent) {
+    private static FipaEnvelope read(XMLStreamReader r) throws XMLStreamException {
+        try {
+            while (r.hasNext() && r.next() != XMLStreamConstants.START_ELEMENT) {
+                if (r.getEventType() == XMLStreamConstants.DTD) {
+                    throw new XMLStreamException("a DOCTYPE is not accepted in an envelope");
+                }
+            }
+            if (r.getEventType() != XMLStreamConstants.START_ELEMENT) {
+                throw new XMLStreamException("no element");
+            }
+            if (!r.getLocalName().equals("envelope")) {
+                throw new IllegalArgumentException("the envelope's root element is <" + r.getLocalName() + ">, not <envelope>");
+            }
+            List<AID> to = new ArrayList<>();
+            List<AID> intended = new ArrayList<>();
+            AID from = null;
+            String rep = null;
+            String enc = null;
+            String date = null;
+            int length = -1;
+            int depth = 1;
+            while (depth > 0) {
+                int e = r.next();
+                if (e == XMLStreamConstants.END_ELEMENT) {
+                    depth--;
+                    continue;
+                }
+                if (e == XMLStreamConstants.DTD || e == XMLStreamConstants.ENTITY_REFERENCE) {
+                    throw new XMLStreamException("an entity is not accepted in an envelope");
+                }
+                if (e != XMLStreamConstants.START_ELEMENT) {
+                    continue;
+                }
+                if (depth != 2) { // <params> at depth 1 holds the fields; anything else is skipped whole
+                    depth++;
+                    if (depth > 2 || !r.getLocalName().equals("params")) {
+                        skip(r);
+                        depth--;
+                    }
+                    continue;
+                }
+                switch (r.getLocalName()) {
+                    case "to" -> to.addAll(aids(r));
+                    case "intended-receiver" -> intended.addAll(aids(r));
+                    case "from" -> {
+                        List<AID> f = aids(r);
+                        from = f.isEmpty() ? null : f.get(0);
+                    }
+                    case "acl-representation" -> rep = text(r);
+                    case "payload-encoding" -> enc = text(r);
+                    case "date" -> date = text(r);
+                    case "payload-length" -> {
+                        String t = text(r);
+                        try {
+                            length = Integer.parseInt(t);
+                        } catch (NumberFormatException x) {
+                            throw new IllegalArgumentException("a bad payload-length '" + t + "'");
+                        }
+                    }
+                    default -> skip(r);
+                }
+            }
+            if (to.isEmpty() && intended.isEmpty()) {
+                throw new IllegalArgumentException("the envelope names no receiver (neither <to> nor <intended-receiver>)");
+            }
+            if (rep == null) {
+                throw new IllegalArgumentException("the envelope has no <acl-representation>");
+            }
+            return new FipaEnvelope(to, from, rep, length, enc, date, intended);
+        } finally {
+            r.close();
+        }
+    }
+
+    /** The text of the element just started, trimmed; leaves the reader on its end. */
+    private static String text(XMLStreamReader r) throws XMLStreamException {
+        StringBuilder b = new StringBuilder();
+        int depth = 1;
+        while (depth > 0) {
+            int e = r.next();
+            switch (e) {
+                case XMLStreamConstants.START_ELEMENT -> depth++;
+                case XMLStreamConstants.END_ELEMENT -> depth--;
+                case XMLStreamConstants.CHARACTERS, XMLStreamConstants.CDATA, XMLStreamConstants.SPACE -> b.append(r.getText());
+                case XMLStreamConstants.ENTITY_REFERENCE -> throw new XMLStreamException("an entity is not accepted in an envelope");
+                default -> { }
+            }
+        }
+        return b.toString().trim();
+    }
+
+    /** Skips the element just started, with all it holds. */
+    private static void skip(XMLStreamReader r) throws XMLStreamException {
+        text(r);
+    }
+
+    /** The agent-identifiers inside the element just started (at any depth); leaves the reader on its end. */
+    private static List<AID> aids(XMLStreamReader r) throws XMLStreamException {
         List<AID> out = new ArrayList<>();
-        NodeList ids = parent.getElementsByTagName("agent-identifier");
-        for (int i = 0; i < ids.getLength(); i++) {
-            Element id = (Element) ids.item(i);
-            NodeList names = id.getElementsByTagName("name");
-            if (names.getLength() == 0 || names.item(0).getTextContent().trim().isEmpty()) {
-                throw new IllegalArgumentException("an agent-identifier without a name");
+        int depth = 1;
+        String name = null;
+        List<String> urls = null;
+        int idDepth = -1;
+        while (depth > 0) {
+            int e = r.next();
+            if (e == XMLStreamConstants.START_ELEMENT) {
+                depth++;
+                String tag = r.getLocalName();
+                if (tag.equals("agent-identifier") && idDepth < 0) {
+                    idDepth = depth;
+                    name = null;
+                    urls = new ArrayList<>();
+                } else if (idDepth > 0 && tag.equals("name") && name == null) {
+                    name = text(r);
+                    depth--;
+                } else if (idDepth > 0 && tag.equals("url")) {
+                    urls.add(text(r));
+                    depth--;
+                }
+            } else if (e == XMLStreamConstants.END_ELEMENT) {
+                if (depth == idDepth) {
+                    if (name == null || name.isEmpty()) {
+                        throw new IllegalArgumentException("an agent-identifier without a name");
+                    }
+                    out.add(new AID(name, urls.toArray(new String[0])));
+                    idDepth = -1;
+                }
+                depth--;
+            } else if (e == XMLStreamConstants.ENTITY_REFERENCE) {
+                throw new XMLStreamException("an entity is not accepted in an envelope");
             }
-            List<String> urls = new ArrayList<>();
-            NodeList u = id.getElementsByTagName("url");
-            for (int k = 0; k < u.getLength(); k++) {
-                urls.add(u.item(k).getTextContent().trim());
-            }
-            out.add(new AID(names.item(0).getTextContent().trim(), urls.toArray(new String[0])));
         }
         return out;
     }
