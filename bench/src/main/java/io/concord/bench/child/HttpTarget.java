@@ -15,7 +15,7 @@ import io.concord.layers.security.IdentityStore;
 /**
  * The other platform of the HTTP benchmark, in a JVM of its own (a JVM holds one JADE platform):
  * an echo agent on JADE or on Concord, reachable at {@code http://127.0.0.1:<port>/acc}.
- * Arguments: jade|concord, the HTTP port. Prints {@code READY echo@httptarget} and runs until its
+ * Arguments: jade|concord|floor (see {@link HttpFloor}), the HTTP port. Prints {@code READY echo@httptarget} and runs until its
  * standard input closes.
  */
 public final class HttpTarget {
@@ -25,7 +25,10 @@ public final class HttpTarget {
     public static void main(String[] args) throws Exception {
         int port = Integer.parseInt(args[1]);
         AutoCloseable platform;
-        if (args[0].equals("jade")) {
+        if (args[0].equals("floor")) {
+            HttpFloor f = new HttpFloor(port);
+            platform = f::close;
+        } else if (args[0].equals("jade")) {
             JadePlatform j = new JadePlatform("httptarget", port);
             j.start("echo", JadeHttpEcho.class);
             platform = j;

@@ -17,14 +17,15 @@ import org.openjdk.jmh.annotations.TearDown;
 /**
  * The JADE bridge: a JADE agent REQUESTs an agent of another platform over FIPA's HTTP MTP and waits
  * for its INFORM (500 bytes each way). The other platform is Concord (class 7, its container serving
- * the HTTP MTP) or JADE itself, in the same run; either runs in a JVM of its own. Time per request and reply.
+ * the HTTP MTP), JADE itself, or the floor (the least an HTTP MTP can do: {@link HttpTarget}'s
+ * precomputed answer), in the same run; each runs in a JVM of its own. Time per request and reply.
  */
 @State(Scope.Benchmark)
 public class HttpBenchmark {
     public static final int ROUNDS = 20;
     static final String CONTENT = "h".repeat(500);
 
-    @Param({"concord", "jade"})
+    @Param({"concord", "jade", "floor"})
     public String target;
 
     private final RoundDriver driver = new RoundDriver();
