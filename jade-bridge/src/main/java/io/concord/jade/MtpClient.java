@@ -83,14 +83,18 @@ final class MtpClient {
     }
 
     private void everySecond() {
-        if (closed) {
-            return;
+        if (!closed) {
+            expire();
+            loop.after(1_000, this::everySecond);
         }
+    }
+
+    /** Gives up what is past its time now (by the injected clock); the loop does it every second. */
+    void expire() {
         long now = nanos.getAsLong();
         for (Acc a : new ArrayList<>(accs.values())) {
             a.expire(now);
         }
-        loop.after(1_000, this::everySecond);
     }
 
     /** One foreign ACC: its connection and the messages waiting for it. */

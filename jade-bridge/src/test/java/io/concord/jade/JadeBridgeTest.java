@@ -327,6 +327,9 @@ class JadeBridgeTest {
                     + " from " + r.getSender().getName();
         });
         assertEquals("INFORM echo:hello from jade from echo@" + CONCORD, reply);
+        // Served on the agents' own loop: no thread of the bridge's stands between a socket and an agent.
+        assertTrue(Thread.getAllStackTraces().keySet().stream().noneMatch(t -> t.getName().startsWith("concord-http")),
+                "the HTTP MTP runs on the platform's loop, not on a thread of its own");
     }
 
     @Test
