@@ -31,6 +31,11 @@ final class ContainerRole extends RoleBase {
     /** Cancels the watch on each listed member of this runtime, by name. */
     private final Map<String, Runnable> localWatches = new HashMap<>();
     private long pushTimer = -1;
+    /** The LAL as last pushed to the members, its version, and the version that push started from. */
+    private Map<String, AgentEntry> lalSent;
+    private long lalSentSeq = -1;
+    private long lalSentFrom = -1;
+    private long lalPushedNs;
     private int cycles;
     private long cycleStartNs;
     private long cycleDueNs;
@@ -248,14 +253,55 @@ final class ContainerRole extends RoleBase {
         }
     }
 
+    /**
+     * The LAL to every member: what changed since the version last pushed ({@code lal-delta}) to
+     * those who were sent that version, the whole list to those who joined since; the whole list to
+     * all at the first push of a term, or when more than half of it changed. The whole list at
+     * every change cost N members times N entries while N agents joined one by one: 1,000 agents
+     * in one JVM took 77 s to converge.
+     */
     private void pushAll() {
-        List<String> p = roles.lalPages();
-        for (AgentEntry e : st.lists.lal.values()) {
-            if (!e.name().equals(ctx.self())) {
-                pushTo(e.aid(), p);
+        AgentLists lists = st.lists;
+        List<AgentEntry> delta = new ArrayList<>();
+        int removed = 0;
+        if (lalSent != null) {
+            for (AgentEntry e : lalSent.values()) {
+                if (!lists.lal.containsKey(e.name())) {
+                    delta.add(e);
+                    removed++;
+                }
+            }
+            for (AgentEntry e : lists.lal.values()) {
+                if (!e.equals(lalSent.get(e.name()))) {
+                    delta.add(e);
+                }
             }
         }
-        ctx.trace("distribute", "term=" + st.term + " seq=" + st.seq + " agents=" + st.lists.lal.size() + " pages=" + p.size());
+        boolean whole = lalSent == null || delta.size() * 2 > lists.lal.size();
+        List<String> all = null;
+        List<String> changes = whole ? null : AgentLists.pages(delta, ctx.config().maxContentBytes());
+        for (AgentEntry e : lists.lal.values()) {
+            if (e.name().equals(ctx.self())) {
+                continue;
+            }
+            if (whole || !lalSent.containsKey(e.name())) {
+                if (all == null) {
+                    all = roles.lalPages();
+                }
+                pushTo(e.aid(), all);
+            } else {
+                for (int i = 0; i < changes.size(); i++) {
+                    ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, e.aid(), new PlatformMessage.LalDelta(st.term, lalSentSeq,
+                            st.seq, st.periodMs, st.timeoutMs, removed, PlatformMessage.Page.of(i, changes.size(), changes.get(i))));
+                }
+            }
+        }
+        lalSentFrom = lalSent == null ? st.seq : lalSentSeq;
+        lalPushedNs = ctx.nowNs();
+        lalSent = new HashMap<>(lists.lal);
+        lalSentSeq = st.seq;
+        ctx.trace("distribute", "term=" + st.term + " seq=" + st.seq + " agents=" + lists.lal.size()
+                + (whole ? " whole" : " changes=" + delta.size()));
         if (roles.federation != null) {
             roles.federation.localChanged();
             globalChanged();
@@ -291,10 +337,14 @@ final class ContainerRole extends RoleBase {
         if (cycleAwaiting.remove(from) && cycleAwaiting.isEmpty()) {
             st.lastCycleNs = now - cycleStartNs;
         }
-        if (h.term() != st.term || h.seq() < st.seq) {
-            if (pushTimer < 0) {
-                pushTo(lists.lal.get(from).aid(), roles.lalPages());
-            }
+        // Behind: it holds neither the version last pushed nor the one that push started from (what
+        // is in flight to it brings it up from either: a confirmation that crossed the last push is
+        // not behind); or it answers an alive sent after the last push and still holds an older
+        // version (the change was lost on its way, where the profile does not resend).
+        boolean behind = h.term() != st.term || h.seq() < Math.min(st.seq, lalSentFrom < 0 ? st.seq : lalSentFrom)
+                || h.alive() && cycleStartNs > lalPushedNs && h.seq() < st.seq;
+        if (behind && pushTimer < 0) {
+            pushTo(lists.lal.get(from).aid(), roles.lalPages());
         }
     }
 

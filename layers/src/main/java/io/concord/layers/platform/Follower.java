@@ -72,6 +72,47 @@ abstract class Follower extends RoleBase {
         roles.publish();
     }
 
+    /**
+     * A page of what changed in the LAL: applied, once every page is in, by a member that holds the
+     * version it starts from, of the container it follows in this term, and confirmed; ignored
+     * otherwise (the member's next confirmation shows it behind, and the container sends the whole list).
+     */
+    @Override
+    public void onLalDelta(PlatformMessage.LalDelta d, AclMessage m) {
+        String from = m.getSender().name();
+        if (st.container == null || !st.container.name().equals(from) || st.term != d.term() || st.seq != d.from()) {
+            return;
+        }
+        List<AgentEntry> changed = roles.lalAssembler.add(d.term() + "/" + from + "/" + d.from() + ">" + d.seq(), d.page());
+        if (changed == null) {
+            return;
+        }
+        AgentLists lists = st.lists;
+        int removed = Math.min(d.removed(), changed.size());
+        for (int i = 0; i < changed.size(); i++) {
+            AgentEntry e = changed.get(i);
+            if (i < removed) {
+                lists.lal.remove(e.name());
+            } else {
+                lists.lal.put(e.name(), e);
+            }
+        }
+        st.seq = d.seq();
+        st.periodMs = d.period();
+        st.timeoutMs = d.timeout();
+        roles.rebuildRoutes();
+        resetWatch();
+        AgentEntry mine = lists.lal.get(ctx.self());
+        if (mine == null) {
+            ctx.trace("rejoin", "removed from the list of " + from);
+            roles.join.start(st.container, d.term());
+        } else {
+            st.selfEntry = mine;
+        }
+        ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
+        roles.publish();
+    }
+
     /** The container's alive (fig. 5.9): confirmed with the versions held; a better container is joined. */
     @Override
     public void onAlive(PlatformMessage.Alive a, AclMessage m) {

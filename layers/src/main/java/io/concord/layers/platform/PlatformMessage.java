@@ -29,6 +29,7 @@ sealed interface PlatformMessage {
         default void onJoin(Join j, AclMessage m) { }
         default void onJoined(Joined j, AclMessage m) { }
         default void onLal(LalPage p, AclMessage m) { }
+        default void onLalDelta(LalDelta d, AclMessage m) { }
         default void onHeld(Held h, AclMessage m) { }
         default void onAlive(Alive a, AclMessage m) { }
         default void onAgentInfoRequest(AgentInfoRequest r, AclMessage m) { }
@@ -147,6 +148,24 @@ sealed interface PlatformMessage {
 
         public void to(Handler h, AclMessage m) {
             h.onLal(this, m);
+        }
+    }
+
+    /**
+     * A page of what changed in the LAL from version {@code from} to {@code seq} (of this term):
+     * the first {@code removed} entries of all its pages together are removed, the others added or
+     * changed. A member holding version {@code from} applies it and confirms; any other ignores it,
+     * and its next confirmation shows its container that it needs the whole list.
+     */
+    record LalDelta(long term, long from, long seq, long period, long timeout, int removed, Page page) implements PlatformMessage {
+        public String encode() {
+            String head = Lines.content("lal-delta", Lines.params("term", term, "from", from, "seq", seq, "removed", removed,
+                    "page", page.index(), "pages", page.count(), "period", period, "timeout", timeout), List.of());
+            return page.body().isEmpty() ? head : head + "\n" + page.body();
+        }
+
+        public void to(Handler h, AclMessage m) {
+            h.onLalDelta(this, m);
         }
     }
 
@@ -431,6 +450,9 @@ sealed interface PlatformMessage {
             case "joined" -> new Joined(c.longParam("term"), c.longParam("period"), c.longParam("timeout"), c.senderEntry(m));
             case "lal" -> new LalPage(c.longParam("term"), c.longParam("seq"), c.longParam("period"), c.longParam("timeout"),
                     Page.decode(c, text, "LAL"));
+            case "lal-delta" -> new LalDelta(c.longParam("term"), c.longParam("from"), c.longParam("seq"), c.longParam("period"),
+                    c.longParam("timeout"), (int) Math.max(0, Math.min(Integer.MAX_VALUE, optLong(c, "removed"))),
+                    Page.decode(c, text, "LAL change"));
             case "lal-held" -> new Held(false, c.longParam("term"), c.longParam("seq"), null, null);
             case "alive-held" -> new Held(true, c.longParam("term"), c.longParam("seq"),
                     p.containsKey("gseq") ? c.longParam("gseq") : null, p.get("gfrom"));

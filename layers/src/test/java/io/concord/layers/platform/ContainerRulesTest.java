@@ -348,8 +348,9 @@ class ContainerRulesTest {
             }
             assertEquals(List.of("m1@p", "me@p"), names(List.copyOf(c.layer.agents())));
             assertTrue(c.layer.lalSequence() > seq);
-            assertTrue(c.sent().stream().anyMatch(o -> o.what() instanceof LalPage && o.to().equals("m1@p")),
-                    "the removal is distributed");
+            // As what changed: m1 holds the version last pushed, so it gets m2's removal, not the whole list.
+            assertTrue(c.sent().stream().anyMatch(o -> o.what() instanceof PlatformMessage.LalDelta d && o.to().equals("m1@p")
+                    && d.removed() == 1 && names(d.page().entries()).equals(List.of("m2@p"))), "the removal is distributed");
         }
 
         @Test
