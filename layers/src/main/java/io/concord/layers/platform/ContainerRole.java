@@ -127,7 +127,7 @@ final class ContainerRole extends RoleBase {
         listed(e);
         if (old == null || !old.equals(lists.lal.get(e.name()))) {
             st.seq++;
-            roles.rebuildRoutes();
+            roles.routesChanged(e.name());
             schedulePush();
             ctx.trace("registered", e.name() + " agents=" + lists.lal.size());
         }
@@ -170,7 +170,7 @@ final class ContainerRole extends RoleBase {
                 lastHeard.remove(name);
                 heldSeq.remove(name);
                 st.seq++;
-                roles.rebuildRoutes();
+                roles.routesChanged(name);
                 ctx.trace("removed", name + " left this runtime");
                 schedulePush();
                 roles.publish();
@@ -208,7 +208,7 @@ final class ContainerRole extends RoleBase {
         AgentEntry was = st.lists.lal.put(e.name(), e);
         if (!e.equals(was)) {
             st.seq++;
-            roles.rebuildRoutes();
+            roles.routesChanged(e.name());
             schedulePush();
             roles.publish();
         }
@@ -222,7 +222,7 @@ final class ContainerRole extends RoleBase {
             lastHeard.remove(from);
             heldSeq.remove(from);
             st.seq++;
-            roles.rebuildRoutes();
+            roles.routesChanged(from);
             ctx.trace("removed", from + " left");
             schedulePush();
             roles.publish();
@@ -238,7 +238,7 @@ final class ContainerRole extends RoleBase {
                 st.selfEntry = updated;
             }
             st.seq++;
-            roles.rebuildRoutes();
+            roles.routesChanged(entry.name());
             schedulePush();
             roles.publish();
         }
@@ -392,7 +392,7 @@ final class ContainerRole extends RoleBase {
         }
         if (!dead.isEmpty()) {
             st.seq++;
-            roles.rebuildRoutes();
+            roles.routesChanged(dead);
             pushAll();
         }
         st.periodMs = ctx.config().periodMs(lists.lal.size());

@@ -89,8 +89,10 @@ abstract class Follower extends RoleBase {
         }
         AgentLists lists = st.lists;
         int removed = Math.min(d.removed(), changed.size());
+        List<String> names = new java.util.ArrayList<>(changed.size());
         for (int i = 0; i < changed.size(); i++) {
             AgentEntry e = changed.get(i);
+            names.add(e.name());
             if (i < removed) {
                 lists.lal.remove(e.name());
             } else {
@@ -100,7 +102,7 @@ abstract class Follower extends RoleBase {
         st.seq = d.seq();
         st.periodMs = d.period();
         st.timeoutMs = d.timeout();
-        roles.rebuildRoutes();
+        roles.routesChanged(names);
         resetWatch();
         AgentEntry mine = lists.lal.get(ctx.self());
         if (mine == null) {

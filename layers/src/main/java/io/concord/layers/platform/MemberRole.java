@@ -160,8 +160,10 @@ final class MemberRole extends Follower {
             return;
         }
         int removed = Math.min(d.removed(), changed.size());
+        List<String> names = new java.util.ArrayList<>(changed.size());
         for (int i = 0; i < changed.size(); i++) {
             AgentEntry e = changed.get(i);
+            names.add(e.name());
             if (i < removed) {
                 lists.gal.remove(e.name());
             } else if (!lists.lal.containsKey(e.name())) {
@@ -169,7 +171,7 @@ final class MemberRole extends Follower {
             }
         }
         lists.gseq = d.gseq();
-        roles.rebuildRoutes();
+        roles.routesChanged(names);
         roles.publish();
     }
 

@@ -311,6 +311,16 @@ final class Roles implements Federation.Host {
         listsChanged.run();
     }
 
+    /** Only these names' entries changed: only their routes follow (see {@link AgentLists#updateRoutes}). */
+    void routesChanged(java.util.Collection<String> names) {
+        st.lists.updateRoutes(names, ctx.nowNs());
+        listsChanged.run();
+    }
+
+    void routesChanged(String name) {
+        routesChanged(List.of(name));
+    }
+
     void publish() {
         publish.run();
     }
