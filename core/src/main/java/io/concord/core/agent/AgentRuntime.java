@@ -304,10 +304,7 @@ public final class AgentRuntime implements AutoCloseable {
         if (options.portRange() != null) {
             PortRange range = options.portRange();
             List<Address> held = new ArrayList<>();
-            ep = range.bindFirstFree(network, t, host, receiver, held, q -> {
-                AgentNode n = byAddress.get(new Address(host, q));
-                return n != null && n.transport == t && n.endpoint.isOpen();
-            });
+            ep = range.bindFirstFree(network, t, host, receiver, held);
             neighbours = List.copyOf(held);
         } else {
             ep = network.tryBind(t, host, port, receiver);

@@ -72,24 +72,9 @@ public record PortRange(int base, int count, int window) {
      *                               widen it
      */
     public Endpoint bindFirstFree(Network network, Transport transport, String host, Receiver receiver, List<Address> held) {
-        return bindFirstFree(network, transport, host, receiver, held, port -> false);
-    }
-
-    /**
-     * As {@link #bindFirstFree(Network, Transport, String, Receiver, List)}, knowing which ports the
-     * caller's own agents hold: those are taken for held without a system call. (Agents started
-     * one by one in one JVM otherwise probed every port below their own, 500,000 binds for 1,000
-     * agents: most of the 15 s their start took.)
-     */
-    public Endpoint bindFirstFree(Network network, Transport transport, String host, Receiver receiver, List<Address> held,
-                                  java.util.function.IntPredicate ownHeld) {
         Endpoint own = null;
         int p = base;
         for (; p <= last(); p++) {
-            if (ownHeld.test(p)) {
-                held.add(new Address(host, p));
-                continue;
-            }
             own = network.tryBind(transport, host, p, receiver);
             if (own != null) {
                 break;
@@ -103,7 +88,7 @@ public record PortRange(int base, int count, int window) {
         }
         int end = Math.min(last(), p + window);
         for (int q = p + 1; q <= end; q++) {
-            if (ownHeld.test(q) || network.isHeld(transport, host, q)) {
+            if (network.isHeld(transport, host, q)) {
                 held.add(new Address(host, q));
             }
         }

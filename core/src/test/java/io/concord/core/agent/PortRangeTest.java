@@ -34,61 +34,6 @@ class PortRangeTest {
         assertEquals(List.of(7001, 7003, 7004, 7005, 7006), held.stream().map(Address::port).toList());
     }
 
-    /**
-     * Ports the runtime's own agents hold are held without a system call: the thousandth agent of
-     * a JVM binds at once instead of trying the 999 ports below it (500,000 binds for 1,000 agents).
-     */
-    @Test
-    void portsTheCallersOwnAgentsHoldAreNotTriedAgain() {
-        VirtualNetwork net = new VirtualNetwork(new SplittableRandom(1), FaultPlan.NONE, new ManualClock());
-        PortRange r = new PortRange(7001, 50, 5);
-        java.util.Set<Integer> mine = new java.util.HashSet<>();
-        for (int i = 0; i < 20; i++) {
-            mine.add(r.bindFirstFree(net, Transport.UDP, "h", (f, d, o, l, n) -> { }, new ArrayList<>()).localAddress().port());
-        }
-        int[] tried = new int[1];
-        io.concord.core.net.Network counting = new io.concord.core.net.Network() {
-            @Override
-            public Endpoint tryBind(String host, int port, io.concord.core.net.Receiver receiver) {
-                tried[0]++;
-                return net.tryBind(host, port, receiver);
-            }
-
-            @Override
-            public boolean isHeld(Transport transport, String host, int port) {
-                tried[0]++;
-                return net.isHeld(transport, host, port);
-            }
-
-            @Override
-            public int poll(long nowNs) {
-                return 0;
-            }
-
-            @Override
-            public long nextEventNs() {
-                return Long.MAX_VALUE;
-            }
-
-            @Override
-            public void await(long timeoutNs) {
-            }
-
-            @Override
-            public void wakeup() {
-            }
-
-            @Override
-            public void close() {
-            }
-        };
-        List<Address> held = new ArrayList<>();
-        Endpoint e = r.bindFirstFree(counting, Transport.UDP, "h", (f, d, o, l, n) -> { }, held, mine::contains);
-        assertEquals(7021, e.localAddress().port());
-        assertEquals(20, held.size(), "the 20 ports below are held, as before");
-        assertEquals(1 + 5, tried[0], "one bind and the window's five probes; none for the 20 own ports");
-    }
-
     @Test
     void aFullRangeNamesTheRangeAndHowToWidenIt() {
         VirtualNetwork net = new VirtualNetwork(new SplittableRandom(1), FaultPlan.NONE, new ManualClock());
