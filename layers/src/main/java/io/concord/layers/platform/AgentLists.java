@@ -133,6 +133,46 @@ final class AgentLists {
     private static final java.util.concurrent.ConcurrentHashMap<AgentEntry, Route> SHARED_ROUTES =
             new java.util.concurrent.ConcurrentHashMap<>();
 
+    /**
+     * What changed from {@code sent} to {@code now}, as a delta message carries it: the entries
+     * removed first (their count returned), then those added or changed, into {@code out}.
+     */
+    static int diff(Map<String, AgentEntry> sent, Map<String, AgentEntry> now, List<AgentEntry> out) {
+        int removed = 0;
+        for (AgentEntry e : sent.values()) {
+            if (!now.containsKey(e.name())) {
+                out.add(e);
+                removed++;
+            }
+        }
+        for (AgentEntry e : now.values()) {
+            if (!e.equals(sent.get(e.name()))) {
+                out.add(e);
+            }
+        }
+        return removed;
+    }
+
+    /**
+     * Applies a delta's entries to a list: the first {@code removed} leave it, the others are put,
+     * if {@code mayPut} lets them; returns the names touched, for their routes.
+     */
+    static List<String> apply(List<AgentEntry> changed, int removed, Map<String, AgentEntry> list,
+                              java.util.function.Predicate<String> mayPut) {
+        int r = Math.min(removed, changed.size());
+        List<String> names = new ArrayList<>(changed.size());
+        for (int i = 0; i < changed.size(); i++) {
+            AgentEntry e = changed.get(i);
+            names.add(e.name());
+            if (i < r) {
+                list.remove(e.name());
+            } else if (mayPut.test(e.name())) {
+                list.put(e.name(), e);
+            }
+        }
+        return names;
+    }
+
     /** Every agent this agent knows: the LAL, then the GAL's agents the LAL does not hold. */
     List<AgentEntry> all() {
         List<AgentEntry> all = new ArrayList<>(lal.values());

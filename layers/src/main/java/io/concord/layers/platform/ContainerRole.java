@@ -263,20 +263,7 @@ final class ContainerRole extends RoleBase {
     private void pushAll() {
         AgentLists lists = st.lists;
         List<AgentEntry> delta = new ArrayList<>();
-        int removed = 0;
-        if (lalSent != null) {
-            for (AgentEntry e : lalSent.values()) {
-                if (!lists.lal.containsKey(e.name())) {
-                    delta.add(e);
-                    removed++;
-                }
-            }
-            for (AgentEntry e : lists.lal.values()) {
-                if (!e.equals(lalSent.get(e.name()))) {
-                    delta.add(e);
-                }
-            }
-        }
+        int removed = lalSent == null ? 0 : AgentLists.diff(lalSent, lists.lal, delta);
         boolean whole = lalSent == null || delta.size() * 2 > lists.lal.size();
         List<String> all = null;
         List<String> changes = whole ? null : AgentLists.pages(delta, ctx.config().maxContentBytes());
@@ -483,20 +470,7 @@ final class ContainerRole extends RoleBase {
             return;
         }
         List<AgentEntry> delta = new ArrayList<>();
-        int removed = 0;
-        if (galSent != null) {
-            for (AgentEntry e : galSent.values()) {
-                if (!lists.gal.containsKey(e.name())) {
-                    delta.add(e);
-                    removed++;
-                }
-            }
-            for (AgentEntry e : lists.gal.values()) {
-                if (!e.equals(galSent.get(e.name()))) {
-                    delta.add(e);
-                }
-            }
-        }
+        int removed = galSent == null ? 0 : AgentLists.diff(galSent, lists.gal, delta);
         long from = galSentSeq;
         boolean whole = galSent == null || delta.size() * 2 > lists.gal.size();
         galSent = new HashMap<>(lists.gal);

@@ -88,17 +88,7 @@ abstract class Follower extends RoleBase {
             return;
         }
         AgentLists lists = st.lists;
-        int removed = Math.min(d.removed(), changed.size());
-        List<String> names = new java.util.ArrayList<>(changed.size());
-        for (int i = 0; i < changed.size(); i++) {
-            AgentEntry e = changed.get(i);
-            names.add(e.name());
-            if (i < removed) {
-                lists.lal.remove(e.name());
-            } else {
-                lists.lal.put(e.name(), e);
-            }
-        }
+        List<String> names = AgentLists.apply(changed, d.removed(), lists.lal, name -> true);
         st.seq = d.seq();
         st.periodMs = d.period();
         st.timeoutMs = d.timeout();

@@ -159,17 +159,7 @@ final class MemberRole extends Follower {
         if (changed == null) {
             return;
         }
-        int removed = Math.min(d.removed(), changed.size());
-        List<String> names = new java.util.ArrayList<>(changed.size());
-        for (int i = 0; i < changed.size(); i++) {
-            AgentEntry e = changed.get(i);
-            names.add(e.name());
-            if (i < removed) {
-                lists.gal.remove(e.name());
-            } else if (!lists.lal.containsKey(e.name())) {
-                lists.gal.put(e.name(), e);
-            }
-        }
+        List<String> names = AgentLists.apply(changed, d.removed(), lists.gal, name -> !lists.lal.containsKey(name));
         lists.gseq = d.gseq();
         roles.routesChanged(names);
         roles.publish();
