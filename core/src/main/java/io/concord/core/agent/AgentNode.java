@@ -64,8 +64,40 @@ final class AgentNode implements StackHost {
             if (tracer.enabled()) {
                 tracer.trace(runtime.nowNs(), aid.name(), "send", Tracer.describe(msg) + " to " + receiver.name());
             }
+            AgentNode peer = runtime.handOverTarget(this, dst);
+            if (peer != null && handOver(msg, peer)) {
+                continue;
+            }
             stack.sendDown(Envelope.outgoing(msg, receiver, dst));
         }
+    }
+
+    /** Senders waiting for this agent to take its mailbox down, and the receivers this one waits for. */
+    final java.util.Set<AgentNode> heldSenders = new java.util.LinkedHashSet<>();
+    final java.util.Set<AgentNode> waitingOn = new java.util.LinkedHashSet<>();
+
+    /**
+     * Hands an application message of this agent to an agent of the runtime in memory (see
+     * {@code AgentRuntime.Builder#handOver}); false if it must take the stacks.
+     *
+     * @throws io.concord.core.layer.SendRejectedException if the receiver's mailbox is full
+     */
+    private boolean handOver(AclMessage msg, AgentNode peer) {
+        if (!aid.name().equals(msg.getSender().name()) || !stack.mayHandOver(msg) || !peer.stack.mayHandOver(msg)) {
+            return false; // in another's name (the receiver's stack refuses it, counted), or a layer's own
+        }
+        if (peer.agent.getCurQueueSize() >= runtime.mailboxCapacity()) {
+            String why = peer.aid.name() + "'s mailbox holds " + runtime.mailboxCapacity() + " messages; "
+                    + "send again when it has taken some (this agent was paused from half of it)";
+            drops.record(aid.name(), "flow-control", why);
+            throw new io.concord.core.layer.SendRejectedException("flow-control", why);
+        }
+        runtime.countHandOver();
+        peer.deliverMessage(msg.copy());
+        if (peer.agent.inboxFull()) {
+            runtime.waitFor(this, peer);
+        }
+        return true;
     }
 
     private void dropOutgoing(AclMessage msg, String reason, String detail) {
@@ -131,6 +163,7 @@ final class AgentNode implements StackHost {
 
     /** The agent took its full mailbox down: the stack lets its senders go on. On the loop. */
     void inboxDrained() {
+        runtime.releaseSenders(this);
         if (!crashed && endpoint.isOpen()) {
             stack.fireEvent(new io.concord.core.layer.StackEvent(INBOX_DRAINED, null, false));
         }

@@ -55,6 +55,8 @@ public final class AgentRuntime implements AutoCloseable {
     private final Tracer tracer;
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
+    private final boolean handOver;
+    private long handedOver;
     private final int idleSpinIterations;
     private final int idleYieldIterations;
     private final Transport transport;
@@ -86,6 +88,7 @@ public final class AgentRuntime implements AutoCloseable {
         this.tracer = b.tracer;
         this.stackFactory = b.stackFactory != null ? b.stackFactory : defaultStack();
         this.mailboxCapacity = b.mailboxCapacity;
+        this.handOver = b.handOver;
         this.idleSpinIterations = b.idleSpinIterations;
         this.idleYieldIterations = b.idleYieldIterations;
         this.transport = b.transport;
@@ -118,6 +121,7 @@ public final class AgentRuntime implements AutoCloseable {
         private Tracer tracer = Tracer.NONE;
         private Supplier<List<Layer>> stackFactory;
         private int mailboxCapacity = 100_000;
+        private boolean handOver = !Boolean.getBoolean("concord.handover.off");
         private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 0);
         private int idleYieldIterations = Integer.getInteger("concord.idle.yield", 200);
         private Transport transport = Transport.UDP;
@@ -180,6 +184,22 @@ public final class AgentRuntime implements AutoCloseable {
          */
         public Builder stack(Supplier<List<Layer>> topFirstLayers) {
             this.stackFactory = Objects.requireNonNull(topFirstLayers, "stack");
+            return this;
+        }
+
+        /**
+         * Whether an application message from one agent of this runtime to another is handed over
+         * in memory, a copy into the receiver's mailbox, as JADE does inside a container (default
+         * true; {@code -Dconcord.handover.off=true} turns it off). It never leaves the process, so
+         * the transmission defences (sequence, time, CRC, encryption) have nothing to defend, and
+         * it passes neither stack. Only where the network delivers between the two in memory (not
+         * on the test kit's, which may lose frames); only the agent's own messages; never a
+         * message a layer acts on itself (platform, service and observation messages, and any
+         * message while either agent is sniffed). A receiver whose mailbox is over half full
+         * pauses its senders until it has taken it down to a quarter, as flow control does.
+         */
+        public Builder handOver(boolean on) {
+            this.handOver = on;
             return this;
         }
 
@@ -388,6 +408,28 @@ public final class AgentRuntime implements AutoCloseable {
     }
 
     /** An agent of this runtime with the given transport, by name; {@code null} if none. */
+    /**
+     * The agent of this runtime a node may hand a message to in memory at that address, or
+     * {@code null} (hand-over off, no such agent, another transport, not reached in memory).
+     */
+    AgentNode handOverTarget(AgentNode from, Address to) {
+        if (!handOver || to == null) {
+            return null;
+        }
+        AgentNode peer = byAddress.get(to);
+        return peer != null && peer.transport == from.transport && !peer.crashed && peer.agent.getState() != Agent.State.DELETED
+                && from.endpoint.inMemoryTo(to) ? peer : null;
+    }
+
+    /** Messages handed over in memory between agents of this runtime, since start. Any thread. */
+    public long handedOver() {
+        return handedOver;
+    }
+
+    void countHandOver() {
+        handedOver++;
+    }
+
     Address resolveLocal(AID aid, Transport t) {
         AgentNode local = directory.get(aid);
         return local != null && local.transport == t ? local.endpoint.localAddress() : null;
@@ -484,6 +526,11 @@ public final class AgentRuntime implements AutoCloseable {
         node.endpoint.close();
         Address at = node.endpoint.localAddress();
         byAddress.remove(at, node);
+        releaseSenders(node);
+        for (AgentNode r : node.waitingOn) {
+            r.heldSenders.remove(node);
+        }
+        node.waitingOn.clear();
         List<Runnable> watchers = goneWatchers.remove(at);
         if (tracer.enabled()) {
             tracer.trace(nowNs, node.aid.name(), takeDown ? "stop" : "crash", "");
@@ -535,7 +582,7 @@ public final class AgentRuntime implements AutoCloseable {
             if (agent.getState() == Agent.State.DELETED) {
                 continue;
             }
-            if (node.backpressured && !agent.inboxFull() && !agent.deleteRequested()) {
+            if ((node.backpressured || !node.waitingOn.isEmpty()) && !agent.inboxFull() && !agent.deleteRequested()) {
                 continue; // made ready again when its stack lets its frames go
             }
             boolean more = !agent.deleteRequested() && agent.runRound();
@@ -552,6 +599,26 @@ public final class AgentRuntime implements AutoCloseable {
      * The node's stack holds frames back for a slower receiver: its behaviours wait until it
      * holds none (unless its own mailbox is full: it may be the one its receiver waits for).
      */
+    /** A node handed a message to a receiver whose mailbox is over half full: it waits for it. */
+    void waitFor(AgentNode node, AgentNode receiver) {
+        if (node.waitingOn.isEmpty() && !node.backpressured) {
+            pauses++;
+        }
+        if (node.waitingOn.add(receiver)) {
+            receiver.heldSenders.add(node);
+        }
+    }
+
+    /** The receiver took its mailbox down (or left): its waiting senders go on. */
+    void releaseSenders(AgentNode receiver) {
+        for (AgentNode s : receiver.heldSenders) {
+            if (s.waitingOn.remove(receiver) && s.waitingOn.isEmpty()) {
+                makeReady(s);
+            }
+        }
+        receiver.heldSenders.clear();
+    }
+
     void backpressure(AgentNode node, boolean on) {
         if (on && !node.backpressured) {
             pauses++;

@@ -26,6 +26,16 @@ public abstract class Layer {
         return false;
     }
 
+    /**
+     * True if this layer lets an application message between two agents of one runtime be handed
+     * over in memory, past both stacks (see {@code AgentRuntime.Builder#handOver}). A layer that
+     * acts on such a message itself (answers it, or reports it to a sniffer) says false for it.
+     * Called on the loop, for the sender's stack and the receiver's.
+     */
+    public boolean mayHandOver(io.concord.core.acl.AclMessage message) {
+        return true;
+    }
+
     /** Called once when the stack is built, bottom layer first. */
     public void init(LayerContext ctx) {
     }

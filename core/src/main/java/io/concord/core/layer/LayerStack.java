@@ -82,6 +82,16 @@ public final class LayerStack {
         }
     }
 
+    /** True if every layer of this stack lets the message be handed over in memory ({@link Layer#mayHandOver}). */
+    public boolean mayHandOver(io.concord.core.acl.AclMessage message) {
+        for (Ctx c : contexts) {
+            if (!c.layer.mayHandOver(message)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /** True if a layer of this stack resolves receivers by name ({@link Layer#resolvesNames()}). */
     public boolean resolvesNames() {
         return resolvesNames;

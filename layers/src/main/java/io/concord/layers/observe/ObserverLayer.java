@@ -58,6 +58,12 @@ public final class ObserverLayer extends Layer {
     private static final String RATE_DETAIL = "more than " + EVENTS_PER_SECOND + " messages a second to report to a sniffer";
 
     private final Map<String, Sniffer> sniffers = new LinkedHashMap<>();
+
+    /** Observation requests are this layer's own, and a sniffed agent's messages are reported here: both take the stacks. */
+    @Override
+    public boolean mayHandOver(AclMessage m) {
+        return sniffers.isEmpty() && !ONTOLOGY.equals(m.getOntology());
+    }
     private List<io.concord.core.layer.Layer> stack = List.of();
     private LayerContext ctx;
     private AID self;

@@ -337,6 +337,12 @@ public final class ContainerLayer extends Layer {
         ctx.passDown(env);
     }
 
+    /** Platform and service messages are this layer's own: they take the stacks. */
+    @Override
+    public boolean mayHandOver(AclMessage m) {
+        return !ONTOLOGY.equals(m.getOntology()) && !addressedToService(m);
+    }
+
     // ---- up ---------------------------------------------------------------------------------------
 
     @Override
