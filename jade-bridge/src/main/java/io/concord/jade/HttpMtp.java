@@ -40,7 +40,7 @@ public final class HttpMtp implements Gateway {
     private final int port;
     private final String advertisedHost;
     private AccServer server;
-    private BridgeLoop loop;
+    private volatile BridgeLoop loop;
     private MtpClient client;
     /** Messages given to the client and not done yet; any thread reads it to refuse past {@link #OUT_QUEUE}. */
     private final java.util.concurrent.atomic.AtomicInteger outQueued = new java.util.concurrent.atomic.AtomicInteger();
