@@ -60,10 +60,15 @@ public final class Charts {
         double spanX = Math.max(1, maxX - minX);
         java.util.TreeSet<Integer> xs = new java.util.TreeSet<>();
         series.values().forEach(s -> xs.addAll(s.keySet()));
+        int labelledTo = Integer.MIN_VALUE;
         for (int x : xs) {
             int px = left + (int) (pw * (x - minX) / spanX);
             g.drawLine(px, top + ph, px, top + ph + 5);
-            g.drawString(Integer.toString(x), px - 5, top + ph + 20);
+            String label = Integer.toString(x);
+            if (px - 5 > labelledTo + 4) { // a tick too close to the last label keeps its mark only (10 beside 100 on a scale to 5,000)
+                g.drawString(label, px - 5, top + ph + 20);
+                labelledTo = px - 5 + g.getFontMetrics().stringWidth(label);
+            }
         }
         g.drawString(xLabel, left + pw / 2 - 30, h - 15);
         g.rotate(-Math.PI / 2);
