@@ -86,14 +86,13 @@ final class AgentNode implements StackHost {
         if (!aid.name().equals(msg.getSender().name()) || !stack.mayHandOver(msg) || !peer.stack.mayHandOver(msg)) {
             return false; // in another's name (the receiver's stack refuses it, counted), or a layer's own
         }
-        if (peer.agent.getCurQueueSize() >= runtime.mailboxCapacity()) {
+        if (!peer.post(msg.copy())) {
             String why = peer.aid.name() + "'s mailbox holds " + runtime.mailboxCapacity() + " messages; "
                     + "send again when it has taken some (this agent was paused from half of it)";
             drops.record(aid.name(), "flow-control", why);
             throw new io.concord.core.layer.SendRejectedException("flow-control", why);
         }
         runtime.countHandOver();
-        peer.deliverMessage(msg.copy());
         if (peer.agent.inboxFull()) {
             runtime.waitFor(this, peer);
         }
@@ -175,15 +174,22 @@ final class AgentNode implements StackHost {
     }
 
     private void deliverMessage(AclMessage msg) {
-        msg.setReceivedAtEpochMs(platformMillis());
-        Tracer t = runtime.tracer();
-        if (!agent.postMessage(msg, runtime.mailboxCapacity())) {
+        if (!post(msg)) {
             dropOutgoing(msg, "mailbox-full", "the mailbox holds " + runtime.mailboxCapacity() + " messages");
-            return;
         }
+    }
+
+    /** Into the mailbox, stamped and traced; false if the mailbox is full (nothing kept). */
+    private boolean post(AclMessage msg) {
+        msg.setReceivedAtEpochMs(platformMillis());
+        if (!agent.postMessage(msg, runtime.mailboxCapacity())) {
+            return false;
+        }
+        Tracer t = runtime.tracer();
         if (t.enabled()) {
             t.trace(runtime.nowNs(), aid.name(), "deliver", Tracer.describe(msg));
         }
+        return true;
     }
 
     @Override
