@@ -31,6 +31,15 @@ interface BridgeLoop {
     /** True on the loop's thread. */
     boolean inLoop();
 
+    /** Runs a task now if called on the loop, else hands it to the loop. Any thread. */
+    default void run(Runnable task) {
+        if (inLoop()) {
+            task.run();
+        } else {
+            execute(task);
+        }
+    }
+
     /** Runs a task on the loop after {@code ms}. Loop only. */
     void after(long ms, Runnable task);
 

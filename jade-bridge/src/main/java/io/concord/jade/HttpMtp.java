@@ -184,11 +184,7 @@ public final class HttpMtp implements Gateway {
                 started.completeExceptionally(e);
             }
         };
-        if (l.inLoop()) {
-            open.run();
-        } else {
-            l.execute(open);
-        }
+        l.run(open);
         try {
             started.join();
         } catch (java.util.concurrent.CompletionException e) {
@@ -215,11 +211,7 @@ public final class HttpMtp implements Gateway {
             server.close();
             client.close("the HTTP MTP stopped (its container is changing or the platform stops)");
         };
-        if (l.inLoop()) {
-            close.run();
-        } else {
-            l.execute(close);
-        }
+        l.run(close);
         l.close();
     }
 
@@ -545,13 +537,16 @@ public final class HttpMtp implements Gateway {
             tellSender(ctx, message, receiver, problem == null ? "no http address" : problem);
             return;
         }
-        BridgeLoop l = loop;
-        Runnable post = () -> post(ctx, message, receiver, m, payload, urls, 0);
-        if (l.inLoop()) {
-            post.run();
-        } else {
-            l.execute(post);
-        }
+        loop.run(() -> post(ctx, message, receiver, m, payload, urls, 0));
+    }
+
+    /**
+     * The bytes of one POST of an ACL payload to a foreign ACC, as JADE writes it (the multipart
+     * body of the XML envelope and the string ACL, with a random boundary): what this bridge sends,
+     * for tools and benchmarks that speak to JADE the same way.
+     */
+    public static byte[] jadePost(String url, AID receiver, AID sender, String payload) {
+        return MtpClient.request(url, receiver, sender, payload);
     }
 
     /** Posts to the receiver's next address; on failure tries the one after, and tells the sender when none is left. Loop. */

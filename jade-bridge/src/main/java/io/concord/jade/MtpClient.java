@@ -332,15 +332,15 @@ final class MtpClient {
          * JADE's fixed HTML page, which has none. {@code null} until it is whole.
          */
         static Response parse(byte[] b, int len) {
-            String text = new String(b, 0, len, StandardCharsets.ISO_8859_1);
             int start = 0;
             while (start < len && (b[start] == '\r' || b[start] == '\n')) {
                 start++;
             }
             int headEnd = AccServer.headEnd(b, start, len);
             if (headEnd < 0) {
-                return null;
+                return null; // read on: nothing made of a partial head
             }
+            String text = new String(b, 0, len, StandardCharsets.ISO_8859_1);
             String[] lines = text.substring(start, headEnd).split("\r?\n");
             if (!lines[0].startsWith("HTTP/1.")) {
                 return new Response(-1, false);
@@ -374,7 +374,12 @@ final class MtpClient {
             }
             // JADE's page: <html><body><h1>200 OK</h1></body></html>, without a length.
             // (what follows it, if anything, is blank lines, skipped before the next response)
-            return text.toLowerCase(Locale.ROOT).indexOf("</html>", headEnd) >= 0 ? new Response(status, true) : null;
+            for (int i = headEnd; i + 7 <= len; i++) {
+                if (text.regionMatches(true, i, "</html>", 0, 7)) {
+                    return new Response(status, true);
+                }
+            }
+            return null;
         }
     }
 

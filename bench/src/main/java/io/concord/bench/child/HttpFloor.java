@@ -4,10 +4,8 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.codec.StringAclCodec;
-import io.concord.jade.FipaEnvelope;
 
 import java.io.BufferedInputStream;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -16,7 +14,6 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.URI;
 import java.nio.charset.StandardCharsets;
-import java.util.Locale;
 
 /**
  * The floor of the HTTP benchmark: the least an HTTP MTP can do to answer a JADE agent's REQUEST.
@@ -125,23 +122,8 @@ final class HttpFloor {
         inform.setSender(echo);
         inform.addReceiver(requester);
         inform.setContent(request.getContent());
-        byte[] acl = StringAclCodec.INSTANCE.encodeForJade(inform).getBytes(StandardCharsets.UTF_8);
-        String boundary = "a36869921a26b9d812878b42b8fc2cd";
-        ByteArrayOutputStream b = new ByteArrayOutputStream();
-        b.writeBytes(("This is not part of the MIME multipart encoded message.\r\n--" + boundary
-                + "\r\nContent-Type: application/xml\r\n\r\n" + FipaEnvelope.forOne(requester, echo, acl.length).toXml()
-                + "\r\n--" + boundary + "\r\nContent-Type: application/text; charset=UTF-8\r\n\r\n")
-                .getBytes(StandardCharsets.UTF_8));
-        b.writeBytes(acl);
-        b.writeBytes(("\r\n--" + boundary + "--\r\n").getBytes(StandardCharsets.UTF_8));
-        URI u = URI.create(address);
-        String head = String.format(Locale.ROOT, "POST %s HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\n"
-                + "Host: %s:%d\r\nContent-Type: multipart/mixed ; boundary=\"%s\"\r\nContent-Length: %d\r\n"
-                + "Connection: Keep-Alive\r\n\r\n", address, u.getHost(), u.getPort(), boundary, b.size());
-        ByteArrayOutputStream all = new ByteArrayOutputStream();
-        all.writeBytes(head.getBytes(StandardCharsets.US_ASCII));
-        all.writeBytes(b.toByteArray());
-        return all.toByteArray();
+        // The bytes the bridge itself would post: only how often they are made differs.
+        return io.concord.jade.HttpMtp.jadePost(address, requester, echo, StringAclCodec.INSTANCE.encodeForJade(inform));
     }
 
     private static String readLine(InputStream in) throws IOException {
