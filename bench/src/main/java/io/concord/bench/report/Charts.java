@@ -34,8 +34,7 @@ public final class Charts {
         int top = 50;
         int bottom = 60;
         BufferedImage img = canvas(w, h);
-        Graphics2D g = img.createGraphics();
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        Graphics2D g = pen(img);
         double maxY = 0;
         int minX = Integer.MAX_VALUE;
         int maxX = Integer.MIN_VALUE;
@@ -111,8 +110,7 @@ public final class Charts {
         int top = 50;
         int bottom = 70;
         BufferedImage img = canvas(w, h);
-        Graphics2D g = img.createGraphics();
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        Graphics2D g = pen(img);
         double maxY = 0;
         for (List<Double> v : series.values()) {
             for (Double d : v) {
@@ -166,6 +164,13 @@ public final class Charts {
     }
 
     /** A white picture. */
+    /** Draws on the image, anti-aliased. */
+    private static Graphics2D pen(BufferedImage img) {
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        return g;
+    }
+
     private static BufferedImage canvas(int w, int h) {
         BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();

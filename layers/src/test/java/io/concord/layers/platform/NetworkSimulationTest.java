@@ -49,12 +49,7 @@ class NetworkSimulationTest {
     @Test
     void aChangeOfOneHostsListReachesTheOthersAsThatChange() {
         try (NetworkWorld w = new NetworkWorld(5, FaultPlan.NONE, Profile.CLASS_3)) {
-            java.util.Map<String, Integer> accepted = new java.util.TreeMap<>();
-            w.sim.trace().addListener((ns, node, event, detail) -> {
-                if (event.equals("platform-accept") && node.startsWith("h2") && (detail.contains(" gal-delta ") || detail.contains(" gal "))) {
-                    accepted.merge(detail.contains(" gal-delta ") ? "delta" : "whole", 1, Integer::sum);
-                }
-            });
+            java.util.Map<String, Integer> accepted = accepted(w, "h2", "gal");
             for (String h : List.of("h1", "h2", "h3")) {
                 w.addHost(h);
                 // (A change of more than half the list goes whole: h1 is the larger host.)
@@ -86,12 +81,7 @@ class NetworkSimulationTest {
     @Test
     void aChangeOfAHostsOwnListReachesItsMembersAsThatChange() {
         try (NetworkWorld w = new NetworkWorld(6, FaultPlan.NONE, Profile.CLASS_3)) {
-            java.util.Map<String, Integer> accepted = new java.util.TreeMap<>();
-            w.sim.trace().addListener((ns, node, event, detail) -> {
-                if (event.equals("platform-accept") && (detail.contains(" lal-delta ") || detail.contains(" lal "))) {
-                    accepted.merge(detail.contains(" lal-delta ") ? "delta" : "whole", 1, Integer::sum);
-                }
-            });
+            java.util.Map<String, Integer> accepted = accepted(w, "", "lal");
             w.addHost("h1");
             for (int i = 0; i < 10; i++) {
                 w.start("h1", "a" + i);
@@ -111,6 +101,21 @@ class NetworkSimulationTest {
             w.sim.runFor(1_000);
             assertEquals(java.util.Map.of("delta", 9), accepted, "and a lost agent as a removal");
         }
+    }
+
+    /**
+     * Counts, by "whole" and "delta", the lists ({@code list}, {@code list-delta}) accepted by the
+     * agents whose names start with {@code nodes}.
+     */
+    private static java.util.Map<String, Integer> accepted(NetworkWorld w, String nodes, String list) {
+        java.util.Map<String, Integer> accepted = new java.util.TreeMap<>();
+        w.sim.trace().addListener((ns, node, event, detail) -> {
+            if (event.equals("platform-accept") && node.startsWith(nodes)
+                    && (detail.contains(" " + list + "-delta ") || detail.contains(" " + list + " "))) {
+                accepted.merge(detail.contains(" " + list + "-delta ") ? "delta" : "whole", 1, Integer::sum);
+            }
+        });
+        return accepted;
     }
 
     static String scenario(long seed) {
