@@ -56,7 +56,8 @@ public final class AgentRuntime implements AutoCloseable {
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
     private final boolean handOver;
-    private long handedOver;
+    /** Written by the loop only; read anywhere. */
+    private volatile long handedOver;
     private final int idleSpinIterations;
     private final int idleYieldIterations;
     private final Transport transport;
@@ -463,11 +464,13 @@ public final class AgentRuntime implements AutoCloseable {
         return a;
     }
 
-    private long pauses;
+    /** Written by the loop only; read anywhere. */
+    private volatile long pauses;
 
     /**
      * How many times an agent of this runtime was paused because a receiver did not take its
-     * messages as fast as it sent them (flow control; see the sequence layer). Loop thread.
+     * messages as fast as it sent them (flow control: the sequence layer's window, or a receiver's mailbox
+     * over half full when messages are handed over). Any thread.
      */
     public long pauses() {
         return pauses;
