@@ -37,6 +37,9 @@ final class ContainerRole extends RoleBase {
     private long lalSentFrom = -1;
     private long lalPushedNs;
     private int cycles;
+    /** Cycles in a row with no member elsewhere and the list unchanged. */
+    private int quietCycles;
+    private long seqAtLastCycle = -1;
     private long cycleStartNs;
     private long cycleDueNs;
 
@@ -342,6 +345,23 @@ final class ContainerRole extends RoleBase {
      * this agent is alive, and watches for it to leave the runtime (see {@link MemberRole}).
      */
     static final int LOCAL_ALIVE_EVERY = 25;
+    /**
+     * With no member elsewhere, each cycle that finds nothing changed doubles the wait for the next
+     * (from {@link #LOCAL_ALIVE_EVERY} periods) up to this, so that an idle JVM of agents wakes
+     * next to never; any change of the list starts again from the shortest wait.
+     */
+    static final long LOCAL_CYCLE_MAX_MS = 20_000;
+
+    /** The wait before the next cycle with members only in this runtime, after so many quiet cycles. */
+    static long localCycleMs(long periodMs, int quietCycles) {
+        long base = periodMs * LOCAL_ALIVE_EVERY;
+        return Math.min(maxLocalCycleMs(periodMs), base << Math.min(quietCycles, 16));
+    }
+
+    /** The longest wait between two cycles with members only in this runtime (what they allow for). */
+    static long maxLocalCycleMs(long periodMs) {
+        return Math.max(periodMs * LOCAL_ALIVE_EVERY, LOCAL_CYCLE_MAX_MS);
+    }
 
     private void cycle() {
         cycleTimer = -1;
@@ -409,7 +429,14 @@ final class ContainerRole extends RoleBase {
         }
         // Keep asking the potential agents of the range that are not listed: a container elected
         // while one of them was slow to answer finds the other container this way.
-        if (cycles % 4 == 1) {
+        if (remote || st.seq != seqAtLastCycle) {
+            quietCycles = 0;
+        } else {
+            quietCycles++;
+        }
+        seqAtLastCycle = st.seq;
+        // (Once the cycles are rarer, at each.)
+        if (cycles % 4 == 1 || quietCycles >= 2) {
             PlatformMessage q = new PlatformMessage.WhoIsContainer(st.round, st.selfEntry);
             Set<Address> listed = new HashSet<>();
             for (AgentEntry e : lists.lal.values()) {
@@ -421,7 +448,7 @@ final class ContainerRole extends RoleBase {
                 }
             }
         }
-        long next = remote ? st.periodMs : st.periodMs * LOCAL_ALIVE_EVERY;
+        long next = remote ? st.periodMs : localCycleMs(st.periodMs, quietCycles);
         cycleDueNs = now + next * 1_000_000L;
         cycleTimer = after(next, this::cycle);
         if (!dead.isEmpty()) {

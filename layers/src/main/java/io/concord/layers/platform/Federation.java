@@ -80,6 +80,10 @@ final class Federation implements PlatformMessage.Handler {
     /** The announcements that carry the facilitators in contact: one in this many. */
     static final int KNOWN_EVERY = 4;
     private long announceTimer = -1;
+    /** Announcements in a row made while this container knew no other host's. */
+    private int alone;
+    /** A container alone announces at its period 4 times, then each 4 at twice the wait, up to this many periods. */
+    static final int ALONE_MAX_PERIODS = 4;
     private boolean running;
 
     /** @param around the node's neighbourhood: its shared listener and broadcast addresses ({@code null}: none) */
@@ -112,6 +116,7 @@ final class Federation implements PlatformMessage.Handler {
             return;
         }
         running = true;
+        alone = 0;
         listener = around == null ? null : around.openListener(config.discoveryPort());
         layer.trace("network", listener == null ? "cannot listen on the discovery port " + config.discoveryPort()
                 + " (announcing only)" : "listening on the discovery port " + config.discoveryPort());
@@ -186,7 +191,23 @@ final class Federation implements PlatformMessage.Handler {
             }
         }
         expire();
-        announceTimer = layer.after(config.announcePeriodMs(), this::announce);
+        announceTimer = layer.after(nextAnnouncementMs(), this::announce);
+    }
+
+    /**
+     * The wait before the next announcement: the period while another host's container is known
+     * (it takes this host for gone after a few missed ones); alone, longer and longer, up to
+     * {@link #ALONE_MAX_PERIODS} periods. A newcomer announces at its period, and is heard at
+     * once; so this only slows how fast two containers alone find each other after a partition,
+     * and spares an idle host four broadcasts a second that nobody hears.
+     */
+    private long nextAnnouncementMs() {
+        if (!fal.isEmpty()) {
+            alone = 0;
+            return config.announcePeriodMs();
+        }
+        int doublings = Math.min(alone++ / 4, Integer.numberOfTrailingZeros(ALONE_MAX_PERIODS));
+        return config.announcePeriodMs() << doublings;
     }
 
     /** Hosts not heard for the timeout leave the lists. */
@@ -293,6 +314,12 @@ final class Federation implements PlatformMessage.Handler {
             f.term = term;
             fal.put(e.name(), f);
             layer.trace("facilitator", e.name() + " of host " + host);
+            if (alone > 0 && running) {
+                // It takes this host for gone after a few periods of silence: announce at the period again.
+                alone = 0;
+                announceTimer = layer.cancel(announceTimer);
+                announceTimer = layer.after(config.announcePeriodMs(), this::announce);
+            }
         }
         f.entry = e;
         f.lastHeardNs = layer.nowNs();

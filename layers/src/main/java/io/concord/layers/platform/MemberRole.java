@@ -33,7 +33,8 @@ final class MemberRole extends Follower {
         AgentEntry c = st.container;
         if (c != null && roles.join.target() == null && ctx.here(c)) {
             // The container runs in this runtime: told at once when it leaves, and its alive comes
-            // only every few cycles (ContainerRole.LOCAL_ALIVE_EVERY); the timeout covers those.
+            // only every few cycles, rarer while nothing changes (ContainerRole.localCycleMs); the
+            // timeout covers the longest wait.
             String name = c.name();
             watchingLocal = ctx.coLocated().whenGone(c.transportAddress(), () -> {
                 watchingLocal = null;
@@ -43,7 +44,7 @@ final class MemberRole extends Follower {
                 }
             });
             long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
-            t += period * ContainerRole.LOCAL_ALIVE_EVERY;
+            t += ContainerRole.maxLocalCycleMs(period);
         }
         long deadline = ctx.nowNs() + t * 1_000_000L;
         long timeout = t;

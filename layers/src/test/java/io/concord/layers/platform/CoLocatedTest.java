@@ -69,8 +69,9 @@ class CoLocatedTest {
 
     /**
      * Idle, the container sends its members in this runtime an alive only every
-     * {@link ContainerRole#LOCAL_ALIVE_EVERY} periods, and with the default timeouts nobody is
-     * taken for dead meanwhile: the platform stays one, in its first term, over three such alives.
+     * {@link ContainerRole#LOCAL_ALIVE_EVERY} periods, then rarer (see ContainerRulesTest), and with
+     * the default timeouts nobody is taken for dead meanwhile: the platform stays one, in its first
+     * term, over three such alives.
      */
     @Test
     void anIdlePlatformOfOneRuntimeStaysOneBetweenItsRareAlives() throws Exception {

@@ -49,7 +49,15 @@ class ContainerRulesTest {
 
     /** An agent made member of {@code container} (term 1) with the list given, by a joined and a LAL. */
     private static OneAgent memberOf(AgentEntry container, List<AgentEntry> others) {
+        return memberOf(container, others, false);
+    }
+
+    /** ... the container running in this agent's runtime or not. */
+    private static OneAgent memberOf(AgentEntry container, List<AgentEntry> others, boolean sameRuntime) {
         OneAgent a = new OneAgent("me", 7001, container.port());
+        if (sameRuntime) {
+            a.coLocated.add(container.transportAddress());
+        }
         a.from(container, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, container, null));
         a.from(container, Performative.CONFIRM, P_LAL, new Joined(1, 40, 250, container));
         List<AgentEntry> all = new ArrayList<>(others);
@@ -256,6 +264,21 @@ class ContainerRulesTest {
             assertEquals(Role.CONTAINER, a.role(), "y stayed silent too");
         }
 
+        /**
+         * A container in this agent's runtime is seen leaving it at once; its alives come rarer while
+         * nothing changes, up to {@link ContainerRole#LOCAL_CYCLE_MAX_MS}: its silence is allowed that.
+         */
+        @Test
+        void aMemberOfAContainerInItsRuntimeAllowsItsSilenceTheLongestQuietCycle() {
+            AgentEntry c = other("c", 7002, 1_000);
+            OneAgent a = memberOf(c, List.of(), true);
+            a.advance(250 + ContainerRole.LOCAL_CYCLE_MAX_MS - 1);
+            assertEquals(Role.MEMBER, a.role());
+            assertEquals("c@p", a.layer.containerName());
+            a.advance(1);
+            assertEquals(Role.CONTAINER, a.role(), "silent for longer: failover, as for any container");
+        }
+
         @Test
         void anAliveKeepsTheMemberFromFailover() {
             AgentEntry c = other("c", 7002, 1_000);
@@ -333,6 +356,55 @@ class ContainerRulesTest {
             c.advance(41);
             List<OneAgent.Out> alive = c.sent().stream().filter(o -> o.what() instanceof Alive).toList();
             assertEquals(List.of("m1@p", "m2@p"), alive.stream().map(OneAgent.Out::to).toList());
+        }
+
+        /**
+         * With every member in its runtime (watched for leaving it, nothing lost between them), an idle
+         * container's cycle waits {@link ContainerRole#LOCAL_ALIVE_EVERY} periods, then twice as long
+         * at each cycle that finds nothing changed, up to {@link ContainerRole#LOCAL_CYCLE_MAX_MS};
+         * a change of the list starts again from the shortest wait.
+         */
+        @Test
+        void anIdleContainerWithItsMembersInItsRuntimeWaitsTwiceAsLongEachQuietCycle() {
+            AgentEntry m1 = other("m1", 7002, -10);
+            AgentEntry m2 = other("m2", 7003, -10);
+            OneAgent c = new OneAgent("me", 7001);
+            c.coLocated.add(m1.transportAddress());
+            c.coLocated.add(m2.transportAddress());
+            c.from(m1, Performative.INFORM_REF, P_LAL, new Join(1, m1));
+            c.from(m2, Performative.INFORM_REF, P_LAL, new Join(1, m2));
+            long shortest = PlatformConfig.defaults().periodMs(3) * ContainerRole.LOCAL_ALIVE_EVERY;
+            List<Long> gaps = alivesTo(c, "m1@p", 10 * 60_000);
+            List<Long> expected = new ArrayList<>();
+            for (long g = shortest; expected.size() < gaps.size(); g = Math.min(2 * g, ContainerRole.LOCAL_CYCLE_MAX_MS)) {
+                expected.add(g);
+            }
+            assertEquals(expected, gaps);
+            assertTrue(gaps.size() < 40, "ten idle minutes, " + gaps.size() + " alives: " + gaps);
+            assertEquals(List.of("m1@p", "m2@p", "me@p"), names(List.copyOf(c.layer.agents())), "nobody was taken for dead");
+            // A newcomer of the same runtime: the cycle after the change waits the shortest again.
+            AgentEntry m3 = other("m3", 7004, -10);
+            c.coLocated.add(m3.transportAddress());
+            c.from(m3, Performative.INFORM_REF, P_LAL, new Join(1, m3));
+            List<Long> after = alivesTo(c, "m1@p", 2 * ContainerRole.LOCAL_CYCLE_MAX_MS + 1);
+            assertTrue(after.size() >= 1, after.toString());
+            assertEquals(PlatformConfig.defaults().periodMs(4) * ContainerRole.LOCAL_ALIVE_EVERY, after.get(0), "after the change: " + after);
+        }
+
+        /** The gaps between the alives sent to {@code member} over {@code ms} (the first counted from the start). */
+        private static List<Long> alivesTo(OneAgent c, String member, long ms) {
+            List<Long> gaps = new ArrayList<>();
+            long last = -1;
+            for (long t = 1; t <= ms; t++) {
+                c.advance(1);
+                if (c.sent().stream().anyMatch(o -> o.what() instanceof Alive && o.to().equals(member))) {
+                    if (last >= 0) {
+                        gaps.add(t - last);
+                    }
+                    last = t;
+                }
+            }
+            return gaps;
         }
 
         @Test
@@ -709,6 +781,47 @@ class ContainerRulesTest {
             assertTrue(c.sent(PlatformMessage.Announce.class).isEmpty());
             c.advance(1);
             assertEquals(1, c.sent(PlatformMessage.Announce.class).size());
+        }
+
+        /**
+         * Alone (no other host's container known), announcements come rarer, up to
+         * {@link Federation#ALONE_MAX_PERIODS} periods: a newcomer announces at its period and is
+         * heard. Once another host's container is heard, they come at the period again, within one.
+         */
+        @Test
+        void aContainerAloneAnnouncesLessOftenUntilItHearsAnotherHost() {
+            OneAgent c = container();
+            c.sent();
+            List<Long> gaps = announcementGaps(c, 60_000, null);
+            List<Long> expected = new ArrayList<>();
+            for (int i = 0; i < gaps.size(); i++) {
+                expected.add(250L * Math.min(1 << Math.min(i / 4, 16), Federation.ALONE_MAX_PERIODS));
+            }
+            assertEquals(expected, gaps);
+            assertTrue(gaps.size() < 70, "a minute alone (240 at the period), " + gaps.size() + " announcements");
+            AgentEntry z = on2("z");
+            c.from(z, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, z, List.of()));
+            c.sent();
+            List<Long> known = announcementGaps(c, 3_000, z);
+            assertTrue(known.stream().allMatch(g -> g <= 250), "another host known: " + known);
+            assertEquals(12, known.size(), "the first within a period, then each period: " + known);
+        }
+
+        /** The gaps between the announcements over {@code ms} (the first counted from the start); {@code peer} announcing each 250 ms if given. */
+        private List<Long> announcementGaps(OneAgent c, long ms, AgentEntry peer) {
+            List<Long> gaps = new ArrayList<>();
+            long last = 0;
+            for (long t = 1; t <= ms; t++) {
+                c.advance(1);
+                if (peer != null && t % 250 == 0) {
+                    c.from(peer, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, peer, List.of()));
+                }
+                if (!c.sent(PlatformMessage.Announce.class).isEmpty()) {
+                    gaps.add(t - last);
+                    last = t;
+                }
+            }
+            return gaps;
         }
 
         @Test

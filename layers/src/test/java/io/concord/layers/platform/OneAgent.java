@@ -27,6 +27,8 @@ final class OneAgent {
     final ContainerLayer layer;
     final LayerHarness h;
     final AgentEntry self;
+    /** The addresses of the agents taken to run in this agent's runtime (none unless a test adds them). */
+    final java.util.Set<Address> coLocated = new java.util.HashSet<>();
 
     /** An agent named {@code local} at port {@code port}, with other agents holding the ports given. */
     OneAgent(String local, int port, PlatformConfig config, int... neighbourPorts) {
@@ -60,6 +62,17 @@ final class OneAgent {
                     @Override
                     public List<String> broadcastAddresses() {
                         return List.of();
+                    }
+                })
+                .offer(io.concord.core.agent.CoLocated.class, new io.concord.core.agent.CoLocated() {
+                    @Override
+                    public boolean here(Address address) {
+                        return coLocated.contains(address);
+                    }
+
+                    @Override
+                    public Runnable whenGone(Address address, Runnable callback) {
+                        return () -> { };
                     }
                 }).build(layer);
         self = layer.selfEntry();
