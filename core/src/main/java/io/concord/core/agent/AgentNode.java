@@ -266,6 +266,11 @@ final class AgentNode implements StackHost {
                 }
             });
         }
+
+        @Override
+        public <T> T layer(io.concord.core.net.Address address, Class<T> type) {
+            return endpoint.inMemoryTo(address) ? runtime.coLocated().layer(address, type) : null;
+        }
     };
 
     @Override

@@ -512,6 +512,20 @@ public final class AgentRuntime implements AutoCloseable {
                 }
             };
         }
+
+        @Override
+        public <T> T layer(Address address, Class<T> type) {
+            AgentNode n = byAddress.get(address);
+            if (n == null || !n.endpoint.isOpen() || n.stack == null) {
+                return null;
+            }
+            for (io.concord.core.layer.Layer l : n.stack.layers()) {
+                if (type.isInstance(l)) {
+                    return type.cast(l);
+                }
+            }
+            return null;
+        }
     };
 
     CoLocated coLocated() {

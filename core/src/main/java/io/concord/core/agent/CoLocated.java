@@ -20,4 +20,13 @@ public interface CoLocated {
      * @return cancels the watch (idempotent)
      */
     Runnable whenGone(Address address, Runnable callback);
+
+    /**
+     * The layer of this type in the stack of the agent of this runtime bound to this address, for a
+     * layer to read the state of its peer in memory instead of asking it by message (call it on the
+     * loop only); {@code null} if no such agent or layer is here, or this view offers none.
+     */
+    default <T> T layer(Address address, Class<T> type) {
+        return null;
+    }
 }

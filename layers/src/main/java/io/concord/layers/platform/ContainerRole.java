@@ -419,8 +419,8 @@ final class ContainerRole extends RoleBase {
             }
             if (ctx.here(e)) {
                 watchLocal(e);
-                if (!localAlive) {
-                    continue;
+                if (!localAlive || ctx.peerLayer(e) != null) {
+                    continue; // it reads this agent's state in memory when it wants to check (MemberRole)
                 }
             } else {
                 cycleAwaiting.add(e.name());

@@ -1,6 +1,7 @@
 package io.concord.layers.platform;
 
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -45,6 +46,10 @@ final class MemberRole extends Follower {
             });
             long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
             t += ContainerRole.maxLocalCycleMs(period);
+            // Ending on a whole second of the loop's clock, the watches of a runtime's members end
+            // together: one wake of the loop checks them all.
+            long nowMs = ctx.nowNs() / 1_000_000L;
+            t = (nowMs + t + 999) / 1_000 * 1_000 - nowMs;
         }
         long deadline = ctx.nowNs() + t * 1_000_000L;
         long timeout = t;
@@ -75,6 +80,10 @@ final class MemberRole extends Follower {
         if (roles.join.target() != null || (st.container == null && st.successor == null)) {
             return;
         }
+        if (stillContainerHere()) {
+            resetWatch();
+            return;
+        }
         long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
         if (!graced && ctx.nowNs() - deadline > period * 500_000L) {
             watchTimer = after(period, () -> onWatch(deadline, t, true));
@@ -82,6 +91,26 @@ final class MemberRole extends Follower {
         }
         failover("no word from " + (st.container != null ? "the container " + st.container.name()
                 : "the expected successor " + st.successor.name()) + " for " + t + " ms");
+    }
+
+    /**
+     * True if the container runs in this runtime and, read in memory, is container still, of this
+     * agent's term: its silence is no sign of anything (it sends members of its runtime no alive,
+     * see ContainerRole.cycle). Holding an older version of its list, this agent says so, and is
+     * sent what it misses, as after an alive.
+     */
+    private boolean stillContainerHere() {
+        AgentEntry c = st.container;
+        ContainerLayer there = c == null || roles.join.target() != null || !ctx.here(c) ? null : ctx.peerLayer(c);
+        if (there == null || there.role() != ContainerLayer.Role.CONTAINER || there.term() != st.term) {
+            return false;
+        }
+        if (there.lalSequence() != st.seq) {
+            AgentLists l = st.lists;
+            ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, c.aid(),
+                    new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom)); // as if to an alive
+        }
+        return true;
     }
 
     /** The container is gone: the eldest agent left in the list takes over. */

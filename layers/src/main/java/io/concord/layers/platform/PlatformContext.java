@@ -52,6 +52,16 @@ interface PlatformContext {
         return null;
     }
 
+    /**
+     * The container layer of the entry's agent, if it runs in this agent's runtime and the runtime
+     * lets a layer read its peer's in memory (on the loop); {@code null} otherwise.
+     */
+    default ContainerLayer peerLayer(AgentEntry e) {
+        io.concord.core.agent.CoLocated c = coLocated();
+        Address a = e.transportAddress();
+        return c == null || a == null ? null : c.layer(a, ContainerLayer.class);
+    }
+
     /** True if the entry's agent runs in this agent's runtime, reached in memory. */
     default boolean here(AgentEntry e) {
         io.concord.core.agent.CoLocated c = coLocated();

@@ -266,17 +266,58 @@ class ContainerRulesTest {
 
         /**
          * A container in this agent's runtime is seen leaving it at once; its alives come rarer while
-         * nothing changes, up to {@link ContainerRole#LOCAL_CYCLE_MAX_MS}: its silence is allowed that.
+         * nothing changes, up to {@link ContainerRole#LOCAL_CYCLE_MAX_MS}: its silence is allowed that
+         * (and up to the next whole second, when the watches of a runtime's members end together).
          */
         @Test
         void aMemberOfAContainerInItsRuntimeAllowsItsSilenceTheLongestQuietCycle() {
             AgentEntry c = other("c", 7002, 1_000);
             OneAgent a = memberOf(c, List.of(), true);
-            a.advance(250 + ContainerRole.LOCAL_CYCLE_MAX_MS - 1);
+            long allowed = (250 + ContainerRole.LOCAL_CYCLE_MAX_MS + 999) / 1_000 * 1_000;
+            a.advance(allowed - 1);
             assertEquals(Role.MEMBER, a.role());
             assertEquals("c@p", a.layer.containerName());
             a.advance(1);
             assertEquals(Role.CONTAINER, a.role(), "silent for longer: failover, as for any container");
+        }
+
+        /**
+         * Where the runtime lets it read its container's layer in memory, a member needs no word from
+         * it: at the end of each watch it looks. Container still, of the same term: nothing happens and
+         * nothing is sent; with a newer list, the member says which version it holds (and is sent what
+         * it misses); no longer container, failover.
+         */
+        @Test
+        void aMemberReadsAContainerOfItsRuntimeInMemoryInsteadOfWaitingForItsWord() {
+            OneAgent cont = new OneAgent("c", 7002);
+            assertEquals(Role.CONTAINER, cont.role());
+            AgentEntry c = cont.self;
+            OneAgent a = new OneAgent("me", 7001, c.port());
+            a.coLocated.add(c.transportAddress());
+            a.peers.put(c.transportAddress(), cont.layer);
+            a.from(c, Performative.INFORM, P_DISCOVERY, new ContainerIs(1, c, null));
+            a.from(c, Performative.CONFIRM, P_LAL, new Joined(1, 40, 250, c));
+            a.from(c, Performative.INFORM_REF, P_LAL, new LalPage(1, cont.layer.lalSequence(), 40, 250,
+                    Page.of(0, 1, body(List.of(c, a.self)))));
+            assertEquals(Role.MEMBER, a.role());
+            a.sent();
+            a.advance(10 * 60_000);
+            assertEquals(Role.MEMBER, a.role());
+            assertEquals("c@p", a.layer.containerName());
+            assertTrue(a.sent().isEmpty(), "ten minutes, not a word either way");
+            // The container's list moves on, and the change does not reach this member.
+            AgentEntry y = other("y", 7003, -10);
+            cont.from(y, Performative.INFORM_REF, P_LAL, new Join(1, y));
+            a.advance(ContainerRole.LOCAL_CYCLE_MAX_MS + 1_250);
+            List<Held> held = a.sent(Held.class);
+            assertEquals(1, held.size(), "it says which version it holds");
+            assertTrue(held.get(0).seq() < cont.layer.lalSequence());
+            // The container stops being one without a word (it yields to an older claim).
+            AgentEntry older = other("o", 7009, 60_000);
+            cont.from(older, Performative.INFORM, P_MAINTENANCE, new Alive(1, 1, 40, 250, older));
+            assertEquals(Role.MEMBER, cont.role());
+            a.advance(ContainerRole.LOCAL_CYCLE_MAX_MS + 1_250);
+            assertTrue(a.role() != Role.MEMBER || !"c@p".equals(a.layer.containerName()), "failover: " + a.role());
         }
 
         @Test
@@ -405,6 +446,20 @@ class ContainerRulesTest {
                 }
             }
             return gaps;
+        }
+
+        /** Members it reads in memory (ContainerRulesTest.Member) get no alive at all. */
+        @Test
+        void anIdleContainerSendsNoAliveToAMemberThatReadsItInMemory() {
+            OneAgent member = new OneAgent("m1", 7002);
+            AgentEntry m1 = member.self;
+            OneAgent c = new OneAgent("me", 7001);
+            c.coLocated.add(m1.transportAddress());
+            c.peers.put(m1.transportAddress(), member.layer);
+            c.from(m1, Performative.INFORM_REF, P_LAL, new Join(1, m1));
+            assertTrue(alivesTo(c, "m1@p", 10 * 60_000).isEmpty());
+            assertTrue(c.sent().stream().noneMatch(o -> o.what() instanceof Alive));
+            assertEquals(List.of("m1@p", "me@p"), names(List.copyOf(c.layer.agents())));
         }
 
         @Test

@@ -29,6 +29,8 @@ final class OneAgent {
     final AgentEntry self;
     /** The addresses of the agents taken to run in this agent's runtime (none unless a test adds them). */
     final java.util.Set<Address> coLocated = new java.util.HashSet<>();
+    /** Of those, the container layers this agent may read in memory (none unless a test adds them). */
+    final java.util.Map<Address, ContainerLayer> peers = new java.util.HashMap<>();
 
     /** An agent named {@code local} at port {@code port}, with other agents holding the ports given. */
     OneAgent(String local, int port, PlatformConfig config, int... neighbourPorts) {
@@ -73,6 +75,12 @@ final class OneAgent {
                     @Override
                     public Runnable whenGone(Address address, Runnable callback) {
                         return () -> { };
+                    }
+
+                    @Override
+                    public <T> T layer(Address address, Class<T> type) {
+                        ContainerLayer l = coLocated.contains(address) ? peers.get(address) : null;
+                        return type.isInstance(l) ? type.cast(l) : null;
                     }
                 }).build(layer);
         self = layer.selfEntry();
