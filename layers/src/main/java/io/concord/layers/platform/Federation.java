@@ -80,10 +80,17 @@ final class Federation implements PlatformMessage.Handler {
     /** The announcements that carry the facilitators in contact: one in this many. */
     static final int KNOWN_EVERY = 4;
     private long announceTimer = -1;
+    private long announceDueNs;
     /** Announcements in a row made while this container knew no other host's. */
     private int alone;
     /** A container alone announces at its period 4 times, then each 4 at twice the wait, up to this many periods. */
     static final int ALONE_MAX_PERIODS = 4;
+    /**
+     * The wait before looking again when there was nobody to announce to: no broadcast address
+     * (bound to loopback), no seed, no other host's container known. One that contacts this one
+     * is known at once, and the announcements go at the period again.
+     */
+    static final long NOBODY_TO_TELL_MS = 10_000;
     private boolean running;
 
     /** @param around the node's neighbourhood: its shared listener and broadcast addresses ({@code null}: none) */
@@ -191,7 +198,9 @@ final class Federation implements PlatformMessage.Handler {
             }
         }
         expire();
-        announceTimer = layer.after(nextAnnouncementMs(), this::announce);
+        long wait = to.isEmpty() ? NOBODY_TO_TELL_MS : nextAnnouncementMs();
+        announceDueNs = layer.nowNs() + wait * 1_000_000L;
+        announceTimer = layer.after(wait, this::announce);
     }
 
     /**
@@ -314,10 +323,11 @@ final class Federation implements PlatformMessage.Handler {
             f.term = term;
             fal.put(e.name(), f);
             layer.trace("facilitator", e.name() + " of host " + host);
-            if (alone > 0 && running) {
+            alone = 0;
+            if (running && announceTimer >= 0 && announceDueNs - layer.nowNs() > config.announcePeriodMs() * 1_000_000L) {
                 // It takes this host for gone after a few periods of silence: announce at the period again.
-                alone = 0;
                 announceTimer = layer.cancel(announceTimer);
+                announceDueNs = layer.nowNs() + config.announcePeriodMs() * 1_000_000L;
                 announceTimer = layer.after(config.announcePeriodMs(), this::announce);
             }
         }

@@ -862,6 +862,22 @@ class ContainerRulesTest {
             assertEquals(12, known.size(), "the first within a period, then each period: " + known);
         }
 
+        /**
+         * With nobody to announce to (no broadcast address, no seed, no other host known), a
+         * container looks again only every {@link Federation#NOBODY_TO_TELL_MS}; a host that
+         * contacts it is announced to within a period all the same.
+         */
+        @Test
+        void aContainerWithNobodyToAnnounceToAnswersAHostThatFindsItWithinAPeriod() {
+            OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), NetworkConfig.defaults().withBroadcast(false)
+                    .withTiming(250, 1_500), null);
+            c.advance(3 * Federation.NOBODY_TO_TELL_MS + 100);
+            assertTrue(c.sent(PlatformMessage.Announce.class).isEmpty());
+            AgentEntry z = on2("z");
+            List<Long> gaps = announcementGaps(c, 2_000, z);
+            assertTrue(!gaps.isEmpty() && gaps.stream().allMatch(g -> g <= 500), "once z is heard: " + gaps);
+        }
+
         /** The gaps between the announcements over {@code ms} (the first counted from the start); {@code peer} announcing each 250 ms if given. */
         private List<Long> announcementGaps(OneAgent c, long ms, AgentEntry peer) {
             List<Long> gaps = new ArrayList<>();
