@@ -257,7 +257,10 @@ abstract class ThreatWorld implements AutoCloseable {
         RealUdp(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence)
                 throws Exception {
             super(windowMs, profile, sequence);
-            a = AgentRuntime.builder().platformName(PLATFORM).stack(stack()).build().start();
+            // The media work on frames (a frame's copies come one after the other): A sends one frame
+            // per datagram. A bundle a man in the middle splits is as many frames (BundleTest).
+            a = AgentRuntime.builder().platformName(PLATFORM).stack(stack())
+                    .network(new io.concord.core.net.SocketNetwork(1 << 20, true, false)).build().start();
             b = AgentRuntime.builder().platformName(PLATFORM).stack(stack()).build().start();
             bDirect = b.startAgent("b", receiver);
             relay = new UdpRelay(Address.parse(bDirect.addresses().get(0)), medium);

@@ -37,6 +37,11 @@ final class AgentNode implements StackHost {
         this.aid = aid;
         this.endpoint = endpoint;
         this.transport = transport;
+        endpoint.onSendFailure((to, frames) -> {
+            for (int i = 0; i < frames; i++) {
+                drops.record(aid.name(), "send-failed", "the network refused the datagram to " + to);
+            }
+        });
     }
 
     public void send(AclMessage msg) {
@@ -126,7 +131,7 @@ final class AgentNode implements StackHost {
                     + SocketNetwork.MAX_DATAGRAM);
             return;
         }
-        if (!endpoint.send(env.destination(), env.data(), env.offset(), env.length())) {
+        if (!endpoint.send(env.destination(), env.data(), env.offset(), env.length(), env.lane())) {
             stackDrop(env, "send-failed", "the network refused the datagram to " + env.destination());
         }
     }

@@ -584,6 +584,7 @@ public final class AgentRuntime implements AutoCloseable {
         arrived = work > 0;
         work += wheel.poll(nowNs, this::onTimer);
         work += runReady();
+        network.flush(); // what this cycle sent, gathered into as few datagrams as it takes
         return work;
     }
 

@@ -23,6 +23,7 @@ public final class Envelope {
     private long arrivalNs;
     private long peerId;
     private Object[] headers;
+    private int lane;
 
     /** An envelope going down: a message for one of its receivers. */
     public static Envelope outgoing(AclMessage message, AID receiver, Address destination) {
@@ -176,6 +177,19 @@ public final class Envelope {
     /** The loop time at which the bytes arrived (going up). */
     public long arrivalNs() {
         return arrivalNs;
+    }
+
+    /**
+     * The lane this frame goes out on (0 unless set): frames of one lane to one address may share
+     * a datagram; the copies of one frame, sent against loss, go on lanes of their own.
+     */
+    public int lane() {
+        return lane;
+    }
+
+    /** Sets the lane (see {@link #lane()}). */
+    public void lane(int lane) {
+        this.lane = lane;
     }
 
     /** A layer's header, or {@code null}. */

@@ -92,6 +92,14 @@ public interface Network extends AutoCloseable {
     /** Makes a pending or the next {@link #await} return. Thread-safe. */
     void wakeup();
 
+    /**
+     * Sends what the endpoints gathered during this cycle of the loop (see
+     * {@link Endpoint#send(Address, byte[], int, int, int)}); the loop calls it at the end of each
+     * cycle. Nothing by default.
+     */
+    default void flush() {
+    }
+
     /** Closes every endpoint and the network itself. */
     @Override
     void close();

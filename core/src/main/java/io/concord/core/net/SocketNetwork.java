@@ -39,6 +39,54 @@ public final class SocketNetwork implements Network, Channels {
      */
     static final int BUSY_READ_BUDGET = 4;
     private int readBudget = READ_BUDGET;
+    /**
+     * A datagram that carries several frames starts with these two bytes (a frame starts with
+     * 0xC07D), followed by each frame as a big-endian u16 length and its bytes.
+     */
+    public static final int BUNDLE_MAGIC = 0xC07B;
+    /** Frames in one bundle at most, sent or read; what a bundle holds past this is dropped as one malformed frame. */
+    public static final int MAX_BUNDLE_FRAMES = 64;
+    /** A bundle's size at most to a loopback address (one host: no fragmentation). */
+    public static final int LOOPBACK_BUNDLE_BYTES = 16_384;
+    /** ... and to any other address: within an Ethernet frame, so that a bundle is never fragmented. */
+    public static final int BUNDLE_BYTES = 1_472;
+    private final boolean bundling;
+    /** The endpoints holding gathered frames, to be sent at the end of the loop's cycle. */
+    private final java.util.ArrayList<UdpEndpoint> gathering = new java.util.ArrayList<>();
+    private final java.util.ArrayDeque<Bundle> bundlePool = new java.util.ArrayDeque<>();
+
+    /** Frames gathered for one address and lane. */
+    private static final class Bundle {
+        final byte[] buf = new byte[LOOPBACK_BUNDLE_BYTES];
+        Address to;
+        int lane;
+        int limit;
+        int length;
+        int frames;
+
+        Bundle start(Address to, int lane, int limit) {
+            this.to = to;
+            this.lane = lane;
+            this.limit = limit;
+            buf[0] = (byte) (BUNDLE_MAGIC >>> 8);
+            buf[1] = (byte) BUNDLE_MAGIC;
+            length = 2;
+            frames = 0;
+            return this;
+        }
+
+        boolean fits(int frameLength) {
+            return frames < MAX_BUNDLE_FRAMES && length + 2 + frameLength <= limit;
+        }
+
+        void add(byte[] data, int offset, int frameLength) {
+            buf[length] = (byte) (frameLength >>> 8);
+            buf[length + 1] = (byte) frameLength;
+            System.arraycopy(data, offset, buf, length + 2, frameLength);
+            length += 2 + frameLength;
+            frames++;
+        }
+    }
     private static final Logger LOG = LoggerFactory.getLogger(SocketNetwork.class);
 
     private final Selector selector;
@@ -67,8 +115,18 @@ public final class SocketNetwork implements Network, Channels {
      *                          false to send every datagram through the kernel
      */
     public SocketNetwork(int socketBufferBytes, boolean localDelivery) {
+        this(socketBufferBytes, localDelivery, !Boolean.getBoolean("concord.bundle.off"));
+    }
+
+    /**
+     * ... and {@code bundling}: true to gather the frames one cycle of the loop sends to one address
+     * on one lane into one datagram (see {@link Endpoint#send(Address, byte[], int, int, int)});
+     * false (or {@code -Dconcord.bundle.off=true}) for one datagram per frame.
+     */
+    public SocketNetwork(int socketBufferBytes, boolean localDelivery, boolean bundling) {
         this.socketBufferBytes = socketBufferBytes;
         this.localDelivery = localDelivery;
+        this.bundling = bundling;
         try {
             selector = Selector.open();
         } catch (IOException e) {
@@ -293,7 +351,25 @@ public final class SocketNetwork implements Network, Channels {
     }
 
     @Override
+    public void flush() {
+        if (gathering.isEmpty()) {
+            return;
+        }
+        for (int i = 0; i < gathering.size(); i++) {
+            gathering.get(i).flush();
+        }
+        gathering.clear();
+    }
+
+    /** True for an address of this host's loopback, where a datagram of any size stays whole. */
+    private static boolean loopback(Address a) {
+        String h = a.host();
+        return h.startsWith("127.") || h.equals("::1") || h.equals("0:0:0:0:0:0:0:1") || h.equals("localhost");
+    }
+
+    @Override
     public void close() {
+        flush();
         for (SelectionKey k : selector.keys()) {
             ((Handler) k.attachment()).close();
         }
@@ -359,7 +435,11 @@ public final class SocketNetwork implements Network, Channels {
                     int len = receiveBuffer.remaining();
                     receiveBuffer.get(receiveArray, 0, len);
                     n++;
-                    receiver.onDatagram(toAddress(from), receiveArray, 0, len, nowNs);
+                    if (len >= 2 && (receiveArray[0] & 0xFF) == BUNDLE_MAGIC >>> 8 && (receiveArray[1] & 0xFF) == (BUNDLE_MAGIC & 0xFF)) {
+                        unbundle(toAddress(from), len, nowNs);
+                    } else {
+                        receiver.onDatagram(toAddress(from), receiveArray, 0, len, nowNs);
+                    }
                 }
                 return n;
             } catch (ClosedChannelException e) {
@@ -370,13 +450,47 @@ public final class SocketNetwork implements Network, Channels {
             }
         }
 
+        /**
+         * Hands each frame of a bundle up on its own. A length that runs past the datagram, or a
+         * frame past {@link #MAX_BUNDLE_FRAMES}, ends it: the rest goes up as one frame, which the
+         * stack drops as malformed and counts.
+         */
+        private void unbundle(Address from, int len, long nowNs) {
+            int at = 2;
+            int frames = 0;
+            while (at < len) {
+                int frameLength = at + 2 <= len ? (receiveArray[at] & 0xFF) << 8 | receiveArray[at + 1] & 0xFF : 0;
+                if (frameLength == 0 || at + 2 + frameLength > len || frames == MAX_BUNDLE_FRAMES) {
+                    receiver.onDatagram(from, receiveArray, at, len - at, nowNs);
+                    return;
+                }
+                receiver.onDatagram(from, receiveArray, at + 2, frameLength, nowNs);
+                at += 2 + frameLength;
+                frames++;
+            }
+        }
+
         @Override
         public Address localAddress() {
             return local;
         }
 
+        private java.util.function.ObjIntConsumer<Address> sendFailed = (to, frames) -> { };
+        /** The bundles gathered this cycle, in the order they were begun. */
+        private final java.util.ArrayList<Bundle> bundles = new java.util.ArrayList<>();
+
+        @Override
+        public void onSendFailure(java.util.function.ObjIntConsumer<Address> failed) {
+            sendFailed = failed;
+        }
+
         @Override
         public boolean send(Address to, byte[] data, int offset, int length) {
+            return send(to, data, offset, length, 0);
+        }
+
+        @Override
+        public boolean send(Address to, byte[] data, int offset, int length, int lane) {
             if (!channel.isOpen()) {
                 return false;
             }
@@ -386,6 +500,67 @@ public final class SocketNetwork implements Network, Channels {
                     localQueue.add(new LocalFrame(local, peer, java.util.Arrays.copyOfRange(data, offset, offset + length)));
                     return true;
                 }
+            }
+            if (!bundling) {
+                return sendNow(to, data, offset, length);
+            }
+            int limit = loopback(to) ? LOOPBACK_BUNDLE_BYTES : BUNDLE_BYTES;
+            Bundle b = null;
+            for (int i = 0; i < bundles.size(); i++) {
+                Bundle c = bundles.get(i);
+                if (c.lane == lane && c.to.equals(to)) {
+                    b = c;
+                    break;
+                }
+            }
+            if (length + 4 > limit) {
+                if (b != null) {
+                    sendBundle(b); // what was gathered first goes first
+                    b.start(to, lane, limit);
+                }
+                return sendNow(to, data, offset, length);
+            }
+            if (b == null) {
+                if (bundles.isEmpty()) {
+                    gathering.add(this);
+                }
+                Bundle pooled = bundlePool.poll();
+                b = (pooled != null ? pooled : new Bundle()).start(to, lane, limit);
+                bundles.add(b);
+            } else if (!b.fits(length)) {
+                sendBundle(b);
+                b.start(to, lane, limit);
+            }
+            b.add(data, offset, length);
+            return true;
+        }
+
+        /** Sends the bundles gathered this cycle. */
+        void flush() {
+            for (int i = 0; i < bundles.size(); i++) {
+                Bundle b = bundles.get(i);
+                sendBundle(b);
+                bundlePool.add(b);
+            }
+            bundles.clear();
+        }
+
+        /** One frame as it is; several as a bundle. */
+        private void sendBundle(Bundle b) {
+            if (b.frames == 0) {
+                return;
+            }
+            boolean sent = b.frames == 1 ? sendNow(b.to, b.buf, 4, b.length - 4) : sendNow(b.to, b.buf, 0, b.length);
+            if (!sent) {
+                sendFailed.accept(b.to, b.frames);
+            }
+            b.frames = 0;
+            b.length = 2;
+        }
+
+        private boolean sendNow(Address to, byte[] data, int offset, int length) {
+            if (!channel.isOpen()) {
+                return false;
             }
             try {
                 return channel.send(ByteBuffer.wrap(data, offset, length), toSocketAddress(to)) > 0;
@@ -406,6 +581,8 @@ public final class SocketNetwork implements Network, Channels {
 
         @Override
         public void close() {
+            flush(); // what was sent before the close goes out
+            gathering.remove(this);
             closeQuietly(channel);
             localUdp.remove(local, this);
         }

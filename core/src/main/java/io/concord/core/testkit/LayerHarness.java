@@ -27,6 +27,7 @@ public final class LayerHarness implements StackHost {
     private final DeadlineTimerWheel wheel;
     private final Map<Long, Runnable> tasksByWheelId = new HashMap<>();
     private final ArrayDeque<Envelope> down = new ArrayDeque<>();
+    private final List<Integer> downLanes = new java.util.ArrayList<>();
     private final ArrayDeque<Envelope> up = new ArrayDeque<>();
     private final List<StackEvent> events = new ArrayList<>();
     private final DropCounters drops = new DropCounters();
@@ -55,7 +56,10 @@ public final class LayerHarness implements StackHost {
         this.capabilities = Map.copyOf(b.capabilities);
         this.random = new java.util.SplittableRandom(b.seed);
         this.wheel = DeadlineTimerWheel.forAgents(clock.nanoTime());
-        this.stack = new LayerStack(List.of(topFirst), this, up::add, down::add, events::add);
+        this.stack = new LayerStack(List.of(topFirst), this, up::add, e -> {
+            down.add(e);
+            downLanes.add(e.lane());
+        }, events::add);
         stack.start();
     }
 
@@ -146,6 +150,11 @@ public final class LayerHarness implements StackHost {
     /** The next envelope that left the top, or {@code null}. */
     public Envelope pollUp() {
         return up.poll();
+    }
+
+    /** The lane of every envelope that left the bottom, as it left (an envelope sent twice shows both). */
+    public List<Integer> downLanes() {
+        return downLanes;
     }
 
     public int downCount() {

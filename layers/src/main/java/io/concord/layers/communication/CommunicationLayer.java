@@ -77,6 +77,7 @@ public final class CommunicationLayer extends Layer {
         // Repetition is against loss on the network; a frame handed over in memory cannot be lost.
         int copies = config.copies() == 1 || ctx.host().inMemoryTo(env.destination()) ? 1 : config.copies();
         for (int i = 0; i < copies; i++) {
+            env.lane(i); // each copy in a datagram of its own: one lost datagram never takes two
             ctx.passDown(env);
         }
     }

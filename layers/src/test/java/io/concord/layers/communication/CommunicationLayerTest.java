@@ -21,6 +21,7 @@ class CommunicationLayerTest {
         LayerHarness h = new LayerHarness(new CommunicationLayer(new CommunicationLayer.Config(8192, 3)));
         h.sendDown(frame(100));
         assertEquals(3, h.downCount());
+        assertEquals(java.util.List.of(0, 1, 2), h.downLanes(), "each copy on a lane of its own: never two in one datagram");
     }
 
     @Test
