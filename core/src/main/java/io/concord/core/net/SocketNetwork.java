@@ -54,10 +54,13 @@ public final class SocketNetwork implements Network, Channels {
     /** The endpoints holding gathered frames, to be sent at the end of the loop's cycle. */
     private final java.util.ArrayList<UdpEndpoint> gathering = new java.util.ArrayList<>();
     private final java.util.ArrayDeque<Bundle> bundlePool = new java.util.ArrayDeque<>();
+    /** Bundles kept for the next cycles at most (a cycle in which a thousand agents each sent made as many). */
+    private static final int MAX_POOLED_BUNDLES = 256;
 
     /** Frames gathered for one address and lane. */
     private static final class Bundle {
-        final byte[] buf = new byte[LOOPBACK_BUNDLE_BYTES];
+        /** Grown as frames come, up to the limit: most bundles hold a frame or two. */
+        byte[] buf = new byte[2_048];
         Address to;
         int lane;
         int limit;
@@ -80,6 +83,9 @@ public final class SocketNetwork implements Network, Channels {
         }
 
         void add(byte[] data, int offset, int frameLength) {
+            if (length + 2 + frameLength > buf.length) {
+                buf = java.util.Arrays.copyOf(buf, Math.min(limit, Math.max(2 * buf.length, length + 2 + frameLength)));
+            }
             buf[length] = (byte) (frameLength >>> 8);
             buf[length + 1] = (byte) frameLength;
             System.arraycopy(data, offset, buf, length + 2, frameLength);
@@ -540,7 +546,9 @@ public final class SocketNetwork implements Network, Channels {
             for (int i = 0; i < bundles.size(); i++) {
                 Bundle b = bundles.get(i);
                 sendBundle(b);
-                bundlePool.add(b);
+                if (bundlePool.size() < MAX_POOLED_BUNDLES) {
+                    bundlePool.add(b);
+                }
             }
             bundles.clear();
         }
