@@ -440,10 +440,11 @@ public final class SocketNetwork implements Network, Channels {
                     receiveBuffer.flip();
                     int len = receiveBuffer.remaining();
                     receiveBuffer.get(receiveArray, 0, len);
-                    n++;
+                    // The budget counts frames: a bundle spends as much of it as the frames it holds.
                     if (len >= 2 && (receiveArray[0] & 0xFF) == BUNDLE_MAGIC >>> 8 && (receiveArray[1] & 0xFF) == (BUNDLE_MAGIC & 0xFF)) {
-                        unbundle(toAddress(from), len, nowNs);
+                        n += unbundle(toAddress(from), len, nowNs);
                     } else {
+                        n++;
                         receiver.onDatagram(toAddress(from), receiveArray, 0, len, nowNs);
                     }
                 }
@@ -459,21 +460,22 @@ public final class SocketNetwork implements Network, Channels {
         /**
          * Hands each frame of a bundle up on its own. A length that runs past the datagram, or a
          * frame past {@link #MAX_BUNDLE_FRAMES}, ends it: the rest goes up as one frame, which the
-         * stack drops as malformed and counts.
+         * stack drops as malformed and counts. Returns the pieces handed up.
          */
-        private void unbundle(Address from, int len, long nowNs) {
+        private int unbundle(Address from, int len, long nowNs) {
             int at = 2;
             int frames = 0;
             while (at < len) {
                 int frameLength = at + 2 <= len ? (receiveArray[at] & 0xFF) << 8 | receiveArray[at + 1] & 0xFF : 0;
                 if (frameLength == 0 || at + 2 + frameLength > len || frames == MAX_BUNDLE_FRAMES) {
                     receiver.onDatagram(from, receiveArray, at, len - at, nowNs);
-                    return;
+                    return frames + 1;
                 }
                 receiver.onDatagram(from, receiveArray, at + 2, frameLength, nowNs);
                 at += 2 + frameLength;
                 frames++;
             }
+            return Math.max(1, frames);
         }
 
         @Override

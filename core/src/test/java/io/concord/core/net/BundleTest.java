@@ -165,6 +165,34 @@ class BundleTest {
         }
     }
 
+    /** The read budget counts frames, not datagrams: a flood of full bundles is read a bounded number of frames a poll. */
+    @Test
+    void aFloodOfBundlesOnOnePortIsReadABoundedNumberOfFramesAPoll() throws Exception {
+        int[] flooded = new int[1];
+        int[] quiet = new int[1];
+        try (SocketNetwork net = new SocketNetwork(1 << 20, false); DatagramChannel raw = raw()) {
+            Endpoint target = net.tryBind("127.0.0.1", 0, (from, data, offset, length, nowNs) -> flooded[0]++);
+            Endpoint other = net.tryBind("127.0.0.1", 0, (from, data, offset, length, nowNs) -> quiet[0]++);
+            ByteBuffer full = ByteBuffer.allocate(2 + 3 * SocketNetwork.MAX_BUNDLE_FRAMES);
+            full.put((byte) 0xC0).put((byte) 0x7B);
+            for (int i = 0; i < SocketNetwork.MAX_BUNDLE_FRAMES; i++) {
+                full.putShort((short) 1).put((byte) 4);
+            }
+            full.flip();
+            for (int i = 0; i < 20; i++) {
+                raw.send(full.duplicate(), new InetSocketAddress("127.0.0.1", target.localAddress().port()));
+            }
+            raw.send(ByteBuffer.wrap(new byte[8]), new InetSocketAddress("127.0.0.1", other.localAddress().port()));
+            net.poll(0);
+            assertTrue(flooded[0] < SocketNetwork.READ_BUDGET + SocketNetwork.MAX_BUNDLE_FRAMES,
+                    "one poll read " + flooded[0] + " frames from the flooded port");
+            assertEquals(1, quiet[0], "and the other port in the same poll");
+            while (flooded[0] < 20 * SocketNetwork.MAX_BUNDLE_FRAMES) {
+                assertTrue(net.poll(0) > 0, "the rest over the next polls, none lost");
+            }
+        }
+    }
+
     /** The example of docs/wire-format.md, "Bundles". */
     @Test
     void theWireFormatsExampleIsReadAsItsTwoFrames() throws Exception {
