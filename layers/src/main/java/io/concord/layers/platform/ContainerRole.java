@@ -341,8 +341,9 @@ final class ContainerRole extends RoleBase {
     // ---- maintenance (fig. 5.9) -----------------------------------------------------------------
 
     /**
-     * A member in this agent's runtime gets an alive every this many cycles: it needs none to know
-     * this agent is alive, and watches for it to leave the runtime (see {@link MemberRole}).
+     * A member in this agent's runtime that cannot read this agent in memory gets an alive every
+     * this many cycles (one that can gets none): it needs none to know this agent is alive, and
+     * watches for it to leave the runtime (see {@link MemberRole}).
      */
     static final int LOCAL_ALIVE_EVERY = 25;
     /**
@@ -408,10 +409,11 @@ final class ContainerRole extends RoleBase {
         cycleAwaiting.clear();
         PlatformMessage alive = new PlatformMessage.Alive(st.term, st.seq, st.periodMs, st.timeoutMs, st.selfEntry);
         // A member in this runtime lives and dies with this loop, and is told at once when this
-        // agent leaves it: it is heard by being here, and gets an alive only every few cycles (for
-        // the list's version, and as a check that this agent is still its container). An idle JVM
-        // of agents then does next to nothing between cycles.
-        // With no member elsewhere, the cycle itself comes only every few periods.
+        // agent leaves it: it is heard by being here. It reads this agent's layer in memory at the
+        // end of its watch (the list's version, and whether this agent is still its container), so
+        // it gets no alive; where the runtime offers no such view, an alive every few cycles. An
+        // idle JVM of agents then exchanges nothing. With no member elsewhere, the cycle itself
+        // comes only every few periods, rarer while nothing changes.
         boolean localAlive = !remote || cycles % LOCAL_ALIVE_EVERY == 0;
         for (AgentEntry e : lists.lal.values()) {
             if (e.name().equals(ctx.self())) {

@@ -33,9 +33,10 @@ final class MemberRole extends Follower {
         long t = st.timeoutMs > 0 ? st.timeoutMs : ctx.config().timeoutMs(Math.max(1, st.lists.lal.size()));
         AgentEntry c = st.container;
         if (c != null && roles.join.target() == null && ctx.here(c)) {
-            // The container runs in this runtime: told at once when it leaves, and its alive comes
-            // only every few cycles, rarer while nothing changes (ContainerRole.localCycleMs); the
-            // timeout covers the longest wait.
+            // The container runs in this runtime: told at once when it leaves. It sends no alive
+            // where this agent can read it in memory (which it does at the end of this watch), else
+            // one every few cycles, rarer while nothing changes (ContainerRole.localCycleMs): the
+            // watch covers the longest wait.
             String name = c.name();
             watchingLocal = ctx.coLocated().whenGone(c.transportAddress(), () -> {
                 watchingLocal = null;
