@@ -77,13 +77,16 @@ public final class Charts {
         for (Map.Entry<String, TreeMap<Integer, Double>> s : series.entrySet()) {
             Color c = COLORS[k % COLORS.length];
             g.setColor(c);
-            g.setStroke(new BasicStroke(2.5f));
+            // Earlier series wider: where two lines coincide, the first still shows around the next.
+            int wider = series.size() - 1 - k;
+            g.setStroke(new BasicStroke(2.5f + 3f * wider));
+            int r = 4 + 2 * wider;
             int px0 = -1;
             int py0 = -1;
             for (Map.Entry<Integer, Double> e : s.getValue().entrySet()) {
                 int px = left + (int) (pw * (e.getKey() - minX) / spanX);
                 int py = top + ph - (int) (ph * e.getValue() / maxY);
-                g.fillOval(px - 4, py - 4, 8, 8);
+                g.fillOval(px - r, py - r, 2 * r, 2 * r);
                 if (px0 >= 0) {
                     g.drawLine(px0, py0, px, py);
                 }
