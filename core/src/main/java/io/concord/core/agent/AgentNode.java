@@ -317,9 +317,14 @@ final class AgentNode implements StackHost {
         return runtime.nowNs();
     }
 
+    /** A timer of this agent's layers; it never runs once the agent is gone (stopped or crashed: its port is closed). */
     @Override
     public long schedule(long deadlineNs, Runnable task) {
-        return runtime.schedule(deadlineNs, task);
+        return runtime.schedule(deadlineNs, () -> {
+            if (endpoint.isOpen()) {
+                task.run();
+            }
+        });
     }
 
     @Override
