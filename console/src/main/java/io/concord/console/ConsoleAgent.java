@@ -197,12 +197,8 @@ final class ConsoleAgent extends Agent {
     }
 
     private String selfStatus() {
-        for (io.concord.core.layer.Layer l : runtime().layers(getAID())) {
-            if (l instanceof ObserverLayer o) {
-                return o.status();
-            }
-        }
-        return null;
+        ObserverLayer o = runtime().layer(getAID(), ObserverLayer.class);
+        return o == null ? null : o.status();
     }
 
     private AclMessage observe(Performative p, String to, String content, String conversation) {

@@ -397,6 +397,12 @@ public final class AgentRuntime implements AutoCloseable {
         return n == null ? List.of() : n.stack.layers();
     }
 
+    /** The topmost layer of this type in an agent's stack, or {@code null} (no such agent or layer). */
+    public <T> T layer(AID aid, Class<T> type) {
+        AgentNode n = directory.get(aid);
+        return n == null ? null : n.stack.find(type);
+    }
+
     /**
      * Kills an agent without its takeDown, as a crash would: its port closes, its timers die. For
      * simulations and failure tests.
@@ -408,7 +414,6 @@ public final class AgentRuntime implements AutoCloseable {
         }
     }
 
-    /** An agent of this runtime with the given transport, by name; {@code null} if none. */
     /**
      * The agent of this runtime a node may hand a message to in memory at that address, or
      * {@code null} (hand-over off, no such agent, another transport, not reached in memory).
@@ -431,6 +436,7 @@ public final class AgentRuntime implements AutoCloseable {
         handedOver++;
     }
 
+    /** An agent of this runtime with the given transport, by name; {@code null} if none. */
     Address resolveLocal(AID aid, Transport t) {
         AgentNode local = directory.get(aid);
         return local != null && local.transport == t ? local.endpoint.localAddress() : null;
@@ -516,15 +522,7 @@ public final class AgentRuntime implements AutoCloseable {
         @Override
         public <T> T layer(Address address, Class<T> type) {
             AgentNode n = byAddress.get(address);
-            if (n == null || !n.endpoint.isOpen() || n.stack == null) {
-                return null;
-            }
-            for (io.concord.core.layer.Layer l : n.stack.layers()) {
-                if (type.isInstance(l)) {
-                    return type.cast(l);
-                }
-            }
-            return null;
+            return n == null || !n.endpoint.isOpen() || n.stack == null ? null : n.stack.find(type);
         }
     };
 
@@ -613,10 +611,6 @@ public final class AgentRuntime implements AutoCloseable {
         return n;
     }
 
-    /**
-     * The node's stack holds frames back for a slower receiver: its behaviours wait until it
-     * holds none (unless its own mailbox is full: it may be the one its receiver waits for).
-     */
     /** A node handed a message to a receiver whose mailbox is over half full: it waits for it. */
     void waitFor(AgentNode node, AgentNode receiver) {
         if (node.waitingOn.isEmpty() && !node.backpressured) {
@@ -637,6 +631,10 @@ public final class AgentRuntime implements AutoCloseable {
         receiver.heldSenders.clear();
     }
 
+    /**
+     * The node's stack holds frames back for a slower receiver: its behaviours wait until it
+     * holds none (unless its own mailbox is full: it may be the one its receiver waits for).
+     */
     void backpressure(AgentNode node, boolean on) {
         if (on && !node.backpressured) {
             pauses++;

@@ -56,6 +56,16 @@ public final class LayerStack {
         return layers;
     }
 
+    /** The topmost layer of this type, or {@code null}. */
+    public <T> T find(Class<T> type) {
+        for (Layer l : layers) {
+            if (type.isInstance(l)) {
+                return type.cast(l);
+            }
+        }
+        return null;
+    }
+
     /** Starts the layers, bottom first. */
     public void start() {
         if (started) {

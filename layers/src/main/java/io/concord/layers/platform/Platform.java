@@ -248,12 +248,7 @@ public final class Platform implements AutoCloseable {
 
     /** The container layer of an agent of this JVM, or {@code null} if it has none. Loop thread. */
     public static ContainerLayer containerLayer(AgentRuntime rt, AID aid) {
-        for (Layer l : rt.layers(aid)) {
-            if (l instanceof ContainerLayer c) {
-                return c;
-            }
-        }
-        return null;
+        return rt.layer(aid, ContainerLayer.class);
     }
 
     /** The platform services of an agent: white and yellow pages, its role. */
