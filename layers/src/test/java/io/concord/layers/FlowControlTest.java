@@ -29,18 +29,27 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * pace; an agent that sends more in one action than the platform will hold is told, by an
  * exception naming {@code flow-control}, and loses nothing it was not told of.
  */
-class FlowControlTest {
+public class FlowControlTest {
     private static final int CAPACITY = 1_000;
 
-    /** Sends numbered messages, 100 in each action of a cyclic behaviour, as fast as it is let. */
-    static final class FastSender extends Agent {
+    /**
+     * Sends numbered messages ({@code m0}, {@code m1}...), 100 (or {@code batch}) in each action of
+     * a cyclic behaviour, as fast as it is let. Also HandOverTest's.
+     */
+    public static final class FastSender extends Agent {
         private final AID to;
         private final int total;
+        private final int batch;
         int sent;
 
         FastSender(AID to, int total) {
+            this(to, total, 100);
+        }
+
+        public FastSender(AID to, int total, int batch) {
             this.to = to;
             this.total = total;
+            this.batch = batch;
         }
 
         @Override
@@ -48,7 +57,7 @@ class FlowControlTest {
             addBehaviour(new CyclicBehaviour(this) {
                 @Override
                 public void action() {
-                    for (int i = 0; i < 100 && sent < total; i++) {
+                    for (int i = 0; i < batch && sent < total; i++) {
                         send(new AclMessage(Performative.INFORM).addReceiver(to).setContent("m" + sent++));
                     }
                     if (sent == total) {

@@ -6,6 +6,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.CyclicBehaviour;
+import io.concord.layers.FlowControlTest.FastSender;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
@@ -74,42 +75,10 @@ class HandOverTest {
         }
     }
 
-    /** Sends {@code n} numbered INFORMs to the receiver, {@code batch} an action. */
-    private static final class Sender extends Agent {
-        final AID to;
-        final int n;
-        final int batch;
-        int sent;
-
-        Sender(AID to, int n, int batch) {
-            this.to = to;
-            this.n = n;
-            this.batch = batch;
-        }
-
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    for (int i = 0; i < batch && sent < n; i++) {
-                        AclMessage m = new AclMessage(Performative.INFORM);
-                        m.addReceiver(to);
-                        m.setContent(Integer.toString(sent++));
-                        send(m);
-                    }
-                    if (sent == n) {
-                        block();
-                    }
-                }
-            });
-        }
-    }
-
     private static List<String> numbers(int n) {
         List<String> l = new ArrayList<>();
         for (int i = 0; i < n; i++) {
-            l.add(Integer.toString(i));
+            l.add("m" + i); // as FlowControlTest.FastSender numbers them
         }
         return l;
     }
@@ -119,7 +88,7 @@ class HandOverTest {
         try (Platform p = platform(7581, true, 100_000)) {
             Receiver r = new Receiver(5_000, Integer.MAX_VALUE);
             AID ra = p.startAgent("receiver", r);
-            p.startAgent("sender", new Sender(AID.local("receiver", ra.platform()), 5_000, 100));
+            p.startAgent("sender", new FastSender(AID.local("receiver", ra.platform()), 5_000, 100));
             assertEquals(numbers(5_000), r.done.get(WAIT_S, TimeUnit.SECONDS));
             assertEquals(5_000, p.runtime().handedOver(), "every one handed over, none through the stacks");
         }
@@ -131,7 +100,7 @@ class HandOverTest {
         try (Platform p = platform(7591, true, 1_000)) {
             Receiver r = new Receiver(20_000, 1);
             AID ra = p.startAgent("receiver", r);
-            p.startAgent("sender", new Sender(AID.local("receiver", ra.platform()), 20_000, 200));
+            p.startAgent("sender", new FastSender(AID.local("receiver", ra.platform()), 20_000, 200));
             assertEquals(numbers(20_000), r.done.get(WAIT_S * 3, TimeUnit.SECONDS), "all, once, in order");
             assertTrue(r.maxQueued <= 1_000, "the mailbox within its capacity: " + r.maxQueued);
             assertTrue(p.runtime().pauses() > 0, "the sender was paused");

@@ -57,17 +57,14 @@ class NetworkSimulationTest {
                     w.start(h, h + "a" + i);
                 }
             }
-            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
-            w.sim.runFor(1_000);
+            settle(w);
             accepted.clear();
             w.start("h1", "h1new");
-            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
-            w.sim.runFor(1_000);
+            settle(w);
             assertEquals(java.util.Map.of("delta", 3), accepted, "each of h2's three members got the one new entry as a change (its container makes the list)");
             accepted.clear();
             w.crashHost("h3");
-            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
-            w.sim.runFor(1_000);
+            settle(w);
             assertEquals(java.util.Map.of("delta", 3), accepted, "and the lost host's agents as a removal");
         }
     }
@@ -86,21 +83,24 @@ class NetworkSimulationTest {
             for (int i = 0; i < 10; i++) {
                 w.start("h1", "a" + i);
             }
-            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
-            w.sim.runFor(1_000);
+            settle(w);
             accepted.clear();
             w.start("h1", "anew");
-            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
-            w.sim.runFor(1_000);
+            settle(w);
             assertEquals(java.util.Map.of("delta", 9, "whole", 1), accepted,
                     "the nine members that held the list got the one new entry; the newcomer the whole list");
             accepted.clear();
             String victim = w.container("h1").equals("a3") ? "a4" : "a3";
             w.crashAgent("h1", victim);
-            assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
-            w.sim.runFor(1_000);
+            settle(w);
             assertEquals(java.util.Map.of("delta", 9), accepted, "and a lost agent as a removal");
         }
+    }
+
+    /** Runs until the hosts agree, and a second more for what is still on its way. */
+    private static void settle(NetworkWorld w) {
+        assertTrue(w.sim.runUntil(w::converged, 30_000), w::describe);
+        w.sim.runFor(1_000);
     }
 
     /**
