@@ -63,6 +63,8 @@ public final class SocketNetwork implements Network, Channels {
         byte[] buf = new byte[2_048];
         Address to;
         int lane;
+        /** The bundle of another lane to the same address this cycle, if any. */
+        Bundle otherLane;
         int limit;
         int length;
         int frames;
@@ -486,6 +488,8 @@ public final class SocketNetwork implements Network, Channels {
         private java.util.function.ObjIntConsumer<Address> sendFailed = (to, frames) -> { };
         /** The bundles gathered this cycle, in the order they were begun. */
         private final java.util.ArrayList<Bundle> bundles = new java.util.ArrayList<>();
+        /** The same by address (one per lane, chained), found without a search of them all. */
+        private final Map<Address, Bundle> byAddress = new HashMap<>();
 
         @Override
         public void onSendFailure(java.util.function.ObjIntConsumer<Address> failed) {
@@ -512,19 +516,15 @@ public final class SocketNetwork implements Network, Channels {
             if (!bundling) {
                 return sendNow(to, data, offset, length);
             }
-            int limit = loopback(to) ? LOOPBACK_BUNDLE_BYTES : BUNDLE_BYTES;
-            Bundle b = null;
-            for (int i = 0; i < bundles.size(); i++) {
-                Bundle c = bundles.get(i);
-                if (c.lane == lane && c.to.equals(to)) {
-                    b = c;
-                    break;
-                }
+            Bundle first = byAddress.get(to);
+            Bundle b = first;
+            while (b != null && b.lane != lane) {
+                b = b.otherLane;
             }
+            int limit = b != null ? b.limit : loopback(to) ? LOOPBACK_BUNDLE_BYTES : BUNDLE_BYTES;
             if (length + 4 > limit) {
                 if (b != null) {
                     sendBundle(b); // what was gathered first goes first
-                    b.start(to, lane, limit);
                 }
                 return sendNow(to, data, offset, length);
             }
@@ -534,10 +534,11 @@ public final class SocketNetwork implements Network, Channels {
                 }
                 Bundle pooled = bundlePool.poll();
                 b = (pooled != null ? pooled : new Bundle()).start(to, lane, limit);
+                b.otherLane = first;
+                byAddress.put(to, b);
                 bundles.add(b);
             } else if (!b.fits(length)) {
                 sendBundle(b);
-                b.start(to, lane, limit);
             }
             b.add(data, offset, length);
             return true;
@@ -548,11 +549,13 @@ public final class SocketNetwork implements Network, Channels {
             for (int i = 0; i < bundles.size(); i++) {
                 Bundle b = bundles.get(i);
                 sendBundle(b);
+                b.otherLane = null;
                 if (bundlePool.size() < MAX_POOLED_BUNDLES) {
                     bundlePool.add(b);
                 }
             }
             bundles.clear();
+            byAddress.clear();
         }
 
         /** One frame as it is; several as a bundle. */
