@@ -20,8 +20,11 @@ import java.util.function.Consumer;
  *   <li>switch-on: until a STOP or a DRIVE of 0, 0 arrives, a non-neutral DRIVE is refused (NAK
  *       not-neutral) and the motors stay at zero;</li>
  *   <li>the e-stop wins over everything: while pressed the motors are at zero, DRIVE is refused
- *       (NAK e-stop), and driving needs a neutral command after its release.</li>
+ *       (NAK e-stop), and driving needs a neutral command after its release;</li>
+ *   <li>a host's new session (a SYNC PING) disarms it: a new host never inherits motion.</li>
  * </ul>
+ * Every STATE says whether it is armed and, if not, why (switch-on, watchdog, e-stop, new
+ * session), and carries its boot number, one more at every switch-on.
  */
 public final class Board {
     /** Silence from the host after which the board stops the motors. */
@@ -33,11 +36,15 @@ public final class Board {
     private final FrameCodec codec;
     private final String firmware;
     private final Consumer<byte[]> wire;
-    private final FrameReceiver receiver;
+    private FrameReceiver receiver;
+    private long boot;
     private long nowMs;
     private int seq;
     private long lastHostMs = -1;
     private boolean armed;
+    private int disarmedBy = BoardProtocol.DISARMED_SWITCH_ON;
+    private long leftBase;
+    private long rightBase;
     private boolean tripped;
     private boolean estop;
     private int stateHz = 20;
@@ -60,12 +67,35 @@ public final class Board {
         this.receiver = new FrameReceiver(codec, false, HOST_MAX_AGE_MS, this::onHostFrame);
     }
 
-    /** Switches on at {@code nowMs} on the board's clock: sends HELLO, motors at zero, not armed. */
-    public void switchOn(long nowMs) {
+    /**
+     * Switches on at {@code nowMs} on the board's clock with boot number {@code boot} (one more
+     * than at the last switch-on): sends HELLO, motors at zero, not armed, its sequence and its
+     * encoder counts from 0. Called again, it is a reboot.
+     */
+    public void switchOn(long boot, long nowMs) {
+        this.boot = boot & 0xFFFFFFFFL;
         this.nowMs = nowMs;
-        chair.stop();
-        send(Frame.Type.HELLO, 0, BoardProtocol.hello(firmware, chair.layout()));
+        Drops kept = receiver.drops();
+        this.receiver = new FrameReceiver(codec, false, HOST_MAX_AGE_MS, this::onHostFrame, kept);
+        seq = 0;
+        lastHostMs = -1;
+        tripped = false;
+        halt(BoardProtocol.DISARMED_SWITCH_ON);
+        ChairReadings r = chair.latest();
+        leftBase = r == null ? 0 : r.leftTicks();
+        rightBase = r == null ? 0 : r.rightTicks();
+        send(Frame.Type.HELLO, 0, BoardProtocol.hello(this.boot, firmware, chair.layout()));
         nextStateMs = nowMs;
+    }
+
+    /** Switches on with boot number 1. */
+    public void switchOn(long nowMs) {
+        switchOn(1, nowMs);
+    }
+
+    /** The boot number it switched on with. */
+    public long boot() {
+        return boot;
     }
 
     /** Bytes from the host, in any chunks. */
@@ -79,7 +109,7 @@ public final class Board {
         this.nowMs = nowMs;
         estop = pressed;
         if (pressed) {
-            halt();
+            halt(BoardProtocol.DISARMED_ESTOP);
         }
     }
 
@@ -88,7 +118,7 @@ public final class Board {
         this.nowMs = nowMs;
         if (!tripped && armed && lastHostMs >= 0 && nowMs - lastHostMs > WATCHDOG_MS) {
             tripped = true;
-            halt();
+            halt(BoardProtocol.DISARMED_WATCHDOG);
         }
         if (estop) {
             chair.stop();
@@ -99,7 +129,12 @@ public final class Board {
         }
     }
 
-    private void halt() {
+    private void halt(int why) {
+        // A board already disarmed keeps the graver reason: an e-stop or a switch-on is not
+        // hidden by the host's new session that followed it.
+        if (armed || why == BoardProtocol.DISARMED_SWITCH_ON || why == BoardProtocol.DISARMED_ESTOP) {
+            disarmedBy = why;
+        }
         armed = false;
         leftPermille = 0;
         rightPermille = 0;
@@ -120,7 +155,7 @@ public final class Board {
                     if (estop) {
                         send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_ESTOP));
                     } else if (neutral) {
-                        armed = true;
+                        arm();
                         motors(0, 0);
                     } else if (!armed) {
                         send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_NOT_NEUTRAL));
@@ -129,7 +164,9 @@ public final class Board {
                     }
                 }
                 case Frame.Type.STOP -> {
-                    armed = !estop;
+                    if (!estop) {
+                        arm();
+                    }
                     motors(0, 0);
                 }
                 case Frame.Type.CONFIGURE -> {
@@ -147,8 +184,9 @@ public final class Board {
                     long nonce = r.u32();
                     r.end();
                     if ((f.flags() & Frame.SYNC) != 0) {
-                        // A new host session: it learns the layout again.
-                        send(Frame.Type.HELLO, 0, BoardProtocol.hello(firmware, chair.layout()));
+                        // A new host session: it never inherits the last one's motion, and learns the layout again.
+                        halt(BoardProtocol.DISARMED_SESSION);
+                        send(Frame.Type.HELLO, 0, BoardProtocol.hello(boot, firmware, chair.layout()));
                     }
                     send(Frame.Type.ACK, 0, BoardProtocol.ack(f.seq(), nonce));
                 }
@@ -161,6 +199,11 @@ public final class Board {
             receiver.drops().count(e.reason());
             send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_MALFORMED));
         }
+    }
+
+    private void arm() {
+        armed = true;
+        disarmedBy = BoardProtocol.ARMED;
     }
 
     private void motors(int l, int r) {
@@ -186,8 +229,9 @@ public final class Board {
         } else {
             faults.remove(ChairFault.WATCHDOG);
         }
-        send(Frame.Type.STATE, 0, BoardProtocol.state(new BoardProtocol.State(r.leftTicks(), r.rightTicks(), mm, r.bumper(),
-                estop || r.emergencyStop(), (int) Math.round(r.batteryVolts() * 1000), faults, r.fix())));
+        send(Frame.Type.STATE, 0, BoardProtocol.state(new BoardProtocol.State(boot, r.leftTicks() - leftBase, r.rightTicks() - rightBase,
+                mm, r.bumper(), estop || r.emergencyStop(), armed, armed ? BoardProtocol.ARMED : disarmedBy,
+                (int) Math.round(r.batteryVolts() * 1000), faults, r.fix())));
     }
 
     private void send(int type, int flags, byte[] body) {
@@ -216,7 +260,12 @@ public final class Board {
         return tripped;
     }
 
-    /** True once a neutral command has been taken since switch-on, a trip or the e-stop. */
+    /** Why it is not armed ({@link BoardProtocol#ARMED} when it is). */
+    public int disarmedBy() {
+        return disarmedBy;
+    }
+
+    /** True once a neutral command has been taken since switch-on, a trip, the e-stop or a new session. */
     public boolean armed() {
         return armed;
     }

@@ -23,6 +23,56 @@ public final class BoardProtocol {
     /** NAK: a frame type the board does not take. */
     public static final int NAK_UNKNOWN = 4;
 
+    /** The protocol's version, the first byte of HELLO. */
+    public static final int VERSION = 2;
+
+    /** STATE's reason: the board is armed. */
+    public static final int ARMED = 0;
+    /** STATE's reason: not armed since switch-on. */
+    public static final int DISARMED_SWITCH_ON = 1;
+    /** STATE's reason: not armed since its watchdog tripped. */
+    public static final int DISARMED_WATCHDOG = 2;
+    /** STATE's reason: not armed since the e-stop was pressed. */
+    public static final int DISARMED_ESTOP = 3;
+    /** STATE's reason: not armed since a host's new session (a SYNC PING). */
+    public static final int DISARMED_SESSION = 4;
+
+    /** A STATE reason in words, as events and logs give it. */
+    public static String disarmedBy(int reason) {
+        return switch (reason) {
+            case ARMED -> "armed";
+            case DISARMED_SWITCH_ON -> "switch-on";
+            case DISARMED_WATCHDOG -> "watchdog";
+            case DISARMED_ESTOP -> "e-stop";
+            case DISARMED_SESSION -> "new session";
+            default -> "reason " + reason;
+        };
+    }
+
+    /** A NAK reason in words. */
+    public static String nakReason(int reason) {
+        return switch (reason) {
+            case NAK_NOT_NEUTRAL -> "not neutral";
+            case NAK_MALFORMED -> "malformed";
+            case NAK_ESTOP -> "e-stop";
+            case NAK_UNKNOWN -> "unknown type";
+            default -> "reason " + reason;
+        };
+    }
+
+    /**
+     * The boot number a STATE or HELLO carries (bytes 0-3 of a STATE's body, 1-4 of a HELLO's),
+     * or -1 for any other frame or one too short to carry it (it is then dropped as malformed later).
+     */
+    public static long boot(Frame f) {
+        byte[] b = f.body();
+        int at = f.type() == Frame.Type.STATE ? 0 : f.type() == Frame.Type.HELLO ? 1 : -1;
+        if (at < 0 || b.length < at + 4) {
+            return -1;
+        }
+        return ((b[at] & 0xFFL) << 24) | ((b[at + 1] & 0xFFL) << 16) | ((b[at + 2] & 0xFFL) << 8) | (b[at + 3] & 0xFFL);
+    }
+
     private BoardProtocol() {
     }
 
@@ -76,17 +126,20 @@ public final class BoardProtocol {
     /**
      * A STATE's fields.
      *
+     * @param boot       the board's boot number (one more at each switch-on)
      * @param leftTicks  left encoder, signed, since the board started
      * @param rightTicks right encoder
      * @param rangesMm   each range sensor's distance in mm, in the layout's order ({@link #NO_RANGE}: nothing seen)
      * @param bumper     the bumper is pressed
      * @param estop      the e-stop is pressed
+     * @param armed      the board takes a non-neutral DRIVE
+     * @param reason     why it is not armed ({@link #ARMED} when it is; {@link #DISARMED_SWITCH_ON}...)
      * @param batteryMv  battery, millivolts
      * @param faults     the board's faults
      * @param fix        a floor marker's pose under the chair, or null
      */
-    public record State(long leftTicks, long rightTicks, int[] rangesMm, boolean bumper, boolean estop, int batteryMv,
-                        Set<ChairFault> faults, Pose fix) {
+    public record State(long boot, long leftTicks, long rightTicks, int[] rangesMm, boolean bumper, boolean estop, boolean armed,
+                        int reason, int batteryMv, Set<ChairFault> faults, Pose fix) {
     }
 
     private static final ChairFault[] FAULT_BITS = {
@@ -94,11 +147,12 @@ public final class BoardProtocol {
     };
 
     public static byte[] state(State s) {
-        Frame.Builder b = new Frame.Builder().i32(s.leftTicks()).i32(s.rightTicks()).u8(s.rangesMm().length);
+        Frame.Builder b = new Frame.Builder().i32(s.boot()).i32(s.leftTicks()).i32(s.rightTicks()).u8(s.rangesMm().length);
         for (int r : s.rangesMm()) {
             b.u16(Math.max(0, Math.min(NO_RANGE, r)));
         }
-        b.u8((s.bumper() ? 1 : 0) | (s.estop() ? 2 : 0)).u16(Math.max(0, Math.min(0xFFFF, s.batteryMv())));
+        b.u8((s.bumper() ? 1 : 0) | (s.estop() ? 2 : 0) | (s.armed() ? 4 : 0)).u8(s.reason())
+                .u16(Math.max(0, Math.min(0xFFFF, s.batteryMv())));
         int bits = 0;
         for (int i = 0; i < FAULT_BITS.length; i++) {
             if (s.faults().contains(FAULT_BITS[i])) {
@@ -117,6 +171,7 @@ public final class BoardProtocol {
 
     public static State readState(Frame f) {
         Frame.Fields r = f.fields();
+        long boot = r.i32() & 0xFFFFFFFFL;
         long l = r.i32();
         long rt = r.i32();
         int n = r.u8();
@@ -125,6 +180,13 @@ public final class BoardProtocol {
             ranges[i] = r.u16();
         }
         int bits = r.u8();
+        int reason = r.u8();
+        if ((bits & ~7) != 0) {
+            throw new FrameException("malformed", "STATE bits " + Integer.toHexString(bits) + ": only bits 0-2 are defined");
+        }
+        if (((bits & 4) != 0) != (reason == ARMED)) {
+            throw new FrameException("malformed", "STATE says armed=" + ((bits & 4) != 0) + " with reason " + reason);
+        }
         int mv = r.u16();
         int fb = r.u16();
         Set<ChairFault> faults = EnumSet.noneOf(ChairFault.class);
@@ -134,18 +196,27 @@ public final class BoardProtocol {
             }
         }
         Pose fix = null;
-        if (r.u8() == 1) {
+        int hasFix = r.u8();
+        if (hasFix > 1) {
+            throw new FrameException("malformed", "STATE fix flag " + hasFix + ": 0 or 1");
+        }
+        if (hasFix == 1) {
             fix = new Pose(r.i32() / 1000.0, r.i32() / 1000.0, r.i32() / 10_000.0);
         }
         r.end();
-        return new State(l, rt, ranges, (bits & 1) != 0, (bits & 2) != 0, mv, faults, fix);
+        return new State(boot, l, rt, ranges, (bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, reason, mv, faults, fix);
     }
 
     // ---- HELLO ------------------------------------------------------------------------------------
 
-    /** HELLO: the firmware's version and the chair's layout. */
-    public static byte[] hello(String firmware, ChairLayout l) {
-        Frame.Builder b = new Frame.Builder().text(firmware)
+    /** HELLO: the protocol's version, the boot number, the firmware's version and the chair's layout. */
+    public static byte[] hello(long boot, String firmware, ChairLayout l) {
+        return hello(VERSION, boot, firmware, l);
+    }
+
+    /** HELLO of any version (a test's board of another version). */
+    public static byte[] hello(int version, long boot, String firmware, ChairLayout l) {
+        Frame.Builder b = new Frame.Builder().u8(version).i32(boot).text(firmware)
                 .u16(mm(l.lengthM())).u16(mm(l.widthM())).u16((int) Math.round(l.wheelRadiusM() * 10_000))
                 .u16(mm(l.trackM())).u16(l.ticksPerRev()).u16(mm(l.topSpeedMps())).u8(l.sensors().size());
         for (SensorMount s : l.sensors()) {
@@ -160,12 +231,21 @@ public final class BoardProtocol {
         return (int) Math.round(v * 1000);
     }
 
-    /** A HELLO's firmware version and layout; malformed if the layout does not validate. */
-    public record Hello(String firmware, ChairLayout layout) {
+    /** A HELLO's protocol version, boot number, firmware version and layout; malformed if the layout does not validate. */
+    public record Hello(int version, long boot, String firmware, ChairLayout layout) {
     }
 
+    /** A HELLO's version alone: its first byte (a version-1 board sends its firmware name's length there). */
+    public static int version(Frame f) {
+        byte[] b = f.body();
+        return b.length == 0 ? -1 : b[0] & 0xFF;
+    }
+
+    /** Reads a version-2 HELLO; check {@link #version} first. */
     public static Hello readHello(Frame f) {
         Frame.Fields r = f.fields();
+        int version = r.u8();
+        long boot = r.i32() & 0xFFFFFFFFL;
         String fw = r.text();
         double length = r.u16() / 1000.0;
         double width = r.u16() / 1000.0;
@@ -190,7 +270,7 @@ public final class BoardProtocol {
                         kind == 0 ? cone : 0, rate));
             }
             r.end();
-            return new Hello(fw, new ChairLayout(length, width, wheel, track, ticks, top, sensors));
+            return new Hello(version, boot, fw, new ChairLayout(length, width, wheel, track, ticks, top, sensors));
         } catch (IllegalArgumentException e) {
             throw new FrameException("malformed", "the HELLO's layout: " + e.getMessage());
         }

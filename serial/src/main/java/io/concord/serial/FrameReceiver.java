@@ -6,17 +6,20 @@ import java.util.function.Consumer;
  * One end's receiving side of the board protocol: cuts the byte stream into frames, opens them,
  * and checks their direction, sequence and age; every frame it drops is counted by its reason
  * ({@link #drops()}), the rest go to the consumer. The host's driver and the board both read
- * through one. A HELLO from the board starts the sequence count again (the board restarted); a
- * host's SYNC does the same at the board ({@link SequenceCheck}). Single-threaded.
+ * through one. At the host, a STATE or HELLO with a newer boot number starts the sequence count
+ * again (the board restarted: its numbers start from 0), and one with an older boot number is
+ * dropped ({@code old-boot}: a frame of the board's previous life, replayed or late); a host's
+ * SYNC starts the count again at the board ({@link SequenceCheck}). Single-threaded.
  */
 public final class FrameReceiver {
     private final FrameCodec codec;
     private final boolean fromBoard;
     private final SequenceCheck check;
-    private final Drops drops = new Drops();
+    private final Drops drops;
     private final Deframer deframer;
     private final Consumer<Frame> onFrame;
     private long nowMs;
+    private long boot = -1;
 
     /**
      * @param codec     opens frames (with the pairing key, if any)
@@ -25,6 +28,12 @@ public final class FrameReceiver {
      * @param onFrame   told of each frame taken
      */
     public FrameReceiver(FrameCodec codec, boolean fromBoard, long maxAgeMs, Consumer<Frame> onFrame) {
+        this(codec, fromBoard, maxAgeMs, onFrame, new Drops());
+    }
+
+    /** A receiver that counts its drops on {@code drops} (a board that restarts keeps counting). */
+    public FrameReceiver(FrameCodec codec, boolean fromBoard, long maxAgeMs, Consumer<Frame> onFrame, Drops drops) {
+        this.drops = drops;
         this.codec = codec;
         this.fromBoard = fromBoard;
         this.check = new SequenceCheck(maxAgeMs);
@@ -44,6 +53,11 @@ public final class FrameReceiver {
         check.reset();
     }
 
+    /** The board's boot number of the last STATE or HELLO taken, or -1 (at the host). */
+    public long boot() {
+        return boot;
+    }
+
     /** Frames dropped, by reason; the consumer may count its own (malformed, unknown-type) here too. */
     public Drops drops() {
         return drops;
@@ -61,8 +75,16 @@ public final class FrameReceiver {
             drops.count("wrong-direction");
             return;
         }
-        if (f.type() == Frame.Type.HELLO) {
-            check.reset();
+        if (fromBoard) {
+            long b = f.type() == Frame.Type.HELLO && BoardProtocol.version(f) != BoardProtocol.VERSION ? -1 : BoardProtocol.boot(f);
+            if (b >= 0 && b != boot) {
+                if (boot >= 0 && (int) (b - boot) < 0) {
+                    drops.count("old-boot");
+                    return;
+                }
+                boot = b;
+                check.reset();
+            }
         }
         String bad = check.check(f, nowMs);
         if (bad != null) {

@@ -3,19 +3,41 @@ package io.concord.serial;
 /**
  * One receiver's check of its sender's sequence numbers and clock (EN 50159: repetition,
  * re-sequencing, delay). A frame is taken if its number is ahead of the last taken by 1 to 32,768
- * (modulo 65,536), and its age is within the limit: the age is how much later, on the receiver's
- * clock, it arrives than the least delayed frame so far did relative to the sender's clock. The
+ * (modulo 65,536), and its delay is within the limit.
+ *
+ * <p>The delay is read against a synchronised offset: the offset of a frame is the receiver's
+ * clock minus the sender's at the frame; the reference is the least offset seen, allowed to
+ * grow by the stated drift tolerance ({@link #DRIFT}, 2 %) of the time since, so that a sender's
+ * clock that runs slow (a 1 % slow crystal adds 10 ms of offset a second) is not taken for a
+ * growing delay; a sender's clock that runs fast lowers the offset, which becomes the new
+ * reference. A frame whose offset is more than the limit above the reference is stale. The
  * first frame, and a host's SYNC, start the count again.
  */
 public final class SequenceCheck {
-    private final long maxAgeMs;
-    private int last = -1;
-    /** The least (receiver's clock - sender's clock) seen, as a 32-bit difference (both clocks wrap at 2^32 ms). */
-    private int minOffset;
+    /** The clock drift tolerated between the two ends: 2 % (20,000 ppm), a resonator's or an RC oscillator's worst. */
+    public static final double DRIFT = 0.02;
 
-    /** @param maxAgeMs frames older than this are stale */
+    private final long maxAgeMs;
+    private final double drift;
+    private int last = -1;
+    /** The reference offset (receiver's clock - sender's clock), as a 32-bit difference (both clocks wrap at 2^32 ms). */
+    private int refOffset;
+    /** Milliseconds the reference may have grown by since it was set, at the drift tolerance. */
+    private double slack;
+    private long lastLocalMs;
+
+    /** @param maxAgeMs frames delayed more than this are stale; the drift tolerance is {@link #DRIFT} */
     public SequenceCheck(long maxAgeMs) {
+        this(maxAgeMs, DRIFT);
+    }
+
+    /**
+     * @param maxAgeMs frames delayed more than this are stale
+     * @param drift    the tolerated drift between the clocks, as a fraction (0.02: 2 %)
+     */
+    public SequenceCheck(long maxAgeMs, double drift) {
         this.maxAgeMs = maxAgeMs;
+        this.drift = drift;
     }
 
     /**
@@ -26,7 +48,9 @@ public final class SequenceCheck {
         int offset = (int) (localMs - f.timeMs());
         if ((f.flags() & Frame.SYNC) != 0 || last < 0) {
             last = f.seq();
-            minOffset = offset;
+            refOffset = offset;
+            slack = 0;
+            lastLocalMs = localMs;
             return null;
         }
         int ahead = (f.seq() - last) & 0xFFFF;
@@ -36,19 +60,28 @@ public final class SequenceCheck {
         if (ahead > 32_768) {
             return "out-of-order";
         }
-        if (offset - minOffset < 0) {
-            minOffset = offset;
+        long dt = localMs - lastLocalMs;
+        if (dt > 0) {
+            slack += drift * dt;
+            lastLocalMs = localMs;
         }
-        if (offset - minOffset > maxAgeMs) {
+        double delay = (offset - refOffset) - slack;
+        if (delay < 0) {
+            refOffset = offset;
+            slack = 0;
+            delay = 0;
+        }
+        if (delay > maxAgeMs) {
             return "stale";
         }
         last = f.seq();
         return null;
     }
 
-    /** Starts the count again (the link was reopened). */
+    /** Starts the count again (the link was reopened, or the board restarted). */
     public void reset() {
         last = -1;
-        minOffset = 0;
+        refOffset = 0;
+        slack = 0;
     }
 }

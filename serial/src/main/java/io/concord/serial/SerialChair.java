@@ -3,6 +3,7 @@ package io.concord.serial;
 import com.fazecast.jSerialComm.SerialPort;
 
 import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairEvent;
 import io.concord.agents.chair.ChairFault;
 import io.concord.agents.chair.ChairLayout;
 import io.concord.agents.chair.ChairListener;
@@ -19,20 +20,37 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.EnumSet;
 import java.util.Set;
+import java.util.concurrent.locks.LockSupport;
 import java.util.stream.Collectors;
 
 /**
- * A real chair's board over a serial port (docs/chair-protocol.md), as a {@link ChairDriver}: the
- * control agent drives it as it drives the simulated chair.
+ * A real chair's board over a serial port (docs/chair-protocol.md, version 2), as a
+ * {@link ChairDriver}: the control agent drives it as it drives the simulated chair, through a
+ * {@link io.concord.agents.chair.ChairSupervisor}.
  *
- * <p>A reader thread takes the port's bytes, cuts them into frames, drops and counts corrupt,
- * stale, repeated and out-of-order ones ({@link #drops()}), and hands each STATE to the runtime's
- * loop (one hop), where the odometry is integrated and the listener told. On the loop, a drive
- * command goes out at once and again every {@link Settings#heartbeatMs()} (the board stops the
- * motors after 200 ms without one). When the port goes away, or the board falls silent for
- * {@link Settings#silentMs()}, the port is closed, the listener is told the chair is offline (a
- * reading with the LINK fault, then {@code onOnline(false)}), and the port is opened again with
- * back-off (0.1 s doubling to 2 s) until it returns; a new session starts with a SYNC PING.
+ * <p>Three threads meet here, and no hop waits for another:
+ * <ul>
+ *   <li>a reader takes the port's bytes, cuts them into frames, drops and counts corrupt, stale,
+ *       repeated, out-of-order and old-boot ones ({@link #drops()}), and hands each STATE, HELLO
+ *       and NAK to the runtime's loop (one hop), where the odometry is integrated and the listener
+ *       told: the readings, and as events ({@link ChairEvent}) every refusal, every change of the
+ *       board's armed bit and every reboot (a new boot number);</li>
+ *   <li>the loop sends a drive command at once when the agents change it ({@link #drive}), and
+ *       each call confirms the command is still wanted;</li>
+ *   <li>a heartbeat thread of its own sends the last command again every
+ *       {@link Settings#heartbeatMs()} (the board stops the motors after 200 ms without a frame),
+ *       whatever the loop is doing, as long as the loop confirmed it within
+ *       {@link Settings#commandDeadlineMs()}; past that it sends one STOP and falls silent, so that
+ *       the board trips its watchdog and a frozen host never keeps a chair moving. It also watches
+ *       for a silent board.</li>
+ * </ul>
+ *
+ * <p>When the port goes away, or the board falls silent for {@link Settings#silentMs()}, the port
+ * is closed, the listener is told the chair is offline (a reading with the LINK fault, then
+ * {@code onOnline(false)}), and the port is opened again with back-off (0.1 s doubling to 2 s)
+ * until it returns; a new session starts with a SYNC PING, which disarms the board. A board that
+ * speaks another version of the protocol is refused: nothing it says is taken, and the log says
+ * which version it speaks.
  */
 public final class SerialChair implements ChairDriver {
     private static final Logger LOG = LoggerFactory.getLogger(SerialChair.class);
@@ -40,29 +58,34 @@ public final class SerialChair implements ChairDriver {
     /**
      * How to reach the board.
      *
-     * @param port        the port's path ({@code /dev/ttyUSB0}, a pty's path, {@code COM3})
-     * @param baud        bits a second (115200; the frame is 8N1)
-     * @param name        the chair's name
-     * @param key         the pairing key (16 bytes or more), or null for no MAC
-     * @param start       the pose the odometry starts from (the first floor-marker fix replaces it)
-     * @param layout      the layout expected until the board's HELLO gives its own
-     * @param stateHz     STATE frames a second asked of the board
-     * @param heartbeatMs how often the drive command is sent again
-     * @param silentMs    a board silent this long is taken as gone
+     * @param port              the port's path ({@code /dev/ttyUSB0}, a pty's path, {@code COM3})
+     * @param baud              bits a second (115200; the frame is 8N1)
+     * @param name              the chair's name
+     * @param key               the pairing key (16 bytes or more), or null for no MAC
+     * @param start             the pose the odometry starts from (the first floor-marker fix replaces it)
+     * @param layout            the layout expected until the board's HELLO gives its own
+     * @param stateHz           STATE frames a second asked of the board
+     * @param heartbeatMs       how often the drive command is sent again
+     * @param silentMs          a board silent this long is taken as gone
+     * @param commandDeadlineMs a command the loop has not confirmed for this long is not sent again
      */
     public record Settings(String port, int baud, String name, byte[] key, Pose start, ChairLayout layout, int stateHz,
-                           long heartbeatMs, long silentMs) {
-        /** 115200 baud, no key, odometry from (0, 0, 0), the standard layout, 20 Hz, heartbeat 50 ms, silent after 500 ms. */
+                           long heartbeatMs, long silentMs, long commandDeadlineMs) {
+        /** 115200 baud, no key, odometry from (0, 0, 0), the standard layout, 20 Hz, heartbeat 50 ms, silent after 500 ms, deadline 300 ms. */
         public static Settings of(String port, String name) {
-            return new Settings(port, 115_200, name, null, new Pose(0, 0, 0), ChairLayout.standard(), 20, 50, 500);
+            return new Settings(port, 115_200, name, null, new Pose(0, 0, 0), ChairLayout.standard(), 20, 50, 500, 300);
         }
 
         public Settings withKey(byte[] k) {
-            return new Settings(port, baud, name, k, start, layout, stateHz, heartbeatMs, silentMs);
+            return new Settings(port, baud, name, k, start, layout, stateHz, heartbeatMs, silentMs, commandDeadlineMs);
         }
 
         public Settings withStart(Pose p) {
-            return new Settings(port, baud, name, key, p, layout, stateHz, heartbeatMs, silentMs);
+            return new Settings(port, baud, name, key, p, layout, stateHz, heartbeatMs, silentMs, commandDeadlineMs);
+        }
+
+        public Settings withCommandDeadlineMs(long ms) {
+            return new Settings(port, baud, name, key, start, layout, stateHz, heartbeatMs, silentMs, ms);
         }
     }
 
@@ -71,23 +94,38 @@ public final class SerialChair implements ChairDriver {
     private final FrameCodec codec;
     private final FrameReceiver receiver;
     private final Thread reader;
-    private final Object portLock = new Object();
+    private final Thread heartbeat;
+    /** Guards the port's writes and the sending side's sequence number, session and STOP flag. */
+    private final Object sendLock = new Object();
     private volatile SerialPort port;
     private volatile boolean closed;
     private volatile long lastFrameNanos;
+    /** True once a frame has come since the port was opened. */
+    private volatile boolean heard;
     private volatile ChairLayout layout;
     private volatile String firmware;
+    private volatile String incompatible;
+    /** The command wanted: left per mille in the high half, right in the low. */
+    private volatile long command;
+    /** When the loop last confirmed the command. */
+    private volatile long confirmedNanos;
+    private volatile boolean expired;
+    private final java.util.concurrent.atomic.AtomicLong nakCount = new java.util.concurrent.atomic.AtomicLong();
+    // guarded by sendLock
+    private boolean stopSent;
+    private int seq;
+    private boolean sync = true;
+    // heartbeat thread
+    private final long[] gapsUs = new long[1 << 16];
+    private volatile int gapCount;
     // loop-confined
     private ChairListener listener;
     private ChairReadings latest;
     private Odometry odometry;
     private boolean online;
-    private int leftPermille;
-    private int rightPermille;
-    private boolean stopSent;
-    private long heartbeatTimer = -1;
-    private int seq;
-    private boolean sync = true;
+    private long boot = -1;
+    private Boolean boardArmed;
+    private boolean nakLogged;
     private final long startNanos = System.nanoTime();
     private long reconnects;
     private long accepted;
@@ -101,6 +139,9 @@ public final class SerialChair implements ChairDriver {
         this.receiver = new FrameReceiver(codec, true, 500, this::onBoardFrame);
         this.reader = new Thread(this::readLoop, "serial-" + settings.name());
         this.reader.setDaemon(true);
+        this.heartbeat = new Thread(this::heartbeatLoop, "serial-heartbeat-" + settings.name());
+        this.heartbeat.setDaemon(true);
+        this.heartbeat.setPriority(Thread.MAX_PRIORITY);
     }
 
     /**
@@ -116,8 +157,9 @@ public final class SerialChair implements ChairDriver {
                     + (found.isEmpty() ? "none" : found) + " (pseudo-terminals, such as socat's, are never listed: give their path)");
         }
         SerialChair c = new SerialChair(runtime, settings);
+        c.confirmedNanos = System.nanoTime();
         c.reader.start();
-        c.heartbeatTimer = runtime.schedule(runtime.nowNs() + settings.heartbeatMs() * 1_000_000, c::heartbeat);
+        c.heartbeat.start();
         return c;
     }
 
@@ -133,16 +175,10 @@ public final class SerialChair implements ChairDriver {
         return layout;
     }
 
+    /** Sets the command and confirms it; it goes out at once if it changed, and with each heartbeat while confirmed. */
     @Override
     public void drive(double leftPercent, double rightPercent) {
-        int l = permille(leftPercent);
-        int r = permille(rightPercent);
-        boolean change = l != leftPermille || r != rightPermille;
-        leftPermille = l;
-        rightPermille = r;
-        if (change) {
-            sendCommand();
-        }
+        command(permille(leftPercent), permille(rightPercent));
     }
 
     private static int permille(double pct) {
@@ -154,10 +190,16 @@ public final class SerialChair implements ChairDriver {
 
     @Override
     public void stop() {
-        boolean change = leftPermille != 0 || rightPermille != 0 || !stopSent;
-        leftPermille = 0;
-        rightPermille = 0;
+        command(0, 0);
+    }
+
+    private void command(int l, int r) {
+        long c = ((long) l << 32) | (r & 0xFFFFFFFFL);
+        boolean change = c != command || expired;
+        command = c;
+        confirmedNanos = System.nanoTime();
         if (change) {
+            expired = false;
             sendCommand();
         }
     }
@@ -170,6 +212,12 @@ public final class SerialChair implements ChairDriver {
     @Override
     public boolean online() {
         return online;
+    }
+
+    /** The board arms: it says so in every STATE, and refuses what it does not take. */
+    @Override
+    public boolean reportsArming() {
+        return true;
     }
 
     @Override
@@ -189,9 +237,24 @@ public final class SerialChair implements ChairDriver {
         return accepted;
     }
 
+    /** Refusals (NAKs) received. */
+    public long refusals() {
+        return nakCount.get();
+    }
+
     /** The board's firmware version, from its HELLO, or null. */
     public String firmware() {
         return firmware;
+    }
+
+    /** Why the board is refused (it speaks another version of the protocol), or null. */
+    public String incompatible() {
+        return incompatible;
+    }
+
+    /** The board's boot number, from its HELLO or STATE, or -1 before the first. */
+    public long boot() {
+        return receiver.boot();
     }
 
     /** How often the link has come back after going down. */
@@ -199,56 +262,108 @@ public final class SerialChair implements ChairDriver {
         return reconnects;
     }
 
-    /** Stops the chair, closes the port and ends the reader. */
+    /**
+     * The gaps between the heartbeat's frames so far (at most the last 65,536), in milliseconds:
+     * what the board's watchdog sees of a busy host.
+     */
+    public double[] heartbeatGapsMs() {
+        int n = Math.min(gapCount, gapsUs.length);
+        double[] out = new double[n];
+        for (int i = 0; i < n; i++) {
+            out[i] = gapsUs[i] / 1000.0;
+        }
+        return out;
+    }
+
+    /** Stops the chair, closes the port and ends the reader and the heartbeat. */
     public void close() {
         runtime.execute(() -> {
             stop();
-            runtime.cancel(heartbeatTimer);
             closed = true;
+            LockSupport.unpark(heartbeat);
             closePort();
         });
     }
 
-    // ---- sending (loop) ---------------------------------------------------------------------------
+    // ---- sending (the loop, and the heartbeat thread) ------------------------------------------------
 
-    private void heartbeat() {
-        if (closed) {
-            return;
-        }
-        if (online && port != null && System.nanoTime() - lastFrameNanos > settings.silentMs() * 1_000_000) {
-            SerialPort p = port;
-            long silent = (System.nanoTime() - lastFrameNanos) / 1_000_000;
-            // Closing the port ends the reader's read; the reader then opens it again.
-            closePort();
-            LOG.warn("{}: link down: the board has been silent for {} ms; opens the port again", settings.name(), silent);
-            setOnline(false);
-            if (p != null) {
-                lastFrameNanos = System.nanoTime();
+    private void heartbeatLoop() {
+        long period = settings.heartbeatMs() * 1_000_000;
+        long next = System.nanoTime() + period;
+        long lastSent = -1;
+        int i = 0;
+        while (!closed) {
+            long wait = next - System.nanoTime();
+            if (wait > 0) {
+                LockSupport.parkNanos(wait);
+                continue;
             }
+            long now = System.nanoTime();
+            next = Math.max(next + period, now + period / 2);
+            watchSilence(now);
+            if (port == null) {
+                lastSent = -1;
+                continue;
+            }
+            if (now - confirmedNanos > settings.commandDeadlineMs() * 1_000_000) {
+                if (!expired) {
+                    // The loop has not confirmed the command in time (frozen, or far behind): one
+                    // STOP, then silence, so that the board trips and needs a decision to drive again.
+                    expired = true;
+                    LOG.warn("{}: the agents have not confirmed the drive command for {} ms (over {} ms): sends STOP and"
+                            + " stops the heartbeat; the board's watchdog trips", settings.name(), (now - confirmedNanos) / 1_000_000,
+                            settings.commandDeadlineMs());
+                    synchronized (sendLock) {
+                        command = 0;
+                        stopSent = false;
+                    }
+                    sendCommand();
+                }
+                lastSent = -1;
+                continue;
+            }
+            sendCommand();
+            if (lastSent >= 0) {
+                gapsUs[i] = (now - lastSent) / 1_000;
+                i = (i + 1) & (gapsUs.length - 1);
+                gapCount++;
+            }
+            lastSent = now;
         }
-        sendCommand();
-        heartbeatTimer = runtime.schedule(runtime.nowNs() + settings.heartbeatMs() * 1_000_000, this::heartbeat);
+    }
+
+    private void watchSilence(long now) {
+        if (heard && port != null && now - lastFrameNanos > settings.silentMs() * 1_000_000) {
+            long silent = (now - lastFrameNanos) / 1_000_000;
+            lost("the board has been silent for " + silent + " ms");
+        }
     }
 
     private void sendCommand() {
-        boolean neutral = leftPermille == 0 && rightPermille == 0;
-        if (neutral && !stopSent) {
-            stopSent = write(Frame.Type.STOP, new byte[0]);
-        } else {
-            if (!neutral) {
-                stopSent = false;
+        synchronized (sendLock) {
+            long c = command;
+            int l = (int) (c >> 32);
+            int r = (int) c;
+            boolean neutral = l == 0 && r == 0;
+            if (neutral && !stopSent) {
+                stopSent = write(Frame.Type.STOP, new byte[0]);
+            } else {
+                if (!neutral) {
+                    stopSent = false;
+                }
+                write(Frame.Type.DRIVE, BoardProtocol.drive(l, r));
             }
-            write(Frame.Type.DRIVE, BoardProtocol.drive(leftPermille, rightPermille));
         }
     }
 
+    /** Under sendLock. */
     private boolean write(int type, byte[] body) {
         SerialPort p = port;
         if (p == null) {
             return false;
         }
         if (sync) {
-            // A new session: the board starts counting again and sends its HELLO.
+            // A new session: the board starts counting again, disarms and sends its HELLO.
             sync = false;
             sendFrame(p, Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(seq));
             sendFrame(p, Frame.Type.CONFIGURE, 0, BoardProtocol.configure(settings.stateHz()));
@@ -259,9 +374,7 @@ public final class SerialChair implements ChairDriver {
     private boolean sendFrame(SerialPort p, int type, int flags, byte[] body) {
         byte[] b = codec.encode(new Frame(type, flags, seq, nowMs(), body));
         seq = (seq + 1) & 0xFFFF;
-        synchronized (portLock) {
-            return p.writeBytes(b, b.length) == b.length;
-        }
+        return p.writeBytes(b, b.length) == b.length;
     }
 
     private long nowMs() {
@@ -299,7 +412,7 @@ public final class SerialChair implements ChairDriver {
     }
 
     private boolean openPort() {
-        if (!Files.exists(Path.of(settings.port())) && !settings.port().toUpperCase().startsWith("COM")) {
+        if (closed || !Files.exists(Path.of(settings.port())) && !settings.port().toUpperCase().startsWith("COM")) {
             return false;
         }
         // A relative path is made absolute: jSerialComm would take a bare name for one under /dev.
@@ -307,7 +420,7 @@ public final class SerialChair implements ChairDriver {
         SerialPort p = SerialPort.getCommPort(where);
         p.setComPortParameters(settings.baud(), 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
         // A read returns as soon as a byte is there (a timeout on a pty is only good to about 10 ms,
-        // which a STATE frame's way to the agent then carried); the loop's heartbeat watches for a
+        // which a STATE frame's way to the agent then carried); the heartbeat thread watches for a
         // silent board, and closing the port ends a read.
         p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 0, 0);
         if (!p.openPort()) {
@@ -316,29 +429,33 @@ public final class SerialChair implements ChairDriver {
         }
         receiver.reset();
         lastFrameNanos = System.nanoTime();
-        port = p;
-        runtime.execute(() -> {
+        heard = false;
+        synchronized (sendLock) {
             sync = true;
             stopSent = false;
-            sendCommand();
-        });
+            port = p;
+        }
         LOG.info("{}: opened {}", settings.name(), settings.port());
         return true;
     }
 
     private void lost(String why) {
+        if (port == null) {
+            return;
+        }
         closePort();
         LOG.warn("{}: link down: {}; opens the port again when it returns", settings.name(), why);
         runtime.execute(() -> setOnline(false));
     }
 
     private void closePort() {
-        SerialPort p = port;
-        port = null;
+        SerialPort p;
+        synchronized (sendLock) {
+            p = port;
+            port = null;
+        }
         if (p != null) {
-            synchronized (portLock) {
-                p.closePort();
-            }
+            p.closePort();
         }
     }
 
@@ -352,10 +469,15 @@ public final class SerialChair implements ChairDriver {
 
     private void onBoardFrame(Frame f) {
         lastFrameNanos = System.nanoTime();
+        heard = true;
         accepted++;
         try {
             switch (f.type()) {
                 case Frame.Type.STATE -> {
+                    if (incompatible != null) {
+                        receiver.drops().count("incompatible");
+                        return;
+                    }
                     BoardProtocol.State s = BoardProtocol.readState(f);
                     if (s.rangesMm().length != layout.sensors().size()) {
                         throw new FrameException("malformed", s.rangesMm().length + " ranges, the layout has " + layout.sensors().size());
@@ -363,23 +485,32 @@ public final class SerialChair implements ChairDriver {
                     runtime.execute(() -> onState(f, s));
                 }
                 case Frame.Type.HELLO -> {
+                    int v = BoardProtocol.version(f);
+                    if (v != BoardProtocol.VERSION) {
+                        String why = "the board speaks version " + v + " of the chair protocol (the first byte of its HELLO;"
+                                + " a version-1 board sends its firmware name's length there), this host speaks version "
+                                + BoardProtocol.VERSION + ": nothing the board says is taken; update its firmware to"
+                                + " docs/chair-protocol.md version " + BoardProtocol.VERSION;
+                        if (!why.equals(incompatible)) {
+                            LOG.error("{}: {}", settings.name(), why);
+                        }
+                        incompatible = why;
+                        receiver.drops().count("incompatible");
+                        runtime.execute(() -> event(new ChairEvent(ChairEvent.Kind.INCOMPATIBLE, why)));
+                        return;
+                    }
+                    incompatible = null;
                     BoardProtocol.Hello h = BoardProtocol.readHello(f);
                     firmware = h.firmware();
-                    ChairLayout l = h.layout();
-                    runtime.execute(() -> {
-                        if (!l.equals(layout)) {
-                            LOG.info("{}: the board's layout replaces the one expected", settings.name());
-                        }
-                        layout = l;
-                        Pose at = odometry.pose();
-                        odometry = new Odometry(l, at);
-                    });
+                    runtime.execute(() -> onHello(h));
                 }
                 case Frame.Type.NAK -> {
                     Frame.Fields r = f.fields();
                     int s = r.u16();
                     int why = r.u8();
-                    LOG.debug("{}: the board refused frame {}: reason {}", settings.name(), s, why);
+                    r.end();
+                    nakCount.incrementAndGet();
+                    runtime.execute(() -> onNak(s, why));
                 }
                 case Frame.Type.ACK -> { }
                 default -> receiver.drops().count("unknown-type");
@@ -389,9 +520,58 @@ public final class SerialChair implements ChairDriver {
         }
     }
 
+    private void onHello(BoardProtocol.Hello h) {
+        rebooted(h.boot());
+        ChairLayout l = h.layout();
+        if (!l.equals(layout)) {
+            LOG.info("{}: the board's layout replaces the one expected", settings.name());
+        }
+        layout = l;
+        Pose at = odometry.pose();
+        odometry = new Odometry(l, at);
+    }
+
+    /** A new boot number: the board restarted (its counts from zero, its motors stopped, not armed). */
+    private void rebooted(long b) {
+        if (boot >= 0 && b != boot) {
+            String detail = "boot " + b + " after boot " + boot;
+            LOG.warn("{}: the board restarted ({}): its encoder counts start again; the odometry keeps its pose", settings.name(), detail);
+            odometry.reset(odometry.pose());
+            boardArmed = false;
+            boot = b;
+            event(new ChairEvent(ChairEvent.Kind.REBOOTED, detail));
+        }
+        boot = b;
+    }
+
+    private void onNak(int frameSeq, int why) {
+        String detail = "NAK " + BoardProtocol.nakReason(why) + " for frame " + frameSeq;
+        if (!nakLogged) {
+            nakLogged = true;
+            LOG.warn("{}: the board refused a command: {} (further refusals are counted until it is armed again)", settings.name(), detail);
+        }
+        event(new ChairEvent(ChairEvent.Kind.REFUSED, detail));
+    }
+
+    private void event(ChairEvent e) {
+        if (listener != null) {
+            listener.onEvent(e);
+        }
+    }
+
     private void onState(Frame f, BoardProtocol.State s) {
         if (!online) {
             setOnline(true);
+        }
+        rebooted(s.boot());
+        if (boardArmed == null || boardArmed != s.armed()) {
+            boardArmed = s.armed();
+            if (s.armed()) {
+                nakLogged = false;
+                event(new ChairEvent(ChairEvent.Kind.ARMED, null));
+            } else {
+                event(new ChairEvent(ChairEvent.Kind.DISARMED, BoardProtocol.disarmedBy(s.reason())));
+            }
         }
         Pose odo = odometry.update(s.leftTicks(), s.rightTicks());
         double[] ranges = new double[s.rangesMm().length];
@@ -410,6 +590,7 @@ public final class SerialChair implements ChairDriver {
             return;
         }
         online = up;
+        boardArmed = null;
         if (up) {
             reconnects++;
         }

@@ -198,4 +198,65 @@ class BoardTest {
         assertEquals(1, b.board.drops().get("malformed"));
         assertArrayEquals(new int[] {100, 100}, b.board.motors());
     }
+
+    /** Every STATE says whether the board is armed and, if not, why; a new session does not hide an e-stop. */
+    @Test
+    void everyStateSaysWhetherItIsArmedAndWhyNot() {
+        Bench b = new Bench();
+        b.at(0);
+        assertFalse(b.lastState().armed());
+        assertEquals(BoardProtocol.DISARMED_SWITCH_ON, b.lastState().reason());
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.at(50);
+        assertTrue(b.lastState().armed());
+        assertEquals(BoardProtocol.ARMED, b.lastState().reason());
+        b.at(300);
+        assertFalse(b.lastState().armed(), "the watchdog tripped");
+        assertEquals(BoardProtocol.DISARMED_WATCHDOG, b.lastState().reason());
+        b.drive(300, 300);
+        b.at(350);
+        assertEquals(BoardProtocol.DISARMED_WATCHDOG, b.lastState().reason(), "a frame clears the fault, not the disarm");
+        assertFalse(b.lastState().faults().contains(ChairFault.WATCHDOG));
+        b.board.estop(true, 360);
+        b.board.estop(false, 370);
+        b.at(400);
+        assertEquals(BoardProtocol.DISARMED_ESTOP, b.lastState().reason(), "an e-stop is the graver reason");
+        b.host(Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(1));
+        b.at(450);
+        assertEquals(BoardProtocol.DISARMED_ESTOP, b.lastState().reason(), "a new session does not hide the e-stop");
+    }
+
+    /** A host's new session (SYNC PING) disarms: it never inherits the last session's motion. */
+    @Test
+    void aSyncDisarmsTheBoard() {
+        Bench b = new Bench();
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(400, 400);
+        assertEquals(40.0, b.motors.left);
+        b.host(Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(9));
+        assertEquals(0.0, b.motors.left);
+        assertFalse(b.board.armed());
+        assertEquals(BoardProtocol.DISARMED_SESSION, b.board.disarmedBy());
+        b.drive(400, 400);
+        assertEquals(0.0, b.motors.left, "driving needs neutral again");
+    }
+
+    /** A reboot: the next boot number, seq 0, counts from 0, not armed. */
+    @Test
+    void aRebootSaysItsNewBootNumberAndStartsItsCountsAgain() {
+        Bench b = new Bench();
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.at(0);
+        assertEquals(1, b.lastState().boot());
+        b.fromBoard.clear();
+        b.board.switchOn(2, 100);
+        Frame hello = b.fromBoard.get(0);
+        assertEquals(Frame.Type.HELLO, hello.type());
+        assertEquals(0, hello.seq());
+        assertEquals(2, BoardProtocol.readHello(hello).boot());
+        b.at(100);
+        assertEquals(2, b.lastState().boot());
+        assertFalse(b.lastState().armed());
+        assertEquals(BoardProtocol.DISARMED_SWITCH_ON, b.lastState().reason());
+    }
 }

@@ -1,6 +1,7 @@
 package io.concord.serial;
 
 import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.Pose;
 
 import org.junit.jupiter.api.Test;
 
@@ -16,6 +17,7 @@ import java.util.regex.Pattern;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The test vectors of docs/chair-protocol.md are what the codec does, both ways. */
@@ -62,7 +64,7 @@ class ChairProtocolDocTest {
     @Test
     void everyVectorEncodesToItsBytesAndDecodesBack() throws IOException {
         List<Vector> vs = vectors();
-        assertEquals(8, vs.size(), "the document's vectors");
+        assertEquals(12, vs.size(), "the document's vectors");
         for (Vector v : vs) {
             FrameCodec codec = new FrameCodec(v.key());
             Frame f = new Frame(type(v.type()), v.flags(), v.seq(), v.time(), v.body());
@@ -78,18 +80,45 @@ class ChairProtocolDocTest {
         List<Vector> vs = vectors();
         assertArrayEquals(vs.get(0).body(), BoardProtocol.drive(500, -250));
         assertArrayEquals(vs.get(2).body(), BoardProtocol.ping(0));
-        assertArrayEquals(vs.get(3).body(), BoardProtocol.configure(20));
-        BoardProtocol.State s = new BoardProtocol.State(2048, -1024, new int[] {1500, BoardProtocol.NO_RANGE}, true, false, 24_100,
-                EnumSet.of(ChairFault.WATCHDOG), null);
-        assertArrayEquals(vs.get(4).body(), BoardProtocol.state(s));
-        BoardProtocol.State back = BoardProtocol.readState(new Frame(Frame.Type.STATE, 0, 7, 123_456, vs.get(4).body()));
+        assertArrayEquals(vs.get(3).body(), BoardProtocol.ping(0xDEADBEEFL));
+        assertArrayEquals(vs.get(4).body(), BoardProtocol.configure(20));
+        BoardProtocol.State s = new BoardProtocol.State(3, 2048, -1024, new int[] {1500, BoardProtocol.NO_RANGE}, true, false, false,
+                BoardProtocol.DISARMED_WATCHDOG, 24_100, EnumSet.of(ChairFault.WATCHDOG), null);
+        assertArrayEquals(vs.get(5).body(), BoardProtocol.state(s));
+        BoardProtocol.State back = BoardProtocol.readState(new Frame(Frame.Type.STATE, 0, 7, 123_456, vs.get(5).body()));
+        assertEquals(3, back.boot());
         assertEquals(2048, back.leftTicks());
         assertEquals(-1024, back.rightTicks());
         assertArrayEquals(new int[] {1500, 0xFFFF}, back.rangesMm());
         assertTrue(back.bumper());
+        assertFalse(back.armed());
+        assertEquals(BoardProtocol.DISARMED_WATCHDOG, back.reason());
         assertEquals(EnumSet.of(ChairFault.WATCHDOG), back.faults());
-        assertArrayEquals(vs.get(5).body(), BoardProtocol.ack(3, 0));
-        assertArrayEquals(vs.get(6).body(), BoardProtocol.nak(4, BoardProtocol.NAK_NOT_NEUTRAL));
+        BoardProtocol.State fixed = BoardProtocol.readState(new Frame(Frame.Type.STATE, 0, 8, 123_506, vs.get(6).body()));
+        assertTrue(fixed.armed());
+        assertEquals(BoardProtocol.ARMED, fixed.reason());
+        assertEquals(new Pose(12.345, -6.789, 1.5708), fixed.fix());
+        BoardProtocol.Hello h = BoardProtocol.readHello(new Frame(Frame.Type.HELLO, 0, 0, 0, vs.get(7).body()));
+        assertEquals(2, h.version());
+        assertEquals(3, h.boot());
+        assertEquals("fw 2", h.firmware());
+        assertEquals("front", h.layout().sensors().get(0).name());
+        assertEquals(0.17, h.layout().wheelRadiusM(), 1e-9);
+        BoardProtocol.Hello longName = BoardProtocol.readHello(new Frame(Frame.Type.HELLO, 0, 0, 0, vs.get(8).body()));
+        assertEquals("x".repeat(250), longName.firmware());
+        assertEquals((byte) 0xFF, vs.get(8).wire()[8], "the 254-byte block's code");
+        assertArrayEquals(vs.get(9).body(), BoardProtocol.ack(3, 0));
+        assertArrayEquals(vs.get(10).body(), BoardProtocol.nak(4, BoardProtocol.NAK_NOT_NEUTRAL));
+        assertEquals(1, vs.get(11).raw()[1], "the keyed vector's flags byte has the MAC bit");
+    }
+
+    @Test
+    void aStateThatContradictsItselfIsMalformed() {
+        BoardProtocol.State s = new BoardProtocol.State(3, 0, 0, new int[0], false, false, true, BoardProtocol.DISARMED_WATCHDOG, 24_000,
+                EnumSet.noneOf(ChairFault.class), null);
+        FrameException e = org.junit.jupiter.api.Assertions.assertThrows(FrameException.class,
+                () -> BoardProtocol.readState(new Frame(Frame.Type.STATE, 0, 1, 0, BoardProtocol.state(s))));
+        assertEquals("malformed", e.reason());
     }
 
     @Test
@@ -112,7 +141,7 @@ class ChairProtocolDocTest {
     @Test
     void aHelloCarriesTheWholeLayout() {
         var layout = io.concord.agents.chair.ChairLayout.standard();
-        BoardProtocol.Hello h = BoardProtocol.readHello(new Frame(Frame.Type.HELLO, 0, 0, 0, BoardProtocol.hello("fw 1", layout)));
+        BoardProtocol.Hello h = BoardProtocol.readHello(new Frame(Frame.Type.HELLO, 0, 0, 0, BoardProtocol.hello(7, "fw 1", layout)));
         assertEquals("fw 1", h.firmware());
         assertEquals(layout.sensors().size(), h.layout().sensors().size());
         for (int i = 0; i < layout.sensors().size(); i++) {

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.SplittableRandom;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** Frames survive any chunking and garbage; every frame not taken is counted by its reason. */
 class FramingTest {
@@ -110,10 +111,11 @@ class FramingTest {
         rx.feed(f2, 0, f2.length);
         assertEquals(1, rx.drops.get("repeated"));
         assertEquals(1, rx.drops.get("out-of-order"));
-        rx.nowMs = 5000 + 201 + 3;
+        // The reference grows by the 2 % drift tolerance of the time since the last frame: 5 ms here.
+        rx.nowMs = 5000 + 206 + 3;
         byte[] f4 = frames(c, 4, 1, 1000);
         rx.feed(f4, 0, f4.length);
-        assertEquals(1, rx.drops.get("stale"), "sent 1 ms after frame 3, arrived 204 ms later than the least delayed");
+        assertEquals(1, rx.drops.get("stale"), "sent 1 ms after frame 3, arrived 208 ms later than the least delayed, 4.2 ms of drift allowed");
         assertEquals(2, rx.taken.size());
         // Sequence numbers wrap: 65535 then 0 is in order.
         Receiver w = new Receiver(c);
@@ -122,5 +124,36 @@ class FramingTest {
         w.feed(a, 0, a.length);
         w.feed(b, 0, b.length);
         assertEquals(2, w.taken.size());
+    }
+
+    /** A board's clock 1 % slow, 20 frames a second for 10 minutes: every frame on time is taken. */
+    @Test
+    void aSenderWhoseClockRunsOnePercentSlowIsNeverStaleAndTheCheckWithoutDriftFailsIt() {
+        assertEquals(0, staleOfASlowSender(SequenceCheck.DRIFT, 0.99, 0));
+        assertEquals(0, staleOfASlowSender(SequenceCheck.DRIFT, 1.01, 0), "a fast clock");
+        // The defence off: the check of version 1 (the least offset, no drift) drops every frame
+        // after the first 50 s (500 ms / 1 %).
+        assertTrue(staleOfASlowSender(0, 0.99, 0) > 10_000);
+    }
+
+    /** A delay that grows faster than any clock drifts (frames held back by a relay) is still stale. */
+    @Test
+    void aDelayGrowingFasterThanTheToleratedDriftIsStale() {
+        assertTrue(staleOfASlowSender(SequenceCheck.DRIFT, 1.0, 0.05) > 0, "5 % more delay every second");
+    }
+
+    /** Frames dropped as stale at a host (500 ms) of a sender at {@code rate}, each delayed by {@code growth} of the time so far. */
+    private static int staleOfASlowSender(double drift, double rate, double growth) {
+        SequenceCheck check = new SequenceCheck(500, drift);
+        int stale = 0;
+        for (int i = 0; i < 20 * 600; i++) {
+            long local = i * 50L + 3 + (i * 7L) % 5;          // 3-7 ms on the line
+            local += (long) (growth * i * 50);
+            long senderTime = (long) (i * 50L * rate);
+            if ("stale".equals(check.check(new Frame(Frame.Type.STATE, 0, i & 0xFFFF, senderTime, new byte[0]), local))) {
+                stale++;
+            }
+        }
+        return stale;
     }
 }

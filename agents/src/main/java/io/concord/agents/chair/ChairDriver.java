@@ -35,6 +35,16 @@ public interface ChairDriver {
     /** True while the link to the chair is up. A simulated chair is always online. */
     boolean online();
 
+    /**
+     * True if the chair has a board that arms (docs/chair-protocol.md): it drives only after a
+     * neutral command since its last switch-on, watchdog trip, e-stop or new session, says whether
+     * it is armed in each reading, and refuses commands with events ({@link ChairListener#onEvent}).
+     * A simulated chair does not: it is always armed, unless its e-stop is pressed.
+     */
+    default boolean reportsArming() {
+        return false;
+    }
+
     /** Sets the one listener told of every report (replacing any before); null removes it. */
     void setListener(ChairListener listener);
 }

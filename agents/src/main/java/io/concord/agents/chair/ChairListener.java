@@ -12,4 +12,8 @@ public interface ChairListener {
     /** The link is up (true) or down (false); while down, readings stop and the chair stands. */
     default void onOnline(boolean online) {
     }
+
+    /** The board reported an event: a refusal, a change of its arming, a reboot (a serial chair; a simulated one has none). */
+    default void onEvent(ChairEvent event) {
+    }
 }

@@ -1,6 +1,9 @@
 package io.concord.agents.control;
 
 import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairEvent;
+import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.ChairSupervisor;
 import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Localiser;
@@ -50,9 +53,19 @@ import java.util.function.Consumer;
  *       {@code passed}); stops for anything close ahead and slows down for anything nearer than
  *       1.2 m, whatever the plan says; reports an edge blocked for 15 s to its planner and drives
  *       a new plan around it.</li>
+ *   <li>Drives through a {@link ChairSupervisor} (made around the driver it is given, unless it is
+ *       given one): an e-stop, a watchdog trip, a board's reboot, a refusal or a lost link holds
+ *       the chair; the task is paused, not failed, and the Medical agent is told (INFORM
+ *       {@code paused; task; chair; reason; resume}, conversation {@code <cfp's>/status}, again
+ *       every 20 s while paused) and told again when it resumes (INFORM {@code resumed}). After a
+ *       trip or a lost link that came back, the agent decides to resume; after an e-stop, a reboot
+ *       or a refusal the board did not explain, only an operator does ({@link #resume}, or
+ *       REQUEST {@code resume; by}). While the chair cannot drive it refuses new tasks, saying why,
+ *       with {@code unavailable true} (the Medical agent asks again later). A link down for
+ *       {@link #LINK_GRACE_MS} fails its tasks.</li>
  * </ul>
  */
-public class ControlAgent extends Agent implements ChairListener {
+public class ControlAgent extends Agent implements ChairListener, ChairSupervisor.Observer {
     /** Metres a second the estimates assume (cruise power, turns and slowing included). */
     static final double EST_SPEED_MPS = 0.7;
     /** Seconds each door adds to an estimate. */
@@ -65,8 +78,13 @@ public class ControlAgent extends Agent implements ChairListener {
     private static final long BLOCKED_AFTER_MS = 15_000;
     /** How often it tells the doors ahead that it still means to pass (their sessions lapse after 60 s). */
     static final long KEEPALIVE_MS = 20_000;
+    /** How long a chair's link may stay down before its tasks fail (the Medical agent then gives them to another chair). */
+    public static final long LINK_GRACE_MS = 30_000;
 
+    private final ChairSupervisor supervisor;
     private final ChairDriver chair;
+    /** Counts the link's outages: a grace timer ends only the outage it was set for. */
+    private int outages;
     private final HospitalMap map;
     private final Consumer<String> log;
     private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
@@ -101,7 +119,8 @@ public class ControlAgent extends Agent implements ChairListener {
      * @param log   told of what the chair does (tasks, doors, stops)
      */
     public ControlAgent(ChairDriver chair, HospitalMap map, Consumer<String> log) {
-        this.chair = chair;
+        this.supervisor = chair instanceof ChairSupervisor s ? s : new ChairSupervisor(chair);
+        this.chair = supervisor;
         this.map = map;
         this.log = log;
     }
@@ -142,14 +161,20 @@ public class ControlAgent extends Agent implements ChairListener {
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
                 .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), this::makeWay);
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.CANCEL), this::cancelled);
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
+                .and(m -> m.getContent() != null && m.getContent().startsWith("resume")), this::resumeAsked);
         // A chair that waits (loading, queued) is not silent: it keeps its doors' sessions alive.
         addBehaviour(new io.concord.core.agent.TickerBehaviour(this, KEEPALIVE_MS) {
             @Override
             protected void onTick() {
                 keepDoorsAlive();
                 traffic.alive(standsOn());
+                if (active != null && active.paused != null) {
+                    notice(active, "paused", active.paused);
+                }
             }
         });
+        supervisor.setObserver(this);
         chair.setListener(this);
     }
 
@@ -244,8 +269,9 @@ public class ControlAgent extends Agent implements ChairListener {
             return;
         }
         tasks.add(t);
-        if (!chair.online()) {
-            refuse(t, chair.name() + " is offline (its link is down)");
+        String unavailable = supervisor.whyNotAvailable();
+        if (unavailable != null) {
+            refuse(t, chair.name() + " " + unavailable, true);
             return;
         }
         AID planner = planner();
@@ -314,12 +340,18 @@ public class ControlAgent extends Agent implements ChairListener {
     }
 
     private void refuse(Task t, String why) {
+        refuse(t, why, false);
+    }
+
+    /** Refuses a task; {@code unavailable}: the chair cannot drive now, and may later. */
+    private void refuse(Task t, String why, boolean unavailable) {
         t.state = TaskView.State.REFUSED;
         t.reason = why;
         tasks.remove(t);
         say("refuses " + t.id + ": " + why);
+        Content c = Content.of("refuse").with("task", t.id).with("reason", why);
         responder.respond(t.cfp, t.cfp.createReply().setPerformative(Performative.REFUSE)
-                .setContent(Content.of("refuse").with("task", t.id).with("reason", why).toString()));
+                .setContent((unavailable ? c.with("unavailable", "true") : c).toString()));
     }
 
     /** A plan, as the planner's final answer (never null: no answer becomes a FAILURE). */
@@ -400,6 +432,7 @@ public class ControlAgent extends Agent implements ChairListener {
         Pose pose = localiser.update(r);
         // Loading, unloading and stalls are timed on the chair's clock.
         long now = r.timeNs() / 1_000_000;
+        decideToResume();
         if (active == null && asideTo < 0) {
             startNext(now);
             if (active == null) {
@@ -433,6 +466,10 @@ public class ControlAgent extends Agent implements ChairListener {
         if (!faultsAllowDriving(r)) {
             return;
         }
+        if (!supervisor.armed()) {
+            chair.stop();
+            return;
+        }
         drive(r, pose, now);
     }
 
@@ -445,17 +482,160 @@ public class ControlAgent extends Agent implements ChairListener {
         say(up ? "the link to " + chair.name() + " is up" : "the link to " + chair.name() + " is down: the chair is stopped by its board");
         if (!up) {
             chair.stop();
+            int outage = ++outages;
+            if (hasWork()) {
+                say("keeps its tasks for " + LINK_GRACE_MS / 1000 + " s while the link is down");
+                addBehaviour(new io.concord.core.agent.WakerBehaviour(this, LINK_GRACE_MS) {
+                    @Override
+                    protected void onWake() {
+                        if (outage == outages && !chair.online()) {
+                            failAll(chair.name() + " has been offline for " + LINK_GRACE_MS / 1000 + " s");
+                        }
+                    }
+                });
+            }
+        } else {
+            decideToResume();
         }
     }
 
+    /** The board said something that is not a reading; the supervisor has acted on it already. */
+    @Override
+    public void onEvent(ChairEvent event) {
+        if (event.kind() == ChairEvent.Kind.INCOMPATIBLE) {
+            say("cannot drive " + chair.name() + ": " + event.detail());
+        }
+    }
+
+    // ---- holds and resumes ----------------------------------------------------------------------
+
+    /** The supervisor holds the chair: the task is paused, and whoever gave it is told why. */
+    @Override
+    public void onHold(ChairSupervisor.Hold hold) {
+        String how = hold.cause().agentMayResume() ? "it resumes when the chair can drive again" : "it waits for an operator's resume";
+        if (active != null) {
+            active.paused = hold + "; " + how;
+            say("pauses " + active.id + ": " + hold + "; " + how);
+            notice(active, "paused", active.paused);
+        } else {
+            say("holds " + chair.name() + ": " + hold);
+        }
+    }
+
+    /** The chair is armed again after a resume: a paused task goes on. */
+    @Override
+    public void onArmed(String decidedBy) {
+        if (active != null && active.paused != null) {
+            active.paused = null;
+            say("resumes " + active.id + " (decided by " + decidedBy + ")");
+            notice(active, "resumed", "decided by " + decidedBy);
+        }
+    }
+
+    /**
+     * The agent's own decision to resume: after a trip or a link that came back, or with no task
+     * accepted at all (no motion follows until a task is); never after an e-stop, a reboot or an
+     * unexplained refusal while it holds a task.
+     */
+    private void decideToResume() {
+        if (supervisor.state() != ChairSupervisor.State.HELD || !chair.online() || supervisor.estopPressed()) {
+            return;
+        }
+        ChairSupervisor.Hold h = supervisor.hold();
+        if (h.cause().agentMayResume()) {
+            supervisor.resume(getLocalName() + " (" + h + ")");
+        } else if (!hasWork()) {
+            supervisor.resume(getLocalName() + " (" + h + "; no task accepted)");
+        }
+    }
+
+    /**
+     * An operator's decision to resume a held chair (the console, or any code). Thread-safe.
+     * Completes with null once resuming, or with why it cannot (offline, the e-stop still pressed).
+     *
+     * @param who who decided, for the log and the Medical agent
+     */
+    public CompletableFuture<String> resume(String who) {
+        CompletableFuture<String> f = new CompletableFuture<>();
+        Runnable r = () -> {
+            String why = supervisor.resume(who);
+            say(why == null ? "resume decided by " + who : "cannot resume (" + who + "): " + why);
+            f.complete(why);
+        };
+        if (runtime().inLoop()) {
+            r.run();
+        } else {
+            runtime().execute(r);
+        }
+        return f;
+    }
+
+    private void resumeAsked(AclMessage m) {
+        String by = m.getSender().localName();
+        try {
+            String b = Content.parse(m.getContent()).get("by");
+            if (b != null && !b.isBlank()) {
+                by = b + " via " + m.getSender().localName();
+            }
+        } catch (IllegalArgumentException e) {
+            // no content beyond the word: the sender decided
+        }
+        String why = supervisor.resume(by);
+        say(why == null ? "resume decided by " + by : "cannot resume (" + by + "): " + why);
+        send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
+                .setContent(why == null ? Content.of("resuming").with("chair", chair.name()).toString()
+                        : Content.of("refuse").with("reason", why).toString()));
+    }
+
+    /** The safety supervisor the agent drives through. */
+    public ChairSupervisor supervisor() {
+        return supervisor;
+    }
+
+    /** Tells whoever gave the task how it stands (paused, resumed), outside the contract's conversation. */
+    private void notice(Task t, String what, String reason) {
+        if (t.accept == null) {
+            return;
+        }
+        AclMessage m = new AclMessage(Performative.INFORM);
+        m.addReceiver(t.accept.getSender());
+        m.setOntology(Services.ONTOLOGY);
+        m.setConversationId(t.cfp.getConversationId() + "/status");
+        m.setContent(Content.of(what).with("task", t.id).with("chair", chair.name()).with("reason", reason)
+                .with("resume", supervisor.hold().cause().agentMayResume() ? "agent" : "operator").toString());
+        send(m);
+    }
+
+    private boolean hasWork() {
+        for (Task t : tasks) {
+            if (t.state.compareTo(TaskView.State.QUEUED) >= 0 && t.state.compareTo(TaskView.State.UNLOADING) <= 0) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void failAll(String why) {
+        for (Task t : new ArrayList<>(tasks)) {
+            if (t.state.compareTo(TaskView.State.QUEUED) >= 0 && t.state.compareTo(TaskView.State.UNLOADING) <= 0) {
+                finish(t, why);
+            }
+        }
+    }
+
+    /** Faults that stop the chair and fail its task; the e-stop, a trip and a lost link are the supervisor's, which pauses it. */
     private boolean faultsAllowDriving(ChairReadings r) {
-        if (r.emergencyStop() || !r.faults().isEmpty()) {
+        java.util.Set<ChairFault> faults = java.util.EnumSet.noneOf(ChairFault.class);
+        faults.addAll(r.faults());
+        faults.remove(ChairFault.WATCHDOG);
+        faults.remove(ChairFault.LINK);
+        if (r.emergencyStop() || !faults.isEmpty()) {
             chair.stop();
             if (stopReason == null) {
-                stopReason = r.emergencyStop() ? "the e-stop is pressed" : "the chair reports " + r.faults();
+                stopReason = r.emergencyStop() ? "the e-stop is pressed" : "the chair reports " + faults;
                 say("stops: " + stopReason);
             }
-            if (!r.faults().isEmpty() && r.faults().stream().anyMatch(f -> f != io.concord.agents.chair.ChairFault.BATTERY_LOW)) {
+            if (faults.stream().anyMatch(f -> f != ChairFault.BATTERY_LOW)) {
                 finish(active, stopReason);
             }
             return false;

@@ -20,6 +20,8 @@ final class Task {
     double estimateS;
     TaskView.State state = TaskView.State.EVALUATING;
     String reason;
+    /** Why it is paused (the chair is held), or null. */
+    String paused;
     int start;
 
     Task(String id, int from, int to, double priority, double unloadS, AclMessage cfp) {

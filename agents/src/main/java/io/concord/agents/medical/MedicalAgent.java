@@ -30,6 +30,13 @@ import java.util.function.Consumer;
  * the others. Several auctions run at once, each with its own deadline. A task whose chair fails,
  * or sends no result by the time its proposal's cost allows (three times it, and two minutes), is
  * auctioned again, up to three times.
+ *
+ * <p>A chair that cannot drive now (offline, its e-stop pressed, paused) refuses with
+ * {@code unavailable true}; when no chair proposes and one of them said so, the task is not
+ * dropped: it is auctioned again every {@link Settings#retryMs()} until a chair takes it, and
+ * fails with "no chair can do it" only after {@link Settings#waitForChairMs()}. A chair that
+ * pauses a task it holds (INFORM {@code paused}) gets {@link Settings#pausedMs()} more for its
+ * result, renewed with each notice it sends.
  */
 public class MedicalAgent extends Agent {
     /** The priorities of the dissertation: routine, urgent, emergency. */
@@ -47,11 +54,19 @@ public class MedicalAgent extends Agent {
     public record Outcome(String task, boolean done, String chair, String reason, int auctions) {
     }
 
-    /** Settings: how long chairs have to propose, and how many auctions a task gets. */
-    public record Settings(long auctionMs, int maxAuctions) {
-        /** Two seconds to propose, three auctions. */
+    /**
+     * Settings.
+     *
+     * @param auctionMs      how long chairs have to propose
+     * @param maxAuctions    how many auctions a task gets when its chairs fail it or go silent
+     * @param waitForChairMs how long a task waits for a chair while every chair is unavailable
+     * @param retryMs        how often it asks again meanwhile
+     * @param pausedMs       how much longer a chair that paused a task gets, from each notice
+     */
+    public record Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs) {
+        /** Two seconds to propose, three auctions, two minutes' wait for a chair asked every 5 s, 2 minutes from each pause notice. */
         public static Settings standard() {
-            return new Settings(2_000, 3);
+            return new Settings(2_000, 3, 120_000, 5_000, 120_000);
         }
     }
 
@@ -68,6 +83,10 @@ public class MedicalAgent extends Agent {
         }
     };
     private long next;
+    /** task -> its contract net now. */
+    private final Map<String, ContractNetInitiator> running = new LinkedHashMap<>();
+    /** task -> auctions held (conversation ids stay unique while a task waits for a chair). */
+    private final Map<String, Integer> held = new LinkedHashMap<>();
 
     /** A Medical agent with the standard settings. */
     public MedicalAgent(Consumer<String> log) {
@@ -87,6 +106,9 @@ public class MedicalAgent extends Agent {
     @Override
     protected void setup() {
         Platform.of(this).register(ServiceDescription.of(Services.MEDICAL, getLocalName()));
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
+                .and(m -> m.getContent() != null && (m.getContent().startsWith("paused") || m.getContent().startsWith("resumed"))),
+                this::statusNotice);
         MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST)
                 .and(m -> m.getContent() != null && m.getContent().startsWith("transport"));
         Inbox.each(this, requests, m -> {
@@ -141,11 +163,35 @@ public class MedicalAgent extends Agent {
         f.whenComplete((o, e) -> {
             open.remove(id);
             awarded.remove(id);
+            running.remove(id);
+            held.remove(id);
         });
         log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
                 getLocalName(), id, from, to, priority, unloadS));
-        auction(id, from, to, priority, unloadS, 1, f);
+        auction(id, from, to, priority, unloadS, 1, f, -1);
         return f;
+    }
+
+    /** A chair's word on a task it holds: paused (it gets longer for its result) or resumed. */
+    private void statusNotice(AclMessage m) {
+        Content c;
+        try {
+            c = Content.parse(m.getContent());
+        } catch (IllegalArgumentException e) {
+            log.accept(getLocalName() + ": ignores a malformed notice from " + m.getSender().name() + ": " + e.getMessage());
+            return;
+        }
+        String task = c.get("task");
+        AclMessage winner = task == null ? null : awarded.get(task);
+        if (winner == null || !winner.getSender().equals(m.getSender())) {
+            return; // not a task of this agent's, or not that chair's any more
+        }
+        ContractNetInitiator cn = running.get(task);
+        if (cn != null) {
+            cn.postponeResultDeadline(settings.pausedMs());
+        }
+        log.accept(getLocalName() + ": " + task + (c.is("paused") ? " paused on " : " resumed on ") + m.getSender().localName()
+                + ": " + c.get("reason"));
     }
 
     /**
@@ -193,7 +239,16 @@ public class MedicalAgent extends Agent {
         return open.size();
     }
 
-    private void auction(String id, int from, int to, double tp, double unload, int round, CompletableFuture<Outcome> f) {
+    /**
+     * @param waitingSince when the task began to wait for a chair (every chair unavailable), on
+     *                     the agent's clock in ms, or -1
+     */
+    private void auction(String id, int from, int to, double tp, double unload, int round, CompletableFuture<Outcome> f,
+                         long waitingSince) {
+        if (f.isDone()) {
+            return;
+        }
+        int attempt = held.merge(id, 1, Integer::sum);
         List<AID> chairs = new ArrayList<>();
         for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.TRANSPORT))) {
             chairs.add(e.aid());
@@ -207,12 +262,12 @@ public class MedicalAgent extends Agent {
         chairs.forEach(cfp::addReceiver);
         cfp.setProtocol(FipaProtocols.CONTRACT_NET);
         cfp.setOntology(Services.ONTOLOGY);
-        cfp.setConversationId(id + "-" + round);
+        cfp.setConversationId(id + "-" + attempt);
         cfp.setReplyByEpochMs(currentTimeMillis() + settings.auctionMs());
         cfp.setContent(Content.of("transport").with("task", id).with("from", from).with("to", to)
                 .with("priority", tp).with("unload", unload).toString());
-        log.accept(getLocalName() + ": CFP " + id + (round > 1 ? " (auction " + round + ")" : "") + " to " + chairs.size() + " chairs");
-        addBehaviour(new ContractNetInitiator(this, cfp) {
+        log.accept(getLocalName() + ": CFP " + id + (attempt > 1 ? " (auction " + attempt + ")" : "") + " to " + chairs.size() + " chairs");
+        ContractNetInitiator cn = new ContractNetInitiator(this, cfp) {
             private AclMessage winner;
 
             @Override
@@ -261,7 +316,32 @@ public class MedicalAgent extends Agent {
                         // Nobody answered in time (a proposal late on a busy or lossy network, or a
                         // chair listed a moment ago): that is no answer yet, so the task is auctioned again.
                         log.accept(getLocalName() + ": no chair answered " + id + " in time; it is auctioned again");
-                        auction(id, from, to, tp, unload, round + 1, f);
+                        auction(id, from, to, tp, unload, round + 1, f, waitingSince);
+                        return;
+                    }
+                    List<String> unavailable = new ArrayList<>();
+                    for (AclMessage r : responses) {
+                        if (r.getPerformative() == Performative.REFUSE && unavailable(r)) {
+                            unavailable.add(r.getSender().localName() + " " + reasonOf(r));
+                        }
+                    }
+                    long now = currentTimeMillis();
+                    long since = waitingSince < 0 ? now : waitingSince;
+                    if (!unavailable.isEmpty()) {
+                        if (now - since < settings.waitForChairMs()) {
+                            log.accept(getLocalName() + ": no chair can take " + id + " now (" + String.join("; ", unavailable)
+                                    + "); asks again in " + settings.retryMs() / 1000 + " s");
+                            addBehaviour(new io.concord.core.agent.WakerBehaviour(myAgent, settings.retryMs()) {
+                                @Override
+                                protected void onWake() {
+                                    auction(id, from, to, tp, unload, round, f, since);
+                                }
+                            });
+                            return;
+                        }
+                        f.complete(new Outcome(id, false, null, "no chair can do it (waited " + settings.waitForChairMs() / 1000
+                                + " s: " + String.join("; ", unavailable) + ")", round));
+                        log.accept(getLocalName() + ": no chair can do " + id + " after " + settings.waitForChairMs() / 1000 + " s");
                         return;
                     }
                     f.complete(new Outcome(id, false, null, "no chair proposed", round));
@@ -301,10 +381,21 @@ public class MedicalAgent extends Agent {
                 if (round >= settings.maxAuctions()) {
                     f.complete(new Outcome(id, false, winner.getSender().localName(), why, round));
                 } else {
-                    auction(id, from, to, tp, unload, round + 1, f);
+                    auction(id, from, to, tp, unload, round + 1, f, -1);
                 }
             }
-        });
+        };
+        running.put(id, cn);
+        addBehaviour(cn);
+    }
+
+    /** A refusal from a chair that cannot drive now and may later (offline, e-stop, paused). */
+    private static boolean unavailable(AclMessage refuse) {
+        try {
+            return "true".equals(Content.parse(refuse.getContent()).get("unavailable"));
+        } catch (IllegalArgumentException e) {
+            return false;
+        }
     }
 
     /**

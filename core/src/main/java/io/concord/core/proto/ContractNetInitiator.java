@@ -135,6 +135,17 @@ public class ContractNetInitiator extends Initiator {
         super.onAllEnded();
     }
 
+    /**
+     * Gives the accepted responders at least {@code ms} more for their results (one said it is
+     * held up: a paused task). Has no effect before the acceptances are sent, or without a deadline.
+     * Call on the agent's loop.
+     */
+    public final void postponeResultDeadline(long ms) {
+        if (responsesReported) {
+            postponeDeadline(ms);
+        }
+    }
+
     /** A proposal; an acceptance or rejection may be added to {@code acceptances} at once. */
     protected void handlePropose(AclMessage propose, List<AclMessage> acceptances) {
     }

@@ -112,6 +112,13 @@ abstract class Initiator extends Behaviour {
         deadlineNs = -1;
     }
 
+    /** Moves the current phase's deadline to {@code ms} from now, if it is sooner; a phase with no deadline keeps none. */
+    void postponeDeadline(long ms) {
+        if (deadlineNs >= 0) {
+            deadlineNs = Math.max(deadlineNs, myAgent.runtime().nowNs() + ms * 1_000_000);
+        }
+    }
+
     /** Sets a new deadline for the current phase, from a message's {@code :reply-by}. */
     void deadlineFrom(AclMessage m) {
         deadlineNs = m.hasReplyBy() ? Replies.replyByDeadlineNs(myAgent, m) : -1;

@@ -33,14 +33,16 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  *
  * <p>Faults on what the board sends (each a probability per frame): {@code --drop},
  * {@code --corrupt} (one byte flipped), {@code --duplicate}, {@code --reorder} (swapped with the
- * next), {@code --garbage} (random bytes before it); {@code --delay-ms} holds every frame back. On
- * standard input: {@code estop on|off}, {@code status} (one line: motors, watchdog, pose, drops),
- * {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
+ * next), {@code --garbage} (random bytes before it); {@code --delay-ms} holds every frame back.
+ * {@code --clock-rate 0.99} runs the board's clock 1 % slow (a poor crystal); {@code --boot N}
+ * is the boot number it switches on with. On standard input: {@code estop on|off},
+ * {@code reboot} (switches on again with the next boot number: motors at zero, counts from 0),
+ * {@code status} (one line: motors, watchdog, armed, boot, pose, drops), {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
  * are at zero by its watchdog meanwhile.
  */
 public final class BoardEmulator {
     /** The firmware version it reports. */
-    public static final String FIRMWARE = "concord-board-emulator 1";
+    public static final String FIRMWARE = "concord-board-emulator 2";
 
     private final SerialPort[] port = new SerialPort[1];
     private final String path;
@@ -51,6 +53,8 @@ public final class BoardEmulator {
     private final long startNs = System.nanoTime();
     private final ConcurrentLinkedQueue<String> commands = new ConcurrentLinkedQueue<>();
     private final PrintStream out;
+    private final double clockRate;
+    private long boot;
 
     /** Fault probabilities on the board's frames. */
     record Faults(double drop, double corrupt, double duplicate, double reorder, double garbage, long delayMs, SplittableRandom random) {
@@ -60,8 +64,11 @@ public final class BoardEmulator {
     private final ArrayDeque<byte[]> held = new ArrayDeque<>();
     private byte[] reorderHeld;
 
-    BoardEmulator(String path, HospitalMap map, int atNode, long seed, byte[] key, Faults faults, PrintStream out) {
+    BoardEmulator(String path, HospitalMap map, int atNode, long seed, byte[] key, Faults faults, PrintStream out, double clockRate,
+                  long boot) {
         this.path = path;
+        this.clockRate = clockRate;
+        this.boot = boot;
         this.faults = faults;
         this.out = out;
         this.world = HospitalWorld.builder(map).seed(seed).doors(false).build();
@@ -69,8 +76,9 @@ public final class BoardEmulator {
         this.board = new Board(chair, new FrameCodec(key), FIRMWARE, this::emit);
     }
 
+    /** The board's clock: real time, times the clock's rate. */
     private long nowMs() {
-        return (System.nanoTime() - startNs) / 1_000_000;
+        return (long) ((System.nanoTime() - startNs) / 1e6 * clockRate);
     }
 
     /** Runs until {@code quit} on standard input. */
@@ -101,7 +109,7 @@ public final class BoardEmulator {
                     sleep(50);
                 } else if (!switchedOn) {
                     switchedOn = true;
-                    board.switchOn(nowMs());
+                    board.switchOn(boot, nowMs());
                 }
             } else {
                 // Polled every 0.2 ms, as a board's timer interrupt would: a read's timeout on a pty is
@@ -147,16 +155,23 @@ public final class BoardEmulator {
         switch (cmd) {
             case "estop on" -> board.estop(true, nowMs());
             case "estop off" -> board.estop(false, nowMs());
+            case "reboot" -> {
+                boot++;
+                board.switchOn(boot, nowMs());
+                out.println("board: rebooted, boot " + boot);
+            }
             case "status" -> {
                 int[] m = board.motors();
                 var pose = chair.truePose();
-                out.printf(Locale.ROOT, "status motors=%d,%d tripped=%b armed=%b x=%.3f y=%.3f moved=%.3f accepted=%d drops=%s%n", m[0], m[1],
-                        board.tripped(), board.armed(), pose.x(), pose.y(), chair.distanceTravelled(), board.accepted(), board.drops());
+                out.printf(Locale.ROOT, "status motors=%d,%d tripped=%b armed=%b reason=%s boot=%d x=%.3f y=%.3f moved=%.3f accepted=%d"
+                                + " drops=%s%n", m[0], m[1], board.tripped(), board.armed(),
+                        io.concord.serial.BoardProtocol.disarmedBy(board.disarmedBy()).replace(' ', '-'), board.boot(), pose.x(), pose.y(),
+                        chair.distanceTravelled(), board.accepted(), board.drops());
             }
             case "quit" -> {
                 return false;
             }
-            default -> out.println("board: commands are estop on, estop off, status, quit; not '" + cmd + "'");
+            default -> out.println("board: commands are estop on, estop off, reboot, status, quit; not '" + cmd + "'");
         }
         out.flush();
         return true;
@@ -233,6 +248,8 @@ public final class BoardEmulator {
         double reorder = 0;
         double garbage = 0;
         long delay = 0;
+        double clockRate = 1;
+        long boot = 1;
         HospitalMap map = HospitalMap.defaultHospital();
         try {
             for (int i = 0; i < args.length; i++) {
@@ -250,6 +267,8 @@ public final class BoardEmulator {
                     case "--reorder" -> reorder = Double.parseDouble(need(a, v));
                     case "--garbage" -> garbage = Double.parseDouble(need(a, v));
                     case "--delay-ms" -> delay = Long.parseLong(need(a, v));
+                    case "--clock-rate" -> clockRate = Double.parseDouble(need(a, v));
+                    case "--boot" -> boot = Long.parseLong(need(a, v));
                     default -> throw new IllegalArgumentException("unknown option " + a);
                 }
                 i++;
@@ -263,12 +282,12 @@ public final class BoardEmulator {
         } catch (IllegalArgumentException e) {
             System.err.println("board emulator: " + e.getMessage());
             System.err.println("usage: BoardEmulator --port PATH [--at NODE] [--seed N] [--key HEX] [--map FILE]"
-                    + " [--drop P] [--corrupt P] [--duplicate P] [--reorder P] [--garbage P] [--delay-ms N]");
+                    + " [--drop P] [--corrupt P] [--duplicate P] [--reorder P] [--garbage P] [--delay-ms N] [--clock-rate R] [--boot N]");
             System.exit(2);
             return;
         }
         new BoardEmulator(port, map, at, seed, key, new Faults(drop, corrupt, dup, reorder, garbage, delay, new SplittableRandom(seed)),
-                System.out).run();
+                System.out, clockRate, boot).run();
         System.exit(0);
     }
 

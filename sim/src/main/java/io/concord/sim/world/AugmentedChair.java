@@ -44,6 +44,13 @@ public final class AugmentedChair implements ChairDriver {
                     listener.onOnline(online);
                 }
             }
+
+            @Override
+            public void onEvent(io.concord.agents.chair.ChairEvent event) {
+                if (listener != null) {
+                    listener.onEvent(event);
+                }
+            }
         });
     }
 
@@ -76,6 +83,11 @@ public final class AugmentedChair implements ChairDriver {
     @Override
     public void stop() {
         real.stop();
+    }
+
+    @Override
+    public boolean reportsArming() {
+        return real.reportsArming();
     }
 
     @Override

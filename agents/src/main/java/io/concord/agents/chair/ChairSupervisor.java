@@ -1,0 +1,439 @@
+package io.concord.agents.chair;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.util.EnumSet;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+
+/**
+ * The safety supervisor between the agents and any chair (docs/chair-safety.md): a
+ * {@link ChairDriver} around another one that owns the arming state machine and decides what the
+ * agents may command in each state. The agents command it as they would the chair; it passes
+ * motion on only while {@link State#ARMED}, and sends neutral otherwise.
+ *
+ * <pre>
+ *            resume()                 2 readings, board armed
+ *   HELD ───────────────► ARMING ───────────────────────────► ARMED
+ *    ▲  ▲                   │                                   │
+ *    │  └───────────────────┴── e-stop, trip, reboot, refusal ──┘
+ *    │                                                          │
+ *    └─── link up ─── OFFLINE ◄────────── link down ────────────┘
+ * </pre>
+ *
+ * <p>An e-stop, a watchdog trip, a board reboot, a refusal (NAK) or a link that went down moves it
+ * to {@link State#HELD} with the cause ({@link #hold()}), logged once and counted
+ * ({@link #counts()}), and told to the observer (the control agent, which pauses its task and
+ * says why). Nothing the chair reports ends a hold: only {@link #resume} does, a decision of an
+ * agent or an operator, and only while the link is up and the e-stop released. Resuming sends
+ * neutral and waits until the board says it is armed in two readings (a chair without an arming
+ * board, the simulated one, is armed at once); a refused resume says why.
+ *
+ * <p>Confined to the loop of the runtime that drives the chair, as every driver is. The
+ * {@link Defence}s are there for tests: each hazard's test switches its defence off and watches
+ * the hazard happen ({@link #withDefences}); production code uses {@link #ChairSupervisor(ChairDriver)}.
+ */
+public final class ChairSupervisor implements ChairDriver {
+    private static final Logger LOG = LoggerFactory.getLogger(ChairSupervisor.class);
+
+    /** Where the supervisor stands. */
+    public enum State {
+        /** The link to the chair is down. */
+        OFFLINE,
+        /** Motion is held: the agents' commands become neutral until {@link #resume}. */
+        HELD,
+        /** A resume was decided: neutral is sent until the board says it is armed. */
+        ARMING,
+        /** The agents' commands reach the motors. */
+        ARMED
+    }
+
+    /** Why motion is held. */
+    public enum Cause {
+        /** Not armed since the driver started or the link came up. */
+        START(0, true),
+        /** The link to the chair went down (it may be up again; the board tripped meanwhile). */
+        LINK(1, true),
+        /** The board's watchdog stopped the motors: the host's commands came too late. */
+        WATCHDOG(2, true),
+        /** The board refused a command (a NAK) and said no more. */
+        REFUSED(2, false),
+        /** The e-stop was pressed (and may since have been released). */
+        ESTOP(3, false),
+        /** The board started again: its motors at zero, its counts and odometry from scratch. */
+        REBOOT(4, false);
+
+        private final int rank;
+        private final boolean agentMayResume;
+
+        Cause(int rank, boolean agentMayResume) {
+            this.rank = rank;
+            this.agentMayResume = agentMayResume;
+        }
+
+        /**
+         * True if the control agent may decide alone to resume after it (the chair was not stopped
+         * by a person or by a reboot); false if a person must (an operator's resume).
+         */
+        public boolean agentMayResume() {
+            return agentMayResume;
+        }
+    }
+
+    /**
+     * A hold: its cause and the chair's own words.
+     *
+     * @param cause  why
+     * @param detail what the chair said ("NAK not neutral for frame 812", "boot 8 after boot 7")
+     */
+    public record Hold(Cause cause, String detail) {
+        @Override
+        public String toString() {
+            return switch (cause) {
+                case START -> "not armed yet";
+                case LINK -> "the link to the chair went down";
+                case WATCHDOG -> "the board's watchdog tripped";
+                case REFUSED -> "the board refused a command";
+                case ESTOP -> "the e-stop was pressed";
+                case REBOOT -> "the board restarted";
+            } + (detail == null || detail.isEmpty() ? "" : " (" + detail + ")");
+        }
+    }
+
+    /** Told, on the loop, when motion is held and when it is armed again. */
+    public interface Observer {
+        /** Motion is held (or the hold's cause changed to a graver one). */
+        void onHold(Hold hold);
+
+        /** Motion is armed again, after the resume {@code decidedBy} asked for. */
+        void onArmed(String decidedBy);
+    }
+
+    /** The supervisor's defences, each switched off only by a test that shows its hazard. */
+    public enum Defence {
+        /** An e-stop holds motion until a resume; off, the chair drives on when it is released. */
+        ESTOP_HOLDS,
+        /** A board that says it is not armed (a trip, a reboot, an e-stop unseen) holds motion; off, it is ignored. */
+        ARMED_BIT_HOLDS,
+        /** A refused command holds motion; off, the refused command is sent again and again. */
+        REFUSAL_HOLDS,
+        /** A board's reboot holds motion; off, it is ignored. */
+        REBOOT_HOLDS,
+        /** A link that went down holds motion when it comes back; off, driving goes on at once. */
+        LINK_HOLDS
+    }
+
+    private final ChairDriver chair;
+    private final Set<Defence> defences;
+    private final Map<String, Long> counts = new TreeMap<>();
+    private ChairListener listener;
+    private Observer observer;
+    private State state;
+    private Hold hold = new Hold(Cause.START, null);
+    private boolean estopPressed;
+    private boolean boardArmed;
+    private int armedReadings;
+    private String decidedBy;
+
+    /** Supervises {@code chair} with every defence on. */
+    public ChairSupervisor(ChairDriver chair) {
+        this(chair, EnumSet.allOf(Defence.class));
+    }
+
+    private ChairSupervisor(ChairDriver chair, Set<Defence> defences) {
+        this.chair = chair;
+        this.defences = EnumSet.noneOf(Defence.class);
+        this.defences.addAll(defences);
+        this.state = chair.online() ? State.HELD : State.OFFLINE;
+        this.boardArmed = !chair.reportsArming();
+        chair.setListener(new ChairListener() {
+            @Override
+            public void onReadings(ChairReadings r) {
+                readings(r);
+            }
+
+            @Override
+            public void onOnline(boolean online) {
+                online(online);
+            }
+
+            @Override
+            public void onEvent(ChairEvent e) {
+                event(e);
+            }
+        });
+    }
+
+    /**
+     * A supervisor with only some defences: for the tests that show what each one stands against.
+     * Never use it to drive a chair.
+     */
+    public static ChairSupervisor withDefences(ChairDriver chair, Set<Defence> defences) {
+        return new ChairSupervisor(chair, defences);
+    }
+
+    /** Sets the one observer of holds and resumes (replacing any before); null removes it. */
+    public void setObserver(Observer o) {
+        this.observer = o;
+    }
+
+    /** Where it stands. */
+    public State state() {
+        return state;
+    }
+
+    /** The current hold (while not {@link State#ARMED}; the last one otherwise). */
+    public Hold hold() {
+        return hold;
+    }
+
+    /** True while the agents' commands reach the motors. */
+    public boolean armed() {
+        return state == State.ARMED;
+    }
+
+    /** True while the chair's e-stop is pressed (as its last reading said). */
+    public boolean estopPressed() {
+        return estopPressed;
+    }
+
+    /** The chair it supervises. */
+    public ChairDriver chair() {
+        return chair;
+    }
+
+    /** What it has seen, counted: estop, watchdog, reboot, refused, link-down, hold, resume, ... */
+    public Map<String, Long> counts() {
+        return new TreeMap<>(counts);
+    }
+
+    /**
+     * Why the chair cannot take a task now, or null if it can: offline, the e-stop pressed, or
+     * held for a cause that needs a decision (a just-started or re-arming chair can).
+     */
+    public String whyNotAvailable() {
+        if (state == State.OFFLINE || !chair.online()) {
+            return "is offline (its link is down)";
+        }
+        if (estopPressed) {
+            return "has its e-stop pressed";
+        }
+        if (state == State.HELD && !hold.cause().agentMayResume()) {
+            return "is paused: " + hold + "; it waits for an operator's resume";
+        }
+        if (state != State.ARMED && hold.cause() != Cause.START) {
+            return "cannot drive yet: " + hold + "; it is re-arming";
+        }
+        return null;
+    }
+
+    /**
+     * Decides that motion may resume: neutral goes out, and the agents' commands reach the motors
+     * once the board says it is armed. Null if it is resuming (or armed already), else why not.
+     *
+     * @param who who decided, for the log ("operator at the console", "control-chair1: the link is back")
+     */
+    public String resume(String who) {
+        if (state == State.ARMED || state == State.ARMING) {
+            return null;
+        }
+        if (state == State.OFFLINE || !chair.online()) {
+            return chair.name() + " is offline";
+        }
+        if (estopPressed) {
+            return chair.name() + "'s e-stop is still pressed: release it first";
+        }
+        count("resume");
+        decidedBy = who;
+        LOG.info("{}: resumes after {}: decided by {}", chair.name(), hold, who);
+        state = State.ARMING;
+        armedReadings = 0;
+        chair.stop();
+        if (!chair.reportsArming()) {
+            becomeArmed();
+        }
+        return null;
+    }
+
+    // ---- ChairDriver ----------------------------------------------------------------------------
+
+    @Override
+    public String name() {
+        return chair.name();
+    }
+
+    @Override
+    public ChairLayout layout() {
+        return chair.layout();
+    }
+
+    /** The powers reach the motors while armed; otherwise neutral goes out instead. */
+    @Override
+    public void drive(double leftPercent, double rightPercent) {
+        if (state == State.ARMED) {
+            chair.drive(leftPercent, rightPercent);
+        } else {
+            chair.stop();
+        }
+    }
+
+    @Override
+    public void stop() {
+        chair.stop();
+    }
+
+    @Override
+    public ChairReadings latest() {
+        return chair.latest();
+    }
+
+    @Override
+    public boolean online() {
+        return chair.online();
+    }
+
+    @Override
+    public boolean reportsArming() {
+        return chair.reportsArming();
+    }
+
+    @Override
+    public void setListener(ChairListener l) {
+        this.listener = l;
+    }
+
+    // ---- what the chair says --------------------------------------------------------------------
+
+    private void readings(ChairReadings r) {
+        if (r.emergencyStop() != estopPressed) {
+            estopPressed = r.emergencyStop();
+            if (estopPressed) {
+                count("estop");
+                if (defences.contains(Defence.ESTOP_HOLDS)) {
+                    holdFor(Cause.ESTOP, null);
+                }
+            } else {
+                LOG.info("{}: the e-stop is released; motion stays held until a resume", chair.name());
+            }
+        }
+        if (r.faults().contains(ChairFault.WATCHDOG) && state == State.ARMED && defences.contains(Defence.ARMED_BIT_HOLDS)) {
+            count("watchdog");
+            holdFor(Cause.WATCHDOG, "the board reports its watchdog fault");
+        }
+        if (state == State.ARMING) {
+            armedReadings = boardArmed && !estopPressed ? armedReadings + 1 : 0;
+            // Two readings: the first may have left the board before it took the neutral command.
+            if (armedReadings >= 2) {
+                becomeArmed();
+            }
+        }
+        if (state == State.ARMED && estopPressed && !defences.contains(Defence.ESTOP_HOLDS)) {
+            chair.stop();
+        }
+        if (listener != null) {
+            listener.onReadings(r);
+        }
+    }
+
+    private void online(boolean up) {
+        if (!up) {
+            count("link-down");
+            state = State.OFFLINE;
+            hold = new Hold(Cause.LINK, "no word from the chair");
+            LOG.warn("{}: holds motion: {}", chair.name(), hold);
+            if (observer != null) {
+                observer.onHold(hold);
+            }
+        } else {
+            boardArmed = !chair.reportsArming();
+            if (defences.contains(Defence.LINK_HOLDS) || hold.cause() != Cause.LINK) {
+                state = State.HELD;
+            } else {
+                state = State.ARMED;
+            }
+        }
+        if (listener != null) {
+            listener.onOnline(up);
+        }
+    }
+
+    private void event(ChairEvent e) {
+        switch (e.kind()) {
+            case REFUSED -> {
+                count("refused");
+                if (state == State.ARMED && defences.contains(Defence.REFUSAL_HOLDS)) {
+                    holdFor(Cause.REFUSED, e.detail());
+                }
+            }
+            case DISARMED -> {
+                boardArmed = false;
+                if (defences.contains(Defence.ARMED_BIT_HOLDS) && state != State.OFFLINE) {
+                    Cause c = switch (e.detail()) {
+                        case "watchdog" -> Cause.WATCHDOG;
+                        case "e-stop" -> Cause.ESTOP;
+                        case "switch-on" -> Cause.REBOOT;
+                        default -> Cause.LINK; // a new host session
+                    };
+                    if (state == State.ARMED || state == State.ARMING
+                            || state == State.HELD && hold.cause() == Cause.REFUSED && c.rank >= Cause.REFUSED.rank) {
+                        // A refusal said nothing of why; the board's reason, when it comes, replaces it.
+                        if (c == Cause.WATCHDOG) {
+                            count("watchdog");
+                        }
+                        holdFor(c, "the board says it is not armed: " + e.detail());
+                    }
+                }
+            }
+            case ARMED -> boardArmed = true;
+            case REBOOTED -> {
+                count("reboot");
+                boardArmed = false;
+                if (defences.contains(Defence.REBOOT_HOLDS) && state != State.OFFLINE) {
+                    holdFor(Cause.REBOOT, e.detail());
+                }
+            }
+            case INCOMPATIBLE -> count("incompatible");
+            default -> { }
+        }
+        if (listener != null) {
+            listener.onEvent(e);
+        }
+    }
+
+    /** Holds motion for a cause; a held supervisor takes a graver cause only. */
+    private void holdFor(Cause cause, String detail) {
+        if (state == State.HELD && cause.rank < hold.cause().rank) {
+            return;
+        }
+        boolean news = state != State.HELD || cause != hold.cause();
+        state = State.HELD;
+        chair.stop();
+        if (news) {
+            hold = new Hold(cause, detail);
+            count("hold");
+            LOG.warn("{}: holds motion: {}", chair.name(), hold);
+            if (observer != null) {
+                observer.onHold(hold);
+            }
+        }
+    }
+
+    private void becomeArmed() {
+        state = State.ARMED;
+        LOG.info("{}: armed again (decided by {})", chair.name(), decidedBy);
+        if (observer != null) {
+            observer.onArmed(decidedBy);
+        }
+    }
+
+    private void count(String what) {
+        counts.merge(what, 1L, Long::sum);
+    }
+
+    @Override
+    public String toString() {
+        return "ChairSupervisor[" + chair.name() + " " + state + (state == State.ARMED ? "" : ": " + hold) + "]";
+    }
+}
