@@ -113,6 +113,18 @@ public final class Board {
         }
     }
 
+    /**
+     * Trips the watchdog now, as a host silence would (fault injection for the emulator and
+     * tests: the trip a short host freeze causes, which the host's next frame clears).
+     */
+    public void tripNow(long nowMs) {
+        this.nowMs = nowMs;
+        if (armed) {
+            tripped = true;
+            halt(BoardProtocol.DISARMED_WATCHDOG);
+        }
+    }
+
     /** Time passes: the watchdog, and the STATE frames at the configured rate. */
     public void tick(long nowMs) {
         this.nowMs = nowMs;

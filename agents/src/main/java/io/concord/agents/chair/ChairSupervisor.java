@@ -217,7 +217,7 @@ public final class ChairSupervisor implements ChairDriver {
         if (state == State.OFFLINE || !chair.online()) {
             return "is offline (its link is down)";
         }
-        if (estopPressed) {
+        if (estopPressed && defences.contains(Defence.ESTOP_HOLDS)) {
             return "has its e-stop pressed";
         }
         if (state == State.HELD && !hold.cause().agentMayResume()) {
@@ -369,6 +369,7 @@ public final class ChairSupervisor implements ChairDriver {
             }
             case DISARMED -> {
                 boardArmed = false;
+                armedReadings = 0;
                 if (defences.contains(Defence.ARMED_BIT_HOLDS) && state != State.OFFLINE) {
                     Cause c = switch (e.detail()) {
                         case "watchdog" -> Cause.WATCHDOG;
@@ -376,8 +377,8 @@ public final class ChairSupervisor implements ChairDriver {
                         case "switch-on" -> Cause.REBOOT;
                         default -> Cause.LINK; // a new host session
                     };
-                    if (state == State.ARMED || state == State.ARMING
-                            || state == State.HELD && hold.cause() == Cause.REFUSED && c.rank >= Cause.REFUSED.rank) {
+                    // While arming, the board is not armed yet: that is expected, not a hold.
+                    if (state == State.ARMED || state == State.HELD && hold.cause() == Cause.REFUSED && c.rank >= Cause.REFUSED.rank) {
                         // A refusal said nothing of why; the board's reason, when it comes, replaces it.
                         if (c == Cause.WATCHDOG) {
                             count("watchdog");

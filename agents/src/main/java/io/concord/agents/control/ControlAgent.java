@@ -85,6 +85,7 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
     private final ChairDriver chair;
     /** Counts the link's outages: a grace timer ends only the outage it was set for. */
     private int outages;
+    private long linkGraceMs = LINK_GRACE_MS;
     private final HospitalMap map;
     private final Consumer<String> log;
     private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
@@ -484,12 +485,13 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
             chair.stop();
             int outage = ++outages;
             if (hasWork()) {
-                say("keeps its tasks for " + LINK_GRACE_MS / 1000 + " s while the link is down");
-                addBehaviour(new io.concord.core.agent.WakerBehaviour(this, LINK_GRACE_MS) {
+                say("keeps its tasks for " + linkGraceMs / 1000.0 + " s while the link is down");
+                long grace = linkGraceMs;
+                addBehaviour(new io.concord.core.agent.WakerBehaviour(this, grace) {
                     @Override
                     protected void onWake() {
                         if (outage == outages && !chair.online()) {
-                            failAll(chair.name() + " has been offline for " + LINK_GRACE_MS / 1000 + " s");
+                            failAll(chair.name() + " has been offline for " + grace / 1000.0 + " s");
                         }
                     }
                 });
@@ -585,6 +587,11 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
         send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
                 .setContent(why == null ? Content.of("resuming").with("chair", chair.name()).toString()
                         : Content.of("refuse").with("reason", why).toString()));
+    }
+
+    /** How long the link may stay down before its tasks fail ({@link #LINK_GRACE_MS} unless set). Call on the loop. */
+    public void setLinkGraceMs(long ms) {
+        this.linkGraceMs = ms;
     }
 
     /** The safety supervisor the agent drives through. */

@@ -37,7 +37,10 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  * {@code --clock-rate 0.99} runs the board's clock 1 % slow (a poor crystal); {@code --boot N}
  * is the boot number it switches on with. On standard input: {@code estop on|off},
  * {@code reboot} (switches on again with the next boot number: motors at zero, counts from 0),
- * {@code status} (one line: motors, watchdog, armed, boot, pose, drops), {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
+ * {@code status} (one line: motors, watchdog, armed, boot, pose, drops), {@code trip} (the
+ * watchdog trips as soon as the motors turn, as after a short host freeze; the host's next frame
+ * clears the fault before any STATE shows it), {@code corrupt-rx N} (the next N host frames arrive with a byte flipped),
+ * {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
  * are at zero by its watchdog meanwhile.
  */
 public final class BoardEmulator {
@@ -55,6 +58,10 @@ public final class BoardEmulator {
     private final PrintStream out;
     private final double clockRate;
     private long boot;
+    /** Trips the watchdog as soon as the motors turn (the {@code trip} command). */
+    private boolean tripWhenDriving;
+    /** Host frames still to corrupt on their way in. */
+    private int corruptIn;
 
     /** Fault probabilities on the board's frames. */
     record Faults(double drop, double corrupt, double duplicate, double reorder, double garbage, long delayMs, SplittableRandom random) {
@@ -124,14 +131,41 @@ public final class BoardEmulator {
                     port[0] = null;
                     out.println("board: the port " + path + " is gone; waiting for it");
                 } else if (n > 0) {
+                    corruptIncoming(buf, n);
                     board.onBytes(buf, 0, n, nowMs());
                 }
             }
             while (world.worldTimeNs() + stepNs <= System.nanoTime() - startNs) {
                 world.step();
             }
+            if (tripWhenDriving && (board.motors()[0] != 0 || board.motors()[1] != 0)) {
+                tripWhenDriving = false;
+                board.tripNow(nowMs());
+            }
             board.tick(nowMs());
             flushHeld();
+        }
+    }
+
+    /** Flips a byte of each host frame while {@code corrupt-rx} asks for it (a burst of noise on the line). */
+    private void corruptIncoming(byte[] buf, int n) {
+        boolean inFrame = false;
+        for (int i = 0; i < n && corruptIn > 0; i++) {
+            if (buf[i] == 0) {
+                if (inFrame) {
+                    corruptIn--;
+                }
+                inFrame = false;
+            } else if (!inFrame) {
+                inFrame = true;
+                int j = Math.min(i + 3, n - 1);
+                if (buf[j] != 0) {
+                    buf[j] = (byte) (buf[j] == (byte) 0xFF ? 0x7F : buf[j] ^ 0x55);
+                    if (buf[j] == 0) {
+                        buf[j] = 1;
+                    }
+                }
+            }
         }
     }
 
@@ -155,6 +189,7 @@ public final class BoardEmulator {
         switch (cmd) {
             case "estop on" -> board.estop(true, nowMs());
             case "estop off" -> board.estop(false, nowMs());
+            case "trip" -> tripWhenDriving = true;
             case "reboot" -> {
                 boot++;
                 board.switchOn(boot, nowMs());
@@ -171,7 +206,13 @@ public final class BoardEmulator {
             case "quit" -> {
                 return false;
             }
-            default -> out.println("board: commands are estop on, estop off, reboot, status, quit; not '" + cmd + "'");
+            default -> {
+                if (cmd.startsWith("corrupt-rx ")) {
+                    corruptIn = Integer.parseInt(cmd.substring(11).trim());
+                } else {
+                    out.println("board: commands are estop on, estop off, reboot, trip, corrupt-rx N, status, quit; not '" + cmd + "'");
+                }
+            }
         }
         out.flush();
         return true;
