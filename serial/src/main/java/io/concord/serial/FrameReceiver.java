@@ -33,10 +33,18 @@ public final class FrameReceiver {
 
     /** A receiver that counts its drops on {@code drops} (a board that restarts keeps counting). */
     public FrameReceiver(FrameCodec codec, boolean fromBoard, long maxAgeMs, Consumer<Frame> onFrame, Drops drops) {
+        this(codec, fromBoard, new SequenceCheck(maxAgeMs), onFrame, drops);
+    }
+
+    /**
+     * A receiver with its own sequence and delay check: a test's (a check that tolerates no clock
+     * drift shows what the drift tolerance stands against).
+     */
+    public FrameReceiver(FrameCodec codec, boolean fromBoard, SequenceCheck check, Consumer<Frame> onFrame, Drops drops) {
         this.drops = drops;
         this.codec = codec;
         this.fromBoard = fromBoard;
-        this.check = new SequenceCheck(maxAgeMs);
+        this.check = check;
         this.onFrame = onFrame;
         this.deframer = new Deframer(FrameCodec.MAX_FRAME * 2, this::onStuffed, () -> drops.count("oversized"));
     }
