@@ -833,6 +833,35 @@ public final class BenchMain {
                 SerialBench.percentile(o.cmdToMotorUs(), 50), SerialBench.percentile(o.cmdToMotorUs(), 99), o.cmdToMotorUs().length,
                 SerialBench.percentile(o.sensorToAgentUs(), 50), SerialBench.percentile(o.sensorToAgentUs(), 99), o.sensorToAgentUs().length,
                 SerialBench.percentile(o.watchdogStopMs(), 50), SerialBench.percentile(o.watchdogStopMs(), 99), o.watchdogStopMs().length));
+        io.concord.bench.harness.HeartbeatBench.Outcome hb;
+        try {
+            hb = io.concord.bench.harness.HeartbeatBench.run(full);
+        } catch (IOException | RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IllegalStateException("the heartbeat benchmark failed", e);
+        }
+        System.out.println(io.concord.bench.harness.HeartbeatBench.describe(hb));
+        md.append(String.format(Locale.ROOT, "%n## The heartbeat on a busy host, and the e-stop%n%n"
+                        + "The host's driver behind its safety supervisor, the loop confirming a drive command at every STATE; the "
+                        + "heartbeat from its own thread every 50 ms. Quiet, then beside 4 busy loops (processes that spin) on the %d "
+                        + "cores, %d s each. The board's watchdog trips past 200 ms; the host stops its heartbeat when the loop has "
+                        + "not confirmed a command for 300 ms. Then the e-stop, pressed at the board, to the STOP the host sends "
+                        + "when its supervisor holds motion (one STATE period of 50 ms at most, plus the way).%n%n"
+                        + "| figure | quiet | beside 4 busy loops |%n|---|---|---|%n"
+                        + "| heartbeat gap as sent, 99th percentile | %.1f ms | %.1f ms |%n"
+                        + "| heartbeat gap as sent, largest | %.1f ms | %.1f ms |%n"
+                        + "| host frames taken by the board, gap 99th percentile | %.1f ms | %.1f ms |%n"
+                        + "| host frames taken by the board, largest gap | %.1f ms | %.1f ms |%n"
+                        + "| watchdog trips | %d | %d |%n%n"
+                        + "| e-stop to the host's STOP | median %.1f ms | 99th percentile %.1f ms (%d presses) |%n",
+                Runtime.getRuntime().availableProcessors(), full ? 30 : 6,
+                SerialBench.percentile(hb.hostQuietMs(), 99), SerialBench.percentile(hb.hostLoadedMs(), 99),
+                java.util.Arrays.stream(hb.hostQuietMs()).max().orElse(Double.NaN), java.util.Arrays.stream(hb.hostLoadedMs()).max().orElse(Double.NaN),
+                SerialBench.percentile(hb.boardQuietMs(), 99), SerialBench.percentile(hb.boardLoadedMs(), 99),
+                java.util.Arrays.stream(hb.boardQuietMs()).max().orElse(Double.NaN), java.util.Arrays.stream(hb.boardLoadedMs()).max().orElse(Double.NaN),
+                hb.tripsQuiet(), hb.tripsLoaded(), SerialBench.percentile(hb.estopToStopMs(), 50),
+                SerialBench.percentile(hb.estopToStopMs(), 99), hb.estopToStopMs().length));
         Files.writeString(reportDir.resolve("serial.md"), md.toString());
     }
 
