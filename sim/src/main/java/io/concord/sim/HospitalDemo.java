@@ -80,7 +80,7 @@ public final class HospitalDemo {
 
     /** Settings of a run. */
     record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
-                   double maxSeconds, String serial, boolean augmented, String console) {
+                   double maxSeconds, String serial, boolean augmented, String console, Path pairKey) {
         List<String> childArgs() {
             List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
                     "--chairs", Integer.toString(chairs), "--picture", picture.toAbsolutePath().toString(),
@@ -93,6 +93,9 @@ public final class HospitalDemo {
             }
             if (augmented) {
                 a.add("--augmented");
+            }
+            if (pairKey != null) {
+                a.addAll(List.of("--pair-key", pairKey.toAbsolutePath().toString()));
             }
             if (console != null) {
                 a.addAll(List.of("--console", console));
@@ -112,7 +115,7 @@ public final class HospitalDemo {
         } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
             System.err.println("usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
-                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT [--augmented]] [--console [host:]port]");
+                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port]");
             System.exit(2);
             return;
         }
@@ -142,6 +145,7 @@ public final class HospitalDemo {
         String serial = null;
         boolean augmented = false;
         String console = null;
+        Path pairKey = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--virtual")) {
@@ -166,6 +170,7 @@ public final class HospitalDemo {
                     case "--max-seconds" -> max = Double.parseDouble(v);
                     case "--serial" -> serial = v;
                     case "--console" -> console = v;
+                    case "--pair-key" -> pairKey = Path.of(v);
                     case "--tasks" -> {
                         tasks = new ArrayList<>();
                         for (String t : v.split(",")) {
@@ -190,6 +195,12 @@ public final class HospitalDemo {
         if (augmented && serial == null) {
             throw new IllegalArgumentException("--augmented adds the simulated world to a real chair's readings: it needs --serial PORT");
         }
+        if (pairKey != null && serial == null) {
+            throw new IllegalArgumentException("--pair-key is the key the chair's board is paired with: it needs --serial PORT");
+        }
+        if (pairKey != null) {
+            io.concord.serial.PairingKey.read(pairKey);   // a missing or short key stops the demo here, with why
+        }
         if (serial != null) {
             speed = 1;   // the board (real or emulated) keeps real time
         }
@@ -203,7 +214,7 @@ public final class HospitalDemo {
                 throw new IllegalArgumentException("--console: " + e.getMessage());
             }
         }
-        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console);
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey);
     }
 
     private static void check(HospitalMap map, Options o) {
@@ -350,8 +361,14 @@ public final class HospitalDemo {
 
     private static Process spawn(String role, Options o) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn",
-                Demo.class.getName(), role));
+                "-cp", System.getProperty("java.class.path"), "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn"));
+        // The parent's -D options (concord.home, the idle strategy, a log level) hold in its children too.
+        for (String arg : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+            if (arg.startsWith("-D")) {
+                cmd.add(arg);
+            }
+        }
+        cmd.addAll(List.of(Demo.class.getName(), role));
         cmd.addAll(o.childArgs());
         return new ProcessBuilder(cmd).redirectErrorStream(true).start();
     }
@@ -393,7 +410,8 @@ public final class HospitalDemo {
             // chair1 is on its serial port; the world keeps the doors (and any other chairs).
             rt.execute(() -> {
                 io.concord.agents.chair.ChairDriver c = io.concord.serial.SerialChair.open(rt,
-                        io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90)));
+                        io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))
+                                .withKey(o.pairKey() == null ? null : io.concord.serial.PairingKey.read(o.pairKey())));
                 hospital.addChair(platform, map, o.augmented() ? new io.concord.sim.world.AugmentedChair(c, world) : c, log);
             });
         }

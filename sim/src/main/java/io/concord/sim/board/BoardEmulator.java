@@ -301,6 +301,7 @@ public final class BoardEmulator {
                     case "--at" -> at = Integer.parseInt(need(a, v));
                     case "--seed" -> seed = Long.parseLong(need(a, v));
                     case "--key" -> key = HexFormat.of().parseHex(need(a, v));
+                    case "--pair-key" -> key = io.concord.serial.PairingKey.read(Path.of(need(a, v)));
                     case "--map" -> map = HospitalMap.load(Path.of(need(a, v)));
                     case "--drop" -> drop = Double.parseDouble(need(a, v));
                     case "--corrupt" -> corrupt = Double.parseDouble(need(a, v));
@@ -322,7 +323,7 @@ public final class BoardEmulator {
             }
         } catch (IllegalArgumentException e) {
             System.err.println("board emulator: " + e.getMessage());
-            System.err.println("usage: BoardEmulator --port PATH [--at NODE] [--seed N] [--key HEX] [--map FILE]"
+            System.err.println("usage: BoardEmulator --port PATH [--at NODE] [--seed N] [--key HEX | --pair-key FILE] [--map FILE]"
                     + " [--drop P] [--corrupt P] [--duplicate P] [--reorder P] [--garbage P] [--delay-ms N] [--clock-rate R] [--boot N]");
             System.exit(2);
             return;

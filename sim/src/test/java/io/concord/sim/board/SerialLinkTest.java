@@ -208,4 +208,94 @@ class SerialLinkTest {
             }
         }
     }
+
+    @Test
+    void aBoardPairedWithAnotherKeyIsNeverTakenAndTheSameKeyDrives(@TempDir Path dir) throws Exception {
+        java.nio.file.Path boardKey = dir.resolve("board.key");
+        java.nio.file.Path otherKey = dir.resolve("other.key");
+        java.nio.file.Files.writeString(boardKey, "000102030405060708090a0b0c0d0e0f\n");
+        java.nio.file.Files.writeString(otherKey, "0f0e0d0c0b0a09080706050403020100\n");
+        try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19", "--pair-key", boardKey.toString());
+             Platform platform = Platform.builder().name("host").build()) {
+            AgentRuntime rt = platform.runtime();
+            SerialChair wrong = onLoop(rt, () -> SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair")
+                    .withKey(io.concord.serial.PairingKey.read(otherKey))));
+            Pty.await(() -> wrong.drops().get("mac") > 20, 10_000, "the host to drop the board's frames: " + wrong.drops());
+            assertTrue(!onLoop(rt, wrong::online), "a board paired with another key is never online");
+            board.awaitStatus(st -> st.get("drops").contains("mac="), 10_000, "the board to drop the host's frames");
+            assertEquals("false", board.status().get("armed"));
+            onLoop(rt, () -> {
+                wrong.close();
+                return null;
+            });
+            SerialChair right = onLoop(rt, () -> SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair")
+                    .withKey(io.concord.serial.PairingKey.read(boardKey))));
+            Pty.await(() -> {
+                try {
+                    return onLoop(rt, right::online);
+                } catch (InterruptedException e) {
+                    throw new AssertionError(e);
+                }
+            }, 10_000, "the paired host to be online");
+        }
+    }
+
+    @Test
+    void aPairingKeyTooShortOrMissingIsRefusedWithWhy(@TempDir Path dir) throws Exception {
+        java.nio.file.Path shortKey = dir.resolve("short.key");
+        java.nio.file.Files.writeString(shortKey, "00010203");
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> io.concord.serial.PairingKey.read(shortKey));
+        assertTrue(e.getMessage().contains("holds 4 bytes; it needs 16 or more"), e.getMessage());
+        e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                () -> io.concord.serial.PairingKey.read(dir.resolve("none.key")));
+        assertTrue(e.getMessage().startsWith("cannot read the pairing key"), e.getMessage());
+    }
+
+    /** A board that speaks another version of the protocol: refused, said why, nothing it says taken. */
+    @Test
+    void aBoardOfAnotherProtocolVersionIsRefusedWithAClearMessage(@TempDir Path dir) throws Exception {
+        try (Pty pty = new Pty(dir); Platform platform = Platform.builder().name("host").build()) {
+            SerialPort p = SerialPort.getCommPort(pty.board.toString());
+            p.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+            assertTrue(p.openPort());
+            try {
+                AgentRuntime rt = platform.runtime();
+                List<String> events = java.util.Collections.synchronizedList(new ArrayList<>());
+                SerialChair chair = onLoop(rt, () -> {
+                    SerialChair c = SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair"));
+                    c.setListener(new ChairListener() {
+                        @Override
+                        public void onReadings(ChairReadings r) {
+                            events.add("reading");
+                        }
+
+                        @Override
+                        public void onEvent(io.concord.agents.chair.ChairEvent e) {
+                            events.add(e.kind().toString());
+                        }
+                    });
+                    return c;
+                });
+                FrameCodec codec = new FrameCodec();
+                var layout = io.concord.agents.chair.ChairLayout.standard();
+                byte[] hello = codec.encode(new Frame(Frame.Type.HELLO, 0, 0, 0, BoardProtocol.hello(3, 1, "old board", layout)));
+                p.writeBytes(hello, hello.length);
+                int[] mm = new int[layout.sensors().size()];
+                for (int i = 1; i <= 5; i++) {
+                    byte[] st = codec.encode(new Frame(Frame.Type.STATE, 0, i, i * 50L, BoardProtocol.state(new BoardProtocol.State(1, 0, 0, mm,
+                            false, false, true, BoardProtocol.ARMED, 24_000, java.util.Set.of(), null))));
+                    p.writeBytes(st, st.length);
+                }
+                Pty.await(() -> chair.incompatible() != null && chair.drops().get("incompatible") >= 5, 10_000,
+                        "the host to refuse the board: " + chair.drops());
+                assertTrue(chair.incompatible().contains("the board speaks version 3 of the chair protocol"), chair.incompatible());
+                assertTrue(chair.incompatible().contains("this host speaks version 2"), chair.incompatible());
+                assertTrue(!onLoop(rt, chair::online), "never online");
+                assertEquals(List.of("INCOMPATIBLE"), events);
+            } finally {
+                p.closePort();
+            }
+        }
+    }
 }
