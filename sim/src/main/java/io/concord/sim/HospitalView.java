@@ -134,11 +134,14 @@ public final class HospitalView implements ConsoleView {
 
     @Override
     public List<String> actions() {
-        return List.of("transport");
+        return List.of("transport", "resume");
     }
 
     @Override
     public String act(String action, Map<String, String> p) {
+        if (action.equals("resume")) {
+            return resume(p.getOrDefault("chair", "").trim());
+        }
         int from = integer(p, "from");
         int to = integer(p, "to");
         double priority = number(p, "priority", 0);
@@ -151,6 +154,24 @@ public final class HospitalView implements ConsoleView {
             throw new IllegalArgumentException("priority is 0 to 3 and unload 0 to 3600 s");
         }
         return desk.ask(from, to, priority, unload);
+    }
+
+    /** An operator's decision that a held chair may drive again (its supervisor re-arms it; docs/chair-safety.md). */
+    private String resume(String chair) {
+        ControlAgent ctl = hospital.control(chair);
+        if (ctl == null) {
+            throw new IllegalArgumentException("no chair named '" + chair + "'; chairs: "
+                    + String.join(", ", hospital.controls().stream().map(c -> c.supervisor().name()).toList()));
+        }
+        var f = ctl.resume("an operator at the console");
+        if (!f.isDone()) {
+            return "asked " + chair + " to resume";
+        }
+        String why = f.join();
+        if (why != null) {
+            throw new IllegalArgumentException(chair + " cannot resume: " + why);
+        }
+        return chair + " resumes: it re-arms, then drives on";
     }
 
     private static int integer(Map<String, String> p, String k) {
@@ -249,11 +270,30 @@ public final class HospitalView implements ConsoleView {
             }
             chairs.add(json.createArrayNode().add(c.name()).add(String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y()))
                     .add(String.format(Locale.ROOT, "%.2f m/s", c.forwardSpeed()))
-                    .add(current == null ? "idle" : current.id() + " " + current.state().name().toLowerCase(Locale.ROOT)));
+                    .add(current == null ? "idle" : current.id() + " " + current.state().name().toLowerCase(Locale.ROOT))
+                    .add(ctl == null ? "" : safety(ctl)));
+        }
+        // Chairs that are not in this world: a real or emulated chair on its serial port.
+        for (ControlAgent ctl : hospital.controls()) {
+            String name = ctl.supervisor().name();
+            if (world.chairs().stream().anyMatch(c -> c.name().equals(name))) {
+                continue;
+            }
+            Pose p = ctl.pose();
+            String task = "idle";
+            for (TaskView t : ctl.tasks()) {
+                if (t.state().ordinal() >= TaskView.State.QUEUED.ordinal() && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
+                    task = t.id() + " " + t.state().name().toLowerCase(Locale.ROOT);
+                    break;
+                }
+            }
+            chairs.add(json.createArrayNode().add(name + " (serial)")
+                    .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add("")
+                    .add(task).add(safety(ctl)));
         }
         ArrayNode tables = o.putArray("tables");
         table(tables, "chairs", "Chairs at " + String.format(Locale.ROOT, "t = %.0f s", world.worldTimeNs() / 1e9),
-                List.of("chair", "pose", "speed", "task"), chairs);
+                List.of("chair", "pose", "speed", "task", "safety"), chairs);
         ArrayNode asked = json.createArrayNode();
         for (FrontDesk.Asked a : List.copyOf(desk.asked)) {
             asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
@@ -267,7 +307,22 @@ public final class HospitalView implements ConsoleView {
         fields.addObject().put("name", "to").put("label", "to node").put("value", "9");
         fields.addObject().put("name", "priority").put("label", "priority (0, 1.5, 3)").put("value", "3");
         fields.addObject().put("name", "unload").put("label", "load/unload s").put("value", "30");
+        ObjectNode r = forms.addObject().put("title", "Resume a held chair (after an e-stop, a reboot, a refusal)").put("action", "resume")
+                .put("button", "Resume");
+        r.putArray("fields").addObject().put("name", "chair").put("label", "chair").put("value",
+                hospital.controls().isEmpty() ? "chair1" : hospital.controls().get(0).supervisor().name());
         return o.toString();
+    }
+
+    /** What the chair's safety supervisor says: armed, or held and why, with who may resume it. */
+    private static String safety(ControlAgent ctl) {
+        var s = ctl.supervisor();
+        return switch (s.state()) {
+            case ARMED -> "armed";
+            case ARMING -> "re-arming";
+            case OFFLINE -> "offline";
+            case HELD -> "held: " + s.hold() + (s.hold().cause().agentMayResume() ? "" : "; needs Resume");
+        };
     }
 
     private static double toSegment(Pose p, io.concord.agents.map.Point a, io.concord.agents.map.Point b) {

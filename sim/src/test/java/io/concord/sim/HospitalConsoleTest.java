@@ -64,4 +64,68 @@ class HospitalConsoleTest {
             }
         }
     }
+
+    /**
+     * An e-stop pressed and released mid-transport: the console shows the chair held and that it
+     * needs a resume; the chair stands until the operator presses Resume on the page.
+     */
+    @Test
+    void aChairHeldByItsEstopDrivesOnOnlyWhenTheOperatorResumesItInTheBrowser() throws Exception {
+        HospitalMap map = HospitalMap.defaultHospital();
+        try (Platform platform = Platform.builder().name("hospital-ui2").ports(new PortRange(7621, 80, 10)).build()) {
+            HospitalWorld world = HospitalWorld.builder(map).seed(2010).build();
+            io.concord.sim.world.SimChair simChair = world.addChair("chair1", ChairConfig.standard(), world.poseAt(19, 90));
+            Hospital hospital = Hospital.start(platform, world, line -> { });
+            world.attach(platform.runtime(), 20);
+            MedicalAgent medical = new MedicalAgent(line -> { });
+            platform.startAgent("medical", medical);
+            HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
+            platform.startAgent("desk", desk);
+            try (Console console = Console.start(platform, Console.Config.port(0));
+                 Browser browser = new Browser()) {
+                console.addView(new HospitalView(world, hospital, desk));
+                while (!onLoop(platform, hospital::ready)) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+                medical.transport(19, 3, 0, 1);
+                while (onLoop(platform, simChair::distanceTravelled) < 0.5) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+                onLoop(platform, () -> {
+                    simChair.emergencyStop(true);
+                    return null;
+                });
+                while (onLoop(platform, () -> hospital.control("chair1").supervisor().state()) != io.concord.agents.chair.ChairSupervisor.State.HELD) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+                onLoop(platform, () -> {
+                    simChair.emergencyStop(false);
+                    return null;
+                });
+                browser.driver.get(console.uri());
+                browser.until(d -> d.findElement(By.cssSelector("nav button[data-view='hospital']"))).click();
+                browser.until(d -> d.findElement(By.id("chairs")).getText().contains("the e-stop was pressed; needs Resume"));
+                double held = onLoop(platform, simChair::distanceTravelled);
+                // Two seconds of hospital time at 20 times real time: the chair stands.
+                double t0 = onLoop(platform, () -> world.worldTimeNs() / 1e9);
+                while (onLoop(platform, () -> world.worldTimeNs() / 1e9) < t0 + 2) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+                assertTrue(onLoop(platform, simChair::distanceTravelled) - held < 0.05, "released, not resumed: the chair stands");
+                browser.screenshot("hospital-held");
+                browser.until(d -> d.findElement(By.id("action-resume"))).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith("chair1 resumes"));
+                browser.until(d -> d.findElement(By.id("chairs")).getText().contains("armed"));
+                while (onLoop(platform, simChair::distanceTravelled) < held + 0.3) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+            }
+        }
+    }
+
+    private static <T> T onLoop(Platform platform, java.util.function.Supplier<T> s) throws Exception {
+        CompletableFuture<T> f = new CompletableFuture<>();
+        platform.runtime().execute(() -> f.complete(s.get()));
+        return f.get(10, TimeUnit.SECONDS);
+    }
 }

@@ -34,6 +34,6 @@ final class Task {
     }
 
     TaskView view() {
-        return new TaskView(id, from, to, priority, unloadS, state, costS, pathS, reason);
+        return new TaskView(id, from, to, priority, unloadS, state, costS, pathS, paused != null ? "paused: " + paused : reason);
     }
 }

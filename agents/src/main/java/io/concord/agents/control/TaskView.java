@@ -11,7 +11,7 @@ package io.concord.agents.control;
  * @param state    where it stands
  * @param costS    the proposal's Cost (seconds until done, counting the queue)
  * @param pathS    the proposal's Path (seconds from pick-up to drop-off)
- * @param reason   why it was refused or failed, or null
+ * @param reason   why it was refused or failed, or why it is paused ("paused: the e-stop was pressed; ..."), or null
  */
 public record TaskView(String id, int from, int to, double priority, double unloadS, State state, double costS,
                        double pathS, String reason) {
