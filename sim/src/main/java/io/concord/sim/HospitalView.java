@@ -317,12 +317,20 @@ public final class HospitalView implements ConsoleView {
     /** What the chair's safety supervisor says: armed, or held and why, with who may resume it. */
     private static String safety(ControlAgent ctl) {
         var s = ctl.supervisor();
-        return switch (s.state()) {
+        String state = switch (s.state()) {
             case ARMED -> "armed";
             case ARMING -> "re-arming";
             case OFFLINE -> "offline";
             case HELD -> "held: " + s.hold() + (s.hold().cause().agentMayResume() ? "" : "; needs Resume");
         };
+        // What it has seen since it started: e-stops, trips, reboots, refusals, links lost.
+        StringBuilder seen = new StringBuilder();
+        s.counts().forEach((k, v) -> {
+            if (!k.equals("hold") && !k.equals("resume")) {
+                seen.append(seen.length() == 0 ? "" : ", ").append(k).append(' ').append(v);
+            }
+        });
+        return seen.length() == 0 ? state : state + " (" + seen + ")";
     }
 
     private static double toSegment(Pose p, io.concord.agents.map.Point a, io.concord.agents.map.Point b) {

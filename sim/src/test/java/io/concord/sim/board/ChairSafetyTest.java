@@ -247,8 +247,17 @@ class ChairSafetyTest {
     void aWatchdogTripClearedBeforeAnyStateShowedItIsNoticedByTheArmedBitAndTheTaskGoesOn(@TempDir Path dir) throws Exception {
         try (Ward w = new Ward(dir, ALL, medicalSettings())) {
             w.transportUnderWay();
-            w.board.command("trip");
-            w.awaitSaid("control-chair1: pauses T1: the board's watchdog tripped", 10_000);
+            // A trip that the host's next frame clears is seen only if that frame drives: one it
+            // sends as neutral (the chair stopping at that moment) re-arms the board, harmless and
+            // unseen (docs/chair-safety.md, "What is not covered"). So it trips until one is taken mid-drive.
+            for (int i = 0; i < 5 && !w.said("control-chair1: pauses T1: the board's watchdog tripped"); i++) {
+                w.board.command("trip");
+                long end = System.nanoTime() + 3_000_000_000L;
+                while (System.nanoTime() < end && !w.said("control-chair1: pauses T1: the board's watchdog tripped")) {
+                    Thread.sleep(20);   // polling the log
+                }
+            }
+            w.awaitSaid("control-chair1: pauses T1: the board's watchdog tripped", 1_000);
             w.awaitSaid("control-chair1: resumes T1", 10_000);
             double at = moved(w.board.status());
             w.board.awaitStatus(st -> moved(st) > at + 0.2, 30_000, "the chair to drive on");

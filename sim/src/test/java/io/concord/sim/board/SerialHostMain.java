@@ -3,7 +3,7 @@ package io.concord.sim.board;
 import io.concord.layers.platform.Platform;
 import io.concord.serial.SerialChair;
 
-/** A host that opens the chair's port and drives it forward at 20 % until it is killed. */
+/** A host that opens the chair's port and drives it forward at 20 %, confirming at every reading, until it is killed. */
 public final class SerialHostMain {
     private SerialHostMain() {
     }
@@ -14,9 +14,15 @@ public final class SerialHostMain {
         rt.execute(() -> {
             SerialChair chair = SerialChair.open(rt, SerialChair.Settings.of(args[0], "chair"));
             chair.drive(0, 0);
-            rt.schedule(rt.nowNs() + 300_000_000L, () -> {
-                chair.drive(20, 20);
-                System.out.println("driving");
+            long start = rt.nowNs();
+            // As an agent does: a command at every reading (the driver's heartbeat repeats only a
+            // command confirmed within its deadline); neutral first, then 20 % after 300 ms.
+            chair.setListener(r -> {
+                if (rt.nowNs() - start < 300_000_000L) {
+                    chair.drive(0, 0);
+                } else {
+                    chair.drive(20, 20);
+                }
             });
         });
         Thread.currentThread().join();
