@@ -122,6 +122,9 @@ public final class FrameCodec {
             throw new FrameException("corrupt", String.format("CRC-32C %08X, the frame says %08X", crc.getValue(), want));
         }
         int flags = raw[1] & 0xFF;
+        if ((flags & ~(Frame.MAC | Frame.SYNC)) != 0) {
+            throw new FrameException("malformed", String.format("flags %02X: only bits 0 (MAC) and 1 (SYNC) are defined", flags));
+        }
         boolean hasMac = (flags & Frame.MAC) != 0;
         if (hasMac != paired()) {
             throw new FrameException("mac", hasMac ? "the frame carries a MAC and this end has no pairing key"

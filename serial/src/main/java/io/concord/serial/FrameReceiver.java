@@ -83,6 +83,10 @@ public final class FrameReceiver {
             drops.count("wrong-direction");
             return;
         }
+        if (fromBoard && (f.flags() & Frame.SYNC) != 0) {
+            drops.count("malformed");
+            return;
+        }
         if (fromBoard) {
             long b = f.type() == Frame.Type.HELLO && BoardProtocol.version(f) != BoardProtocol.VERSION ? -1 : BoardProtocol.boot(f);
             if (b >= 0 && b != boot) {

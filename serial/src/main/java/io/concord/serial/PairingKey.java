@@ -8,8 +8,8 @@ import java.util.HexFormat;
 
 /**
  * The key a host and a chair's board are paired with (docs/chair-protocol.md, the MAC): 16 bytes
- * or more, read from a file that holds them as hexadecimal text (32 hex digits or more, spaces and
- * line ends ignored) or as raw bytes.
+ * or more, read from a file. A file of hexadecimal digits alone (spaces and line ends ignored) is
+ * read as hex, so it needs 32 digits or more; any other file is taken as the raw bytes of the key.
  */
 public final class PairingKey {
     /** The shortest key taken. */
@@ -27,8 +27,11 @@ public final class PairingKey {
         byte[] raw;
         try {
             raw = Files.readAllBytes(file);
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new IllegalArgumentException("there is no pairing key file " + file
+                    + " (a file of 32 hex digits or more, or of 16 raw bytes or more; the board must hold the same key)");
         } catch (IOException e) {
-            throw new IllegalArgumentException("cannot read the pairing key " + file + ": " + e.getMessage()
+            throw new IllegalArgumentException("cannot read the pairing key " + file + ": " + e
                     + " (a file of 32 hex digits or more, or of 16 raw bytes or more; the board must hold the same key)");
         }
         String text = new String(raw, StandardCharsets.US_ASCII).replaceAll("\\s+", "");

@@ -102,6 +102,9 @@ public final class SerialChair implements ChairDriver {
     private volatile long lastFrameNanos;
     /** True once a frame has come since the port was opened. */
     private volatile boolean heard;
+    /** MAC drops counted when the port was opened; whether a mismatch was logged since. */
+    private volatile long macAtOpen;
+    private volatile boolean macLogged;
     private volatile ChairLayout layout;
     private volatile String firmware;
     private volatile String incompatible;
@@ -252,6 +255,28 @@ public final class SerialChair implements ChairDriver {
         return incompatible;
     }
 
+    @Override
+    public String whyOffline() {
+        if (incompatible != null) {
+            return incompatible;
+        }
+        if (online) {
+            return null;
+        }
+        if (port == null) {
+            return "the port " + settings.port() + " is not there, or cannot be opened";
+        }
+        if (!heard && receiver.drops().get("mac") > macAtOpen) {
+            return macMismatch();
+        }
+        return heard ? null : "the board on " + settings.port() + " says nothing";
+    }
+
+    private String macMismatch() {
+        return "every frame from the board fails its MAC check: the board is paired with another key, or only one end has a"
+                + " key; give both ends the same pairing key (--pair-key)";
+    }
+
     /** The board's boot number, from its HELLO or STATE, or -1 before the first. */
     public long boot() {
         return receiver.boot();
@@ -277,12 +302,17 @@ public final class SerialChair implements ChairDriver {
 
     /** Stops the chair, closes the port and ends the reader and the heartbeat. */
     public void close() {
-        runtime.execute(() -> {
+        Runnable r = () -> {
             stop();
             closed = true;
             LockSupport.unpark(heartbeat);
             closePort();
-        });
+        };
+        if (runtime.inLoop()) {
+            r.run();
+        } else {
+            runtime.execute(r);
+        }
     }
 
     // ---- sending (the loop, and the heartbeat thread) ------------------------------------------------
@@ -333,6 +363,10 @@ public final class SerialChair implements ChairDriver {
     }
 
     private void watchSilence(long now) {
+        if (!heard && !macLogged && port != null && receiver.drops().get("mac") >= macAtOpen + 10) {
+            macLogged = true;
+            LOG.error("{}: {} ({} frames dropped)", settings.name(), macMismatch(), receiver.drops().get("mac") - macAtOpen);
+        }
         if (heard && port != null && now - lastFrameNanos > settings.silentMs() * 1_000_000) {
             long silent = (now - lastFrameNanos) / 1_000_000;
             lost("the board has been silent for " + silent + " ms");
@@ -430,12 +464,14 @@ public final class SerialChair implements ChairDriver {
         receiver.reset();
         lastFrameNanos = System.nanoTime();
         heard = false;
+        macAtOpen = receiver.drops().get("mac");
+        macLogged = false;
         synchronized (sendLock) {
             sync = true;
             stopSent = false;
             port = p;
         }
-        LOG.info("{}: opened {}", settings.name(), settings.port());
+        LOG.info("{}: opened {}{}", settings.name(), settings.port(), codec.paired() ? " (paired: every frame carries a MAC)" : "");
         return true;
     }
 

@@ -247,7 +247,9 @@ public final class HospitalDemo {
             OUT.println("The traffic agent grants each chair its whole route before it drives: they never meet.");
         }
         if (o.serial() != null) {
-            OUT.println("chair1 is driven over the serial port " + o.serial() + " (a real chair's board, or the emulator), in real time.");
+            OUT.println("chair1 is driven over the serial port " + o.serial() + " (a real chair's board, or the emulator), in real time"
+                    + (o.pairKey() == null ? ", unpaired (no MAC: --pair-key FILE pairs it)." : ", paired with the key in " + o.pairKey()
+                    + " (every frame carries a MAC)."));
         }
     }
 
@@ -328,6 +330,22 @@ public final class HospitalDemo {
                 + "(the Medical agent). No address is configured: they find each other by port binding on 127.0.0.1 "
                 + "(7001 and up) and elect a container. The world runs %.0f times faster than real time.%n%n", o.speed());
         Process ward = spawn("ward", o);
+        List<Process> children = new java.util.concurrent.CopyOnWriteArrayList<>(List.of(ward));
+        // Stopped (Ctrl-C, kill), the launcher stops its JVMs first: a ward left running would keep driving a real chair.
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            for (Process p : children) {
+                p.destroy();
+            }
+            for (Process p : children) {
+                try {
+                    if (!p.waitFor(20, TimeUnit.SECONDS)) {
+                        p.destroyForcibly();
+                    }
+                } catch (InterruptedException e) {
+                    p.destroyForcibly();
+                }
+            }
+        }, "demo-stop-children"));
         CountDownLatch wardReady = new CountDownLatch(1);
         pump(ward, "ward ", line -> {
             seen.accept("[ward ] " + line);
@@ -341,6 +359,7 @@ public final class HospitalDemo {
             return false;
         }
         Process staff = spawn("staff", o);
+        children.add(0, staff);
         pump(staff, "staff", line -> seen.accept("[staff] " + line));
         boolean ended = staff.waitFor((long) (o.maxSeconds() / o.speed()) + 120, TimeUnit.SECONDS);
         int code = ended ? staff.exitValue() : -1;
@@ -406,12 +425,14 @@ public final class HospitalDemo {
             c.addView(new HospitalView(world, hospital, desk));
             OUT.println("console: " + c.uri() + "  (the hospital, the platform, the safety counters and the sniffer)");
         }
+        java.util.concurrent.atomic.AtomicReference<io.concord.serial.SerialChair> serialChair = new java.util.concurrent.atomic.AtomicReference<>();
         if (o.serial() != null) {
             // chair1 is on its serial port; the world keeps the doors (and any other chairs).
             rt.execute(() -> {
-                io.concord.agents.chair.ChairDriver c = io.concord.serial.SerialChair.open(rt,
+                io.concord.serial.SerialChair c = io.concord.serial.SerialChair.open(rt,
                         io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))
                                 .withKey(o.pairKey() == null ? null : io.concord.serial.PairingKey.read(o.pairKey())));
+                serialChair.set(c);
                 hospital.addChair(platform, map, o.augmented() ? new io.concord.sim.world.AugmentedChair(c, world) : c, log);
             });
         }
@@ -420,6 +441,10 @@ public final class HospitalDemo {
             CountDownLatch drawn = new CountDownLatch(1);
             rt.execute(() -> {
                 try {
+                    io.concord.serial.SerialChair s = serialChair.get();
+                    if (s != null) {
+                        s.close();   // a STOP now, rather than the board's watchdog 200 ms after the last frame
+                    }
                     writePicture(world, o);
                     OUT.printf(Locale.ROOT, "%.1f s of hospital; %d collisions.%n", world.worldTimeNs() / 1e9, world.collisionCount());
                 } finally {

@@ -45,6 +45,14 @@ public interface ChairDriver {
         return false;
     }
 
+    /**
+     * Why the link is down, in words a user can act on ("every frame from the board fails its MAC:
+     * ..."), or null when it is up or the driver cannot tell.
+     */
+    default String whyOffline() {
+        return null;
+    }
+
     /** Sets the one listener told of every report (replacing any before); null removes it. */
     void setListener(ChairListener listener);
 }

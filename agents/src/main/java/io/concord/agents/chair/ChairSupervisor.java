@@ -215,7 +215,8 @@ public final class ChairSupervisor implements ChairDriver {
      */
     public String whyNotAvailable() {
         if (state == State.OFFLINE || !chair.online()) {
-            return "is offline (its link is down)";
+            String why = chair.whyOffline();
+            return "is offline (its link is down" + (why == null ? "" : ": " + why) + ")";
         }
         if (estopPressed && defences.contains(Defence.ESTOP_HOLDS)) {
             return "has its e-stop pressed";
@@ -297,6 +298,11 @@ public final class ChairSupervisor implements ChairDriver {
     @Override
     public boolean reportsArming() {
         return chair.reportsArming();
+    }
+
+    @Override
+    public String whyOffline() {
+        return chair.whyOffline();
     }
 
     @Override

@@ -86,6 +86,7 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
     /** Counts the link's outages: a grace timer ends only the outage it was set for. */
     private int outages;
     private long linkGraceMs = LINK_GRACE_MS;
+    private boolean estopSeen;
     private final HospitalMap map;
     private final Consumer<String> log;
     private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
@@ -433,6 +434,11 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
         Pose pose = localiser.update(r);
         // Loading, unloading and stalls are timed on the chair's clock.
         long now = r.timeNs() / 1_000_000;
+        if (estopSeen && !r.emergencyStop() && supervisor.state() == ChairSupervisor.State.HELD
+                && !supervisor.hold().cause().agentMayResume() && hasWork()) {
+            say("the e-stop of " + chair.name() + " is released: the chair stays held until an operator resumes it");
+        }
+        estopSeen = r.emergencyStop();
         decideToResume();
         if (active == null && asideTo < 0) {
             startNext(now);

@@ -60,6 +60,8 @@ public final class BoardEmulator {
     private long boot;
     /** Trips the watchdog as soon as the motors turn (the {@code trip} command). */
     private boolean tripWhenDriving;
+    private final boolean paired;
+    private boolean macSaid;
     /** Host frames still to corrupt on their way in. */
     private int corruptIn;
 
@@ -76,6 +78,7 @@ public final class BoardEmulator {
         this.path = path;
         this.clockRate = clockRate;
         this.boot = boot;
+        this.paired = key != null;
         this.faults = faults;
         this.out = out;
         this.world = HospitalWorld.builder(map).seed(seed).doors(false).build();
@@ -133,6 +136,11 @@ public final class BoardEmulator {
                 } else if (n > 0) {
                     corruptIncoming(buf, n);
                     board.onBytes(buf, 0, n, nowMs());
+                    if (!macSaid && board.drops().get("mac") > 0) {
+                        macSaid = true;
+                        out.println("board: a host frame failed its MAC check: the host is paired with another key, or only one end"
+                                + " has a key (the board's: " + (paired ? "given" : "none") + ")");
+                    }
                 }
             }
             while (world.worldTimeNs() + stepNs <= System.nanoTime() - startNs) {
@@ -181,7 +189,7 @@ public final class BoardEmulator {
             return null;
         }
         port[0] = p;
-        out.println("board: on " + path);
+        out.println("board: on " + path + (paired ? " (paired: every frame carries a MAC)" : ""));
         return p;
     }
 
@@ -300,7 +308,17 @@ public final class BoardEmulator {
                     case "--port" -> port = need(a, v);
                     case "--at" -> at = Integer.parseInt(need(a, v));
                     case "--seed" -> seed = Long.parseLong(need(a, v));
-                    case "--key" -> key = HexFormat.of().parseHex(need(a, v));
+                    case "--key" -> {
+                        try {
+                            key = HexFormat.of().parseHex(need(a, v));
+                        } catch (IllegalArgumentException e) {
+                            throw new IllegalArgumentException("--key takes the pairing key as hex digits (32 or more): " + e.getMessage());
+                        }
+                        if (key.length < io.concord.serial.PairingKey.MIN_BYTES) {
+                            throw new IllegalArgumentException("--key holds " + key.length + " bytes; a pairing key needs "
+                                    + io.concord.serial.PairingKey.MIN_BYTES + " or more (32 hex digits or more)");
+                        }
+                    }
                     case "--pair-key" -> key = io.concord.serial.PairingKey.read(Path.of(need(a, v)));
                     case "--map" -> map = HospitalMap.load(Path.of(need(a, v)));
                     case "--drop" -> drop = Double.parseDouble(need(a, v));

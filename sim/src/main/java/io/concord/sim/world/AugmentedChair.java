@@ -91,6 +91,11 @@ public final class AugmentedChair implements ChairDriver {
     }
 
     @Override
+    public String whyOffline() {
+        return real.whyOffline();
+    }
+
+    @Override
     public ChairReadings latest() {
         return latest;
     }

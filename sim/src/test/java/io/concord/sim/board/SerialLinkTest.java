@@ -249,7 +249,7 @@ class SerialLinkTest {
         assertTrue(e.getMessage().contains("holds 4 bytes; it needs 16 or more"), e.getMessage());
         e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
                 () -> io.concord.serial.PairingKey.read(dir.resolve("none.key")));
-        assertTrue(e.getMessage().startsWith("cannot read the pairing key"), e.getMessage());
+        assertTrue(e.getMessage().startsWith("there is no pairing key file"), e.getMessage());
     }
 
     /** A board that speaks another version of the protocol: refused, said why, nothing it says taken. */
