@@ -222,6 +222,8 @@ class SerialLinkTest {
                     .withKey(io.concord.serial.PairingKey.read(otherKey))));
             Pty.await(() -> wrong.drops().get("mac") > 20, 10_000, "the host to drop the board's frames: " + wrong.drops());
             assertTrue(!onLoop(rt, wrong::online), "a board paired with another key is never online");
+            String why = onLoop(rt, wrong::whyOffline);
+            assertTrue(why != null && why.contains("fails its MAC check") && why.contains("--pair-key"), why);
             board.awaitStatus(st -> st.get("drops").contains("mac="), 10_000, "the board to drop the host's frames");
             assertEquals("false", board.status().get("armed"));
             onLoop(rt, () -> {
