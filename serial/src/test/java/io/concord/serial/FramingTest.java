@@ -156,4 +156,31 @@ class FramingTest {
         }
         return stale;
     }
+
+    /**
+     * A board that restarted and whose HELLO was lost: its first STATE, with the next boot number
+     * and seq 1, is taken (version 1 dropped it as out-of-order for up to 32,768 frames); a frame
+     * of the previous boot is then refused as old-boot.
+     */
+    @Test
+    void aRebootIsSeenInTheFirstStateEvenWithoutItsHelloAndTheOldBootIsRefused() {
+        FrameCodec c = new FrameCodec();
+        List<Frame> taken = new ArrayList<>();
+        FrameReceiver host = new FrameReceiver(c, true, 500, taken::add);
+        java.util.function.BiFunction<Long, Integer, byte[]> state = (boot, seq) -> c.encode(new Frame(Frame.Type.STATE, 0, seq,
+                seq * 50L, BoardProtocol.state(new BoardProtocol.State(boot, 0, 0, new int[0], false, false, true, BoardProtocol.ARMED,
+                        24_000, java.util.Set.of(), null))));
+        for (int seq = 5000; seq < 5003; seq++) {
+            byte[] b = state.apply(1L, seq);
+            host.feed(b, 0, b.length, 1_000);
+        }
+        byte[] rebooted = state.apply(2L, 1);
+        host.feed(rebooted, 0, rebooted.length, 1_010);
+        assertEquals(4, taken.size(), "the new boot's first STATE is taken: " + host.drops());
+        assertEquals(2, host.boot());
+        byte[] old = state.apply(1L, 5003);
+        host.feed(old, 0, old.length, 1_020);
+        assertEquals(1, host.drops().get("old-boot"));
+        assertEquals(4, taken.size());
+    }
 }
