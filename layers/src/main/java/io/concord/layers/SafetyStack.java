@@ -64,6 +64,7 @@ public final class SafetyStack {
         private Address timeSourceAddress;
         private long syncIntervalMs = 10_000;
         private final EnumSet<LayerKind> without = EnumSet.noneOf(LayerKind.class);
+        private final EnumSet<Defence> off = EnumSet.noneOf(Defence.class);
 
         private Builder() {
         }
@@ -132,6 +133,22 @@ public final class SafetyStack {
             return this;
         }
 
+        /**
+         * Switches defences off in the stacks this builder makes, and in no other: for the threat
+         * tests alone, which show each threat reaching an agent without its defence. Never in a
+         * real platform.
+         */
+        public Builder withoutDefences(Defence... defences) {
+            off.addAll(java.util.Arrays.asList(defences));
+            return this;
+        }
+
+        /** As {@link #withoutDefences(Defence...)}. */
+        public Builder withoutDefences(java.util.Collection<Defence> defences) {
+            off.addAll(defences);
+            return this;
+        }
+
         /** Leaves layers out (the profile must allow it). */
         public Builder without(LayerKind... kinds) {
             without.addAll(List.of(kinds));
@@ -183,17 +200,19 @@ public final class SafetyStack {
                     + (out.contains(LayerKind.SEQUENCE) ? 0 : SequenceLayer.HEADER_BYTES)
                     + (out.contains(LayerKind.TEMPORAL) ? 0 : TemporalLayer.HEADER_BYTES);
             int limit = frameLimit;
+            java.util.Set<Defence> offHere = java.util.Set.copyOf(off);
             return () -> {
                 PlatformClock clock = new PlatformClock();
                 List<Layer> layers = new ArrayList<>(5);
-                layers.add(new ParserLayer(members, out.contains(LayerKind.TEMPORAL) ? null : clock, true, limit, overhead));
+                layers.add(new ParserLayer(members, out.contains(LayerKind.TEMPORAL) ? null : clock,
+                        !offHere.contains(Defence.IDENTIFICATION), limit, overhead));
                 if (!out.contains(LayerKind.SEQUENCE)) {
-                    layers.add(new SequenceLayer(seq));
+                    layers.add(new SequenceLayer(seq, offHere));
                 }
                 if (!out.contains(LayerKind.TEMPORAL)) {
-                    layers.add(new TemporalLayer(temporal, clock));
+                    layers.add(new TemporalLayer(temporal, clock, offHere));
                 }
-                layers.add(new SecurityLayer(security));
+                layers.add(new SecurityLayer(security, offHere));
                 layers.add(new CommunicationLayer(comm));
                 return layers;
             };

@@ -12,7 +12,6 @@ import io.concord.core.layer.SendRejectedException;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
 import io.concord.layers.sequence.SequenceLayer;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -86,11 +85,6 @@ public class FlowControlTest {
                 }
             });
         }
-    }
-
-    @AfterEach
-    void defencesOn() {
-        Defences.allOn();
     }
 
     @ParameterizedTest

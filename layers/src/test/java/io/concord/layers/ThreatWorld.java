@@ -79,15 +79,18 @@ abstract class ThreatWorld implements AutoCloseable {
     final Profile profile;
     /** The sequence layer's settings, or {@code null} for the defaults. */
     final io.concord.layers.sequence.SequenceLayer.Config sequence;
+    /** The defences the stacks are built without (a threat test's), usually none. */
+    final java.util.Set<Defence> off;
 
-    ThreatWorld(long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence) {
+    ThreatWorld(long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence, java.util.Set<Defence> off) {
         this.windowMs = windowMs;
         this.profile = profile;
         this.sequence = sequence;
+        this.off = off;
     }
 
     Supplier<List<Layer>> stack() {
-        SafetyStack.Builder b = Stacks.builder(profile).acceptanceWindowMs(windowMs);
+        SafetyStack.Builder b = Stacks.builder(profile).acceptanceWindowMs(windowMs).withoutDefences(off);
         if (sequence != null) {
             b.sequence(sequence);
         }
@@ -175,7 +178,12 @@ abstract class ThreatWorld implements AutoCloseable {
         }
 
         Virtual(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence) {
-            super(windowMs, profile, sequence);
+            this(medium, windowMs, profile, sequence, java.util.Set.of());
+        }
+
+        Virtual(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence,
+                java.util.Set<Defence> off) {
+            super(windowMs, profile, sequence, off);
             a = sim.newRuntime("host-a", stack());
             b = sim.newRuntime("host-b", stack());
             bAid = b.startAgent("b", receiver);
@@ -256,7 +264,12 @@ abstract class ThreatWorld implements AutoCloseable {
 
         RealUdp(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence)
                 throws Exception {
-            super(windowMs, profile, sequence);
+            this(medium, windowMs, profile, sequence, java.util.Set.of());
+        }
+
+        RealUdp(Medium medium, long windowMs, Profile profile, io.concord.layers.sequence.SequenceLayer.Config sequence,
+                java.util.Set<Defence> off) throws Exception {
+            super(windowMs, profile, sequence, off);
             // The media work on frames (a frame's copies come one after the other): A sends one frame
             // per datagram. A bundle a man in the middle splits is as many frames (BundleTest).
             a = AgentRuntime.builder().platformName(PLATFORM).stack(stack())

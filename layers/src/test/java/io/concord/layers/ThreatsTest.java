@@ -7,7 +7,6 @@ import io.concord.core.testkit.Medium;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.security.PlatformKey;
 import io.concord.layers.Profile;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.opentest4j.AssertionFailedError;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -15,7 +14,9 @@ import org.junit.jupiter.params.provider.EnumSource;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.zip.CRC32C;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import java.util.Map;
 import java.util.SplittableRandom;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -44,36 +45,28 @@ class ThreatsTest {
 
     @FunctionalInterface
     interface Scenario {
-        void run(Where where) throws Exception;
-    }
-
-    @AfterEach
-    void defencesOn() {
-        Defences.allOn();
+        void run(Where where, Set<Defence> off) throws Exception;
     }
 
     /**
      * Runs the scenario with every defence on; then, on the virtual network, with one defence off,
      * where it must fail: the test is shown to depend on that defence.
      */
-    private static void withDefenceOff(Where where, Runnable switchOff, Scenario scenario) throws Exception {
-        scenario.run(where);
+    private static void withDefenceOff(Where where, Defence defence, Scenario scenario) throws Exception {
+        scenario.run(where, Set.of());
         if (where == Where.VIRTUAL) {
-            switchOff.run();
-            try {
-                AssertionFailedError e = assertThrows(AssertionFailedError.class, () -> scenario.run(where),
-                        "with its defence switched off, the threat reaches B");
-                assertTrue(e.getMessage().startsWith("exactly what A sent") || e.getMessage().startsWith("only A's own"),
-                        "and it is what B receives that is wrong, not only a counter: " + e.getMessage());
-            } finally {
-                Defences.allOn();
-            }
+            // The same scenario on stacks built without that one defence (their builder's option,
+            // nothing global): it must fail.
+            AssertionFailedError e = assertThrows(AssertionFailedError.class, () -> scenario.run(where, EnumSet.of(defence)),
+                    "with its defence switched off, the threat reaches B");
+            assertTrue(e.getMessage().startsWith("exactly what A sent") || e.getMessage().startsWith("only A's own"),
+                    "and it is what B receives that is wrong, not only a counter: " + e.getMessage());
         }
     }
 
-    private static ThreatWorld world(Where where, Medium medium, long windowMs, Profile profile) throws Exception {
-        return where == Where.VIRTUAL ? new ThreatWorld.Virtual(medium, windowMs, profile)
-                : new ThreatWorld.RealUdp(medium, windowMs, profile);
+    private static ThreatWorld world(Where where, Medium medium, long windowMs, Profile profile, Set<Defence> off) throws Exception {
+        return where == Where.VIRTUAL ? new ThreatWorld.Virtual(medium, windowMs, profile, null, off)
+                : new ThreatWorld.RealUdp(medium, windowMs, profile, null, off);
     }
 
     /** A sends the contents through the medium; B must get exactly {@code expected}. */
@@ -130,10 +123,10 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void repetition(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.sequenceWindow = false, ThreatsTest::repetition0);
+        withDefenceOff(where, Defence.SEQUENCE_WINDOW, ThreatsTest::repetition0);
     }
 
-    private static void repetition0(Where where) throws Exception {
+    private static void repetition0(Where where, Set<Defence> off) throws Exception {
         int n = 100;
         List<byte[]> captured = new ArrayList<>();
         Medium repeat = (from, to, d, out) -> {
@@ -148,7 +141,7 @@ class ThreatsTest {
                 }
             }
         };
-        try (ThreatWorld w = world(where, repeat, 2_000, Profile.CLASS_7)) {
+        try (ThreatWorld w = world(where, repeat, 2_000, Profile.CLASS_7, off)) {
             Map<String, Long> drops = exchange(w, ThreatWorld.contents(n), ThreatWorld.expected("a", n));
             assertTrue(count(drops, "repeated") > 0, "the sequence window refused replays: " + drops);
         }
@@ -159,10 +152,10 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void deletion(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.retransmission = false, ThreatsTest::deletion0);
+        withDefenceOff(where, Defence.RETRANSMISSION, ThreatsTest::deletion0);
     }
 
-    private static void deletion0(Where where) throws Exception {
+    private static void deletion0(Where where, Set<Defence> off) throws Exception {
         AtomicInteger deleted = new AtomicInteger();
         // Every third frame is lost with both its copies: only retransmission brings its message.
         Medium delete = perFrame((i, copy, d, out) -> {
@@ -172,7 +165,7 @@ class ThreatsTest {
                 out.deliver(0, d);
             }
         });
-        try (ThreatWorld w = world(where, delete, 2_000, Profile.CLASS_7)) {
+        try (ThreatWorld w = world(where, delete, 2_000, Profile.CLASS_7, off)) {
             exchange(w);
             assertTrue(deleted.get() > N / 2, "frames were deleted, copies and all: " + deleted.get());
         }
@@ -183,10 +176,10 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void insertion(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.hmacTag = false, ThreatsTest::insertion0);
+        withDefenceOff(where, Defence.HMAC_TAG, ThreatsTest::insertion0);
     }
 
-    private static void insertion0(Where where) throws Exception {
+    private static void insertion0(Where where, Set<Defence> off) throws Exception {
         SplittableRandom random = new SplittableRandom(5);
         Medium insert = (from, to, d, out) -> {
             if (d.length > Frames.HEADER_BYTES + 40) {
@@ -206,7 +199,7 @@ class ThreatsTest {
             out.deliver(0, junk);
             out.deliver(0, d);
         };
-        try (ThreatWorld w = world(where, insert, 2_000, Profile.CLASS_3)) {
+        try (ThreatWorld w = world(where, insert, 2_000, Profile.CLASS_3, off)) {
             Map<String, Long> drops = exchange(w);
             assertTrue(count(drops, "bad-tag") > 0, "forged frames failed authentication: " + drops);
             assertTrue(count(drops, "malformed-frame") > 0, "random datagrams were refused: " + drops);
@@ -219,13 +212,13 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void resequence(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.reorderBuffer = false, ThreatsTest::resequence0);
+        withDefenceOff(where, Defence.REORDER_BUFFER, ThreatsTest::resequence0);
     }
 
-    private static void resequence0(Where where) throws Exception {
+    private static void resequence0(Where where, Set<Defence> off) throws Exception {
         // Frames leave in groups of five, each group in reverse order (a frame's copies together).
         Medium reverse = perFrame((i, copy, d, out) -> out.deliver((5 - i % 5) * 2_000_000L, d));
-        try (ThreatWorld w = world(where, reverse, 2_000, Profile.CLASS_7)) {
+        try (ThreatWorld w = world(where, reverse, 2_000, Profile.CLASS_7, off)) {
             exchange(w);
         }
     }
@@ -235,16 +228,16 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void corruption(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.safetyCode = false, w -> corruption0(w, Profile.CLOSED));
+        withDefenceOff(where, Defence.SAFETY_CODE, (w, off) -> corruption0(w, Profile.CLOSED, off));
     }
 
     @ParameterizedTest
     @EnumSource(Where.class)
     void corruptionUnderClassSeven(Where where) throws Exception {
-        corruption0(where, Profile.CLASS_7);
+        corruption0(where, Profile.CLASS_7, Set.of());
     }
 
-    private static void corruption0(Where where, Profile profile) throws Exception {
+    private static void corruption0(Where where, Profile profile, Set<Defence> off) throws Exception {
         SplittableRandom random = new SplittableRandom(9);
         // The first copy of every second frame has one bit flipped in its body; the second copy is whole.
         Medium corrupt = perFrame((i, copy, d, out) -> {
@@ -257,7 +250,7 @@ class ThreatsTest {
                 out.deliver(0, d);
             }
         });
-        try (ThreatWorld w = world(where, corrupt, 2_000, profile)) {
+        try (ThreatWorld w = world(where, corrupt, 2_000, profile, off)) {
             Map<String, Long> drops = exchange(w);
             String reason = profile == Profile.CLOSED ? "corrupt" : "bad-tag";
             assertTrue(count(drops, reason) > 0, "corrupted frames were dropped (" + reason + "): " + drops);
@@ -269,7 +262,7 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void delay(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.acceptanceWindow = false, ThreatsTest::delay0);
+        withDefenceOff(where, Defence.ACCEPTANCE_WINDOW, ThreatsTest::delay0);
     }
 
     private static boolean contains(byte[] d, byte[] what) {
@@ -285,7 +278,7 @@ class ThreatsTest {
         return false;
     }
 
-    private static void delay0(Where where) throws Exception {
+    private static void delay0(Where where, Set<Defence> off) throws Exception {
         long windowMs = 100;
         String[] contents = new String[N];
         List<String> expected = new ArrayList<>();
@@ -303,8 +296,8 @@ class ThreatsTest {
         Medium hold = (from, to, d, out) -> out.deliver(contains(d, m7) ? 3 * windowMs * 1_000_000L : 0, d);
         io.concord.layers.sequence.SequenceLayer.Config quick = new io.concord.layers.sequence.SequenceLayer.Config(
                 256, 1024, 5, 32, 20, 30, 10, 7, 4096);
-        try (ThreatWorld w = where == Where.VIRTUAL ? new ThreatWorld.Virtual(hold, windowMs, Profile.CLOSED, quick)
-                : new ThreatWorld.RealUdp(hold, windowMs, Profile.CLOSED, quick)) {
+        try (ThreatWorld w = where == Where.VIRTUAL ? new ThreatWorld.Virtual(hold, windowMs, Profile.CLOSED, quick, off)
+                : new ThreatWorld.RealUdp(hold, windowMs, Profile.CLOSED, quick, off)) {
             Map<String, Long> drops = exchange(w, contents, expected);
             assertTrue(count(drops, "stale") > 0, "delayed frames were refused as stale: " + drops);
         }
@@ -313,11 +306,11 @@ class ThreatsTest {
     @ParameterizedTest
     @EnumSource(Where.class)
     void masquerade(Where where) throws Exception {
-        withDefenceOff(where, () -> Defences.identification = false, ThreatsTest::masquerade0);
+        withDefenceOff(where, Defence.IDENTIFICATION, ThreatsTest::masquerade0);
     }
 
-    private static void masquerade0(Where where) throws Exception {
-        try (ThreatWorld w = world(where, Medium.PASS, 2_000, Profile.CLASS_7)) {
+    private static void masquerade0(Where where, Set<Defence> off) throws Exception {
+        try (ThreatWorld w = world(where, Medium.PASS, 2_000, Profile.CLASS_7, off)) {
             // A talks to B first, so B knows A's identity.
             w.send(w.sender, w.receiverAsSeenByA(), "m0");
             assertTrue(w.awaitReceived(1));

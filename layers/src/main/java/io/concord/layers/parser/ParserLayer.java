@@ -133,7 +133,7 @@ public final class ParserLayer extends Layer {
             ctx.drop(env, "identification", "the message names no sender");
             return;
         }
-        if (identification && io.concord.layers.Defences.identification && idOf(sender) != env.peerId()) {
+        if (identification && idOf(sender) != env.peerId()) {
             ctx.drop(env, "identification", "the message claims to be from " + sender.name()
                     + " but the frame is authenticated as another agent's");
             return;

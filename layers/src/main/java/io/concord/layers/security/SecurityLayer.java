@@ -126,6 +126,8 @@ public final class SecurityLayer extends Layer {
     private static final int MAX_HELLO_ATTEMPTS = 10;
 
     private final Config config;
+    private final boolean hmacTag;
+    private final boolean safetyCode;
     private final java.security.SecureRandom random = new java.security.SecureRandom();
     private final CRC32C crc = new CRC32C();
     private final long[] recentTags = new long[RECENT_TAGS];
@@ -206,7 +208,17 @@ public final class SecurityLayer extends Layer {
     }
 
     public SecurityLayer(Config config) {
+        this(config, java.util.Set.of());
+    }
+
+    /**
+     * A security layer with some defences off: only for the threat tests, through
+     * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
+     */
+    public SecurityLayer(Config config, java.util.Set<io.concord.layers.Defence> off) {
         this.config = config;
+        this.hmacTag = !off.contains(io.concord.layers.Defence.HMAC_TAG);
+        this.safetyCode = !off.contains(io.concord.layers.Defence.SAFETY_CODE);
     }
 
     @Override
@@ -423,7 +435,7 @@ public final class SecurityLayer extends Layer {
             if (protection == Frames.PROTECTION_HMAC) {
                 mac.update(d, h, len - Frames.TAG_BYTES);
                 byte[] expected = mac.doFinal();
-                if (io.concord.layers.Defences.hmacTag && !MessageDigest.isEqual(Arrays.copyOf(expected, Frames.TAG_BYTES),
+                if (hmacTag && !MessageDigest.isEqual(Arrays.copyOf(expected, Frames.TAG_BYTES),
                         Arrays.copyOfRange(d, h + len - Frames.TAG_BYTES, h + len))) {
                     ctx.drop(env, "bad-tag", "HMAC mismatch from " + env.source() + ": forged, corrupted, or another platform key");
                     return;
@@ -471,7 +483,7 @@ public final class SecurityLayer extends Layer {
         crc.reset();
         crc.update(d, h, Frames.HEADER_BYTES);
         crc.update(body, bodyOff, bodyLen);
-        if (io.concord.layers.Defences.safetyCode && (int) crc.getValue() != Frames.getInt(body, bodyOff + bodyLen)) {
+        if (safetyCode && (int) crc.getValue() != Frames.getInt(body, bodyOff + bodyLen)) {
             ctx.drop(env, "corrupt", "the safety code does not match: the frame was damaged");
             return;
         }

@@ -137,6 +137,10 @@ public final class SequenceLayer extends Layer {
     public static final int MAX_HELD = 4096;
 
     private final Config config;
+    private final boolean sequenceWindow;
+    private final boolean retransmission;
+    private final boolean reorderBuffer;
+    private final boolean flowControl;
     private final Map<Long, Out> outs;
     /** Receivers with frames held for them: while any, the agent is paused. */
     private int congested;
@@ -144,6 +148,18 @@ public final class SequenceLayer extends Layer {
     private int stream;
 
     public SequenceLayer(Config config) {
+        this(config, java.util.Set.of());
+    }
+
+    /**
+     * A sequence layer with some defences off: only for the threat tests, through
+     * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
+     */
+    public SequenceLayer(Config config, java.util.Set<io.concord.layers.Defence> off) {
+        this.sequenceWindow = !off.contains(io.concord.layers.Defence.SEQUENCE_WINDOW);
+        this.retransmission = !off.contains(io.concord.layers.Defence.RETRANSMISSION);
+        this.reorderBuffer = !off.contains(io.concord.layers.Defence.REORDER_BUFFER);
+        this.flowControl = !off.contains(io.concord.layers.Defence.FLOW_CONTROL);
         this.config = config;
         // A receiver with frames held for it is never forgotten: they would be lost, and the agent
         // stay paused.
@@ -207,7 +223,7 @@ public final class SequenceLayer extends Layer {
         }
         Out o = outs.computeIfAbsent(env.peerId(), k -> new Out(config.retransmitBuffer()));
         o.address = env.destination();
-        if (io.concord.layers.Defences.flowControl && (!o.held.isEmpty() || !windowOpen(o))) {
+        if (flowControl && (!o.held.isEmpty() || !windowOpen(o))) {
             hold(ctx, env, o);
             return;
         }
@@ -261,7 +277,7 @@ public final class SequenceLayer extends Layer {
 
     /** Sends what is held for a receiver as far as its window allows. */
     private void release(LayerContext ctx, Out o) {
-        while (!o.held.isEmpty() && (windowOpen(o) || !io.concord.layers.Defences.flowControl)) {
+        while (!o.held.isEmpty() && (windowOpen(o) || !flowControl)) {
             transmit(ctx, o.held.poll(), o);
         }
         if (o.held.isEmpty() && o.holding) {
@@ -349,7 +365,7 @@ public final class SequenceLayer extends Layer {
     }
 
     private void retransmit(LayerContext ctx, long peer, Out o, long seq) {
-        if (!io.concord.layers.Defences.retransmission) {
+        if (!retransmission) {
             return;
         }
         int slot = (int) (seq % config.retransmitBuffer());
@@ -548,7 +564,7 @@ public final class SequenceLayer extends Layer {
         if (in.since == 0) {
             in.since = seq;
         }
-        if (!io.concord.layers.Defences.sequenceWindow || !io.concord.layers.Defences.reorderBuffer && seq >= in.expected) {
+        if (!sequenceWindow || !reorderBuffer && seq >= in.expected) {
             // Switched off for a threat test: whatever comes is delivered as it comes.
             deliver(ctx, env, peer, in, seq);
             in.expected = Math.max(in.expected, seq + 1);
@@ -701,7 +717,7 @@ public final class SequenceLayer extends Layer {
         }
         // The window: the reorder window while the agent keeps up with its mailbox, shut while
         // the mailbox is full; announced again when the agent has taken it down.
-        in.closed = io.concord.layers.Defences.flowControl && ctx.host().inboxFull();
+        in.closed = flowControl && ctx.host().inboxFull();
         sendControl(ctx, peer, in.address, ACK, in.stream, in.expected - 1, null, 0, in.since, in.closed ? 0 : config.reorderWindow());
     }
 

@@ -49,12 +49,22 @@ public final class TemporalLayer extends Layer {
     }
 
     private final Config config;
+    private final boolean acceptanceWindow;
     private final PlatformClock clock;
     private long pendingT1 = Long.MIN_VALUE;
     private long bestRoundTripUs = Long.MAX_VALUE;
     private int exchanges;
 
     public TemporalLayer(Config config, PlatformClock clock) {
+        this(config, clock, java.util.Set.of());
+    }
+
+    /**
+     * A temporal layer with some defences off: only for the threat tests, through
+     * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
+     */
+    public TemporalLayer(Config config, PlatformClock clock, java.util.Set<io.concord.layers.Defence> off) {
+        this.acceptanceWindow = !off.contains(io.concord.layers.Defence.ACCEPTANCE_WINDOW);
         this.config = config;
         this.clock = clock;
     }
@@ -113,7 +123,7 @@ public final class TemporalLayer extends Layer {
         long stamp = Frames.getLong(d, o + 1);
         long now = clock.nowUs();
         long windowUs = config.acceptanceWindowMs() * 1_000L;
-        if (!io.concord.layers.Defences.acceptanceWindow) {
+        if (!acceptanceWindow) {
             windowUs = Long.MAX_VALUE / 2;
         }
         if (now - stamp > windowUs) {

@@ -1,0 +1,29 @@
+package io.concord.layers;
+
+/**
+ * The safety stack's defences, one per EN 50159 threat test. Every one is on in every stack,
+ * unless a test builds a stack without some ({@link SafetyStack.Builder#withoutDefences}) to show
+ * the threat it stands against reaching an agent. The switch belongs to the stacks a builder makes,
+ * never to the JVM: no code can weaken a stack it did not build, and tests run side by side.
+ */
+public enum Defence {
+    /** The sequence layer drops frames it delivered or holds already ({@code repeated}). */
+    SEQUENCE_WINDOW,
+    /** The sender retransmits what the receiver NAKs or does not acknowledge. */
+    RETRANSMISSION,
+    /** The receiver holds frames that come early until the gap before them is filled. */
+    REORDER_BUFFER,
+    /** The security layer checks the CRC-32C safety code. */
+    SAFETY_CODE,
+    /** The security layer checks the HMAC tag (class 3). */
+    HMAC_TAG,
+    /** The temporal layer refuses frames stamped outside the acceptance window. */
+    ACCEPTANCE_WINDOW,
+    /** The parser layer compares a message's sender with the agent its frame authenticated. */
+    IDENTIFICATION,
+    /**
+     * The sequence layer keeps at most the receiver's window of frames unacknowledged, holds the
+     * rest (slowing the sending agent), and the receiver closes its window while its mailbox is full.
+     */
+    FLOW_CONTROL
+}
