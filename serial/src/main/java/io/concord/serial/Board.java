@@ -165,12 +165,12 @@ public final class Board {
                     int[] p = BoardProtocol.readDrive(f);
                     boolean neutral = p[0] == 0 && p[1] == 0;
                     if (estop) {
-                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_ESTOP));
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_ESTOP, armed ? BoardProtocol.ARMED : disarmedBy));
                     } else if (neutral) {
                         arm();
                         motors(0, 0);
                     } else if (!armed) {
-                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_NOT_NEUTRAL));
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_NOT_NEUTRAL, armed ? BoardProtocol.ARMED : disarmedBy));
                     } else {
                         motors(p[0], p[1]);
                     }
@@ -204,12 +204,12 @@ public final class Board {
                 }
                 default -> {
                     receiver.drops().count("unknown-type");
-                    send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_UNKNOWN));
+                    send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_UNKNOWN, armed ? BoardProtocol.ARMED : disarmedBy));
                 }
             }
         } catch (FrameException e) {
             receiver.drops().count(e.reason());
-            send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_MALFORMED));
+            send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_MALFORMED, armed ? BoardProtocol.ARMED : disarmedBy));
         }
     }
 

@@ -116,9 +116,25 @@ public final class BoardProtocol {
         return new Frame.Builder().u16(seq).i32(nonce).bytes();
     }
 
-    /** NAK: the host frame's sequence number and the reason. */
-    public static byte[] nak(int seq, int reason) {
-        return new Frame.Builder().u16(seq).u8(reason).bytes();
+    /**
+     * NAK: the host frame's sequence number, the reason, and why the board is not armed
+     * ({@link #ARMED} if it is): a refusal that explains itself, even when no STATE showed the disarm.
+     */
+    public static byte[] nak(int seq, int reason, int disarmedBy) {
+        return new Frame.Builder().u16(seq).u8(reason).u8(disarmedBy).bytes();
+    }
+
+    /** A NAK's fields. */
+    public record Nak(int seq, int reason, int disarmedBy) {
+    }
+
+    public static Nak readNak(Frame f) {
+        Frame.Fields r = f.fields();
+        int seq = r.u16();
+        int reason = r.u8();
+        int by = r.u8();
+        r.end();
+        return new Nak(seq, reason, by);
     }
 
     // ---- STATE ------------------------------------------------------------------------------------

@@ -541,12 +541,9 @@ public final class SerialChair implements ChairDriver {
                     runtime.execute(() -> onHello(h));
                 }
                 case Frame.Type.NAK -> {
-                    Frame.Fields r = f.fields();
-                    int s = r.u16();
-                    int why = r.u8();
-                    r.end();
+                    BoardProtocol.Nak n = BoardProtocol.readNak(f);
                     nakCount.incrementAndGet();
-                    runtime.execute(() -> onNak(s, why));
+                    runtime.execute(() -> onNak(n));
                 }
                 case Frame.Type.ACK -> { }
                 default -> receiver.drops().count("unknown-type");
@@ -580,8 +577,14 @@ public final class SerialChair implements ChairDriver {
         boot = b;
     }
 
-    private void onNak(int frameSeq, int why) {
-        String detail = "NAK " + BoardProtocol.nakReason(why) + " for frame " + frameSeq;
+    private void onNak(BoardProtocol.Nak n) {
+        if (n.disarmedBy() != BoardProtocol.ARMED && !Boolean.FALSE.equals(boardArmed)) {
+            // The refusal says the board is not armed, and why, before any STATE could: the
+            // host's next neutral command may re-arm it before the next STATE is sent.
+            boardArmed = false;
+            event(new ChairEvent(ChairEvent.Kind.DISARMED, BoardProtocol.disarmedBy(n.disarmedBy())));
+        }
+        String detail = "NAK " + BoardProtocol.nakReason(n.reason()) + " for frame " + n.seq();
         if (!nakLogged) {
             nakLogged = true;
             LOG.warn("{}: the board refused a command: {} (further refusals are counted until it is armed again)", settings.name(), detail);

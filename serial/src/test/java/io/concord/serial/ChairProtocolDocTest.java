@@ -108,7 +108,9 @@ class ChairProtocolDocTest {
         assertEquals("x".repeat(250), longName.firmware());
         assertEquals((byte) 0xFF, vs.get(8).wire()[8], "the 254-byte block's code");
         assertArrayEquals(vs.get(9).body(), BoardProtocol.ack(3, 0));
-        assertArrayEquals(vs.get(10).body(), BoardProtocol.nak(4, BoardProtocol.NAK_NOT_NEUTRAL));
+        assertArrayEquals(vs.get(10).body(), BoardProtocol.nak(4, BoardProtocol.NAK_NOT_NEUTRAL, BoardProtocol.DISARMED_WATCHDOG));
+        assertEquals(new BoardProtocol.Nak(4, BoardProtocol.NAK_NOT_NEUTRAL, BoardProtocol.DISARMED_WATCHDOG),
+                BoardProtocol.readNak(new Frame(Frame.Type.NAK, 0, 9, 123_470, vs.get(10).body())));
         assertEquals(1, vs.get(11).raw()[1], "the keyed vector's flags byte has the MAC bit");
     }
 

@@ -84,24 +84,25 @@ public class TrafficAgent extends Agent {
     private long grants;
     private long moves;
     private long deadlocks;
-    private boolean enabled = true;
+    private final boolean enabled;
 
     /**
      * @param map the route graph it reserves
      * @param log told of every chair moved out of the way and every silent chair
      */
     public TrafficAgent(HospitalMap map, Consumer<String> log) {
-        this.map = map;
-        this.log = log;
+        this(map, log, true);
     }
 
     /**
-     * For tests only: with {@code false} every route is granted at once, whoever holds its nodes
-     * (the chairs then keep apart by their range sensors alone), to show what the reservations do.
+     * For tests only: with {@code rules} false every route is granted at once, whoever holds its
+     * nodes (the chairs then keep apart by their range sensors alone), to show what the
+     * reservations do. Fixed at construction: nothing can switch a running traffic agent's rules off.
      */
-    public TrafficAgent enabled(boolean on) {
-        this.enabled = on;
-        return this;
+    public TrafficAgent(HospitalMap map, Consumer<String> log, boolean rules) {
+        this.map = map;
+        this.log = log;
+        this.enabled = rules;
     }
 
     @Override

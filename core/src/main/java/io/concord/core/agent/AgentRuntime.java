@@ -531,12 +531,17 @@ public final class AgentRuntime implements AutoCloseable {
     }
 
     private void removeAgent(AgentNode node, boolean takeDown) {
-        directory.remove(node.aid);
         if (!takeDown) {
+            directory.remove(node.aid);
             node.crashed = true; // a crash: nothing more goes out, not even what the layers say on stop
             node.endpoint.close();
+            node.agent.terminate(false);
+        } else {
+            // takeDown runs while the agent is still itself: its layers answer (it deregisters from
+            // the DF there, as JADE code does), and it leaves the directory after.
+            node.agent.terminate(true);
+            directory.remove(node.aid);
         }
-        node.agent.terminate(takeDown);
         node.stack.stop();
         node.endpoint.close();
         Address at = node.endpoint.localAddress();

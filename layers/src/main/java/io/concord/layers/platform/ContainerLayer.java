@@ -81,6 +81,7 @@ public final class ContainerLayer extends Layer {
     private Roles roles;
     private Directory directory;
     private ServiceRequests requests;
+    private Registrations registrations;
     private MembershipGate gate;
     /** Messages for foreign agents (or the platform's DF and AMS) waiting for a container to carry them. */
     private WaitRoom forContainer;
@@ -219,9 +220,14 @@ public final class ContainerLayer extends Layer {
                     case STOPPED -> "the agent stopped while its message to " + h.key() + " waited for a container";
                 }, why == WaitRoom.Why.STOPPED ? null : "Foreign agent unreachable: no container of platform " + platform
                         + " to carry the message"));
-        roles = new Roles(context, st, network, around, relay, this::publish, gate::listsChanged);
+        requests = new ServiceRequests(context, null);
+        registrations = new Registrations(context, st, requests);
+        roles = new Roles(context, st, network, around, relay, this::publish, () -> {
+            gate.listsChanged();
+            registrations.reconcile();
+        });
+        requests.roles(roles);
         directory = new Directory(context, roles);
-        requests = new ServiceRequests(context, roles);
         context.trace("start", "neighbours=" + neighbours.size());
         roles.start(neighbours);
     }
@@ -232,6 +238,7 @@ public final class ContainerLayer extends Layer {
             gate.stop();
             forContainer.stop();
         }
+        registrations.stop();
         roles.stop();
         publish();
     }
@@ -487,8 +494,31 @@ public final class ContainerLayer extends Layer {
         return requests.request(df, p, content);
     }
 
+    /**
+     * The agent's own registration: these services added to ({@code add}) or in place of those it
+     * asked for before. It sends them again whenever its container does not hold them (a flap, a
+     * failover, a refusal); the future completes once the DF took them. Loop thread only.
+     */
+    CompletableFuture<Void> registerServices(List<ServiceDescription> services, boolean add) {
+        if (registrations == null) {
+            return CompletableFuture.failedFuture(new IllegalStateException("the agent has not started"));
+        }
+        return registrations.want(services, add);
+    }
+
+    /** Times this agent registered its services again on its own (after a flap, a failover, a refusal). */
+    public long registrationsResent() {
+        return registrations == null ? 0 : registrations.resent();
+    }
+
+    /** Times the DF did not take this agent's services at once (not listed yet, no container, no answer). */
+    public long registrationsRefused() {
+        return registrations == null ? 0 : registrations.refused();
+    }
+
     private void publish() {
         requests.release();
+        registrations.reconcile();
         if (st.container != null) {
             forContainer.release(name -> true, env -> onDown(layerContext, env));
         }

@@ -42,25 +42,24 @@ public final class PlatformServices {
         return layer.search(template);
     }
 
-    /** Registers services of this agent with the DF (added to those it has). */
+    /**
+     * Registers services of this agent with the DF (added to those it has). The registration is
+     * the agent's own: whenever its container does not hold it (a flap dropped the agent and added
+     * it back, a new container after a failover, a refusal while the agent was not yet listed), the
+     * agent sends it again, for as long as it lives. The future completes once the DF took it.
+     */
     public CompletableFuture<Void> register(ServiceDescription... services) {
-        StringBuilder b = new StringBuilder();
-        Lines.appendServices(b, List.of(services));
-        return done(layer.request(true, Performative.REQUEST,
-                Lines.content("register", Lines.params("services", b.toString()), List.of())));
+        return layer.registerServices(List.of(services), true);
     }
 
-    /** Replaces this agent's services with these. */
+    /** Replaces this agent's services with these (kept as {@link #register} keeps them). */
     public CompletableFuture<Void> modify(ServiceDescription... services) {
-        StringBuilder b = new StringBuilder();
-        Lines.appendServices(b, List.of(services));
-        return done(layer.request(true, Performative.REQUEST,
-                Lines.content("modify", Lines.params("services", b.toString()), List.of())));
+        return layer.registerServices(List.of(services), false);
     }
 
-    /** Removes every service of this agent. */
+    /** Removes every service of this agent. Works from {@code takeDown()}, as JADE code deregisters there. */
     public CompletableFuture<Void> deregister() {
-        return done(layer.request(true, Performative.REQUEST, Lines.content("deregister", Lines.params(), List.of())));
+        return layer.registerServices(List.of(), false);
     }
 
     /** Asks the DF itself (not this agent's copy). */
@@ -76,15 +75,6 @@ public final class PlatformServices {
             throw new IllegalStateException("the DF answered " + reply.getPerformative().wireName() + ": " + reply.getContent());
         }
         return Lines.parse(reply.getContent()).entries();
-    }
-
-    private static CompletableFuture<Void> done(CompletableFuture<AclMessage> f) {
-        return f.thenApply(r -> {
-            if (r.getPerformative() != Performative.INFORM) {
-                throw new IllegalStateException("the DF answered " + r.getPerformative().wireName() + ": " + r.getContent());
-            }
-            return null;
-        });
     }
 
     /** The agent these services are for. */

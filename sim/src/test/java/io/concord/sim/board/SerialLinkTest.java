@@ -50,6 +50,19 @@ class SerialLinkTest {
         return t;
     }
 
+    /** True if a line of the log (written by the loop meanwhile) starts so. */
+    private static boolean said(List<String> log, String start) {
+        synchronized (log) {
+            return log.stream().anyMatch(l -> l.startsWith(start));
+        }
+    }
+
+    private static String tail(List<String> log) {
+        synchronized (log) {
+            return String.join("\n", log.subList(Math.max(0, log.size() - 30), log.size()));
+        }
+    }
+
     /** Waits until the planner knows every door and the chair is online. */
     private static void awaitReady(AgentRuntime rt, Hospital hospital, io.concord.agents.chair.ChairDriver chair) {
         Pty.await(() -> {
@@ -82,7 +95,7 @@ class SerialLinkTest {
             awaitReady(rt, hospital, chair);
             CompletableFuture<MedicalAgent.Outcome> f = medical.transport(19, 3, 0, 1);
             Pty.await(f::isDone, 240_000, "the transport");
-            assertTrue(f.join().done(), f.join() + "\n" + String.join("\n", log.subList(Math.max(0, log.size() - 30), log.size())));
+            assertTrue(f.join().done(), f.join() + "\n" + tail(log));
             Map<String, String> s = board.status();
             double x = Double.parseDouble(s.get("x"));
             double y = Double.parseDouble(s.get("y"));
@@ -90,7 +103,7 @@ class SerialLinkTest {
             var drops = chair.drops();
             assertTrue(drops.get("corrupt") > 0 && drops.get("repeated") > 0 && drops.get("out-of-order") > 0,
                     "corrupt, repeated and reordered frames were dropped and counted: " + drops);
-            assertTrue(log.stream().anyMatch(l -> l.startsWith("control-chair1: at node 3")), String.join("\n", log));
+            assertTrue(said(log, "control-chair1: at node 3"), tail(log));
         }
     }
 
@@ -113,7 +126,7 @@ class SerialLinkTest {
             platform.startAgent("medical", medical);
             awaitReady(rt, hospital, chair);
             medical.transport(19, 3, 0, 1);
-            Pty.await(() -> log.stream().anyMatch(l -> l.startsWith("control-chair1: stops: something")), 60_000,
+            Pty.await(() -> said(log, "control-chair1: stops: something"), 60_000,
                     "the chair to stop for the virtual trolley");
             Map<String, String> s = board.status();
             double y = Double.parseDouble(s.get("y"));

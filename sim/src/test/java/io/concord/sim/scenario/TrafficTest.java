@@ -23,8 +23,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The traffic agent's rules one by one, with probes in place of the chairs' control agents, on
- * the virtual clock. Each test that shows a rule fails with {@link TrafficAgent#enabled(boolean)}
- * false (every route granted at once).
+ * the virtual clock. A traffic agent built without its rules
+ * ({@link TrafficAgent#TrafficAgent(io.concord.agents.map.HospitalMap, java.util.function.Consumer, boolean)}
+ * with false) grants every route at once.
  */
 class TrafficTest {
 
