@@ -565,17 +565,20 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
      */
     public CompletableFuture<String> resume(String who) {
         CompletableFuture<String> f = new CompletableFuture<>();
-        Runnable r = () -> {
-            String why = supervisor.resume(who);
-            say(why == null ? "resume decided by " + who : "cannot resume (" + who + "): " + why);
-            f.complete(why);
-        };
+        Runnable r = () -> f.complete(resumeNow(who));
         if (runtime().inLoop()) {
             r.run();
         } else {
             runtime().execute(r);
         }
         return f;
+    }
+
+    /** An operator's resume, said in the log: null if resuming, else why not. */
+    private String resumeNow(String who) {
+        String why = supervisor.resume(who);
+        say(why == null ? "resume decided by " + who : "cannot resume (" + who + "): " + why);
+        return why;
     }
 
     private void resumeAsked(AclMessage m) {
@@ -588,8 +591,7 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
         } catch (IllegalArgumentException e) {
             // no content beyond the word: the sender decided
         }
-        String why = supervisor.resume(by);
-        say(why == null ? "resume decided by " + by : "cannot resume (" + by + "): " + why);
+        String why = resumeNow(by);
         send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
                 .setContent(why == null ? Content.of("resuming").with("chair", chair.name()).toString()
                         : Content.of("refuse").with("reason", why).toString()));

@@ -86,7 +86,7 @@ public class MedicalAgent extends Agent {
     /** task -> its contract net now. */
     private final Map<String, ContractNetInitiator> running = new LinkedHashMap<>();
     /** task -> auctions held (conversation ids stay unique while a task waits for a chair). */
-    private final Map<String, Integer> held = new LinkedHashMap<>();
+    private final Map<String, Integer> auctionsHeld = new LinkedHashMap<>();
 
     /** A Medical agent with the standard settings. */
     public MedicalAgent(Consumer<String> log) {
@@ -164,7 +164,7 @@ public class MedicalAgent extends Agent {
             open.remove(id);
             awarded.remove(id);
             running.remove(id);
-            held.remove(id);
+            auctionsHeld.remove(id);
         });
         log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
                 getLocalName(), id, from, to, priority, unloadS));
@@ -248,7 +248,7 @@ public class MedicalAgent extends Agent {
         if (f.isDone()) {
             return;
         }
-        int attempt = held.merge(id, 1, Integer::sum);
+        int attempt = auctionsHeld.merge(id, 1, Integer::sum);
         List<AID> chairs = new ArrayList<>();
         for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.TRANSPORT))) {
             chairs.add(e.aid());

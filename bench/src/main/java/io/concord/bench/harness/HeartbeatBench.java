@@ -11,7 +11,6 @@ import io.concord.serial.Board;
 import io.concord.serial.FrameCodec;
 import io.concord.serial.SerialChair;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -53,28 +52,12 @@ public final class HeartbeatBench {
 
     public static Outcome run(boolean full) throws Exception {
         long phaseMs = full ? 30_000 : 6_000;
-        Path dir = Files.createTempDirectory("concord-heartbeat-bench");
-        Path host = dir.resolve("host");
-        Path boardPath = dir.resolve("board");
-        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + host, "pty,raw,echo=0,link=" + boardPath)
-                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         List<Process> busy = new ArrayList<>();
-        try {
-            long end = System.nanoTime() + 10_000_000_000L;
-            while (!(Files.exists(host) && Files.exists(boardPath))) {
-                if (System.nanoTime() > end) {
-                    throw new IllegalStateException("socat made no pty pair (is socat installed?)");
-                }
-                Thread.sleep(10);
-            }
+        try (PtyPair pty = new PtyPair("concord-heartbeat-bench")) {
+            Path host = pty.host;
             SerialBench.Motors motors = new SerialBench.Motors();
             FrameCodec codec = new FrameCodec();
-            SerialPort bp = SerialPort.getCommPort(boardPath.toString());
-            bp.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
-            bp.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
-            if (!bp.openPort()) {
-                throw new IllegalStateException("cannot open " + boardPath);
-            }
+            SerialPort bp = pty.openBoard();
             long t0 = System.nanoTime();
             Board board = new Board(motors, codec, "bench", bytes -> bp.writeBytes(bytes, bytes.length));
             ConcurrentLinkedQueue<Runnable> onBoard = new ConcurrentLinkedQueue<>();
@@ -225,7 +208,6 @@ public final class HeartbeatBench {
                     estop.stream().mapToDouble(Double::doubleValue).toArray());
         } finally {
             busy.forEach(Process::destroyForcibly);
-            socat.destroyForcibly();
         }
     }
 

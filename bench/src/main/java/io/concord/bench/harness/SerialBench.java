@@ -15,7 +15,6 @@ import io.concord.serial.Frame;
 import io.concord.serial.FrameCodec;
 import io.concord.serial.SerialChair;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -86,28 +85,12 @@ public final class SerialBench {
     }
 
     public static Outcome run(boolean full) throws Exception {
-        Path dir = Files.createTempDirectory("concord-serial-bench");
-        Path host = dir.resolve("host");
-        Path boardPath = dir.resolve("board");
-        Process socat = new ProcessBuilder("socat", "pty,raw,echo=0,link=" + host, "pty,raw,echo=0,link=" + boardPath)
-                .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-        try {
-            long end = System.nanoTime() + 10_000_000_000L;
-            while (!(Files.exists(host) && Files.exists(boardPath))) {
-                if (System.nanoTime() > end) {
-                    throw new IllegalStateException("socat made no pty pair (is socat installed?)");
-                }
-                Thread.sleep(10);
-            }
+        try (PtyPair pty = new PtyPair("concord-serial-bench")) {
+            Path host = pty.host;
             Motors motors = new Motors();
             FrameCodec codec = new FrameCodec();
             Map<Integer, Long> stateSentNs = new ConcurrentHashMap<>();
-            SerialPort bp = SerialPort.getCommPort(boardPath.toString());
-            bp.setComPortParameters(115_200, 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
-            bp.setComPortTimeouts(SerialPort.TIMEOUT_NONBLOCKING, 0, 0);
-            if (!bp.openPort()) {
-                throw new IllegalStateException("cannot open " + boardPath);
-            }
+            SerialPort bp = pty.openBoard();
             long t0 = System.nanoTime();
             Board board = new Board(motors, codec, "bench", bytes -> {
                 Frame f = codec.decode(bytes, 0, bytes.length - 1);
@@ -242,8 +225,6 @@ public final class SerialBench {
             return new Outcome(cmd.stream().mapToDouble(Double::doubleValue).toArray(),
                     sensor.stream().limit(samples).mapToDouble(Double::doubleValue).toArray(),
                     watchdog.stream().mapToDouble(Double::doubleValue).toArray());
-        } finally {
-            socat.destroyForcibly();
         }
     }
 

@@ -114,7 +114,7 @@ public final class ThroughputHarness {
                     try {
                         Thread sender = UdpFloor.startSenders(s, ports, bytes);
                         double rate = measure(received, warmS, measureS);
-                        Counters.stop = true;
+                        Counters.stopSenders();
                         sender.join(5_000);
                         long got = drain(received);
                         return new Result(platform, shape, processes, bytes, rate, Counters.SENT.get(), got, 0, Map.of());
@@ -150,7 +150,7 @@ public final class ThroughputHarness {
 
     /** Stops the senders and waits until what they sent has arrived, or nothing more arrives for 2 s. */
     private static long drain(LongSupplier received) throws InterruptedException {
-        Counters.stop = true;
+        Counters.stopSenders();
         Thread.sleep(100); // let a sender in the middle of an action finish it
         long last = -1;
         long quietSince = System.nanoTime();

@@ -24,7 +24,7 @@ public final class ConcordSender extends Agent {
         addBehaviour(new CyclicBehaviour(this) {
             @Override
             public void action() {
-                if (Counters.stop) {
+                if (Counters.stopped()) {
                     myAgent.removeBehaviour(this);
                     return;
                 }

@@ -6,7 +6,8 @@ import java.util.concurrent.atomic.AtomicLong;
 public final class Counters {
     public static final AtomicLong SENT = new AtomicLong();
     public static final AtomicLong RECEIVED = new AtomicLong();
-    public static volatile boolean stop;
+    /** The senders' stop signal for this benchmark's JVM: set only by {@link #stopSenders}, cleared by {@link #reset}. */
+    private static volatile boolean stop;
 
     private Counters() {
     }
@@ -15,6 +16,16 @@ public final class Counters {
         SENT.set(0);
         RECEIVED.set(0);
         stop = false;
+    }
+
+    /** Tells every sender of this JVM to stop. */
+    public static void stopSenders() {
+        stop = true;
+    }
+
+    /** True once the senders were told to stop. */
+    public static boolean stopped() {
+        return stop;
     }
 
     /** A content of {@code bytes} ASCII characters. */

@@ -29,7 +29,7 @@ public class JadeSender extends Agent {
                 while ((a = myAgent.receive(acks)) != null) {
                     acked = Math.max(acked, Long.parseLong(a.getContent()));
                 }
-                if (Counters.stop) {
+                if (Counters.stopped()) {
                     myAgent.removeBehaviour(this);
                     return;
                 }

@@ -88,7 +88,7 @@ public final class UdpFloor {
         }
     }
 
-    /** Sends from {@code s} sockets to the ports (sender i to port i mod ports) until {@link Counters#stop}. */
+    /** Sends from {@code s} sockets to the ports (sender i to port i mod ports) until {@link Counters#stopped}. */
     public static Thread startSenders(int s, List<Integer> ports, int bytes) throws IOException {
         List<DatagramChannel> from = new ArrayList<>();
         List<InetSocketAddress> to = new ArrayList<>();
@@ -101,7 +101,7 @@ public final class UdpFloor {
         payload.put(Counters.content(bytes).getBytes(java.nio.charset.StandardCharsets.US_ASCII)).flip();
         Thread t = new Thread(() -> {
             try {
-                while (!Counters.stop) {
+                while (!Counters.stopped()) {
                     for (int i = 0; i < from.size(); i++) {
                         payload.rewind();
                         if (from.get(i).send(payload, to.get(i)) > 0) {

@@ -220,14 +220,13 @@ public final class ContainerLayer extends Layer {
                     case STOPPED -> "the agent stopped while its message to " + h.key() + " waited for a container";
                 }, why == WaitRoom.Why.STOPPED ? null : "Foreign agent unreachable: no container of platform " + platform
                         + " to carry the message"));
-        requests = new ServiceRequests(context, null);
-        registrations = new Registrations(context, st, requests);
         roles = new Roles(context, st, network, around, relay, this::publish, () -> {
             gate.listsChanged();
             registrations.reconcile();
         });
-        requests.roles(roles);
         directory = new Directory(context, roles);
+        requests = new ServiceRequests(context, roles);
+        registrations = new Registrations(context, st, requests);
         context.trace("start", "neighbours=" + neighbours.size());
         roles.start(neighbours);
     }

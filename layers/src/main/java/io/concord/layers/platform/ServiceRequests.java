@@ -37,7 +37,7 @@ final class ServiceRequests {
     }
 
     private final PlatformContext ctx;
-    private Roles roles;
+    private final Roles roles;
     private final List<Request> waitingForContainer = new ArrayList<>();
     private final Map<String, Request> open = new HashMap<>();
     private long counter;
@@ -45,11 +45,6 @@ final class ServiceRequests {
     ServiceRequests(PlatformContext ctx, Roles roles) {
         this.ctx = ctx;
         this.roles = roles;
-    }
-
-    /** The roles, once made (they are made after the requests, whose registrations they reconcile). */
-    void roles(Roles r) {
-        this.roles = r;
     }
 
     private boolean containerKnown() {

@@ -22,7 +22,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 
@@ -67,8 +66,8 @@ class ChairSafetyTest {
             HospitalWorld doors = HospitalWorld.builder(MAP).seed(1).build();
             hospital = Hospital.start(platform, doors, log::add);
             doors.attach(rt);
-            serial = onLoop(() -> SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair1").withStart(doors.poseAt(19, 90))));
-            supervisor = onLoop(() -> ChairSupervisor.withDefences(serial, defences));
+            serial = call(() -> SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair1").withStart(doors.poseAt(19, 90))));
+            supervisor = call(() -> ChairSupervisor.withDefences(serial, defences));
             hospital.addChair(platform, MAP, supervisor, log::add);
             control = hospital.control("chair1");
             medical = new MedicalAgent(medicalSettings, log::add);
@@ -77,25 +76,27 @@ class ChairSafetyTest {
                     "the planner to know the doors and the chair to be armed");
         }
 
-        <T> T onLoop(Supplier<T> s) throws InterruptedException {
-            CountDownLatch done = new CountDownLatch(1);
-            Object[] out = new Object[1];
-            rt.execute(() -> {
-                out[0] = s.get();
-                done.countDown();
-            });
-            assertTrue(done.await(10, TimeUnit.SECONDS));
-            @SuppressWarnings("unchecked")
-            T t = (T) out[0];
-            return t;
+        <T> T call(Supplier<T> s) {
+            return Loops.call(rt, s);
         }
 
-        <T> T call(Supplier<T> s) {
-            try {
-                return onLoop(s);
-            } catch (InterruptedException e) {
-                throw new AssertionError(e);
-            }
+        /**
+         * With the defences off, the hazard after {@code boardCommand}: the host repeats a command
+         * the board refuses, and the task is never paused. The board's status after.
+         */
+        Map<String, String> refusedOverAndOverAfter(String boardCommand) throws Exception {
+            long refusals = serial.refusals();
+            board.command(boardCommand);
+            Pty.await(() -> serial.refusals() > refusals + 20, 30_000, "the host to repeat a refused command");
+            assertFalse(said("pauses T1"), tail());
+            return board.status();
+        }
+
+        /** The task resumed and the chair drives on. */
+        void drivesOnAfterTheResume() throws Exception {
+            awaitSaid("control-chair1: resumes T1", 10_000);
+            double at = moved(board.status());
+            board.awaitStatus(st -> moved(st) > at + 0.2, 30_000, "the chair to drive on");
         }
 
         /** A transport from the lobby (node 19, where the chair waits) to node 3, once the chair has set off. */
@@ -234,12 +235,8 @@ class ChairSafetyTest {
     void withoutItsDefencesABoardRebootLeavesTheHostRepeatingRefusedCommands(@TempDir Path dir) throws Exception {
         try (Ward w = new Ward(dir, NONE, medicalSettings())) {
             w.transportUnderWay();
-            long refusals = w.serial.refusals();
-            w.board.command("reboot");
-            Pty.await(() -> w.serial.refusals() > refusals + 20, 30_000, "the host to repeat a refused command");
-            Map<String, String> s = w.board.status();
+            Map<String, String> s = w.refusedOverAndOverAfter("reboot");
             assertEquals("0,0", s.get("motors"), "the chair stands while the agents believe it drives: " + s);
-            assertFalse(w.said("pauses T1"), w.tail());
         }
     }
 
@@ -258,9 +255,7 @@ class ChairSafetyTest {
                 }
             }
             w.awaitSaid("control-chair1: pauses T1: the board's watchdog tripped", 1_000);
-            w.awaitSaid("control-chair1: resumes T1", 10_000);
-            double at = moved(w.board.status());
-            w.board.awaitStatus(st -> moved(st) > at + 0.2, 30_000, "the chair to drive on");
+            w.drivesOnAfterTheResume();
         }
     }
 
@@ -268,11 +263,7 @@ class ChairSafetyTest {
     void withoutItsDefencesAnUnseenTripStallsTheTransportForGood(@TempDir Path dir) throws Exception {
         try (Ward w = new Ward(dir, NONE, medicalSettings())) {
             w.transportUnderWay();
-            long refusals = w.serial.refusals();
-            w.board.command("trip");
-            Pty.await(() -> w.serial.refusals() > refusals + 20, 30_000, "the host to repeat a refused command");
-            assertEquals("false", w.board.status().get("armed"));
-            assertFalse(w.said("pauses T1"), w.tail());
+            assertEquals("false", w.refusedOverAndOverAfter("trip").get("armed"));
         }
     }
 
@@ -283,9 +274,7 @@ class ChairSafetyTest {
             w.board.command("corrupt-rx 60");
             w.board.awaitStatus(st -> st.get("drops").contains("corrupt=60"), 30_000, "the board to drop 60 corrupt frames");
             w.awaitSaid("control-chair1: pauses T1: the board's watchdog tripped", 10_000);
-            w.awaitSaid("control-chair1: resumes T1", 10_000);
-            double at = moved(w.board.status());
-            w.board.awaitStatus(st -> moved(st) > at + 0.2, 30_000, "the chair to drive on");
+            w.drivesOnAfterTheResume();
         }
     }
 
@@ -293,10 +282,7 @@ class ChairSafetyTest {
     void withoutItsDefencesSixtyCorruptFramesStallTheTransport(@TempDir Path dir) throws Exception {
         try (Ward w = new Ward(dir, NONE, medicalSettings())) {
             w.transportUnderWay();
-            long refusals = w.serial.refusals();
-            w.board.command("corrupt-rx 60");
-            Pty.await(() -> w.serial.refusals() > refusals + 20, 30_000, "the host to repeat a refused command");
-            assertFalse(w.said("pauses T1"), w.tail());
+            w.refusedOverAndOverAfter("corrupt-rx 60");
         }
     }
 
@@ -311,8 +297,7 @@ class ChairSafetyTest {
             w.awaitSaid("control-chair1: pauses T1: the link to the chair went down", 10_000);
             w.pty.start();
             w.awaitSaid("control-chair1: resumes T1", 20_000);
-            double at = moved(w.board.status());
-            w.board.awaitStatus(st -> moved(st) > at + 0.2, 30_000, "the chair to drive on");
+            w.drivesOnAfterTheResume();
             assertFalse(f.isDone(), "not dropped: " + w.tail());
             assertFalse(w.said("fails T1"), w.tail());
         }
@@ -322,7 +307,7 @@ class ChairSafetyTest {
     void withoutTheGraceAndTheWaitAShortOutageDropsTheTransport(@TempDir Path dir) throws Exception {
         MedicalAgent.Settings noWait = new MedicalAgent.Settings(2_000, 3, 0, 5_000, 120_000);
         try (Ward w = new Ward(dir, ALL, noWait)) {
-            w.onLoop(() -> {
+            w.call(() -> {
                 w.control.setLinkGraceMs(0);
                 return null;
             });

@@ -65,13 +65,7 @@ public final class SafetyHostMain {
         System.exit(0);
     }
 
-    private static boolean ready(io.concord.core.agent.AgentRuntime rt, Hospital h, ChairSupervisor s) throws InterruptedException {
-        java.util.concurrent.CompletableFuture<Boolean> f = new java.util.concurrent.CompletableFuture<>();
-        rt.execute(() -> f.complete(h.ready() && s.armed()));
-        try {
-            return f.get();
-        } catch (java.util.concurrent.ExecutionException e) {
-            throw new IllegalStateException(e);
-        }
+    private static boolean ready(io.concord.core.agent.AgentRuntime rt, Hospital h, ChairSupervisor s) {
+        return Loops.call(rt, () -> h.ready() && s.armed());
     }
 }

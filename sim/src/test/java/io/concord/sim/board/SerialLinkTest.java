@@ -24,8 +24,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -38,16 +36,7 @@ class SerialLinkTest {
     static final HospitalMap MAP = HospitalMap.defaultHospital();
 
     private static <T> T onLoop(AgentRuntime rt, java.util.function.Supplier<T> s) throws InterruptedException {
-        CountDownLatch done = new CountDownLatch(1);
-        Object[] out = new Object[1];
-        rt.execute(() -> {
-            out[0] = s.get();
-            done.countDown();
-        });
-        assertTrue(done.await(10, TimeUnit.SECONDS));
-        @SuppressWarnings("unchecked")
-        T t = (T) out[0];
-        return t;
+        return Loops.call(rt, s);
     }
 
     /** True if a line of the log (written by the loop meanwhile) starts so. */
