@@ -25,5 +25,17 @@ public enum Defence {
      * The sequence layer keeps at most the receiver's window of frames unacknowledged, holds the
      * rest (slowing the sending agent), and the receiver closes its window while its mailbox is full.
      */
-    FLOW_CONTROL
+    FLOW_CONTROL,
+    /**
+     * The sequence layer takes a peer's stream (its frames' numbers, and a new stream at its
+     * restart) only from frames sealed to this agent, never from a frame for any agent, which any
+     * key holder can seal in any agent's name ({@code unauthenticated}).
+     */
+    SESSION_PROOF,
+    /**
+     * The container layer changes container only on the claimed container's own word, sealed to
+     * this agent; a claim in a frame for any agent (which any key holder can seal in any name) is
+     * a hint, checked by asking the claimed container itself.
+     */
+    CLAIM_CHECK
 }

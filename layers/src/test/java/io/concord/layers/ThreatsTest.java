@@ -348,4 +348,71 @@ class ThreatsTest {
             assertTrue(count(drops, "bad-tag") > 0, "the outsider's frames failed authentication: " + drops);
         }
     }
+
+    // ---- an insider's forged stream reset: sessions only the peer itself can restart ----------------
+
+    @ParameterizedTest
+    @EnumSource(Where.class)
+    void forgedStreamReset(Where where) throws Exception {
+        withDefenceOff(where, Defence.SESSION_PROOF, ThreatsTest::forgedStreamReset0);
+    }
+
+    /**
+     * A key holder (the platform key, an identity of its own) seals a frame "for any agent" in A's
+     * name, whose sequence header says A restarted (a data frame of a new stream). Before the
+     * defence, B took it for A's new session and dropped all of A's real frames as an earlier
+     * session's: one datagram silenced A for B (and, between containers, split the platform).
+     */
+    private static void forgedStreamReset0(Where where, Set<Defence> off) throws Exception {
+        try (ThreatWorld w = world(where, Medium.PASS, 2_000, Profile.CLASS_7, off)) {
+            w.send(w.sender, w.receiverAsSeenByA(), "m0");
+            assertTrue(w.awaitReceived(1));
+            ThreatWorld.Puppet forger = new ThreatWorld.Puppet();
+            w.startOnM("a", forger, forgingStack(w.stack()));
+            AID b = w.receiverDirect();
+            AID anyAtB = new AID(Frames.ANY_LOCAL_NAME + "@" + b.platform(), b.addresses().toArray(String[]::new));
+            forger.runtime().execute(() -> forger.send(new AclMessage(Performative.INFORM).addReceiver(anyAtB)
+                    .setContent("a new session of a, says a key holder")));
+            w.awaitDrops(() -> count(w.receiverDrops(), "unauthenticated") + count(w.receiverDrops(), "not-member")
+                    + count(w.receiverDrops(), "malformed-message") > 0);
+            w.settle(100);
+            w.send(w.sender, w.receiverAsSeenByA(), ThreatWorld.contents(N));
+            boolean all = w.awaitReceived(N + 1);
+            w.settle(3 * w.windowMs);
+            List<String> expected = new ArrayList<>(List.of("a:m0"));
+            expected.addAll(ThreatWorld.expected("a", N));
+            assertEquals(expected, w.received(), "exactly what A sent, once, in order, unchanged (all in: " + all
+                    + "); drops " + w.receiverDrops());
+            assertTrue(count(w.receiverDrops(), "unauthenticated") > 0, "the forged reset was refused: " + w.receiverDrops());
+        }
+    }
+
+    /**
+     * The attacker's stack: the class-7 stack with, under its sequence layer, a rewrite that turns
+     * the unsequenced frame "for any agent" into the first data frame of a new stream.
+     */
+    private static java.util.function.Supplier<List<io.concord.core.layer.Layer>> forgingStack(
+            java.util.function.Supplier<List<io.concord.core.layer.Layer>> base) {
+        return () -> {
+            List<io.concord.core.layer.Layer> layers = new ArrayList<>(base.get());
+            int at = 0;
+            while (!(layers.get(at) instanceof io.concord.layers.sequence.SequenceLayer)) {
+                at++;
+            }
+            layers.add(at + 1, new io.concord.core.layer.Layer() {
+                @Override
+                public void onDown(io.concord.core.layer.LayerContext ctx, io.concord.core.layer.Envelope env) {
+                    byte[] d = env.data();
+                    int o = env.offset();
+                    if (env.peerId() == Frames.ANY && d[o] == 5) {
+                        d[o] = 0; // DATA
+                        Frames.putInt(d, o + 1, 0x5EED); // a stream A never had
+                        Frames.putLong(d, o + 5, 1);
+                    }
+                    ctx.passDown(env);
+                }
+            });
+            return layers;
+        };
+    }
 }

@@ -97,9 +97,18 @@ public final class ContainerLayer extends Layer {
 
     /** ... and reaches foreign platforms through a gateway (the JADE bridge), or none if {@code null}. */
     public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway) {
+        this(config, network, gateway, java.util.Set.of());
+    }
+
+    /**
+     * ... without some defences: only for the threat tests, which show the threat reaching an
+     * agent without its defence ({@link io.concord.layers.Defence#CLAIM_CHECK}).
+     */
+    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, java.util.Set<io.concord.layers.Defence> off) {
         this.config = config;
         this.network = network;
         this.gateway = gateway;
+        st.claimCheck = !off.contains(io.concord.layers.Defence.CLAIM_CHECK);
     }
 
     public ContainerLayer() {

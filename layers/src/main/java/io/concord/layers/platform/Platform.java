@@ -46,11 +46,12 @@ public final class Platform implements AutoCloseable {
         PlatformConfig config = b.config;
         NetworkConfig network = b.network;
         Supplier<Gateway> gateways = b.gateway;
+        java.util.Set<io.concord.layers.Defence> off = b.off;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
             io.concord.layers.observe.ObserverLayer observer = new io.concord.layers.observe.ObserverLayer();
             l.add(observer);
-            l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get()));
+            l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get(), off));
             l.addAll(safety.get());
             observer.stack(l);
             return l;
@@ -62,6 +63,7 @@ public final class Platform implements AutoCloseable {
         if (b.key != null) {
             sb.platformKey(b.key);
         }
+        sb.withoutDefences(b.off.toArray(io.concord.layers.Defence[]::new));
         return sb.build();
     }
 
@@ -80,6 +82,7 @@ public final class Platform implements AutoCloseable {
         private NetworkConfig network = NetworkConfig.defaults();
         private Supplier<Gateway> gateway;
         private Supplier<List<Layer>> safety;
+        private java.util.Set<io.concord.layers.Defence> off = java.util.Set.of();
         private AgentRuntime runtime;
         private io.concord.layers.security.PlatformKey key;
         private String console;
@@ -170,6 +173,16 @@ public final class Platform implements AutoCloseable {
          */
         public Builder gateway(Supplier<Gateway> g) {
             this.gateway = g;
+            return this;
+        }
+
+        /**
+         * Builds this platform's stacks without some defences: only for the threat tests, which
+         * show each threat reaching an agent without its defence. It reaches only the stacks of
+         * this platform (the container layer's, and the default safety layers').
+         */
+        public Builder withoutDefences(io.concord.layers.Defence... defences) {
+            this.off = java.util.Set.copyOf(java.util.List.of(defences));
             return this;
         }
 

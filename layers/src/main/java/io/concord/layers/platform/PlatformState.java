@@ -53,6 +53,8 @@ final class PlatformState {
      * key alone: its sender is whatever its sender wrote, so it is a hint at most.
      */
     boolean fromAny;
+    /** Claims are taken only on the claimed container's own authenticated word (off only in threat tests). */
+    boolean claimCheck = true;
     /**
      * The copy of the last LAL this agent asked for after failed joins: from whom (a name, or the
      * agent at an address), and until when it is taken. A copy nobody asked for is refused: only

@@ -102,14 +102,14 @@ abstract class RoleBase implements PlatformMessage.Handler {
         if (c.container().name().equals(ctx.self())) {
             return;
         }
-        boolean ownClaim = !st.fromAny && c.container().name().equals(m.getSender().name());
+        boolean ownClaim = (!st.fromAny || !st.claimCheck) && c.container().name().equals(m.getSender().name());
         if (!ownClaim && kind() != ContainerLayer.Role.SEEKING) {
             // A member or a container changes sides only on the claimed container's own word,
             // sealed to it; anything else is a hint, and the claimed container is asked itself.
             roles.verifyClaim(c.container());
             return;
         }
-        if (!st.fromAny) {
+        if (!st.fromAny || !st.claimCheck) {
             st.maxTermSeen = Math.max(st.maxTermSeen, c.term());
         }
         claimed(c.container(), c.term(), m);

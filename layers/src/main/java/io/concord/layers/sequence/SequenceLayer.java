@@ -141,6 +141,7 @@ public final class SequenceLayer extends Layer {
     private final boolean retransmission;
     private final boolean reorderBuffer;
     private final boolean flowControl;
+    private final boolean sessionProof;
     private final Map<Long, Out> outs;
     /** Receivers with frames held for them: while any, the agent is paused. */
     private int congested;
@@ -160,6 +161,7 @@ public final class SequenceLayer extends Layer {
         this.retransmission = !off.contains(io.concord.layers.Defence.RETRANSMISSION);
         this.reorderBuffer = !off.contains(io.concord.layers.Defence.REORDER_BUFFER);
         this.flowControl = !off.contains(io.concord.layers.Defence.FLOW_CONTROL);
+        this.sessionProof = !off.contains(io.concord.layers.Defence.SESSION_PROOF);
         this.config = config;
         // A receiver with frames held for it is never forgotten: they would be lost, and the agent
         // stay paused.
@@ -425,6 +427,15 @@ public final class SequenceLayer extends Layer {
         int streamId = Frames.getInt(d, o + 1);
         long seq = Frames.getLong(d, o + 5);
         long peer = env.peerId();
+        if (sessionProof && kind != DATAGRAM && env.header(Frames.ENVELOPE_ANY) != null) {
+            // Sealed with the platform key alone: any key holder can write it in any agent's name.
+            // Only a frame sealed to this agent (under class 7, with the pair key of a signed
+            // handshake) may start, continue or end a peer's stream: else one forged frame with a
+            // new stream id would make the real frames of the peer look like an earlier session's.
+            ctx.drop(env, "unauthenticated", "a sequenced frame (kind " + kind + ") addressed to any agent, in the name of "
+                    + Long.toHexString(peer) + ": only frames sealed to this agent carry a peer's stream");
+            return;
+        }
         switch (kind) {
             case DATA -> onData(ctx, env, peer, streamId, seq);
             case DATAGRAM -> {
