@@ -136,7 +136,7 @@ public class BookBuyer extends Agent {
             return Receivers.listed(this, sellers);
         }
         sellers.clear();
-        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType("book-selling"))) {
+        for (AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.ofType("book-selling"))) {
             sellers.add(e.aid());
         }
         return !sellers.isEmpty();

@@ -37,5 +37,11 @@ public enum Defence {
      * this agent; a claim in a frame for any agent (which any key holder can seal in any name) is
      * a hint, checked by asking the claimed container itself.
      */
-    CLAIM_CHECK
+    CLAIM_CHECK,
+    /**
+     * The container layer checks an agent of its host that fell silent by its port before taking
+     * it for dead: a process that still holds its port is slow, not gone (no false eviction, no
+     * election on a busy machine).
+     */
+    PORT_CHECK
 }

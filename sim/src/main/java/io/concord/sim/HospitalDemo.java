@@ -485,7 +485,7 @@ public final class HospitalDemo {
         // Wait until the yellow pages list every chair.
         while (true) {
             CompletableFuture<Integer> n = new CompletableFuture<>();
-            rt.execute(() -> n.complete(Platform.of(medical).search(ServiceDescription.ofType(Services.TRANSPORT)).size()));
+            rt.execute(() -> n.complete(Platform.of(medical).searchCopy(ServiceDescription.ofType(Services.TRANSPORT)).size()));
             if (n.get(10, TimeUnit.SECONDS) >= o.chairs()) {
                 break;
             }

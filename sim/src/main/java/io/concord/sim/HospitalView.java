@@ -86,7 +86,7 @@ public final class HospitalView implements ConsoleView {
 
         /** Sends the request; returns what to tell the user. Loop thread. */
         String ask(int from, int to, double priority, double unloadS) {
-            List<AgentEntry> medical = Platform.of(this).search(ServiceDescription.ofType(Services.MEDICAL));
+            List<AgentEntry> medical = Platform.of(this).searchCopy(ServiceDescription.ofType(Services.MEDICAL));
             if (medical.isEmpty()) {
                 throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
             }

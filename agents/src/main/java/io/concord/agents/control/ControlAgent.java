@@ -369,7 +369,7 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
     }
 
     private AID planner() {
-        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.PLANNER))) {
+        for (AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.ofType(Services.PLANNER))) {
             for (ServiceDescription s : e.services()) {
                 if (s.type().equals(Services.PLANNER) && chair.name().equals(s.properties().get("chair"))) {
                     return e.aid();
@@ -846,7 +846,7 @@ public class ControlAgent extends Agent implements ChairListener, ChairSuperviso
     }
 
     private AID doorAgent(String id) {
-        for (AgentEntry e : Platform.of(this).search(ServiceDescription.of(Services.DOOR, id))) {
+        for (AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.of(Services.DOOR, id))) {
             return e.aid();
         }
         return null;

@@ -45,7 +45,7 @@ final class TrafficClient {
     }
 
     private AID traffic() {
-        for (AgentEntry e : Platform.of(agent).search(ServiceDescription.ofType(Services.TRAFFIC))) {
+        for (AgentEntry e : Platform.of(agent).searchCopy(ServiceDescription.ofType(Services.TRAFFIC))) {
             return e.aid();
         }
         return null;

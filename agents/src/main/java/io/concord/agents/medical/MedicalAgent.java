@@ -250,7 +250,7 @@ public class MedicalAgent extends Agent {
         }
         int attempt = auctionsHeld.merge(id, 1, Integer::sum);
         List<AID> chairs = new ArrayList<>();
-        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.TRANSPORT))) {
+        for (AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.ofType(Services.TRANSPORT))) {
             chairs.add(e.aid());
         }
         if (chairs.isEmpty()) {

@@ -99,7 +99,7 @@ public class PlannerAgent extends Agent {
     }
 
     private void discoverDoors() {
-        for (AgentEntry e : Platform.of(this).search(ServiceDescription.ofType(Services.DOOR))) {
+        for (AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.ofType(Services.DOOR))) {
             for (ServiceDescription s : e.services()) {
                 if (!s.type().equals(Services.DOOR) || doors.containsKey(s.name())) {
                     continue;

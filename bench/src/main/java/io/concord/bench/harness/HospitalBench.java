@@ -111,7 +111,7 @@ public final class HospitalBench {
             });
             platform.startAgent("medical", medical);
             waitUntil(rt, () -> hospital.ready()
-                    && !Platform.of(medical).search(ServiceDescription.ofType(Services.TRANSPORT)).isEmpty(), 60);
+                    && !Platform.of(medical).searchCopy(ServiceDescription.ofType(Services.TRANSPORT)).isEmpty(), 60);
             int warm = rounds / 2;
             double[] out = new double[rounds - warm];
             for (int i = 0; i < rounds; i++) {

@@ -250,6 +250,22 @@ final class AgentNode implements StackHost {
             return transport == Transport.UDP ? runtime.network().broadcastAddresses(endpoint.localAddress().host())
                     : java.util.List.of();
         }
+
+        @Override
+        public Boolean held(Address address) {
+            Address own = endpoint.localAddress();
+            if (address == null || !own.host().equals(address.host())) {
+                return null;
+            }
+            if (address.equals(own)) {
+                return Boolean.TRUE;
+            }
+            try {
+                return runtime.network().isHeld(transport, address.host(), address.port());
+            } catch (RuntimeException e) {
+                return null; // not a port this node can bind to check
+            }
+        }
     };
 
     /**

@@ -482,6 +482,11 @@ public final class AgentRuntime implements AutoCloseable {
         return pauses;
     }
 
+    /** The transport addresses this runtime's agents hold (the test kit pauses what arrives there). Loop thread only. */
+    public java.util.Set<Address> boundAddresses() {
+        return java.util.Set.copyOf(byAddress.keySet());
+    }
+
     /** Who watches which address of this runtime for its agent's leaving. */
     private final Map<Address, List<Runnable>> goneWatchers = new HashMap<>();
     private final Map<Address, AgentNode> byAddress = new HashMap<>();

@@ -26,4 +26,14 @@ public interface Neighbourhood {
 
     /** The broadcast addresses this node reaches (none on loopback). */
     List<String> broadcastAddresses();
+
+    /**
+     * Whether a port of this node's own host is held, checked by binding it and releasing it at
+     * once: a process that crashed (killed, exited) holds none of its ports any more, one that is
+     * only slow (paused, starved of CPU) still holds them. {@code null} when it cannot be told: the
+     * address is on another host, or of another transport.
+     */
+    default Boolean held(Address address) {
+        return null;
+    }
 }

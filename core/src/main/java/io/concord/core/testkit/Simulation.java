@@ -33,6 +33,10 @@ public final class Simulation implements AutoCloseable {
     private final TraceRecorder trace = new TraceRecorder();
     private final List<AgentRuntime> runtimes = new ArrayList<>();
     private String platformName = "sim";
+    /** Runtimes paused (no loop turn) until when, on the virtual clock. */
+    private final java.util.Map<AgentRuntime, Long> pausedUntil = new java.util.IdentityHashMap<>();
+    /** Runtimes whose every loop turn with work costs this much virtual time (a slow or starved process). */
+    private final java.util.Map<AgentRuntime, Long> turnCostNs = new java.util.IdentityHashMap<>();
 
     public Simulation(long seed, FaultPlan plan) {
         this.seed = seed;
@@ -99,15 +103,30 @@ public final class Simulation implements AutoCloseable {
      */
     public boolean step(long limitNs) {
         int work = 0;
+        long now0 = clock.nanoTime();
         for (int i = 0; i < runtimes.size(); i++) {
-            work += runtimes.get(i).doWork();
+            AgentRuntime rt = runtimes.get(i);
+            Long until = pausedUntil.get(rt);
+            if (until != null) {
+                if (until > now0) {
+                    continue;
+                }
+                pausedUntil.remove(rt);
+            }
+            int w = rt.doWork();
+            work += w;
+            Long cost = turnCostNs.get(rt);
+            if (w > 0 && cost != null) {
+                hold(rt, now0 + cost);
+            }
         }
         if (work > 0) {
             return true;
         }
         long next = network.nextEventNs();
         for (AgentRuntime rt : runtimes) {
-            next = Math.min(next, rt.nextDeadlineNs());
+            Long until = pausedUntil.get(rt);
+            next = Math.min(next, until != null ? Math.max(until, rt.nextDeadlineNs()) : rt.nextDeadlineNs());
         }
         long now = clock.nanoTime();
         if (next == Long.MAX_VALUE || next > limitNs) {
@@ -120,6 +139,32 @@ public final class Simulation implements AutoCloseable {
             clock.setNanoTime(next);
         }
         return true;
+    }
+
+    /**
+     * Pauses a runtime, as a stopped or starved process is (SIGSTOP, a long GC, a machine
+     * swapping): for {@code ms} its loop turns no more, its timers are late, what arrives for its
+     * agents waits in their sockets, and its ports stay held; the clock runs on for everyone.
+     */
+    public void pause(AgentRuntime rt, long ms) {
+        hold(rt, clock.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ms));
+    }
+
+    /**
+     * Makes a runtime slow: each turn of its loop that does work then holds it for {@code turnMs}
+     * (a process given a fraction of a core); 0 makes it normal again.
+     */
+    public void slow(AgentRuntime rt, double turnMs) {
+        if (turnMs <= 0) {
+            turnCostNs.remove(rt);
+        } else {
+            turnCostNs.put(rt, (long) (turnMs * 1_000_000L));
+        }
+    }
+
+    private void hold(AgentRuntime rt, long untilNs) {
+        pausedUntil.merge(rt, untilNs, Math::max);
+        network.holdUntil(rt.boundAddresses(), untilNs);
     }
 
     /** Runs for the given virtual milliseconds. */

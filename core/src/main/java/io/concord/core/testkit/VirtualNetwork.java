@@ -41,6 +41,8 @@ public final class VirtualNetwork implements Network {
     private final PriorityQueue<Delivery> pending = new PriorityQueue<>();
     private final Set<String> partitions = new HashSet<>();
     private final Set<String> downHosts = new HashSet<>();
+    /** Addresses whose process is paused, until when: what arrives there waits (its socket buffers it). */
+    private final Map<Address, Long> heldUntil = new HashMap<>();
     private long sequence;
     private long sent;
     private long sentBytes;
@@ -292,11 +294,30 @@ public final class VirtualNetwork implements Network {
                 dropped++;
                 continue;
             }
+            Long until = heldUntil.get(ep.local);
+            if (until != null) {
+                if (until > nowNs) {
+                    // Its process is paused: the datagram waits in the socket's buffer, in order.
+                    pending.add(new Delivery(until, d.seq, d.from, d.to, d.data, d.tcp, ep));
+                    continue;
+                }
+                heldUntil.remove(ep.local);
+            }
             delivered++;
             n++;
             ep.receiver.onDatagram(d.from, d.data, 0, d.data.length, nowNs);
         }
         return n;
+    }
+
+    /**
+     * Holds what arrives at these addresses until the given time, as the socket buffers of a
+     * paused process do (the test kit's pause of a runtime, {@link Simulation#pause}).
+     */
+    public void holdUntil(java.util.Collection<Address> addresses, long untilNs) {
+        for (Address a : addresses) {
+            heldUntil.merge(a, untilNs, Math::max);
+        }
     }
 
     @Override

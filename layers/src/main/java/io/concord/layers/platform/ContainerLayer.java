@@ -109,6 +109,7 @@ public final class ContainerLayer extends Layer {
         this.network = network;
         this.gateway = gateway;
         st.claimCheck = !off.contains(io.concord.layers.Defence.CLAIM_CHECK);
+        st.portCheck = !off.contains(io.concord.layers.Defence.PORT_CHECK);
     }
 
     public ContainerLayer() {
@@ -248,6 +249,9 @@ public final class ContainerLayer extends Layer {
         }
         registrations.stop();
         roles.stop();
+        if (requests != null) {
+            requests.stop();
+        }
         publish();
     }
 
@@ -390,6 +394,12 @@ public final class ContainerLayer extends Layer {
         }
         if (roles.kind() == Role.STOPPED) {
             return;
+        }
+        if (env.source() != null) {
+            // Who holds which port: a message from a port comes from its holder (on one host no
+            // other process can send from it), so a listed agent of another name whose port this is
+            // is gone, whatever the port check would say of the port itself.
+            st.heardAt.put(env.source(), sender.name());
         }
         if (forService) {
             if (env.header(Frames.ENVELOPE_ANY) != null) {

@@ -42,6 +42,12 @@ final class ContainerRole extends RoleBase {
     private long seqAtLastCycle = -1;
     private long cycleStartNs;
     private long cycleDueNs;
+    /** This loop's recent lag (how late its cycles ran), fading by a period each cycle. */
+    private long ownLagNs;
+    /** Members silent past the timeout but holding their ports: slow, not dead. */
+    private final Set<String> slow = new HashSet<>();
+    /** Members found slow rather than dead, since this agent took the role. */
+    private long slowSuspicions;
 
     ContainerRole(Roles roles) {
         super(roles);
@@ -125,6 +131,7 @@ final class ContainerRole extends RoleBase {
     public void onJoin(PlatformMessage.Join j, AclMessage m) {
         AgentEntry e = j.by();
         AgentLists lists = st.lists;
+        replacedAt(e);
         AgentEntry old = lists.lal.put(e.name(), keepServices(lists.lal.get(e.name()), e));
         lastHeard.put(e.name(), ctx.nowNs());
         listed(e);
@@ -188,6 +195,37 @@ final class ContainerRole extends RoleBase {
         }
         localWatches.clear();
         super.leave();
+    }
+
+    /**
+     * A newcomer holds the port of a listed agent of another name: that one's process is gone (a
+     * port has one holder), though it may still be within its timeout.
+     */
+    private void replacedAt(AgentEntry e) {
+        Address at = e.transportAddress();
+        if (at == null) {
+            return;
+        }
+        List<String> gone = new ArrayList<>();
+        for (AgentEntry l : st.lists.lal.values()) {
+            if (!l.name().equals(e.name()) && !l.name().equals(ctx.self()) && at.equals(l.transportAddress())) {
+                gone.add(l.name());
+            }
+        }
+        for (String n : gone) {
+            st.lists.lal.remove(n);
+            lastHeard.remove(n);
+            heldSeq.remove(n);
+            slow.remove(n);
+            st.seq++;
+            roles.routesChanged(n);
+            ctx.trace("removed", n + ": " + e.name() + " now holds its port " + at);
+        }
+    }
+
+    /** Members found slow (silent past the timeout, their process alive) rather than dead, since this agent took the role. */
+    long slowSuspicions() {
+        return slowSuspicions;
     }
 
     /** A rejoining agent that lost its own copy keeps the services the list holds for it. */
@@ -372,7 +410,12 @@ final class ContainerRole extends RoleBase {
         AgentLists lists = st.lists;
         // A cycle that runs late (this loop stalled) removes nobody: the agents' confirmations may
         // be waiting to be read.
-        boolean late = cycleDueNs > 0 && now - cycleDueNs > st.periodMs * 500_000L;
+        long lagNs = cycleDueNs > 0 ? Math.max(0, now - cycleDueNs) : 0;
+        boolean late = lagNs > st.periodMs * 500_000L;
+        // Local health (Lifeguard): a loop that ran late lately accuses nobody of silence it may
+        // have caused itself: the lag it measured, fading by a period a cycle, lengthens the
+        // timeout of those it cannot check otherwise.
+        ownLagNs = Math.max(lagNs, ownLagNs - st.periodMs * 1_000_000L);
         List<String> dead = new ArrayList<>();
         boolean remote = false; // a member elsewhere: the cycle keeps its period
         for (AgentEntry e : lists.lal.values()) {
@@ -389,14 +432,20 @@ final class ContainerRole extends RoleBase {
             if (heard == null) {
                 lastHeard.put(n, now);
             } else if (!late && now - heard > st.timeoutMs * 1_000_000L) {
-                dead.add(n);
+                String why = suspect(e, now - heard);
+                if (why != null) {
+                    dead.add(n);
+                    ctx.trace("removed", n + " " + why);
+                }
+            } else {
+                slow.remove(n);
             }
         }
         for (String n : dead) {
             lists.lal.remove(n);
             lastHeard.remove(n);
             heldSeq.remove(n);
-            ctx.trace("removed", n + " silent for more than " + st.timeoutMs + " ms");
+            slow.remove(n);
         }
         if (!dead.isEmpty()) {
             st.seq++;
@@ -456,6 +505,37 @@ final class ContainerRole extends RoleBase {
         if (!dead.isEmpty()) {
             roles.publish();
         }
+    }
+
+    /**
+     * A member silent past the timeout is suspected, and checked before it is removed (as SWIM
+     * probes a suspect): where its port is on this host, binding it tells a crash (the port is
+     * free: removed now) from a slow process (still held: kept, and sent alives, which it answers
+     * when its loop turns again, refuting the suspicion), up to {@link PlatformConfig#SLOW_BOUND_MS}.
+     * Where it cannot be checked, the timeout is lengthened by this loop's own recent lag.
+     *
+     * @return why it is taken for dead, or null while it is kept
+     */
+    private String suspect(AgentEntry e, long silentNs) {
+        long silentMs = silentNs / 1_000_000L;
+        Boolean held = ctx.portHeld(e);
+        if (Boolean.FALSE.equals(held)) {
+            return "silent for " + silentMs + " ms, and its port is free: its process is gone";
+        }
+        if (Boolean.TRUE.equals(held)) {
+            if (silentMs > PlatformConfig.SLOW_BOUND_MS) {
+                return "silent for " + silentMs + " ms though its process holds its port: hung";
+            }
+            if (slow.add(e.name())) {
+                slowSuspicions++;
+                ctx.trace("slow", e.name() + " silent for " + silentMs + " ms, but its process holds its port: kept");
+            }
+            return null;
+        }
+        if (silentNs > st.timeoutMs * 1_000_000L + Math.min(ownLagNs, PlatformConfig.SLOW_BOUND_MS * 1_000_000L)) {
+            return "silent for more than " + st.timeoutMs + " ms";
+        }
+        return null;
     }
 
     // ---- the global agent list (fig. 5.12) ------------------------------------------------------

@@ -31,6 +31,12 @@ abstract class Follower extends RoleBase {
                 tellBetter(m.getSender());
                 return;
             }
+        } else if (p.seq() < st.seq && p.page().index() == 0) {
+            // Our container's list, of our term, went back: it restarted (under its name, at its
+            // port) and lost its list; its pages come in order, so this is no late copy. Taken as
+            // it is: if this agent is not in it, it joins again.
+            ctx.trace("container-restarted", from + " sends version " + p.seq() + " of its list after " + st.seq);
+            st.seq = -1;
         } else if (p.seq() <= st.seq) {
             // Already held: confirm again (our confirmation may have been lost).
             ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(),

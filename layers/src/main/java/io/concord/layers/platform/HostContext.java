@@ -90,6 +90,23 @@ final class HostContext implements PlatformContext {
     }
 
     @Override
+    public Boolean portHeld(AgentEntry e) {
+        if (!st.portCheck) {
+            return null;
+        }
+        io.concord.core.net.Address at = e.transportAddress();
+        if (at != null && at.equals(host.localAddress())) {
+            return e.name().equals(self); // this agent holds that port now: whoever had it before is gone
+        }
+        String holder = at == null ? null : st.heardAt.get(at);
+        if (holder != null && !holder.equals(e.name())) {
+            return Boolean.FALSE; // another agent speaks from its port now: its process is gone
+        }
+        io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
+        return around == null ? null : around.held(at);
+    }
+
+    @Override
     public io.concord.core.agent.CoLocated coLocated() {
         return host.capability(io.concord.core.agent.CoLocated.class);
     }

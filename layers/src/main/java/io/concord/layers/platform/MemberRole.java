@@ -54,8 +54,15 @@ final class MemberRole extends Follower {
         }
         long deadline = ctx.nowNs() + t * 1_000_000L;
         long timeout = t;
+        watchStartNs = ctx.nowNs();
+        slowReported = false;
         watchTimer = after(t, () -> onWatch(deadline, timeout, false));
     }
+
+    /** When the current watch began: the container's silence since. */
+    private long watchStartNs;
+    /** The container's slowness was logged in this watch. */
+    private boolean slowReported;
 
     /** Cancels the watch on a container of this runtime, if any. */
     private void unwatchLocal() {
@@ -86,12 +93,33 @@ final class MemberRole extends Follower {
             return;
         }
         long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
-        if (!graced && ctx.nowNs() - deadline > period * 500_000L) {
+        // Checked before it is given up: a container of this host whose process still holds its
+        // port is slow (paused, starved), not dead; one whose port is free is gone.
+        AgentEntry watched = st.container != null ? st.container : st.successor;
+        Boolean held = ctx.here(watched) ? null : ctx.portHeld(watched); // one of this runtime was read in memory
+        long silentMs = (ctx.nowNs() - watchStartNs) / 1_000_000L;
+        if (Boolean.TRUE.equals(held) && silentMs <= PlatformConfig.SLOW_BOUND_MS) {
+            if (!slowReported) {
+                slowReported = true;
+                ctx.trace("slow", watched.name() + " silent for " + silentMs + " ms, but its process holds its port: waited for");
+            }
+            if (st.container != null) {
+                // A direct probe: it answers when its loop turns again, and one that dropped this
+                // agent (silent to it, not slow) answers with its list, which tells this agent to join again.
+                AgentLists l = st.lists;
+                ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, st.container.aid(),
+                        new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
+            }
+            watchTimer = after(t, () -> onWatch(deadline, t, graced));
+            return;
+        }
+        if (!graced && held == null && ctx.nowNs() - deadline > period * 500_000L) {
             watchTimer = after(period, () -> onWatch(deadline, t, true));
             return;
         }
         failover("no word from " + (st.container != null ? "the container " + st.container.name()
-                : "the expected successor " + st.successor.name()) + " for " + t + " ms");
+                : "the expected successor " + st.successor.name()) + " for " + silentMs + " ms"
+                + (Boolean.FALSE.equals(held) ? ", and its port is free: its process is gone" : Boolean.TRUE.equals(held) ? " though its process holds its port: hung" : ""));
     }
 
     /**
@@ -134,7 +162,17 @@ final class MemberRole extends Follower {
             candidates.add(st.selfEntry);
         }
         candidates.sort(st.failoverRounds <= 3 ? AgentEntry.SENIORITY : AgentEntry.BY_PORT);
-        AgentEntry next = candidates.isEmpty() ? st.selfEntry : candidates.get(0);
+        // The first candidate whose process is not known gone (its port on this host free: it
+        // crashed with the container, as agents of one process do): waiting for a dead successor
+        // would cost another timeout.
+        AgentEntry next = st.selfEntry;
+        for (AgentEntry c : candidates) {
+            if (c.name().equals(ctx.self()) || ctx.here(c) || !Boolean.FALSE.equals(ctx.portHeld(c))) {
+                next = c;
+                break;
+            }
+            st.suspects.add(c.name());
+        }
         ctx.trace("failover", why + "; next container: " + next.name());
         if (next.name().equals(ctx.self())) {
             roles.becomeContainer(Math.max(st.term, st.maxTermSeen) + 1, why);

@@ -57,6 +57,13 @@ public record PlatformConfig(long discoveryTimeoutMs, int discoveryAttempts, lon
         return Math.max(MIN_TIMEOUT_MS, periodMs(agents) * timeoutPeriods);
     }
 
+    /**
+     * The longest silence of an agent whose process still holds its port on the same host (a
+     * process paused or starved, not crashed) before it is taken for dead all the same: a slow
+     * machine is not a dead one, but one that answers nothing for this long is of no use.
+     */
+    public static final long SLOW_BOUND_MS = 30_000;
+
     /** The shortest silence taken for death. */
     public static final long MIN_TIMEOUT_MS = 250;
 }

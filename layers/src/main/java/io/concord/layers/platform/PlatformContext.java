@@ -62,6 +62,15 @@ interface PlatformContext {
         return c == null || a == null ? null : c.layer(a, ContainerLayer.class);
     }
 
+    /**
+     * Whether the entry's agent still holds its port on this host: false proves its process gone
+     * (crashed or killed), true that it lives (perhaps slow); {@code null} where this cannot be told
+     * (another host, or no such check here).
+     */
+    default Boolean portHeld(AgentEntry e) {
+        return null;
+    }
+
     /** True if the entry's agent runs in this agent's runtime, reached in memory. */
     default boolean here(AgentEntry e) {
         io.concord.core.agent.CoLocated c = coLocated();

@@ -37,8 +37,22 @@ public final class PlatformServices {
         return List.copyOf(layer.agents());
     }
 
-    /** The agents whose services match the template (yellow pages, this agent's copy). */
-    public List<AgentEntry> search(ServiceDescription template) {
+    /**
+     * The agents whose services match the template, as the platform's DF holds them: the future
+     * completes once the container has answered (it waits while none is elected, as JADE's
+     * {@code DFService.search} blocks), so every registration the DF took before, by any agent of
+     * this platform, is in it. Works from {@code setup()} and {@code takeDown()}.
+     */
+    public CompletableFuture<List<AgentEntry>> search(ServiceDescription template) {
+        return searchAtDf(template);
+    }
+
+    /**
+     * The yellow pages in this agent's own copy of the list: no message, at once, for behaviours
+     * that look often (the copy is kept equal to the container's; a registration made elsewhere a
+     * moment ago reaches it with the next push, within the maintenance period).
+     */
+    public List<AgentEntry> searchCopy(ServiceDescription template) {
         return layer.search(template);
     }
 
@@ -62,7 +76,7 @@ public final class PlatformServices {
         return layer.registerServices(List.of(), false);
     }
 
-    /** Asks the DF itself (not this agent's copy). */
+    /** Asks the DF itself (not this agent's copy); the same as {@link #search}. */
     public CompletableFuture<List<AgentEntry>> searchAtDf(ServiceDescription template) {
         StringBuilder b = new StringBuilder();
         Lines.appendService(b, template);

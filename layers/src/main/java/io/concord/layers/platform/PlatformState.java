@@ -55,6 +55,15 @@ final class PlatformState {
     boolean fromAny;
     /** Claims are taken only on the claimed container's own authenticated word (off only in threat tests). */
     boolean claimCheck = true;
+    /** A silent agent of this host is checked by its port before it is taken for dead (off only in tests). */
+    boolean portCheck = true;
+    /** The agent last heard from each transport address (bounded): a port taken by another agent tells its former holder gone. */
+    final java.util.Map<io.concord.core.net.Address, String> heardAt = new java.util.LinkedHashMap<>(64, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(java.util.Map.Entry<io.concord.core.net.Address, String> eldest) {
+            return size() > 1_024;
+        }
+    };
     /**
      * The copy of the last LAL this agent asked for after failed joins: from whom (a name, or the
      * agent at an address), and until when it is taken. A copy nobody asked for is refused: only

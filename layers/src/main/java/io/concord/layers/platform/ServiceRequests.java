@@ -122,4 +122,19 @@ final class ServiceRequests {
             }
         }
     }
+
+    /**
+     * The agent stopped: what still waits for the DF or the AMS fails, saying so (a future left
+     * open would never complete). A request sent from takeDown() went, but its answer cannot come.
+     */
+    void stop() {
+        List<Request> left = new ArrayList<>(open.values());
+        open.clear();
+        waitingForContainer.clear();
+        for (Request r : left) {
+            r.timer = ctx.cancel(r.timer);
+            r.future.completeExceptionally(new IllegalStateException("the agent stopped before the "
+                    + (r.df ? "DF" : "AMS") + " answered (a request from takeDown() is sent, but no answer can reach a stopped agent)"));
+        }
+    }
 }

@@ -249,7 +249,7 @@ class NetworkSimulationTest {
             var reg = Platform.of(sellerAgent).register(ServiceDescription.of("book-selling", "dune"));
             assertTrue(w.sim.runUntil(reg::isDone, 5_000));
             var buyer = w.hosts.get("h1").agent(w.live.get("h1").get("buyer"));
-            assertTrue(w.sim.runUntil(() -> !Platform.of(buyer).search(ServiceDescription.ofType("book-selling")).isEmpty(), 5_000),
+            assertTrue(w.sim.runUntil(() -> !Platform.of(buyer).searchCopy(ServiceDescription.ofType("book-selling")).isEmpty(), 5_000),
                     "the DF search on h1 does not find the service registered on h2");
             var atDf = Platform.of(buyer).searchAtDf(ServiceDescription.ofType("book-selling"));
             assertTrue(w.sim.runUntil(atDf::isDone, 5_000));

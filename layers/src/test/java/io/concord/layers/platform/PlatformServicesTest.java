@@ -88,11 +88,11 @@ class PlatformServicesTest {
             w.sim.runUntil(w::converged, 2_000);
             // Every agent finds it in its own copy, without a message.
             for (String n : w.live.keySet()) {
-                List<AgentEntry> found = Platform.of(w.rt.agent(w.live.get(n))).search(ServiceDescription.ofType("book-selling"));
+                List<AgentEntry> found = Platform.of(w.rt.agent(w.live.get(n))).searchCopy(ServiceDescription.ofType("book-selling"));
                 assertEquals(List.of(seller + "@sim"), found.stream().map(AgentEntry::name).toList(), n);
             }
-            assertTrue(ps.search(ServiceDescription.ofType("book-buying")).isEmpty());
-            assertTrue(ps.search(ServiceDescription.ofType("book-selling").withProperty("price", "41")).isEmpty());
+            assertTrue(ps.searchCopy(ServiceDescription.ofType("book-buying")).isEmpty());
+            assertTrue(ps.searchCopy(ServiceDescription.ofType("book-selling").withProperty("price", "41")).isEmpty());
 
             w.crash(container);
             assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
@@ -105,7 +105,74 @@ class PlatformServicesTest {
 
             await(w, ps.deregister());
             w.sim.runUntil(w::converged, 2_000);
-            assertTrue(asker.search(ServiceDescription.ofType("book-selling")).isEmpty());
+            assertTrue(asker.searchCopy(ServiceDescription.ofType("book-selling")).isEmpty());
+        }
+    }
+
+    /** What JADE code does in setup(): search right after others registered, and deregister in takeDown(). */
+    static final class SetupSearcher extends io.concord.core.agent.Agent {
+        final CompletableFuture<List<AgentEntry>> atSetup = new CompletableFuture<>();
+        List<AgentEntry> copyAtSetup;
+        final CompletableFuture<List<AgentEntry>> atTakeDown = new CompletableFuture<>();
+        List<AgentEntry> copyAtTakeDown;
+
+        @Override
+        protected void setup() {
+            PlatformServices pages = Platform.of(this);
+            copyAtSetup = pages.searchCopy(ServiceDescription.ofType("book-selling"));
+            pages.register(ServiceDescription.ofType("book-buying"));
+            pages.search(ServiceDescription.ofType("book-selling")).whenComplete((r, e) -> {
+                if (e != null) {
+                    atSetup.completeExceptionally(e);
+                } else {
+                    atSetup.complete(r);
+                }
+            });
+        }
+
+        @Override
+        protected void takeDown() {
+            PlatformServices pages = Platform.of(this);
+            pages.deregister();
+            copyAtTakeDown = pages.searchCopy(ServiceDescription.ofType("book-selling"));
+            pages.search(ServiceDescription.ofType("book-selling")).whenComplete((r, e) -> {
+                if (e != null) {
+                    atTakeDown.completeExceptionally(e);
+                } else {
+                    atTakeDown.complete(r);
+                }
+            });
+        }
+    }
+
+    @Test
+    void searchFromSetupSeesWhatTheDfTookBeforeEvenBeforeTheListReachesTheAgent() {
+        try (PlatformWorld w = world(Profile.CLASS_7)) {
+            for (int i = 0; i < 4; i++) {
+                w.start("s" + i);
+            }
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            PlatformServices seller = Platform.of(w.rt.agent(w.live.get("s3")));
+            await(w, seller.register(ServiceDescription.of("book-selling", "Dune")));
+            SetupSearcher searcher = new SetupSearcher();
+            w.everStarted.add("buyer@sim");
+            io.concord.core.acl.AID buyer = w.platform.startAgent("buyer", searcher);
+            w.live.put("buyer", buyer);
+            List<AgentEntry> found = await(w, searcher.atSetup);
+            assertEquals(List.of("s3@sim"), found.stream().map(AgentEntry::name).toList(),
+                    "search answers once the container has: the registration the DF took is in it");
+            assertEquals(List.of(), searcher.copyAtSetup, "(the agent's own copy, read in setup, had nothing yet)");
+            assertTrue(w.sim.runUntil(() -> Platform.of(w.rt.agent(w.live.get("s3"))).searchCopy(ServiceDescription.ofType("book-buying"))
+                    .stream().anyMatch(e -> e.name().equals("buyer@sim")), 2_000), "the buyer registered from setup()");
+            w.stop("buyer");
+            assertTrue(w.sim.runUntil(searcher.atTakeDown::isDone, 5_000), "a search from takeDown() does not hang");
+            assertEquals(List.of("s3@sim"), searcher.copyAtTakeDown.stream().map(AgentEntry::name).toList(),
+                    "the copy is read in takeDown()");
+            java.util.concurrent.CompletionException late = org.junit.jupiter.api.Assertions.assertThrows(
+                    java.util.concurrent.CompletionException.class, searcher.atTakeDown::join);
+            assertTrue(late.getCause().getMessage().contains("the agent stopped before the DF answered"), late.getMessage());
+            assertTrue(w.sim.runUntil(() -> Platform.of(w.rt.agent(w.live.get("s3"))).searchCopy(ServiceDescription.ofType("book-buying"))
+                    .isEmpty(), 2_000), "deregistered from takeDown()");
         }
     }
 

@@ -36,7 +36,7 @@ public class BookBuyer extends Agent {
             @Override
             protected void onTick() {
                 ticks++;
-                List<AgentEntry> sellers = Platform.of(myAgent).search(ServiceDescription.of("book-selling", title));
+                List<AgentEntry> sellers = Platform.of(myAgent).searchCopy(ServiceDescription.of("book-selling", title));
                 if (sellers.size() < expected && (ticks < 40 || sellers.isEmpty())) {
                     return;
                 }
