@@ -45,7 +45,7 @@ import io.concord.core.net.Transport;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
-            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale");
+            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -111,6 +111,7 @@ public final class BenchMain {
                     case "idle" -> b.idle();
                     case "throughput" -> b.throughput();
                     case "scale" -> b.scale();
+                    case "load" -> b.load();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -465,6 +466,127 @@ public final class BenchMain {
         Files.writeString(reportDir.resolve("idle.md"), md.toString());
     }
 
+    /**
+     * A platform on a busy machine: 4 JVMs of 5 agents on one host (each agent registered a service
+     * through the Java API), converged; then a phase with no load, and phases with 4 and 8 busy
+     * loops (separate processes, normal priority) each followed by a calm one. Per phase: agents
+     * removed from a list (every removal of a live agent is false), elections, registrations missing
+     * at the phase's end, the loops' worst lag; and at the end of each loaded phase, a fifth JVM
+     * killed with SIGKILL and the time until the others' lists no longer hold its agent.
+     */
+    private void load() throws IOException {
+        long phaseS = Long.getLong("concord.load.seconds", full ? 60 : 10);
+        int processes = 4;
+        int perProcess = 5;
+        int total = processes * perProcess;
+        String platform = "load" + ProcessHandle.current().pid();
+        // -Dconcord.load.without=PORT_CHECK: the same run with the platform's stacks built without it (a comparison).
+        String without = System.getProperty("concord.load.without", "");
+        String first = "7401";
+        String last = "7460";
+        StringBuilder md = new StringBuilder(header("A platform on a busy machine", "4 JVMs of 5 agents each, one platform on "
+                + "127.0.0.1 (class 7), every agent registered a service through the Java API. Phases of " + phaseS + " s: no "
+                + "load; 4 busy loops (`sh -c 'while :; do :; done'`, normal priority) beside them; calm; 8 busy loops; calm; "
+                + "4 busy loops with each JVM in turn stopped (SIGSTOP) for 1 s every 2 s; calm. "
+                + "Per phase: agents removed from any list (none stops, so every removal is false), containers taken or "
+                + "failovers begun, services missing from the lists at the phase's end, the worst lag of any JVM's loop (a task "
+                + "handed to it every 20 ms), and, at the end of the no-load and loaded phases, a fifth JVM of one agent "
+                + "killed with SIGKILL and the time until the first JVM's list no longer holds it.", "Wall clock"));
+        md.append("| phase | busy loops | false evictions | elections | lost registrations | worst loop lag ms | kill -9 seen after ms |\n"
+                + "|---|---|---|---|---|---|---|\n");
+        try (io.concord.bench.child.Children kids = new io.concord.bench.child.Children()) {
+            for (int i = 0; i < processes; i++) {
+                kids.start(io.concord.bench.child.LoadChild.class, platform, first, last, Integer.toString(i),
+                        Integer.toString(perProcess), Integer.toString(total), without);
+            }
+            kids.awaitReady();
+            for (int i = 0; i < processes; i++) {
+                kids.ask(i, "stats", "STATS"); // from here on
+            }
+            // {busy loops, kill -9 at the end, pause the JVMs one after another}
+            int[][] phases = {{0, 1, 0}, {4, 1, 0}, {0, 0, 0}, {8, 1, 0}, {0, 0, 0}, {4, 0, 1}, {0, 0, 0}};
+            String[] names = {"quiet", "loaded", "calm", "loaded", "calm", "paused", "calm"};
+            int victim = processes;
+            for (int ph = 0; ph < phases.length; ph++) {
+                int hogs = phases[ph][0];
+                boolean kill = phases[ph][1] == 1;
+                List<Process> loops = new ArrayList<>();
+                for (int h = 0; h < hogs; h++) {
+                    loops.add(new ProcessBuilder("sh", "-c", "while :; do :; done").start());
+                }
+                double killMs = Double.NaN;
+                try {
+                    if (kill) {
+                        kids.start(io.concord.bench.child.LoadChild.class, platform, first, last, "v" + ph, "1",
+                                Integer.toString(total + 1), without);
+                        kids.awaitReadyOf(victim);
+                        kids.ask(0, "stats", "STATS"); // its join is not part of the phase
+                    }
+                    if (phases[ph][2] == 1) {
+                        // Each JVM in turn stopped (SIGSTOP) for 1 s, then let go on, 1 s apart: a
+                        // process paused by a GC, a swap, a debugger, or a machine starved harder than busy loops do.
+                        long end = System.nanoTime() + phaseS * 1_000_000_000L;
+                        for (int k = 0; System.nanoTime() < end; k++) {
+                            int who = k % processes;
+                            kids.signal(who, "STOP");
+                            sleepMs(1_000);
+                            kids.signal(who, "CONT");
+                            sleepMs(1_000);
+                        }
+                    } else {
+                        sleepS(phaseS);
+                    }
+                    if (kill) {
+                        kids.tell(0, "watch " + total);
+                        long t0 = System.nanoTime();
+                        kids.kill(victim);
+                        String at = kids.readLine(0, "AT ");
+                        killMs = (Long.parseLong(at.substring(3).trim()) - t0) / 1e6;
+                        victim++;
+                    }
+                } finally {
+                    for (Process p : loops) {
+                        p.destroyForcibly();
+                    }
+                }
+                long removed = 0;
+                long elections = 0;
+                long lag = 0;
+                long lost = 0;
+                for (int i = 0; i < processes; i++) {
+                    String st = kids.ask(i, "stats", "STATS");
+                    removed += field(st, "removed");
+                    elections += field(st, "elections");
+                    lag = Math.max(lag, field(st, "lag_ms"));
+                    lost = Math.max(lost, total - field(st, "services"));
+                }
+                if (kill) {
+                    removed -= processes; // the killed JVM's agent, removed from each JVM's list once: a true one
+                    removed = Math.max(0, removed);
+                }
+                String result = String.format(Locale.ROOT, "RESULT load" + (without.isEmpty() ? "" : " without=" + without) + " phase=%s hogs=%d false_evictions=%d elections=%d "
+                        + "lost_registrations=%d max_loop_lag_ms=%d kill9_detect_ms=%s", names[ph], hogs, removed, elections, lost,
+                        lag, Double.isNaN(killMs) ? "-" : String.format(Locale.ROOT, "%.0f", killMs));
+                System.out.println(result);
+                md.append(String.format(Locale.ROOT, "| %s | %d | %d | %d | %d | %d | %s |%n", names[ph], hogs, removed, elections,
+                        lost, lag, Double.isNaN(killMs) ? "-" : String.format(Locale.ROOT, "%.0f", killMs)));
+            }
+        }
+        md.append("\nA removal counts once per list that drops an agent (the container's, and each member's copy as the "
+                + "container's push reaches it), so one false eviction of one agent shows as several; the killed JVM's own "
+                + "removals are subtracted. Elections count a container taken and every failover begun.\n");
+        Files.writeString(reportDir.resolve("load.md"), md.toString());
+    }
+
+    private static long field(String line, String key) {
+        for (String part : line.split(" ")) {
+            if (part.startsWith(key + "=")) {
+                return Long.parseLong(part.substring(key.length() + 1));
+            }
+        }
+        throw new IllegalArgumentException("no " + key + " in " + line);
+    }
+
     /** Sustained messages per second, Concord against JADE and raw UDP (see ThroughputHarness). */
     private void throughput() throws IOException {
         double warm = full ? 5 : 2;
@@ -599,6 +721,14 @@ public final class BenchMain {
                 + "hosts each JVM holds its own agents' copies only.\n");
         md.append("\n![cost](scale-cost.png)\n\n![time](scale-time.png)\n");
         Files.writeString(reportDir.resolve("scale.md"), md.toString());
+    }
+
+    private static void sleepMs(long ms) {
+        try {
+            Thread.sleep(ms);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private static void sleepS(long s) {

@@ -61,6 +61,37 @@ public final class Children implements AutoCloseable {
         return out;
     }
 
+    /** Waits for child i's READY line (a child started after the others were ready). */
+    public String awaitReadyOf(int i) throws IOException {
+        readLine(i, "READY");
+        return "";
+    }
+
+    /** Reads child i's output up to the first line starting with {@code prefix}, and returns it. */
+    public String readLine(int i, String prefix) throws IOException {
+        String line;
+        while ((line = outputs.get(i).readLine()) != null) {
+            if (line.startsWith(prefix)) {
+                return line;
+            }
+        }
+        throw new IOException("child " + i + " ended before it printed " + prefix);
+    }
+
+    /** Sends child i a signal ({@code STOP} pauses it, {@code CONT} lets it go on), as {@code kill -SIG} does. */
+    public void signal(int i, String sig) throws IOException {
+        try {
+            new ProcessBuilder("kill", "-" + sig, Long.toString(processes.get(i).pid())).inheritIO().start().waitFor();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Kills child i with SIGKILL, as a crash: nothing of it runs after. */
+    public void kill(int i) {
+        processes.get(i).destroyForcibly();
+    }
+
     /** The CPU time child i has used so far (user and system, all its threads), in ns; -1 if unknown. */
     public long cpuNanos(int i) {
         return processes.get(i).info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(-1L);
