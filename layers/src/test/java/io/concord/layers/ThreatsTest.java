@@ -35,7 +35,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * memory has forgotten it, so that the sequence window must act; a deleted frame loses both its
  * copies, so that it must be retransmitted; corruption is shown on the CRC alone (profile CLOSED),
  * insertion on the HMAC tag (class 3), delay on frames that can only arrive late. And each test
- * runs again on the virtual network with that defence switched off ({@link Defences}) and must
+ * runs again on the virtual network on stacks built without that defence ({@link Defence}) and must
  * then fail.
  */
 class ThreatsTest {
