@@ -53,6 +53,13 @@ public final class BenchMain {
     private final Path reportDir;
     private final Map<String, Double> udpHopUs = new TreeMap<>();
 
+    private static String hogsTag() {
+        return hogs > 0 ? " hogs=" + hogs : "";
+    }
+
+    /** Busy loops running beside the whole run ({@code -Dconcord.bench.hogs}). */
+    private static int hogs;
+
     private BenchMain(boolean full, Path reportDir) {
         this.full = full;
         this.reportDir = reportDir;
@@ -80,7 +87,16 @@ public final class BenchMain {
         if (names.isEmpty()) {
             names.addAll(NAMES);
         }
-        Path reportDir = Path.of(System.getProperty("concord.report", "bench/report"));
+        // -Dconcord.bench.hogs=N: N busy loops (processes at normal priority) beside every platform
+        // measured, the same for each, for the whole run: a busy machine. Its report goes apart.
+        int hogs = Integer.getInteger("concord.bench.hogs", 0);
+        List<Process> loops = new ArrayList<>();
+        for (int h = 0; h < hogs; h++) {
+            loops.add(new ProcessBuilder("sh", "-c", "while :; do :; done").start());
+        }
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> loops.forEach(Process::destroyForcibly)));
+        BenchMain.hogs = hogs;
+        Path reportDir = Path.of(System.getProperty("concord.report", hogs > 0 ? "bench/report/hogs-" + hogs : "bench/report"));
         Files.createDirectories(reportDir);
         BenchMain b = new BenchMain(full, reportDir);
         if (names.contains("bootstrap") || names.contains("failover")) {
@@ -142,7 +158,9 @@ public final class BenchMain {
 
     private String header(String title, String what, String method) {
         return "# " + title + "\n\n" + what + "\n\n" + method + ", " + (full ? "full" : "quick") + " mode, "
-                + LocalDate.now() + ". " + Machine.describe() + "\n\n";
+                + LocalDate.now() + ". " + Machine.describe()
+                + (hogs > 0 ? " **" + hogs + " busy loops ran beside every platform measured** (`-Dconcord.bench.hogs=" + hogs + "`)." : "")
+                + "\n\n";
     }
 
     private void udp() throws RunnerException, IOException {
@@ -217,7 +235,7 @@ public final class BenchMain {
             Double closed = byPlatform.get(Platforms.CONCORD_CLOSED).get(size);
             Double jade = byPlatform.get(Platforms.JADE).get(size);
             if (c7 != null && jade != null) {
-                System.out.printf(Locale.ROOT, "RESULT %s onejvm %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
+                System.out.printf(Locale.ROOT, "RESULT %s onejvm" + hogsTag() + " %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
                         name, size, c7, jade, jade / c7);
             }
             md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s | %s | %s |", size, fmt(c7), fmt(sock), fmt(closed),
@@ -277,7 +295,7 @@ public final class BenchMain {
             Double closed = byPlatform.containsKey(Platforms.CONCORD_CLOSED) ? byPlatform.get(Platforms.CONCORD_CLOSED).get(size) : null;
             Double jade = byPlatform.get(Platforms.JADE).get(size);
             if (c7 != null && jade != null) {
-                System.out.printf(Locale.ROOT, "RESULT %s processes %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
+                System.out.printf(Locale.ROOT, "RESULT %s processes" + hogsTag() + " %d concord_us=%.1f jade_us=%.1f speedup=%.2f%n",
                         name, size, c7, jade, jade / c7);
             }
             md.append(String.format(Locale.ROOT, "| %d | %s | %s | %s | %s |%n", size, fmt(c7), fmt(closed), fmt(jade),

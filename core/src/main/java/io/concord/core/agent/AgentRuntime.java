@@ -761,6 +761,22 @@ public final class AgentRuntime implements AutoCloseable {
         return this;
     }
 
+    /**
+     * A yield that lasts longer than this gave the CPU to a thread that used a whole time slice:
+     * the machine's cores are busy with other work. An uncontended yield returns in about a
+     * microsecond, and one that let a peer process of this machine answer (the one-process-per-agent
+     * topology on 2 cores) in tens of microseconds; one behind a busy loop, after a millisecond or
+     * more. 50 us took the peers' hand-offs for contention: books across processes went from 28
+     * to 150 us on a quiet machine.
+     */
+    static final long CONTENDED_YIELD_NS = 500_000;
+    private volatile long contendedYields;
+
+    /** Idle waits cut short because yielding found the cores contended (the console, the benchmarks). */
+    public long contendedYields() {
+        return contendedYields;
+    }
+
     private void loop() {
         int idle = 0;
         // The idle budget (spinning first, then yielding) adapts between 0 and its configured
@@ -800,7 +816,20 @@ public final class AgentRuntime implements AutoCloseable {
                 if (idle < idleSpinIterations) {
                     Thread.onSpinWait();
                 } else {
+                    long y0 = clock.nanoTime();
                     Thread.yield();
+                    if (clock.nanoTime() - y0 > CONTENDED_YIELD_NS) {
+                        // Another thread ran in this one's place: the cores are contended (more
+                        // runnable threads than cores). Waiting awake then only delays this loop: a
+                        // yielding thread is runnable, and a datagram that comes waits behind the
+                        // others' time slices, where a parked one is woken at once by the kernel.
+                        // Park now, and wait awake no more until waiting awake pays again.
+                        contendedYields++;
+                        budget = 0;
+                        wins = 0;
+                        losses = 0;
+                        continue;
+                    }
                 }
                 idle++;
                 continue;
