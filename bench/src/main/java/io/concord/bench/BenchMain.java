@@ -493,16 +493,53 @@ public final class BenchMain {
      * killed with SIGKILL and the time until the others' lists no longer hold its agent.
      */
     private void load() throws IOException {
+        loadMd = new StringBuilder();
         long phaseS = Long.getLong("concord.load.seconds", full ? 60 : 10);
-        int processes = 4;
-        int perProcess = 5;
+        load(phaseS, 1);
+        // The same on 3 hosts (network namespaces, 2 JVMs each), when this machine can make them.
+        try {
+            load(phaseS, 3);
+        } catch (IOException e) {
+            System.out.println("RESULT load hosts=3 skipped: " + e.getMessage());
+            loadMd.append("\n3 hosts: not run (").append(e.getMessage()).append(").\n");
+        }
+        loadNotes();
+    }
+
+    private void load(long phaseS, int hostCount) throws IOException {
+        int processes = hostCount == 1 ? 4 : 2 * hostCount;
+        int perProcess = hostCount == 1 ? 5 : 3;
         int total = processes * perProcess;
-        String platform = "load" + ProcessHandle.current().pid();
+        int perHost = total / hostCount;
+        io.concord.core.testkit.NetnsHosts net = null;
+        if (hostCount > 1) {
+            try {
+                net = new io.concord.core.testkit.NetnsHosts("cl" + (ProcessHandle.current().pid() % 100_000), hostCount);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted", e);
+            }
+        }
+        try {
+            loadOn(phaseS, hostCount, net, processes, perProcess, total, perHost);
+        } finally {
+            if (net != null) {
+                net.close();
+            }
+        }
+    }
+
+    private StringBuilder loadMd;
+
+    private void loadOn(long phaseS, int hostCount, io.concord.core.testkit.NetnsHosts net, int processes, int perProcess, int total,
+            int perHost) throws IOException {
+        String tag = hostCount == 1 ? "" : " hosts=" + hostCount;
+        String platform = "load" + ProcessHandle.current().pid() + "h" + hostCount;
         // -Dconcord.load.without=PORT_CHECK: the same run with the platform's stacks built without it (a comparison).
         String without = System.getProperty("concord.load.without", "");
         String first = "7401";
         String last = "7460";
-        StringBuilder md = new StringBuilder(header("A platform on a busy machine", "4 JVMs of 5 agents each, one platform on "
+        StringBuilder md = loadMd.length() > 0 ? loadMd : loadMd.append(header("A platform on a busy machine", "4 JVMs of 5 agents each, one platform on "
                 + "127.0.0.1 (class 7), every agent registered a service through the Java API. Phases of " + phaseS + " s: no "
                 + "load; 4 busy loops (`sh -c 'while :; do :; done'`, normal priority) beside them; calm; 8 busy loops; calm; "
                 + "4 busy loops with each JVM in turn stopped (SIGSTOP) for 1 s every 2 s; calm. "
@@ -510,12 +547,16 @@ public final class BenchMain {
                 + "failovers begun, services missing from the lists at the phase's end, the worst lag of any JVM's loop (a task "
                 + "handed to it every 20 ms), and, at the end of the no-load and loaded phases, a fifth JVM of one agent "
                 + "killed with SIGKILL and the time until the first JVM's list no longer holds it.", "Wall clock"));
+        md.append(hostCount == 1 ? "## One host\n\n" : "\n## " + hostCount + " hosts (network namespaces on a bridge), 2 JVMs of 3 agents "
+                + "each: one container per host, the hosts' lists shared by the federation\n\n");
         md.append("| phase | busy loops | false evictions | elections | lost registrations | worst loop lag ms | kill -9 seen after ms |\n"
                 + "|---|---|---|---|---|---|---|\n");
         try (io.concord.bench.child.Children kids = new io.concord.bench.child.Children()) {
             for (int i = 0; i < processes; i++) {
-                kids.start(io.concord.bench.child.LoadChild.class, platform, first, last, Integer.toString(i),
-                        Integer.toString(perProcess), Integer.toString(total), without);
+                int h = i % hostCount + 1;
+                kids.startWith(net == null ? List.of() : net.exec(h), io.concord.bench.child.LoadChild.class, platform, first, last,
+                        Integer.toString(i), Integer.toString(perProcess), Integer.toString(perHost), without,
+                        net == null ? "127.0.0.1" : io.concord.core.testkit.NetnsHosts.address(h), Integer.toString(total));
             }
             kids.awaitReady();
             for (int i = 0; i < processes; i++) {
@@ -535,8 +576,9 @@ public final class BenchMain {
                 double killMs = Double.NaN;
                 try {
                     if (kill) {
-                        kids.start(io.concord.bench.child.LoadChild.class, platform, first, last, "v" + ph, "1",
-                                Integer.toString(total + 1), without);
+                        kids.startWith(net == null ? List.of() : net.exec(1), io.concord.bench.child.LoadChild.class, platform, first,
+                                last, "v" + ph, "1", Integer.toString(perHost + 1), without,
+                                net == null ? "127.0.0.1" : io.concord.core.testkit.NetnsHosts.address(1), Integer.toString(total + 1));
                         kids.awaitReadyOf(victim);
                         kids.ask(0, "stats", "STATS"); // its join is not part of the phase
                     }
@@ -555,7 +597,7 @@ public final class BenchMain {
                         sleepS(phaseS);
                     }
                     if (kill) {
-                        kids.tell(0, "watch " + total);
+                        kids.tell(0, "watch " + perHost);
                         long t0 = System.nanoTime();
                         kids.kill(victim);
                         String at = kids.readLine(0, "AT ");
@@ -579,10 +621,9 @@ public final class BenchMain {
                     lost = Math.max(lost, total - field(st, "services"));
                 }
                 if (kill) {
-                    removed -= processes; // the killed JVM's agent, removed from each JVM's list once: a true one
-                    removed = Math.max(0, removed);
+                    removed -= 1; // the killed JVM's agent, removed by its container: a true one
                 }
-                String result = String.format(Locale.ROOT, "RESULT load" + (without.isEmpty() ? "" : " without=" + without) + " phase=%s hogs=%d false_evictions=%d elections=%d "
+                String result = String.format(Locale.ROOT, "RESULT load" + tag + (without.isEmpty() ? "" : " without=" + without) + " phase=%s hogs=%d false_evictions=%d elections=%d "
                         + "lost_registrations=%d max_loop_lag_ms=%d kill9_detect_ms=%s", names[ph], hogs, removed, elections, lost,
                         lag, Double.isNaN(killMs) ? "-" : String.format(Locale.ROOT, "%.0f", killMs));
                 System.out.println(result);
@@ -590,9 +631,14 @@ public final class BenchMain {
                         lost, lag, Double.isNaN(killMs) ? "-" : String.format(Locale.ROOT, "%.0f", killMs)));
             }
         }
-        md.append("\nA removal counts once per list that drops an agent (the container's, and each member's copy as the "
-                + "container's push reaches it), so one false eviction of one agent shows as several; the killed JVM's own "
-                + "removals are subtracted. Elections count a container taken and every failover begun.\n");
+    }
+
+    private void loadNotes() throws IOException {
+        StringBuilder md = loadMd;
+        md.append("\nA removal is counted once, by the container that removes the agent (members take the container's list), "
+                + "and a host dropped from the federation once by each other host's container; the killed JVM's own removal is "
+                + "subtracted. Elections count a container taken and every failover begun. The worst loop lag is measured by a "
+                + "thread of the JVM, which a SIGSTOP stops too: a paused JVM's own pause shows only in part.\n");
         Files.writeString(reportDir.resolve("load.md"), md.toString());
     }
 

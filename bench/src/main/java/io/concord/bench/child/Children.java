@@ -26,10 +26,12 @@ public final class Children implements AutoCloseable {
 
     /** ... on the CPUs named (as {@code taskset -c} takes them), or on any if {@code null}. */
     public void startOn(String cpus, Class<?> mainClass, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>();
-        if (cpus != null) {
-            cmd.addAll(List.of("taskset", "-c", cpus));
-        }
+        startWith(cpus == null ? List.of() : List.of("taskset", "-c", cpus), mainClass, args);
+    }
+
+    /** ... behind a command prefix ({@code ip netns exec <ns>}: on a host of {@code NetnsHosts}). */
+    public void startWith(List<String> prefix, Class<?> mainClass, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>(prefix);
         cmd.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx256m", "-XX:+UseSerialGC", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error",
                 "-cp", System.getProperty("java.class.path")));

@@ -18,9 +18,11 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
- * {@code <platform> <first port> <last port> <process> <agents> [<expect>]}: one process of a platform shared
+ * {@code <platform> <first port> <last port> <process> <agents> [<expect> [<without> [<host> [<services>]]]]}: one process of a platform shared
  * by several on this host, for {@code bench/run load}. Its agents register a service each through
- * the Java API. Prints {@code READY} once it holds a list of {@code <expect>} agents (6th argument; default its own).
+ * the Java API. Prints {@code READY} once it holds a list of {@code <expect>} agents (default its own) and finds {@code <services>}
+ * services (default {@code <expect>}; more where other hosts' agents count, through the GAL). It binds {@code <host>}
+ * (default 127.0.0.1) and builds its stacks without the defences named in {@code <without>} (comma-separated, or empty).
  * Commands: {@code stats} prints {@code STATS removed=.. elections=.. lag_ms=.. agents=.. services=..}
  * (since the last stats: agents removed from a list, containers taken or failovers started, the
  * loop's worst lag; now: agents in its list and services of the type found in its copy);
@@ -44,16 +46,18 @@ public final class LoadChild {
         String process = args[3];
         int n = Integer.parseInt(args[4]);
         int expect = args.length > 5 ? Integer.parseInt(args[5]) : n;
+        String host = args.length > 7 ? args[7] : "127.0.0.1";
+        int expectServices = args.length > 8 ? Integer.parseInt(args[8]) : expect;
         AtomicLong removed = new AtomicLong();
         AtomicLong elections = new AtomicLong();
         Tracer tracer = (ns, node, event, detail) -> {
-            if (event.equals("platform-removed")) {
+            if (event.equals("platform-removed") || event.equals("platform-host-gone")) {
                 removed.incrementAndGet();
             } else if (event.equals("platform-container") || event.equals("platform-failover")) {
                 elections.incrementAndGet();
             }
         };
-        AgentRuntime rt = AgentRuntime.builder().platformName(name).host("127.0.0.1").tracer(tracer).build();
+        AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).tracer(tracer).build();
         // A 7th argument names defences to build the stacks without (a comparison run: PORT_CHECK).
         io.concord.layers.Defence[] off = args.length > 6 && !args[6].isEmpty()
                 ? java.util.Arrays.stream(args[6].split(",")).map(io.concord.layers.Defence::valueOf).toArray(io.concord.layers.Defence[]::new)
@@ -79,7 +83,7 @@ public final class LoadChild {
         }, "lag-probe");
         prober.setDaemon(true);
         prober.start();
-        while (count(rt, aids[0], false) < expect) {
+        while (count(rt, aids[0], false) < expect || count(rt, aids[0], true) < expectServices) {
             Thread.sleep(20);
         }
         System.out.println("READY");
