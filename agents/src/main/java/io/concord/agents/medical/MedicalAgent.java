@@ -234,11 +234,6 @@ public class MedicalAgent extends Agent {
         send(cancel);
     }
 
-    /** Transports not ended yet. */
-    public int openTransports() {
-        return open.size();
-    }
-
     /**
      * @param waitingSince when the task began to wait for a chair (every chair unavailable), on
      *                     the agent's clock in ms, or -1

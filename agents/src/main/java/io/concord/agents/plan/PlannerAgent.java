@@ -56,7 +56,6 @@ public class PlannerAgent extends Agent {
     private final Map<String, KnownDoor> doors = new LinkedHashMap<>();
     private final Map<String, Long> blocked = new HashMap<>();
     private Asks asks;
-    private long plans;
 
     /**
      * @param map   the map to plan on
@@ -91,11 +90,6 @@ public class PlannerAgent extends Agent {
     /** The doors it knows, with their last state. */
     public List<KnownDoor> knownDoors() {
         return new ArrayList<>(doors.values());
-    }
-
-    /** Plans given out so far. */
-    public long plansGiven() {
-        return plans;
     }
 
     private void discoverDoors() {
@@ -207,7 +201,6 @@ public class PlannerAgent extends Agent {
                 }
             }
             if (now2.size() == refused.size()) {
-                plans++;
                 log.accept(getLocalName() + ": " + task + " plan " + r.nodes() + " through " + r.doors() + " confirmed");
                 AclMessage inform = request.createReply().setPerformative(Performative.INFORM_REF);
                 inform.setContent(Content.of("plan").with("task", task).with("nodes", join(r.nodes()))

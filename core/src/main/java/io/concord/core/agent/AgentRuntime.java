@@ -36,8 +36,9 @@ import java.util.random.RandomGenerator;
 /**
  * The agents of one JVM (or of one simulated host) and the single loop that serves them all: one
  * network poll over every agent's socket, one timer wheel, one clock, one seeded random source.
- * A message from one agent of the runtime to another costs a datagram and no thread switch: the
- * loop that sends it also receives it and runs the receiver's behaviours.
+ * A message from one agent of the runtime to another is handed over in memory where both stacks
+ * allow it (no frame, no datagram; see docs/design.md), else it costs a datagram; never a thread
+ * switch: the loop that sends it also receives it and runs the receiver's behaviours.
  *
  * <p>Two ways to drive it: {@link #start()} gives it a thread of its own (real platforms); or the
  * caller invokes {@link #doWork()} repeatedly, as the deterministic simulation does.
@@ -955,10 +956,5 @@ public final class AgentRuntime implements AutoCloseable {
 
     int mailboxCapacity() {
         return mailboxCapacity;
-    }
-
-    /** Timers pending (for tests and tools). */
-    public int pendingTimers() {
-        return timersById.size();
     }
 }

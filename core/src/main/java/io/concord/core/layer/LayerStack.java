@@ -238,7 +238,7 @@ public final class LayerStack {
         return tracesLogged;
     }
 
-    /** Builds a stack from layers listed top first; the list is frozen. */
+    /** A list of layers, top first, to add to before a stack is built from it (the stack keeps a copy). */
     public static List<Layer> list(Layer... topFirst) {
         return new ArrayList<>(List.of(topFirst));
     }

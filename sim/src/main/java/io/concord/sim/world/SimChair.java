@@ -68,7 +68,6 @@ public final class SimChair implements ChairDriver {
     private final double[] ranges;
     private final long[] nextSampleStep;
     private final long[] samplePeriodSteps;
-    private final boolean[] sensorFailed;
     private long nextReportStep;
     private final long reportPeriodSteps;
     private long seq;
@@ -114,7 +113,6 @@ public final class SimChair implements ChairDriver {
         this.ranges = new double[n];
         this.nextSampleStep = new long[n];
         this.samplePeriodSteps = new long[n];
-        this.sensorFailed = new boolean[n];
         double hz = world.stepHz();
         for (int i = 0; i < n; i++) {
             SensorMount s = layout.sensors().get(i);
@@ -207,11 +205,6 @@ public final class SimChair implements ChairDriver {
         return new double[] {powerLeft, powerRight};
     }
 
-    /** The wheels' commanded ground speeds now, {left, right}, m/s. */
-    public double[] wheelSpeeds() {
-        return new double[] {wheelLeft, wheelRight};
-    }
-
     /** The speed of the body along its heading now, m/s (negative backwards). */
     public double forwardSpeed() {
         Vec2 v = body.getLinearVelocity();
@@ -257,22 +250,6 @@ public final class SimChair implements ChairDriver {
     /** Makes a fault appear (a failed motor stops its wheel; a failed sensor reads NaN). */
     public void injectFault(ChairFault fault) {
         faults.add(fault);
-    }
-
-    /** Fails one range sensor: it reads NaN and the chair reports {@link ChairFault#SENSOR}. */
-    public void failSensor(String sensorName) {
-        int i = layout.sensorIndex(sensorName);
-        if (i < 0) {
-            throw new IllegalArgumentException("chair " + name + " has no sensor '" + sensorName + "'");
-        }
-        sensorFailed[i] = true;
-        faults.add(ChairFault.SENSOR);
-    }
-
-    /** Clears every injected fault and failed sensor. */
-    public void clearFaults() {
-        faults.clear();
-        java.util.Arrays.fill(sensorFailed, false);
     }
 
     /** Battery voltage now. */
@@ -386,7 +363,7 @@ public final class SimChair implements ChairDriver {
         for (int i = 0; i < ranges.length; i++) {
             if (step >= nextSampleStep[i]) {
                 nextSampleStep[i] = step + samplePeriodSteps[i];
-                ranges[i] = sensorFailed[i] ? Double.NaN : sample(layout.sensors().get(i));
+                ranges[i] = sample(layout.sensors().get(i));
             }
         }
         if (step >= nextReportStep) {

@@ -91,8 +91,10 @@ class FleetSoakTest {
             assertEquals(List.of(), r.busy(), where + ": a chair still holds a task");
             assertEquals(List.of(), r.waits(), where + ": a chair still waits for a route");
             worldMs += r.worldMs();
-            report.add(String.format(java.util.Locale.ROOT, "seed %d: %d chairs, %d/10 done, %.0f s, %d moved aside", seed, r.chairs(),
-                    r.outcomes().stream().filter(MedicalAgent.Outcome::done).count(), r.worldMs() / 1e3, r.moves()));
+            // The trace's hash too: a refactoring that must not change behaviour compares them, seed by seed.
+            report.add(String.format(java.util.Locale.ROOT, "seed %d: %d chairs, %d/10 done, %.0f s, %d moved aside, trace %016x", seed,
+                    r.chairs(), r.outcomes().stream().filter(MedicalAgent.Outcome::done).count(), r.worldMs() / 1e3, r.moves(),
+                    r.traceHash()));
         }
         System.out.println(String.join("\n", report));
         System.out.printf("fleet soak: %d seeds, %d of %d tasks done, %.1f world hours, no contact%n", seeds, done, seeds * 10L,

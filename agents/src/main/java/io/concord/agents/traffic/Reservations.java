@@ -1,0 +1,471 @@
+package io.concord.agents.traffic;
+
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+
+/**
+ * The traffic rules, with no transport and no clock of their own: who holds which node of the
+ * route graph, who waits for which route, who is moved out of the way, what a silent chair keeps.
+ * {@link TrafficAgent} speaks for it; the rules are tested alone ({@code ReservationsTest}).
+ *
+ * <p>Why whole routes: a chair that stands still holds one node (where it stands), a chair that
+ * drives holds the rest of its route, and nobody else holds any of those. Two chairs can then
+ * never meet on a node or an edge, and a chair waits only for chairs that stand still where it
+ * must go. Such a wait ends by itself when the chair it waits for drives on; it does not when that
+ * chair has nothing to do (it is moved out of the way) or waits in turn, round a cycle, for the
+ * first (a deadlock: one chair of the cycle is moved out of the way). Out of the way is the
+ * nearest node nobody stands on, that no waiting route and no granted route's end needs, reached
+ * over free nodes; a dead end (a room, a parking place) is preferred to a corridor.
+ *
+ * <p>Every call returns what the chairs are to be told, in order, as {@link Outcome}s; each answer
+ * to a request carries the request's ticket (the agent's message, for its reply).
+ *
+ * @param <T> what identifies a request to answer (the traffic agent's REQUEST message)
+ */
+public final class Reservations<T> {
+    /** A chair not heard of for this long keeps only the node it stands on; who waits for that node is told. */
+    public static final long SILENT_MS = 60_000;
+
+    /** What a chair is to be told. */
+    public sealed interface Outcome<T> {
+    }
+
+    /** The route is the chair's: drive it. */
+    public record Granted<T>(String chair, T ticket, List<Integer> path) implements Outcome<T> {
+    }
+
+    /** The route waits for the chairs in the way. */
+    public record Waiting<T>(String chair, T ticket, List<String> heldBy) implements Outcome<T> {
+    }
+
+    /** The wait ended without the route: {@code node} is where it stuck, or null. */
+    public record Failed<T>(String chair, T ticket, String reason, Integer node) implements Outcome<T> {
+    }
+
+    /** Drive from {@code from} to {@code to} over {@code path} (held for it), and ask again from there. */
+    public record MakeWay<T>(String chair, int from, int to, List<Integer> path) implements Outcome<T> {
+    }
+
+    /** Something the operator should read (a chair moved, a chair silent or heard again). */
+    public record Note<T>(String text) implements Outcome<T> {
+    }
+
+    private record Wait<T>(String chair, List<Integer> path, T ticket, long since, boolean aside) {
+    }
+
+    private final HospitalMap map;
+    private final boolean enabled;
+    /** node -> the chairs holding it (two only when a chair's report contradicts a grant). */
+    private final Map<Integer, Set<String>> holders = new TreeMap<>();
+    /** chair -> the nodes it holds, where it stands first. */
+    private final Map<String, List<Integer>> held = new TreeMap<>();
+    private final Map<String, Wait<T>> waiting = new LinkedHashMap<>();
+    /** chair -> the end of the route it was granted last. */
+    private final Map<String, Integer> goals = new HashMap<>();
+    /** chair -> the node it was told to make way to, held for it until it asks for the route there. */
+    private final Map<String, Integer> aside = new HashMap<>();
+    private final Set<String> idle = new HashSet<>();
+    private final Set<String> silent = new HashSet<>();
+    private final Map<String, Long> heard = new HashMap<>();
+    /** chair -> the nodes it last said it stands on, less those it has given back since. */
+    private final Map<String, List<Integer>> standing = new HashMap<>();
+    private long grants;
+    private long moves;
+    private long deadlocks;
+
+    /**
+     * @param map   the route graph it reserves
+     * @param rules false only in tests: every route is granted at once, whoever holds its nodes
+     */
+    public Reservations(HospitalMap map, boolean rules) {
+        this.map = map;
+        this.enabled = rules;
+    }
+
+    // ---- what it can tell -----------------------------------------------------------------------
+
+    /** Who holds which node. */
+    public Map<Integer, Set<String>> holders() {
+        Map<Integer, Set<String>> out = new TreeMap<>();
+        holders.forEach((k, v) -> {
+            if (!v.isEmpty()) {
+                out.put(k, Set.copyOf(v));
+            }
+        });
+        return out;
+    }
+
+    /** Who waits for which route, and who is in the way. */
+    public List<String> waits() {
+        List<String> out = new ArrayList<>();
+        for (Wait<T> w : waiting.values()) {
+            out.add(local(w.chair()) + " -> " + w.path() + " (in the way: " + blockers(w).stream().map(Reservations::local).toList() + ")");
+        }
+        return out;
+    }
+
+    /** Routes granted so far. */
+    public long grants() {
+        return grants;
+    }
+
+    /** Chairs moved out of the way so far (idle ones in the way and deadlocks broken). */
+    public long moves() {
+        return moves;
+    }
+
+    /** Deadlocks found (each broken by moving a chair of it). */
+    public long deadlocks() {
+        return deadlocks;
+    }
+
+    // ---- what chairs say ------------------------------------------------------------------------
+
+    /** A chair was heard from (any message): its holds are kept; a silent one is heard again. */
+    public List<Outcome<T>> heard(String chair, long nowMs) {
+        List<Outcome<T>> out = new ArrayList<>();
+        heard.put(chair, nowMs);
+        if (silent.remove(chair)) {
+            out.add(new Note<>(local(chair) + " is heard again"));
+        }
+        return out;
+    }
+
+    /**
+     * A chair standing on {@code at} asks for {@code path} ({@code asked}: the route to where it was
+     * told to make way): it gives back everything else, and is granted the route or waits.
+     *
+     * @throws IllegalArgumentException for a route that is not on the map (nothing changes)
+     */
+    public List<Outcome<T>> reserve(String chair, T ticket, List<Integer> at, List<Integer> path, boolean asked, long nowMs) {
+        if (path.isEmpty() || at.isEmpty()) {
+            throw new IllegalArgumentException("a reservation needs the nodes the chair stands on (at) and a route (path)");
+        }
+        for (int i = 1; i < path.size(); i++) {
+            if (map.edge(path.get(i - 1), path.get(i)).isEmpty()) {
+                throw new IllegalArgumentException("the route has no edge " + path.get(i - 1) + "-" + path.get(i));
+            }
+        }
+        List<Outcome<T>> out = new ArrayList<>();
+        Integer target = aside.get(chair);
+        drop(chair, "a new route", out);
+        List<Integer> keep = new ArrayList<>(at);
+        if (asked && target != null && path.contains(target)) {
+            // Stepping aside: the node it was sent to stays its own while it waits.
+            aside.put(chair, target);
+            keep.add(target);
+        }
+        hold(chair, keep);
+        standing.put(chair, new ArrayList<>(at));
+        idle.remove(chair);
+        Wait<T> w = new Wait<>(chair, List.copyOf(path), ticket, nowMs, asked);
+        if (!enabled || blockers(w).isEmpty()) {
+            grant(w, out);
+        } else {
+            waiting.put(chair, w);
+            out.add(new Waiting<>(chair, ticket, blockers(w).stream().map(Reservations::local).toList()));
+        }
+        review(nowMs, out);
+        return out;
+    }
+
+    /** A chair has left a node. */
+    public List<Outcome<T>> release(String chair, int node, long nowMs) {
+        List<Outcome<T>> out = new ArrayList<>();
+        giveBack(chair, node);
+        review(nowMs, out);
+        return out;
+    }
+
+    /** A chair has nothing to do, standing on {@code at}. */
+    public List<Outcome<T>> idle(String chair, List<Integer> at, long nowMs) {
+        List<Outcome<T>> out = new ArrayList<>();
+        drop(chair, "idle", out);
+        hold(chair, at);
+        standing.put(chair, new ArrayList<>(at));
+        idle.add(chair);
+        goals.remove(chair);
+        review(nowMs, out);
+        return out;
+    }
+
+    /** A chair says where it stands (as it sets off along each edge). */
+    public void standing(String chair, List<Integer> at) {
+        standing.put(chair, new ArrayList<>(at));
+    }
+
+    /** Time passed: grants what has freed, moves idle chairs out of the way, breaks deadlocks, handles silent chairs. */
+    public List<Outcome<T>> review(long nowMs) {
+        List<Outcome<T>> out = new ArrayList<>();
+        review(nowMs, out);
+        return out;
+    }
+
+    // ---- the rules ------------------------------------------------------------------------------
+
+    /** Forgets a chair's wait (answering it FAILURE) and every node it holds. */
+    private void drop(String chair, String why, List<Outcome<T>> out) {
+        Wait<T> old = waiting.remove(chair);
+        if (old != null) {
+            out.add(new Failed<>(chair, old.ticket(), "superseded by " + why, null));
+        }
+        List<Integer> mine = held.remove(chair);
+        if (mine != null) {
+            for (int n : mine) {
+                Set<String> h = holders.get(n);
+                if (h != null) {
+                    h.remove(chair);
+                }
+            }
+        }
+        aside.remove(chair);
+    }
+
+    private void hold(String chair, List<Integer> nodes) {
+        List<Integer> mine = held.computeIfAbsent(chair, k -> new ArrayList<>());
+        for (int n : nodes) {
+            if (!mine.contains(n)) {
+                mine.add(n);
+            }
+            holders.computeIfAbsent(n, k -> new LinkedHashSet<>()).add(chair);
+        }
+    }
+
+    private void giveBack(String chair, int node) {
+        Set<String> h = holders.get(node);
+        if (h != null) {
+            h.remove(chair);
+        }
+        List<Integer> mine = held.get(chair);
+        if (mine != null) {
+            mine.remove(Integer.valueOf(node));
+        }
+        List<Integer> on = standing.get(chair);
+        if (on != null) {
+            on.remove(Integer.valueOf(node));
+        }
+        if (Integer.valueOf(node).equals(aside.get(chair))) {
+            aside.remove(chair);
+        }
+    }
+
+    private void grant(Wait<T> w, List<Outcome<T>> out) {
+        waiting.remove(w.chair());
+        hold(w.chair(), w.path());
+        goals.put(w.chair(), w.path().get(w.path().size() - 1));
+        grants++;
+        out.add(new Granted<>(w.chair(), w.ticket(), w.path()));
+    }
+
+    /** The chairs holding any node of a waiting route. */
+    private List<String> blockers(Wait<T> w) {
+        List<String> out = new ArrayList<>();
+        for (int n : w.path()) {
+            for (String h : holders.getOrDefault(n, Set.of())) {
+                if (!h.equals(w.chair()) && !out.contains(h)) {
+                    out.add(h);
+                }
+            }
+        }
+        return out;
+    }
+
+    private void review(long now, List<Outcome<T>> out) {
+        for (String chair : new ArrayList<>(held.keySet())) {
+            if (!silent.contains(chair) && now - heard.getOrDefault(chair, now) > SILENT_MS) {
+                silenced(chair, out);
+            }
+        }
+        List<Wait<T>> order = new ArrayList<>(waiting.values());
+        // Chairs stepping aside first (others wait for them), then the longest waiting.
+        order.sort(Comparator.comparing((Wait<T> w) -> !w.aside()).thenComparingLong(Wait::since).thenComparing(Wait::chair));
+        for (Wait<T> w : order) {
+            if (waiting.get(w.chair()) == w && blockers(w).isEmpty()) {
+                grant(w, out);
+            }
+        }
+        for (Wait<T> w : new ArrayList<>(waiting.values())) {
+            if (waiting.get(w.chair()) != w) {
+                continue;
+            }
+            List<String> in = blockers(w);
+            String gone = in.stream().filter(silent::contains).findFirst().orElse(null);
+            if (gone != null) {
+                waiting.remove(w.chair());
+                out.add(new Failed<>(w.chair(), w.ticket(), local(gone) + " is silent and stands on the route", firstHeldBy(w.path(), gone)));
+                continue;
+            }
+            boolean moved = false;
+            for (String h : in) {
+                if (idle.contains(h) && !aside.containsKey(h)) {
+                    moved |= makeWay(h, "it is idle in the way of " + local(w.chair()), out);
+                }
+            }
+            if (moved) {
+                continue;
+            }
+            List<String> cycle = cycle(w.chair());
+            if (cycle.isEmpty() || cycle.stream().anyMatch(aside::containsKey)) {
+                continue;
+            }
+            deadlocks++;
+            List<String> victims = new ArrayList<>(cycle);
+            victims.sort(null);
+            for (String v : victims) {
+                if (makeWay(v, "deadlock " + cycle.stream().map(Reservations::local).toList(), out)) {
+                    break;
+                }
+            }
+        }
+    }
+
+    private int firstHeldBy(List<Integer> path, String chair) {
+        for (int n : path) {
+            if (holders.getOrDefault(n, Set.of()).contains(chair)) {
+                return n;
+            }
+        }
+        return -1;
+    }
+
+    /**
+     * A silent chair keeps where it stands: what it last said it stands on (a chair says so as it
+     * sets off along each edge) and still holds, or else the first node it holds (it gives a node
+     * back on reaching the next); the rest is given back.
+     */
+    private void silenced(String chair, List<Outcome<T>> out) {
+        silent.add(chair);
+        List<Integer> mine = held.getOrDefault(chair, List.of());
+        List<Integer> body = new ArrayList<>(standing.getOrDefault(chair, List.of()));
+        body.retainAll(mine);
+        if (body.isEmpty() && !mine.isEmpty()) {
+            body.add(mine.get(0));
+        }
+        Wait<T> w = waiting.remove(chair);
+        if (w != null) {
+            out.add(new Failed<>(chair, w.ticket(), "silent for " + SILENT_MS / 1000 + " s", null));
+        }
+        for (int n : new ArrayList<>(mine)) {
+            if (!body.contains(n)) {
+                giveBack(chair, n);
+            }
+        }
+        out.add(new Note<>(local(chair) + " is silent; it keeps " + body + " where it stands"));
+    }
+
+    /** A cycle of waits through {@code start}, or empty: each chair of it waits for a node the next holds. */
+    private List<String> cycle(String start) {
+        List<String> path = new ArrayList<>();
+        return dfs(start, start, path, new HashSet<>()) ? path : List.of();
+    }
+
+    private boolean dfs(String start, String c, List<String> path, Set<String> seen) {
+        path.add(c);
+        Wait<T> w = waiting.get(c);
+        if (w != null) {
+            for (String h : blockers(w)) {
+                if (h.equals(start)) {
+                    return true;
+                }
+                if (seen.add(h) && dfs(start, h, path, seen)) {
+                    return true;
+                }
+            }
+        }
+        path.remove(path.size() - 1);
+        return false;
+    }
+
+    /**
+     * Sends a chair to the nearest node that nobody holds and nobody's route needs, over nodes
+     * nobody else holds; prefers dead ends. False if there is no such node now, or the chair is
+     * silent or was never heard (it could not be told).
+     */
+    private boolean makeWay(String chair, String why, List<Outcome<T>> out) {
+        List<Integer> mine = held.get(chair);
+        if (mine == null || mine.isEmpty() || !heard.containsKey(chair) || silent.contains(chair)) {
+            return false;
+        }
+        int from = mine.get(0);
+        Set<Integer> needed = new HashSet<>();
+        for (Wait<T> w : waiting.values()) {
+            if (!w.chair().equals(chair)) {
+                needed.addAll(w.path());
+            }
+        }
+        goals.forEach((c, g) -> {
+            if (!c.equals(chair)) {
+                needed.add(g);
+            }
+        });
+        Map<Integer, Integer> hops = new HashMap<>();
+        Map<Integer, Integer> prev = new HashMap<>();
+        ArrayDeque<Integer> q = new ArrayDeque<>(List.of(from));
+        hops.put(from, 0);
+        int best = -1;
+        int bestScore = Integer.MAX_VALUE;
+        while (!q.isEmpty()) {
+            int u = q.poll();
+            for (Edge e : map.edgesAt(u)) {
+                int v = e.other(u);
+                if (hops.containsKey(v) || !freeFor(chair, v)) {
+                    continue;
+                }
+                hops.put(v, hops.get(u) + 1);
+                prev.put(v, u);
+                q.add(v);
+                if (!needed.contains(v)) {
+                    int score = hops.get(v) + (map.edgesAt(v).size() == 1 ? 0 : 2);
+                    if (score < bestScore || (score == bestScore && v < best)) {
+                        best = v;
+                        bestScore = score;
+                    }
+                }
+            }
+        }
+        if (best < 0) {
+            return false;
+        }
+        List<Integer> path = new ArrayList<>();
+        for (int v = best; v != from; v = prev.get(v)) {
+            path.add(0, v);
+        }
+        Wait<T> own = waiting.remove(chair);
+        if (own != null) {
+            out.add(new Failed<>(chair, own.ticket(), "make-way", null));
+        }
+        idle.remove(chair);
+        hold(chair, List.of(best));
+        aside.put(chair, best);
+        moves++;
+        out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
+        out.add(new Note<>(local(chair) + " makes way from node " + from + " to node " + best + " (" + why + ")"));
+        return true;
+    }
+
+    private boolean freeFor(String chair, int node) {
+        for (String h : holders.getOrDefault(node, Set.of())) {
+            if (!h.equals(chair)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    static String local(String name) {
+        int at = name.indexOf('@');
+        return at < 0 ? name : name.substring(0, at);
+    }
+}
