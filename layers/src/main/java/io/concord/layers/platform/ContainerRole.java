@@ -309,8 +309,8 @@ final class ContainerRole extends RoleBase {
         List<String> all = null;
         List<String> changes = whole ? null : AgentLists.pages(delta, ctx.config().maxContentBytes());
         for (AgentEntry e : lists.lal.values()) {
-            if (e.name().equals(ctx.self())) {
-                continue;
+            if (e.name().equals(ctx.self()) || slow.contains(e.name())) {
+                continue; // a slow one is sent the whole list when it confirms an old version again
             }
             if (whole || !lalSent.containsKey(e.name())) {
                 if (all == null) {
@@ -384,6 +384,8 @@ final class ContainerRole extends RoleBase {
      * watches for it to leave the runtime (see {@link MemberRole}).
      */
     static final int LOCAL_ALIVE_EVERY = 25;
+    /** A slow member (silent past the timeout, its port held) gets an alive, as a probe, every this many cycles. */
+    static final int SLOW_ALIVE_EVERY = 25;
     /**
      * With no member elsewhere, each cycle that finds nothing changed doubles the wait for the next
      * (from {@link #LOCAL_ALIVE_EVERY} periods) up to this, so that an idle JVM of agents wakes
@@ -473,6 +475,11 @@ final class ContainerRole extends RoleBase {
                 if (!localAlive || ctx.peerLayer(e) != null) {
                     continue; // it reads this agent's state in memory when it wants to check (MemberRole)
                 }
+            } else if (slow.contains(e.name()) && cycles % SLOW_ALIVE_EVERY != 0) {
+                // A slow member (silent, its process alive) reads nothing meanwhile: an alive every
+                // period would pile up unacknowledged until the flow window to it shut, and flow
+                // control then paused this agent's own behaviours (a 35 s pause froze the container).
+                continue;
             } else {
                 cycleAwaiting.add(e.name());
             }
@@ -586,8 +593,8 @@ final class ContainerRole extends RoleBase {
         galSentSeq = lists.gseq;
         List<String> pages = AgentLists.pages(whole ? lists.gal.values() : delta, ctx.config().maxContentBytes());
         for (AgentEntry e : lists.lal.values()) {
-            if (e.name().equals(ctx.self())) {
-                continue;
+            if (e.name().equals(ctx.self()) || slow.contains(e.name())) {
+                continue; // a slow one shows an old GAL version when it confirms again, and is sent the whole
             }
             if (whole) {
                 pushGalTo(e.aid(), pages);

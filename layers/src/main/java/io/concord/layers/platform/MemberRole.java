@@ -56,7 +56,7 @@ final class MemberRole extends Follower {
         long timeout = t;
         watchStartNs = ctx.nowNs();
         slowReported = false;
-        watchTimer = after(t, () -> onWatch(deadline, timeout, false));
+        watchTimer = after(t, () -> onWatch(deadline, timeout));
     }
 
     /** When the current watch began: the container's silence since. */
@@ -80,10 +80,11 @@ final class MemberRole extends Follower {
 
     /**
      * The container stayed silent until the deadline. If this loop itself ran late (a stall: GC,
-     * a starved CPU), the container's messages may be waiting to be read, or its own timers were
-     * as late: grant one more period before giving it up.
+     * a starved CPU, a paused process), the silence is partly its own: it probes the container and
+     * watches again from now. A container of this host whose port is held is waited for (up to the
+     * bound); one whose port is free is given up at once.
      */
-    private void onWatch(long deadline, long t, boolean graced) {
+    private void onWatch(long deadline, long t) {
         watchTimer = -1;
         if (roles.join.target() != null || (st.container == null && st.successor == null)) {
             return;
@@ -93,33 +94,57 @@ final class MemberRole extends Follower {
             return;
         }
         long period = Math.max(1, st.periodMs > 0 ? st.periodMs : ctx.config().periodMs(st.lists.lal.size()));
+        long now = ctx.nowNs();
         // Checked before it is given up: a container of this host whose process still holds its
         // port is slow (paused, starved), not dead; one whose port is free is gone.
         AgentEntry watched = st.container != null ? st.container : st.successor;
         Boolean held = ctx.here(watched) ? null : ctx.portHeld(watched); // one of this runtime was read in memory
-        long silentMs = (ctx.nowNs() - watchStartNs) / 1_000_000L;
+        if (!Boolean.FALSE.equals(held) && now - deadline > period * 500_000L) {
+            // Local health: this watch ran late, so this loop stalled (its process paused, its
+            // CPU starved). What the container sent meanwhile was read before this timer; the
+            // silence this agent can vouch for starts now, not when it last heard. A member paused
+            // for longer than the bound blamed a healthy container for its own silence and took
+            // over. Probe it, and watch again.
+            if (!slowReported) {
+                slowReported = true;
+                ctx.trace("late", "this agent's loop ran " + (now - deadline) / 1_000_000L + " ms late: it accuses nobody of that silence");
+            }
+            watchStartNs = now;
+            probe();
+            rearm(held == null ? period : t, t);
+            return;
+        }
+        long silentMs = (now - watchStartNs) / 1_000_000L;
         if (Boolean.TRUE.equals(held) && silentMs <= PlatformConfig.SLOW_BOUND_MS) {
             if (!slowReported) {
                 slowReported = true;
                 ctx.trace("slow", watched.name() + " silent for " + silentMs + " ms, but its process holds its port: waited for");
             }
-            if (st.container != null) {
-                // A direct probe: it answers when its loop turns again, and one that dropped this
-                // agent (silent to it, not slow) answers with its list, which tells this agent to join again.
-                AgentLists l = st.lists;
-                ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, st.container.aid(),
-                        new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
-            }
-            watchTimer = after(t, () -> onWatch(deadline, t, graced));
-            return;
-        }
-        if (!graced && held == null && ctx.nowNs() - deadline > period * 500_000L) {
-            watchTimer = after(period, () -> onWatch(deadline, t, true));
+            probe();
+            rearm(t, t);
             return;
         }
         failover("no word from " + (st.container != null ? "the container " + st.container.name()
                 : "the expected successor " + st.successor.name()) + " for " + silentMs + " ms"
                 + (Boolean.FALSE.equals(held) ? ", and its port is free: its process is gone" : Boolean.TRUE.equals(held) ? " though its process holds its port: hung" : ""));
+    }
+
+    /**
+     * A direct probe of the container: it answers when its loop turns again, and one that dropped
+     * this agent (silent to it, not slow) answers with its list, which tells this agent to join again.
+     */
+    private void probe() {
+        if (st.container != null) {
+            AgentLists l = st.lists;
+            ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, st.container.aid(),
+                    new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
+        }
+    }
+
+    /** Watches again for {@code ms}, from now (the watch's timeout, for what it says, stays {@code t}). */
+    private void rearm(long ms, long t) {
+        long deadline = ctx.nowNs() + ms * 1_000_000L;
+        watchTimer = after(ms, () -> onWatch(deadline, t));
     }
 
     /**

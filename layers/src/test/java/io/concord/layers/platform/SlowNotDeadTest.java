@@ -55,6 +55,51 @@ class SlowNotDeadTest {
         assertTrue(e.getMessage().startsWith("nobody removed") || e.getMessage().startsWith("nobody runs for container"), e.getMessage());
     }
 
+    /**
+     * Past the bound: a member's process paused for 35 s is taken for hung and removed at 30 s (as
+     * documented), and when it wakes it does not blame the container for its own silence: no
+     * election, the same container and term, and it joins again. Meanwhile the container's process
+     * is not held back by the alives it would have piled up for the silent member (flow control
+     * paused the container's behaviours before).
+     */
+    @Test
+    void aMemberPausedPastTheBoundIsRemovedThenJoinsAgainWithoutAnElection() {
+        try (Simulation sim = new Simulation(7, FaultPlan.NONE).platformName("sim")) {
+            List<String> elections = new ArrayList<>();
+            List<String> removals = new ArrayList<>();
+            sim.trace().addListener((ns, node, event, detail) -> {
+                if (event.equals("platform-failover") || event.equals("platform-container")) {
+                    elections.add(node + ": " + event + " " + detail);
+                } else if (event.equals("platform-removed")) {
+                    removals.add(node + ": " + detail);
+                }
+            });
+            List<AgentRuntime> processes = new ArrayList<>();
+            Map<AID, AgentRuntime> agents = new LinkedHashMap<>();
+            for (int p = 0; p < 2; p++) {
+                AgentRuntime rt = sim.newRuntime("h1");
+                processes.add(rt);
+                Platform platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 40, 10))
+                        .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(PlatformKey.of(new byte[32]))
+                                .identities(PlatformWorld.sharedIdentities()).build()).build();
+                agents.put(platform.startAgent("p" + p, new Idle()), rt);
+                sim.runFor(200);
+            }
+            assertTrue(sim.runUntil(() -> converged(agents), 30_000));
+            assertEquals("p0@sim", containerOf(agents));
+            elections.clear();
+            long pausesBefore = processes.get(0).pauses();
+            sim.pause(processes.get(1), 35_000);
+            sim.runFor(36_000);
+            assertTrue(sim.runUntil(() -> converged(agents), 5_000), "it joined again: " + removals);
+            assertEquals(List.of(), elections, "the member that was paused took over instead of joining again");
+            assertEquals("p0@sim", containerOf(agents));
+            assertEquals(1, removals.size(), "removed once, at the bound: " + removals);
+            assertTrue(removals.get(0).contains("hung"), removals.get(0));
+            assertEquals(pausesBefore, processes.get(0).pauses(), "the container's behaviours were never held back by flow control");
+        }
+    }
+
     private static void run(long seed, boolean pauseOnly, Defence... off) {
         SplittableRandom r = new SplittableRandom(seed);
         try (Simulation sim = new Simulation(seed, FaultPlan.NONE).platformName("sim")) {
