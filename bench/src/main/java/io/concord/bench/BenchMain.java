@@ -579,7 +579,7 @@ public final class BenchMain {
                         kids.startWith(net == null ? List.of() : net.exec(1), io.concord.bench.child.LoadChild.class, platform, first,
                                 last, "v" + ph, "1", Integer.toString(perHost + 1), without,
                                 net == null ? "127.0.0.1" : io.concord.core.testkit.NetnsHosts.address(1), Integer.toString(total + 1));
-                        kids.awaitReadyOf(victim);
+                        kids.readLine(victim, "READY"); // started after the others were ready
                         kids.ask(0, "stats", "STATS"); // its join is not part of the phase
                     }
                     if (phases[ph][2] == 1) {
@@ -796,11 +796,7 @@ public final class BenchMain {
     }
 
     private static void sleepS(long s) {
-        try {
-            Thread.sleep(s * 1000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        sleepMs(s * 1000);
     }
 
     /** The chain on a running platform, quiet and under each attack (see AttackHarness). */

@@ -63,12 +63,6 @@ public final class Children implements AutoCloseable {
         return out;
     }
 
-    /** Waits for child i's READY line (a child started after the others were ready). */
-    public String awaitReadyOf(int i) throws IOException {
-        readLine(i, "READY");
-        return "";
-    }
-
     /** Reads child i's output up to the first line starting with {@code prefix}, and returns it. */
     public String readLine(int i, String prefix) throws IOException {
         String line;

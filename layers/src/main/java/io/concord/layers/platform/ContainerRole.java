@@ -176,9 +176,7 @@ final class ContainerRole extends RoleBase {
             localWatches.remove(name);
             AgentEntry now = st.lists.lal.get(name);
             if (now != null && at.equals(now.transportAddress())) {
-                st.lists.lal.remove(name);
-                lastHeard.remove(name);
-                heldSeq.remove(name);
+                forget(name);
                 st.seq++;
                 roles.routesChanged(name);
                 ctx.trace("removed", name + " left this runtime");
@@ -213,14 +211,19 @@ final class ContainerRole extends RoleBase {
             }
         }
         for (String n : gone) {
-            st.lists.lal.remove(n);
-            lastHeard.remove(n);
-            heldSeq.remove(n);
-            slow.remove(n);
+            forget(n);
             st.seq++;
             roles.routesChanged(n);
             ctx.trace("removed", n + ": " + e.name() + " now holds its port " + at);
         }
+    }
+
+    /** Removes a member from the list and from what is kept of it; false if it was not listed. */
+    private boolean forget(String name) {
+        lastHeard.remove(name);
+        heldSeq.remove(name);
+        slow.remove(name);
+        return st.lists.lal.remove(name) != null;
     }
 
     /** Members found slow (silent past the timeout, their process alive) rather than dead, since this agent took the role. */
@@ -259,9 +262,7 @@ final class ContainerRole extends RoleBase {
     @Override
     public void onLeave(PlatformMessage.Leave l, AclMessage m) {
         String from = m.getSender().name();
-        if (st.lists.lal.remove(from) != null) {
-            lastHeard.remove(from);
-            heldSeq.remove(from);
+        if (forget(from)) {
             st.seq++;
             roles.routesChanged(from);
             ctx.trace("removed", from + " left");
@@ -444,10 +445,7 @@ final class ContainerRole extends RoleBase {
             }
         }
         for (String n : dead) {
-            lists.lal.remove(n);
-            lastHeard.remove(n);
-            heldSeq.remove(n);
-            slow.remove(n);
+            forget(n);
         }
         if (!dead.isEmpty()) {
             st.seq++;

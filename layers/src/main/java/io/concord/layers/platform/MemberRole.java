@@ -160,9 +160,7 @@ final class MemberRole extends Follower {
             return false;
         }
         if (there.lalSequence() != st.seq) {
-            AgentLists l = st.lists;
-            ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, c.aid(),
-                    new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom)); // as if to an alive
+            probe(); // as if to an alive
         }
         return true;
     }
