@@ -1,0 +1,143 @@
+package io.concord.agents.control;
+
+import io.concord.agents.proto.Content;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.BiConsumer;
+import java.util.function.Consumer;
+import java.util.function.IntSupplier;
+import java.util.function.Supplier;
+
+/**
+ * A control agent's answers to the Medical agent's calls for proposals ({@code transport; task;
+ * from; to; priority; unload}). It asks the chair's planner for two plans, from where the queue
+ * ends to the patient and from the patient to the destination, and proposes {@code proposal;
+ * task; cost; path; unload} (and {@code pending}: the proposals still open that the cost counts);
+ * or it refuses, saying why: a malformed call, a chair that cannot drive now ({@code unavailable
+ * true}), no planner, no route.
+ *
+ * <p>The cost is the seconds until the patient is delivered: the work ahead in the queue, the
+ * approach, loading, the path and unloading, at {@link #EST_SPEED_MPS} and {@link #EST_DOOR_S}
+ * a door.
+ */
+final class Bidder {
+    /** Metres a second the estimates assume (cruise power, turns and slowing included). */
+    static final double EST_SPEED_MPS = 0.7;
+    /** Seconds each door adds to an estimate. */
+    static final double EST_DOOR_S = 6;
+
+    /** How a bidder gets plans. */
+    interface Planning {
+        /** The chair's planner, from the yellow pages, or null. */
+        AID planner();
+
+        /** A plan as the planner's final answer (INFORM-REF with {@code nodes; length; doors}), never null. */
+        CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to);
+    }
+
+    private final TaskQueue queue;
+    private final String chair;
+    private final Planning planning;
+    /** Why the chair cannot take a task now, or null. */
+    private final Supplier<String> unavailable;
+    /** The node the chair stands at or nearest to. */
+    private final IntSupplier chairAt;
+    /** Sends an answer to a CFP: the CFP and the answer. */
+    private final BiConsumer<AclMessage, AclMessage> respond;
+    private final Consumer<String> say;
+
+    Bidder(TaskQueue queue, String chair, Planning planning, Supplier<String> unavailable, IntSupplier chairAt,
+           BiConsumer<AclMessage, AclMessage> respond, Consumer<String> say) {
+        this.queue = queue;
+        this.chair = chair;
+        this.planning = planning;
+        this.unavailable = unavailable;
+        this.chairAt = chairAt;
+        this.respond = respond;
+        this.say = say;
+    }
+
+    /** Evaluates a CFP: the answer goes out once the plans are in (at once if there is nothing to ask). */
+    void evaluate(AclMessage cfp) {
+        Task t;
+        try {
+            Content c = Content.parse(cfp.getContent());
+            t = new Task(c.text("task"), c.integer("from"), c.integer("to"), c.number("priority", 0), c.number("unload", 0), cfp);
+        } catch (IllegalArgumentException e) {
+            respond.accept(cfp, cfp.createReply().setPerformative(Performative.REFUSE)
+                    .setContent(Content.of("refuse").with("reason", e.getMessage()).toString()));
+            return;
+        }
+        queue.add(t);
+        String why = unavailable.get();
+        if (why != null) {
+            refuse(t, chair + " " + why, true);
+            return;
+        }
+        AID planner = planning.planner();
+        if (planner == null) {
+            refuse(t, "no planner for " + chair + " in the yellow pages", false);
+            return;
+        }
+        int start = queue.end(chairAt);
+        t.start = start;
+        planning.plan(planner, t.id + "/pickup", start, t.from).thenAccept(first -> {
+            if (first.getPerformative() != Performative.INFORM_REF) {
+                refuse(t, ControlAgent.reason(first, "no plan from node " + start + " to node " + t.from), false);
+                return;
+            }
+            planning.plan(planner, t.id + "/dropoff", t.from, t.to).thenAccept(second -> {
+                if (second.getPerformative() != Performative.INFORM_REF) {
+                    refuse(t, ControlAgent.reason(second, "no plan from node " + t.from + " to node " + t.to), false);
+                    return;
+                }
+                propose(t, Content.parse(first.getContent()), Content.parse(second.getContent()));
+            });
+        });
+    }
+
+    private void propose(Task t, Content toPickup, Content toDropoff) {
+        t.toPickup = nodes(toPickup);
+        t.toDropoff = nodes(toDropoff);
+        double approach = toPickup.number("length") / EST_SPEED_MPS + EST_DOOR_S * toPickup.list("doors").size();
+        t.pathS = toDropoff.number("length") / EST_SPEED_MPS + EST_DOOR_S * toDropoff.list("doors").size();
+        t.estimateS = approach + t.unloadS + t.pathS + t.unloadS;
+        t.costS = queue.seconds() + t.estimateS;
+        // The proposals still open that the cost counts, each with its seconds: the Medical agent
+        // takes out those another chair has won.
+        String pending = queue.pendingBesides(t);
+        t.state = TaskView.State.PROPOSED;
+        say.accept(String.format(Locale.ROOT, "proposes for %s: cost %.1f s, path %.1f s, unload %.0f s", t.id, t.costS,
+                t.pathS, t.unloadS));
+        Content proposal = Content.of("proposal").with("task", t.id).with("cost", t.costS).with("path", t.pathS)
+                .with("unload", t.unloadS);
+        respond.accept(t.cfp, t.cfp.createReply().setPerformative(Performative.PROPOSE).setContent(
+                (pending.isEmpty() ? proposal : proposal.with("pending", pending)).toString()));
+    }
+
+    /** Refuses a task; {@code unavailable}: the chair cannot drive now, and may later. */
+    private void refuse(Task t, String why, boolean unavailable) {
+        t.state = TaskView.State.REFUSED;
+        t.reason = why;
+        queue.remove(t);
+        say.accept("refuses " + t.id + ": " + why);
+        Content c = Content.of("refuse").with("task", t.id).with("reason", why);
+        respond.accept(t.cfp, t.cfp.createReply().setPerformative(Performative.REFUSE)
+                .setContent((unavailable ? c.with("unavailable", "true") : c).toString()));
+    }
+
+    /** The node ids of a plan. */
+    static List<Integer> nodes(Content plan) {
+        List<Integer> out = new ArrayList<>();
+        for (String s : plan.list("nodes")) {
+            out.add(Integer.parseInt(s));
+        }
+        return out;
+    }
+}

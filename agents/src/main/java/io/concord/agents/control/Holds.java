@@ -1,0 +1,182 @@
+package io.concord.agents.control;
+
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.ChairSupervisor;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+
+import java.util.function.Supplier;
+
+/**
+ * The place of the chair's {@link ChairSupervisor} in the control agent: what a hold means for the
+ * tasks, and who decides to resume. A hold pauses the task under way (it does not fail it) and
+ * whoever gave the task is told (INFORM {@code paused; task; chair; reason; resume}, conversation
+ * {@code <cfp's>/status}), again each keep-alive while paused, and told again when it resumes
+ * (INFORM {@code resumed}). After a trip or a lost link that came back the agent decides to resume
+ * by itself, and with no task accepted it resumes whatever the hold (no motion follows until a
+ * task does); after an e-stop, a reboot or a refusal the board did not explain, only an operator
+ * does. A link down for the grace time fails the tasks (the Medical agent gives them to another
+ * chair).
+ */
+final class Holds implements ChairSupervisor.Observer {
+    /** What the holds act on: the agent's tasks and its ways out. */
+    interface Agent {
+        /** The task under way, or null. */
+        Task active();
+
+        /** Whether any task is accepted and not finished. */
+        boolean hasWork();
+
+        /** Fails every task accepted and not finished. */
+        void failAll(String why);
+
+        /** Sends a message. */
+        void send(AclMessage m);
+
+        /** Runs {@code r} on the agent's loop after {@code ms} of the agent's clock. */
+        void after(long ms, Runnable r);
+
+        /** Says something in the agent's log. */
+        void say(String s);
+    }
+
+    private final ChairSupervisor supervisor;
+    /** The agent's name: who decided, when the agent resumes. */
+    private final Supplier<String> name;
+    private final Agent agent;
+    /** Counts the link's outages: a grace timer ends only the outage it was set for. */
+    private int outages;
+    private long linkGraceMs = ControlAgent.LINK_GRACE_MS;
+    private boolean estopSeen;
+
+    Holds(ChairSupervisor supervisor, Supplier<String> name, Agent agent) {
+        this.supervisor = supervisor;
+        this.name = name;
+        this.agent = agent;
+    }
+
+    void setLinkGraceMs(long ms) {
+        this.linkGraceMs = ms;
+    }
+
+    /** A reading came: an e-stop released says what follows; the agent resumes if it may. */
+    void reading(ChairReadings r) {
+        if (estopSeen && !r.emergencyStop() && supervisor.state() == ChairSupervisor.State.HELD
+                && !supervisor.hold().cause().agentMayResume() && agent.hasWork()) {
+            agent.say("the e-stop of " + supervisor.name() + " is released: the chair stays held until an operator resumes it");
+        }
+        estopSeen = r.emergencyStop();
+        decideToResume();
+    }
+
+    /** The link went down (the tasks are kept for the grace time) or came back (the agent resumes if it may). */
+    void online(boolean up) {
+        String chair = supervisor.name();
+        agent.say(up ? "the link to " + chair + " is up" : "the link to " + chair + " is down: the chair is stopped by its board");
+        if (!up) {
+            supervisor.stop();
+            int outage = ++outages;
+            if (agent.hasWork()) {
+                agent.say("keeps its tasks for " + linkGraceMs / 1000.0 + " s while the link is down");
+                long grace = linkGraceMs;
+                agent.after(grace, () -> {
+                    if (outage == outages && !supervisor.online()) {
+                        agent.failAll(chair + " has been offline for " + grace / 1000.0 + " s");
+                    }
+                });
+            }
+        } else {
+            decideToResume();
+        }
+    }
+
+    /** The supervisor holds the chair: the task is paused, and whoever gave it is told why. */
+    @Override
+    public void onHold(ChairSupervisor.Hold hold) {
+        String how = hold.cause().agentMayResume() ? "it resumes when the chair can drive again" : "it waits for an operator's resume";
+        Task active = agent.active();
+        if (active != null) {
+            active.paused = hold + "; " + how;
+            agent.say("pauses " + active.id + ": " + hold + "; " + how);
+            notice(active, "paused", active.paused);
+        } else {
+            agent.say("holds " + supervisor.name() + ": " + hold);
+        }
+    }
+
+    /** The chair is armed again after a resume: a paused task goes on. */
+    @Override
+    public void onArmed(String decidedBy) {
+        Task active = agent.active();
+        if (active != null && active.paused != null) {
+            active.paused = null;
+            agent.say("resumes " + active.id + " (decided by " + decidedBy + ")");
+            notice(active, "resumed", "decided by " + decidedBy);
+        }
+    }
+
+    /** While the task under way is paused, whoever gave it is told again. */
+    void keepAlive() {
+        Task active = agent.active();
+        if (active != null && active.paused != null) {
+            notice(active, "paused", active.paused);
+        }
+    }
+
+    /**
+     * The agent's own decision to resume: after a trip or a link that came back, or with no task
+     * accepted at all (no motion follows until a task is); never after an e-stop, a reboot or an
+     * unexplained refusal while it holds a task.
+     */
+    private void decideToResume() {
+        if (supervisor.state() != ChairSupervisor.State.HELD || !supervisor.online() || supervisor.estopPressed()) {
+            return;
+        }
+        ChairSupervisor.Hold h = supervisor.hold();
+        if (h.cause().agentMayResume()) {
+            supervisor.resume(name.get() + " (" + h + ")");
+        } else if (!agent.hasWork()) {
+            supervisor.resume(name.get() + " (" + h + "; no task accepted)");
+        }
+    }
+
+    /** An operator's resume, said in the log: null if resuming, else why not. */
+    String resume(String who) {
+        String why = supervisor.resume(who);
+        agent.say(why == null ? "resume decided by " + who : "cannot resume (" + who + "): " + why);
+        return why;
+    }
+
+    /** REQUEST {@code resume; by}: an operator's resume through a message; the answer says whether it resumes. */
+    void resumeAsked(AclMessage m) {
+        String by = m.getSender().localName();
+        try {
+            String b = Content.parse(m.getContent()).get("by");
+            if (b != null && !b.isBlank()) {
+                by = b + " via " + m.getSender().localName();
+            }
+        } catch (IllegalArgumentException e) {
+            // no content beyond the word: the sender decided
+        }
+        String why = resume(by);
+        agent.send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
+                .setContent(why == null ? Content.of("resuming").with("chair", supervisor.name()).toString()
+                        : Content.of("refuse").with("reason", why).toString()));
+    }
+
+    /** Tells whoever gave the task how it stands (paused, resumed), outside the contract's conversation. */
+    private void notice(Task t, String what, String reason) {
+        if (t.accept == null) {
+            return;
+        }
+        AclMessage m = new AclMessage(Performative.INFORM);
+        m.addReceiver(t.accept.getSender());
+        m.setOntology(Services.ONTOLOGY);
+        m.setConversationId(t.cfp.getConversationId() + "/status");
+        m.setContent(Content.of(what).with("task", t.id).with("chair", supervisor.name()).with("reason", reason)
+                .with("resume", supervisor.hold().cause().agentMayResume() ? "agent" : "operator").toString());
+        agent.send(m);
+    }
+}

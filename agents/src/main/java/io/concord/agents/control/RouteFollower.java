@@ -1,0 +1,263 @@
+package io.concord.agents.control;
+
+import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.Localiser;
+import io.concord.agents.chair.Pose;
+import io.concord.agents.chair.PoseController;
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.map.Point;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Drives a chair along a route of the map's nodes, reading by reading: on the graph's line from
+ * node to node, over the {@link PoseController} and the {@link Localiser} (odometry corrected by
+ * the floor markers). Whatever the route, it stops for anything closer than {@link #STOP_M} ahead
+ * (the infrared sensors: {@link #STOP_IR_M}) and slows for anything closer than {@link #SLOW_M};
+ * an edge blocked for {@link #BLOCKED_AFTER_MS} is reported. Before it moves it asks its
+ * {@link Way} (the traffic agent and the doors, in the agent), and tells it where it sets off to
+ * and which node it reached.
+ *
+ * <p>It commands the chair it is given and nothing else: no messages, no clock of its own (the
+ * readings' time is the chair's clock).
+ */
+final class RouteFollower {
+    /** Nearer than this ahead (front sonar), the chair stops. */
+    static final double STOP_M = 0.45;
+    /** Nearer than this ahead (either front infrared sensor), the chair stops. */
+    static final double STOP_IR_M = 0.3;
+    /** Nearer than this ahead, the chair drives at {@link #SLOW_SCALE} of its power. */
+    static final double SLOW_M = 1.2;
+    static final double SLOW_SCALE = 0.35;
+    /** Stopped this long on an edge, the edge is reported blocked. */
+    static final long BLOCKED_AFTER_MS = 15_000;
+
+    /** What the follower asks and tells before and as it moves. */
+    interface Way {
+        /** Whether the chair may drive this very {@code route} now, standing on {@code standsOn}. */
+        boolean mayDrive(List<Integer> route, List<Integer> standsOn);
+
+        /** Whether the chair at {@code pose} may drive on along {@code edge} (which has a door) from {@code fromId}. */
+        boolean mayEnter(Edge edge, int fromId, Pose pose);
+
+        /** The chair sets off along an edge: it now stands on both its ends. */
+        void setOff(List<Integer> standsOn);
+
+        /**
+         * The chair reached a node: by {@code edge} (null for the first node of a route it drove
+         * back to); {@code rest} is the route from that node on.
+         */
+        void reached(Edge edge, List<Integer> rest);
+    }
+
+    /** What the follower reports. */
+    interface Events {
+        /** The route's last node is reached; the chair is stopped. */
+        void arrived(long nowMs);
+
+        /** The route cannot be driven from node {@code fromId}: a new plan is needed. */
+        void broken(int fromId, String why);
+
+        /** The edge has been blocked for {@link #BLOCKED_AFTER_MS}. */
+        void blocked(int fromId, int toId);
+
+        /** Something worth a line in the log. */
+        void say(String s);
+    }
+
+    private final ChairDriver chair;
+    private final HospitalMap map;
+    private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
+    private final Localiser localiser = new Localiser();
+
+    private List<Integer> route;
+    /** The node of {@link #route} it drives to; 0: back to the route's first node. */
+    private int index;
+    private int lastNode = -1;
+    /** The node the chair drives to on the edge it is on, or -1 at a node. */
+    private int edgeTo = -1;
+    private long stoppedSinceMs = -1;
+
+    RouteFollower(ChairDriver chair, HospitalMap map) {
+        this.chair = chair;
+        this.map = map;
+    }
+
+    /** Takes a reading into the chair's pose; returns where the chair is believed to be. */
+    Pose locate(ChairReadings r) {
+        return localiser.update(r);
+    }
+
+    /** Where it believes the chair is, or null before the first reading. */
+    Pose pose() {
+        return localiser.pose();
+    }
+
+    /** Follows {@code nodes}, which start at the node the chair stands at. */
+    void follow(List<Integer> nodes) {
+        route = new ArrayList<>(nodes);
+        index = 1;
+        stoppedSinceMs = -1;
+        lastNode = nodes.get(0);
+    }
+
+    /** Follows {@code nodes} after driving back along the edge it is on to their first node. */
+    void followBack(List<Integer> nodes) {
+        follow(nodes);
+        index = 0;
+    }
+
+    /** Holds {@code nodes} as its route without driving them (it waits there, a new plan to come). */
+    void hold(List<Integer> nodes) {
+        route = nodes;
+    }
+
+    /** Keeps only the part of the route not yet driven (the edge it is on included). */
+    void trim() {
+        route = new ArrayList<>(route.subList(Math.max(0, index - 1), route.size()));
+    }
+
+    /** Drops the route; the next steps stop the chair. */
+    void clear() {
+        route = null;
+    }
+
+    /** The route, or null. */
+    List<Integer> route() {
+        return route;
+    }
+
+    /** The part of the route not yet driven (the edge it is on included), or an empty list. */
+    List<Integer> ahead() {
+        return route == null ? List.of() : route.subList(Math.max(0, index - 1), route.size());
+    }
+
+    /** Whether the route has nodes still to reach. */
+    boolean underWay() {
+        return route != null && index < route.size();
+    }
+
+    /** The last node of the route. */
+    int goal() {
+        return route.get(route.size() - 1);
+    }
+
+    /** The node the chair stands at or last reached. */
+    int here() {
+        return lastNode >= 0 ? lastNode : nearestNode();
+    }
+
+    /** The nodes the chair stands on: the last it reached, and the one it drives to if it is on an edge. */
+    List<Integer> standsOn() {
+        List<Integer> at = new ArrayList<>();
+        at.add(here());
+        if (edgeTo >= 0 && edgeTo != at.get(0)) {
+            at.add(edgeTo);
+        }
+        return at;
+    }
+
+    /** The node nearest the chair (by its pose, or by its last reading before it has one). */
+    int nearestNode() {
+        Pose p = localiser.pose();
+        if (p == null) {
+            ChairReadings r = chair.latest();
+            p = r == null ? null : r.fix() != null ? r.fix() : r.odometry();
+        }
+        int best = -1;
+        double bd = Double.MAX_VALUE;
+        for (Node n : map.nodes()) {
+            double d = p == null ? 0 : p.distanceTo(n.at().x(), n.at().y());
+            if (d < bd) {
+                bd = d;
+                best = n.id();
+            }
+        }
+        return best;
+    }
+
+    /** One step on reading {@code r}: drives the chair on, or stops it, and tells what happened. */
+    void step(ChairReadings r, Pose pose, long now, Way way, Events events) {
+        if (route == null) {
+            chair.stop();
+            return;
+        }
+        if (index >= route.size()) {
+            events.arrived(now);
+            return;
+        }
+        if (!way.mayDrive(route, standsOn())) {
+            chair.stop();
+            return;
+        }
+        if (index == 0) {
+            Point first = map.node(route.get(0)).at();
+            if (control.reached(pose, first.x(), first.y())) {
+                index = 1;
+                lastNode = route.get(0);
+                edgeTo = -1;
+                way.reached(null, route);
+            } else {
+                PoseController.Powers p = control.toPoint(pose, first.x(), first.y());
+                chair.drive(p.left() * 0.5, p.right() * 0.5);
+            }
+            return;
+        }
+        int fromId = route.get(index - 1);
+        int toId = route.get(index);
+        Edge edge = map.edge(fromId, toId).orElse(null);
+        if (edge == null) {
+            events.broken(fromId, "the plan has no edge " + fromId + "-" + toId);
+            return;
+        }
+        // On the graph's line, to the node itself: the traffic agent never lets two chairs on one
+        // edge, and on the line a chair passes over every node's floor marker (a chair kept 0.6 m
+        // right of the line missed the markers once its heading had drifted 3 degrees in a spot
+        // turn, and met a door's jamb 0.85 m off course: seed 156 of the soak).
+        Point target = map.node(toId).at();
+        if (control.reached(pose, target.x(), target.y())) {
+            lastNode = toId;
+            edgeTo = -1;
+            index++;
+            stoppedSinceMs = -1;
+            way.reached(edge, route.subList(index - 1, route.size()));
+            if (index >= route.size()) {
+                events.arrived(now);
+            }
+            return;
+        }
+        if (edge.door() != null && !way.mayEnter(edge, fromId, pose)) {
+            chair.stop();
+            return;
+        }
+        if (edgeTo != toId) {
+            edgeTo = toId;
+            way.setOff(standsOn()); // sets off along the edge: its body now takes both ends
+        }
+        double ahead = r.range(chair.layout().sensorIndex("front"));
+        double irl = r.range(chair.layout().sensorIndex("ir-front-left"));
+        double irr = r.range(chair.layout().sensorIndex("ir-front-right"));
+        PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
+        // A turn on the spot moves nothing forward: the stop zone lets it turn away from what is ahead.
+        boolean spotTurn = Math.abs(p.left() + p.right()) < 1e-9 && p.left() != 0;
+        if (!spotTurn && (ahead < STOP_M || irl < STOP_IR_M || irr < STOP_IR_M)) {
+            chair.stop();
+            if (stoppedSinceMs < 0) {
+                stoppedSinceMs = now;
+                events.say(String.format(Locale.ROOT, "stops: something %.2f m ahead", Math.min(ahead, Math.min(irl, irr))));
+            } else if (now - stoppedSinceMs > BLOCKED_AFTER_MS) {
+                stoppedSinceMs = -1;
+                events.blocked(fromId, toId);
+            }
+            return;
+        }
+        stoppedSinceMs = -1;
+        double scale = ahead < SLOW_M && !spotTurn ? SLOW_SCALE : 1;
+        chair.drive(p.left() * scale, p.right() * scale);
+    }
+}

@@ -1,0 +1,473 @@
+package io.concord.agents.control;
+
+import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.ChairSupervisor;
+import io.concord.agents.chair.Pose;
+import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.proto.Content;
+import io.concord.agents.proto.Services;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+
+import java.util.EnumSet;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.CompletableFuture;
+
+/**
+ * The control agent's task manager: runs the accepted tasks one after another, each through its
+ * phases (to the patient, loading, to the destination, unloading), reading by reading. It starts
+ * the next task, has the {@link RouteFollower} drive each leg, asks for a new plan when a route
+ * breaks (a door that does not open, an edge blocked, the traffic agent unable to grant it), steps
+ * aside when the traffic agent orders it, drops a task its giver withdraws, and answers each
+ * accepted task with INFORM {@code done} or FAILURE and why. Faults the chair reports stop it and
+ * fail the task (the e-stop, a trip and a lost link are the {@link ChairSupervisor}'s: they hold
+ * the chair and pause the task, see {@link Holds}).
+ */
+final class TaskRunner {
+    /** How the runner gets plans and speaks. */
+    interface Agent extends Bidder.Planning {
+        /** Sends a message. */
+        void send(AclMessage m);
+
+        /** Says something in the agent's log. */
+        void say(String s);
+    }
+
+    private final ChairSupervisor chair;
+    private final HospitalMap map;
+    private final TaskQueue tasks;
+    private final RouteFollower follower;
+    private final DoorClient doors;
+    private final TrafficClient traffic;
+    private final Agent agent;
+
+    private Task active;
+    /** Until when (the chair's clock) the patient gets on or off, or -1. */
+    private long pauseUntilMs = -1;
+    /** A plan asked for, not yet answered: the chair stands. */
+    private boolean replanning;
+    /** Why the chair reports it cannot drive (said once), or null. */
+    private String stopReason;
+    /** The node it steps aside to for another chair (the traffic agent's order), or -1. */
+    private int asideTo = -1;
+
+    private final RouteFollower.Way way = new RouteFollower.Way() {
+        @Override
+        public boolean mayDrive(List<Integer> route, List<Integer> standsOn) {
+            return traffic.mayDrive(route, standsOn, asideTo >= 0);
+        }
+
+        @Override
+        public boolean mayEnter(Edge edge, int fromId, Pose pose) {
+            return doors.mayEnter(edge, fromId, pose);
+        }
+
+        @Override
+        public void setOff(List<Integer> standsOn) {
+            traffic.alive(standsOn);
+        }
+
+        @Override
+        public void reached(Edge edge, List<Integer> rest) {
+            if (edge != null) {
+                doors.reached(edge);
+            }
+            traffic.keepOnly(rest);
+        }
+    };
+
+    private final RouteFollower.Events events = new RouteFollower.Events() {
+        @Override
+        public void arrived(long nowMs) {
+            TaskRunner.this.arrived(nowMs);
+        }
+
+        @Override
+        public void broken(int fromId, String why) {
+            replan(fromId, why);
+        }
+
+        @Override
+        public void blocked(int fromId, int toId) {
+            say("edge " + fromId + "-" + toId + " blocked for " + RouteFollower.BLOCKED_AFTER_MS / 1000
+                    + " s: tells the planner and drives around");
+            tellBlocked(fromId, toId);
+            replan(fromId, null);
+        }
+
+        @Override
+        public void say(String s) {
+            TaskRunner.this.say(s);
+        }
+    };
+
+
+    TaskRunner(ChairSupervisor chair, HospitalMap map, TaskQueue tasks, RouteFollower follower, DoorClient doors,
+               TrafficClient traffic, Agent agent) {
+        this.chair = chair;
+        this.map = map;
+        this.tasks = tasks;
+        this.follower = follower;
+        this.doors = doors;
+        this.traffic = traffic;
+        this.agent = agent;
+    }
+
+    /** The task under way, or null. */
+    Task active() {
+        return active;
+    }
+
+    private void say(String s) {
+        agent.say(s);
+    }
+
+    private void send(AclMessage m) {
+        agent.send(m);
+    }
+
+    private AID planner() {
+        return agent.planner();
+    }
+
+    private CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to) {
+        return agent.plan(planner, task, from, to);
+    }
+
+    /** One reading ({@code pose}: where the chair is believed to be; {@code now}: the chair's clock, in ms). */
+    void reading(ChairReadings r, Pose pose, long now) {
+        if (active == null && asideTo < 0) {
+            startNext();
+            if (active == null) {
+                chair.stop();
+                if (!replanning) {
+                    traffic.idle(follower.here());
+                }
+                return;
+            }
+        }
+        if (now < pauseUntilMs) {
+            chair.stop();
+            return;
+        }
+        switch (active == null ? TaskView.State.QUEUED : active.state) {
+            case LOADING -> {
+                active.state = TaskView.State.TO_DROPOFF;
+                follow(active.toDropoff);
+                say("drives " + active.id + " to node " + active.to + " by " + active.toDropoff);
+            }
+            case UNLOADING -> {
+                finish(active, null);
+                return;
+            }
+            default -> { }
+        }
+        if (replanning) {
+            chair.stop();
+            return;
+        }
+        if (!faultsAllowDriving(r)) {
+            return;
+        }
+        if (!chair.armed()) {
+            chair.stop();
+            return;
+        }
+        follower.step(r, pose, now, way, events);
+    }
+
+    /** The doors on the route it drives and on the routes of the tasks it holds, in order. */
+    Set<String> doorsAhead() {
+        Set<String> ahead = new LinkedHashSet<>();
+        if (follower.route() != null) {
+            doorsOn(follower.ahead(), ahead);
+        }
+        for (Task t : tasks.all()) {
+            if (t.state == TaskView.State.QUEUED || t == active) {
+                if (t.state.compareTo(TaskView.State.TO_PICKUP) <= 0 && t.toPickup != null) {
+                    doorsOn(t.toPickup, ahead);
+                }
+                if (t.toDropoff != null && t.state.compareTo(TaskView.State.TO_DROPOFF) <= 0) {
+                    doorsOn(t.toDropoff, ahead);
+                }
+            }
+        }
+        return ahead;
+    }
+
+    private void doorsOn(List<Integer> nodes, Set<String> out) {
+        for (int i = 1; i < nodes.size(); i++) {
+            map.edge(nodes.get(i - 1), nodes.get(i)).map(Edge::door).ifPresent(out::add);
+        }
+    }
+
+    /** Fails every task accepted and not finished. */
+    void failAll(String why) {
+        for (Task t : tasks.held()) {
+            finish(t, why);
+        }
+    }
+
+    /** Faults that stop the chair and fail its task; the e-stop, a trip and a lost link are the supervisor's, which pauses it. */
+    private boolean faultsAllowDriving(ChairReadings r) {
+        Set<ChairFault> faults = EnumSet.noneOf(ChairFault.class);
+        faults.addAll(r.faults());
+        faults.remove(ChairFault.WATCHDOG);
+        faults.remove(ChairFault.LINK);
+        if (r.emergencyStop() || !faults.isEmpty()) {
+            chair.stop();
+            if (stopReason == null) {
+                stopReason = r.emergencyStop() ? "the e-stop is pressed" : "the chair reports " + faults;
+                say("stops: " + stopReason);
+            }
+            if (faults.stream().anyMatch(f -> f != ChairFault.BATTERY_LOW)) {
+                finish(active, stopReason);
+            }
+            return false;
+        }
+        stopReason = null;
+        return true;
+    }
+
+    private void startNext() {
+        Task t = tasks.nextQueued();
+        if (t == null) {
+            return;
+        }
+        active = t;
+        t.state = TaskView.State.TO_PICKUP;
+        int here = follower.here();
+        if (here != t.toPickup.get(0)) {
+            // It was planned from where the queue was to end; the chair stands elsewhere.
+            say("starts " + t.id + ": to node " + t.from + " from node " + here);
+            follower.hold(List.of(here));
+            replanTo(here, t.from, null);
+            return;
+        }
+        follow(t.toPickup);
+        say("starts " + t.id + ": to node " + t.from + " by " + t.toPickup);
+    }
+
+    private void follow(List<Integer> nodes) {
+        follower.follow(nodes);
+        doors.newRoute();
+    }
+
+    private void tellBlocked(int fromId, int toId) {
+        AID planner = planner();
+        if (planner != null) {
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(planner);
+            m.setOntology(Services.ONTOLOGY);
+            m.setContent(Content.of("blocked").with("from", fromId).with("to", toId).toString());
+            send(m);
+        }
+    }
+
+    // ---- traffic --------------------------------------------------------------------------------
+
+    /** The traffic agent cannot grant the route (a silent chair stands on it): plan around that node. */
+    void refusedByTraffic(int node, String why) {
+        List<Integer> route = follower.route();
+        if (route == null) {
+            return;
+        }
+        if (asideTo >= 0) {
+            say("cannot make way to node " + asideTo + ": " + why);
+            asideTo = -1;
+            follower.clear();
+            return;
+        }
+        if (active == null) {
+            return;
+        }
+        int at = route.indexOf(node);
+        if (at > 0) {
+            tellBlocked(route.get(at - 1), node);
+        }
+        follower.trim();
+        replan(follower.here(), "the traffic agent cannot grant the route (" + why + ")");
+    }
+
+    /** The traffic agent's order to step aside for another chair: a plan to the node it names, then on from there. */
+    void makeWay(AclMessage m) {
+        int from;
+        int to;
+        try {
+            Content c = Content.parse(m.getContent());
+            from = c.integer("from");
+            to = c.integer("to");
+            if (!map.hasNode(to)) {
+                throw new IllegalArgumentException("no node " + to);
+            }
+        } catch (IllegalArgumentException e) {
+            say("ignores a malformed order to make way: " + e.getMessage());
+            return;
+        }
+        int here = follower.here();
+        boolean driving = follower.underWay() && traffic.mayDriveNow(follower.route());
+        if (driving || replanning || asideTo >= 0 || here != from) {
+            say("cannot make way from node " + from + " to node " + to + (here != from ? ": it is at node " + here
+                    : ": it is under way"));
+            traffic.release(to);
+            if (!driving) {
+                traffic.reset(); // its wait was dropped for the order: asks again, or says again where it idles
+            }
+            return;
+        }
+        AID planner = planner();
+        if (planner == null) {
+            traffic.release(to);
+            return;
+        }
+        traffic.reset();
+        asideTo = to;
+        replanning = true;
+        chair.stop();
+        plan(planner, "make-way", from, to).thenAccept(a -> {
+            replanning = false;
+            if (asideTo != to) {
+                return;
+            }
+            if (a.getPerformative() != Performative.INFORM_REF) {
+                say("cannot make way to node " + to + ": " + ControlAgent.reason(a, "no plan"));
+                asideTo = -1;
+                traffic.release(to);
+                if (active == null) {
+                    follower.clear();
+                }
+                return;
+            }
+            List<Integer> nodes = Bidder.nodes(Content.parse(a.getContent()));
+            say("makes way for another chair: to node " + to + " by " + nodes);
+            follow(nodes);
+        });
+    }
+
+    /** The Medical agent withdrew a task (it gave it to another chair): dropped, and the chair stops if it was driving it. */
+    void cancelled(AclMessage m) {
+        Task t = tasks.accepted(m.getConversationId());
+        if (t == null || t.state.compareTo(TaskView.State.DONE) >= 0) {
+            return;
+        }
+        if (!m.getSender().equals(t.accept.getSender())) {
+            say("ignores a CANCEL of " + t.id + " from " + m.getSender().name() + ": only " + t.accept.getSender().name()
+                    + ", who gave it, may withdraw it");
+            return;
+        }
+        say("task " + t.id + " withdrawn by " + m.getSender().localName());
+        t.state = TaskView.State.CANCELLED;
+        t.reason = "withdrawn by " + m.getSender().localName();
+        if (active == t) {
+            chair.stop();
+            active = null;
+            follower.clear();
+            asideTo = -1;
+            pauseUntilMs = -1;
+            traffic.reset();
+        }
+    }
+
+    /** Asks for a new plan from a node to the end of the current route; fails the task if none comes. */
+    void replan(int fromId, String why) {
+        replanTo(fromId, follower.goal(), why);
+    }
+
+    /** Asks for a new plan from a node to {@code goal} for the active task; fails the task if none comes. */
+    private void replanTo(int fromId, int goal, String why) {
+        if (replanning || active == null) {
+            return;
+        }
+        if (why != null) {
+            say("replans: " + why);
+        }
+        AID planner = planner();
+        Task t = active;
+        if (planner == null) {
+            finish(t, "no planner to replan with");
+            return;
+        }
+        replanning = true;
+        chair.stop();
+        plan(planner, t.id + "/replan", fromId, goal).thenAccept(a -> {
+            replanning = false;
+            if (active != t) {
+                return;
+            }
+            if (a.getPerformative() != Performative.INFORM_REF) {
+                finish(t, ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal) + (why == null ? "" : " (" + why + ")"));
+                return;
+            }
+            List<Integer> nodes = Bidder.nodes(Content.parse(a.getContent()));
+            // Back along the edge it was on to the node the new plan starts from (the last one it
+            // reached), then along the new plan: never across the floor off the graph.
+            follower.followBack(nodes);
+            doors.newRoute();
+            say("new plan " + nodes);
+        });
+    }
+
+    private void arrived(long now) {
+        chair.stop();
+        if (asideTo >= 0) {
+            int here = asideTo;
+            asideTo = -1;
+            follower.clear();
+            say("has made way at node " + here);
+            if (active == null) {
+                return; // idle here: said on the next reading
+            }
+            int goal = active.state == TaskView.State.TO_PICKUP ? active.from : active.to;
+            if (goal != here) {
+                follower.hold(List.of(here));
+                replanTo(here, goal, null);
+                return;
+            }
+        }
+        if (active == null) {
+            return;
+        }
+        if (active.state == TaskView.State.TO_PICKUP) {
+            active.state = TaskView.State.LOADING;
+            pauseUntilMs = now + (long) (active.unloadS * 1000);
+            say("at node " + active.from + ": the patient gets on (" + (long) active.unloadS + " s)");
+        } else if (active.state == TaskView.State.TO_DROPOFF) {
+            active.state = TaskView.State.UNLOADING;
+            pauseUntilMs = now + (long) (active.unloadS * 1000);
+            say("at node " + active.to + ": the patient gets off (" + (long) active.unloadS + " s)");
+        }
+    }
+
+    private void finish(Task t, String failure) {
+        if (t == null) {
+            return;
+        }
+        chair.stop();
+        t.state = failure == null ? TaskView.State.DONE : TaskView.State.FAILED;
+        t.reason = failure;
+        if (t.accept != null) {
+            AclMessage reply = t.accept.createReply();
+            if (failure == null) {
+                reply.setPerformative(Performative.INFORM).setContent(Content.of("done").with("task", t.id)
+                        .with("node", t.to).toString());
+                say("done: " + t.id);
+            } else {
+                reply.setPerformative(Performative.FAILURE).setContent(Content.of("failed").with("task", t.id)
+                        .with("reason", failure).toString());
+                say("fails " + t.id + ": " + failure);
+            }
+            send(reply);
+        }
+        if (active == t) {
+            active = null;
+            follower.clear();
+            stopReason = null;
+            asideTo = -1;
+        }
+    }
+}

@@ -1,0 +1,187 @@
+package io.concord.agents.control;
+
+import io.concord.agents.chair.ChairEvent;
+import io.concord.agents.chair.ChairListener;
+import io.concord.agents.chair.ChairReadings;
+import io.concord.agents.chair.ChairSupervisor;
+import io.concord.agents.proto.Content;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import static io.concord.agents.control.Fakes.estop;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The holds alone, on a real {@link ChairSupervisor} around a fake chair: what a hold does to the
+ * task under way, and who may resume. Timers are the test's: it runs them when it says time has
+ * passed.
+ */
+class HoldsTest {
+    static final AID MEDICAL = new AID("medical@test");
+
+    final Fakes.Chair chair = new Fakes.Chair();
+    final ChairSupervisor supervisor = new ChairSupervisor(chair);
+    final List<AclMessage> sent = new ArrayList<>();
+    final List<String> said = new ArrayList<>();
+    final List<Long> timerMs = new ArrayList<>();
+    final List<Runnable> timers = new ArrayList<>();
+    final List<String> failed = new ArrayList<>();
+    Task active;
+    boolean work;
+    long ms;
+
+    final Holds holds = new Holds(supervisor, () -> "control-chair1", new Holds.Agent() {
+        @Override
+        public Task active() {
+            return active;
+        }
+
+        @Override
+        public boolean hasWork() {
+            return work;
+        }
+
+        @Override
+        public void failAll(String why) {
+            failed.add(why);
+        }
+
+        @Override
+        public void send(AclMessage m) {
+            sent.add(m);
+        }
+
+        @Override
+        public void after(long delayMs, Runnable r) {
+            timerMs.add(delayMs);
+            timers.add(r);
+        }
+
+        @Override
+        public void say(String s) {
+            said.add(s);
+        }
+    });
+
+    HoldsTest() {
+        supervisor.setObserver(holds);
+        supervisor.setListener(new ChairListener() {
+            @Override
+            public void onReadings(ChairReadings r) {
+                holds.reading(r);
+            }
+
+            @Override
+            public void onOnline(boolean up) {
+                holds.online(up);
+            }
+
+            @Override
+            public void onEvent(ChairEvent event) {
+            }
+        });
+    }
+
+    /** A task under way, accepted from the Medical agent. */
+    private void taskUnderWay() {
+        AclMessage cfp = new AclMessage(Performative.CFP);
+        cfp.setConversationId("cfp-t1");
+        active = new Task("t1", 3, 9, 0, 0, cfp);
+        active.accept = new AclMessage(Performative.ACCEPT_PROPOSAL).setSender(MEDICAL);
+        active.state = TaskView.State.TO_PICKUP;
+        work = true;
+    }
+
+    private void readings(int n, boolean estopPressed) {
+        for (int i = 0; i < n; i++) {
+            ms += 50;
+            chair.report(estop(ms, estopPressed));
+        }
+    }
+
+    private Content sent(int i) {
+        return Content.parse(sent.get(i).getContent());
+    }
+
+    @Test
+    void withNoTaskTheAgentArmsTheChairItself() {
+        readings(3, false);
+        assertTrue(supervisor.armed(), supervisor.state().toString());
+        assertTrue(sent.isEmpty());
+    }
+
+    @Test
+    void anEStopPausesTheTaskAndAfterItsReleaseOnlyAnOperatorResumesIt() {
+        readings(3, false);
+        taskUnderWay();
+        readings(1, true);
+        assertEquals("paused", sent(0).verb());
+        assertEquals("operator", sent(0).get("resume"));
+        assertEquals("cfp-t1/status", sent.get(0).getConversationId());
+        assertEquals(MEDICAL, sent.get(0).getReceivers().get(0));
+        assertNotNull(active.paused);
+
+        readings(5, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state(), "released: still held, no resume by the agent");
+        assertTrue(said.contains("the e-stop of chair1 is released: the chair stays held until an operator resumes it"), said.toString());
+        holds.keepAlive();
+        assertEquals("paused", sent(1).verb(), "told again while paused");
+
+        assertNull(holds.resume("nurse Ada"));
+        readings(3, false);
+        assertTrue(supervisor.armed());
+        assertNull(active.paused);
+        assertEquals("resumed", sent(2).verb());
+        assertEquals("decided by nurse Ada", sent(2).get("reason"));
+    }
+
+    @Test
+    void anEStopWithNoTaskAcceptedIsResumedByTheAgentOnceReleased() {
+        readings(3, false);
+        readings(2, true);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state());
+        readings(1, false);
+        readings(2, false);
+        assertTrue(supervisor.armed(), "no task: no motion follows until one is accepted");
+    }
+
+    @Test
+    void anOperatorsResumeWhileTheEStopIsStillPressedIsRefusedWithWhy() {
+        readings(3, false);
+        taskUnderWay();
+        readings(1, true);
+        AclMessage ask = new AclMessage(Performative.REQUEST).setSender(new AID("console@test"));
+        ask.setContent(Content.of("resume").with("by", "nurse Ada").toString());
+        holds.resumeAsked(ask);
+        AclMessage answer = sent.get(sent.size() - 1);
+        assertEquals(Performative.REFUSE, answer.getPerformative());
+        assertTrue(Content.parse(answer.getContent()).get("reason").contains("e-stop"), answer.getContent());
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state());
+    }
+
+    @Test
+    void aLinkDownLongerThanTheGraceFailsTheTasksAndOneThatCameBackDoesNot() {
+        readings(3, false);
+        taskUnderWay();
+        chair.link(false);
+        assertEquals(List.of(ControlAgent.LINK_GRACE_MS), timerMs);
+        timers.get(0).run();
+        assertEquals(List.of("chair1 has been offline for 30.0 s"), failed);
+
+        chair.link(true);
+        chair.link(false);
+        chair.link(true);
+        timers.get(1).run();
+        assertEquals(1, failed.size(), "the link came back within the grace");
+        readings(3, false);
+        assertTrue(supervisor.armed(), "a lost link that came back: the agent resumes");
+    }
+}
