@@ -137,7 +137,7 @@ public class ControlAgent extends Agent implements ChairListener {
         bidder = new Bidder(tasks, chair.name(), ports, supervisor::whyNotAvailable, follower::nearestNode,
                 (cfp, reply) -> responder.respond(cfp, reply), this::say);
         doors = new DoorClient(ports, map, chair.name(), (from, why) -> runner.replan(from, why), this::say);
-        traffic = new TrafficClient(this, asks, (node, why) -> runner.refusedByTraffic(node, why));
+        traffic = new TrafficClient(ports, (node, why) -> runner.refusedByTraffic(node, why));
         runner = new TaskRunner(supervisor, map, tasks, follower, doors, traffic, ports);
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
                 .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), m -> runner.makeWay(m));
@@ -255,7 +255,7 @@ public class ControlAgent extends Agent implements ChairListener {
     }
 
     /** The agent as its parts see it: its loop, its yellow pages, its pending asks, its log. */
-    private final class Ports implements Holds.Agent, TaskRunner.Agent, DoorClient.Doors {
+    private final class Ports implements Holds.Agent, TaskRunner.Agent, DoorClient.Doors, TrafficClient.Port {
         @Override
         public Task active() {
             return runner == null ? null : runner.active();
@@ -314,6 +314,14 @@ public class ControlAgent extends Agent implements ChairListener {
             return asks.ask(req, 10_000, null).thenApply(a -> a != null ? a
                     : new AclMessage(Performative.FAILURE).setContent(Content.of("no-route")
                             .with("reason", "the planner did not answer within 10 s").toString()));
+        }
+
+        @Override
+        public AID trafficAgent() {
+            for (AgentEntry e : Platform.of(ControlAgent.this).searchCopy(ServiceDescription.ofType(Services.TRAFFIC))) {
+                return e.aid();
+            }
+            return null;
         }
 
         @Override

@@ -1,35 +1,43 @@
 package io.concord.agents.control;
 
-import io.concord.agents.proto.Asks;
 import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
 import io.concord.core.proto.FipaProtocols;
-import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
-import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 import java.util.function.BiConsumer;
 
 /**
  * A control agent's side of the traffic agent (see {@code TrafficAgent}): before it drives a
  * route it asks for all of it, and drives once granted; it gives back each node it leaves, says
  * when it is idle and where, and that it is alive. With no traffic agent in the yellow pages
- * every route may be driven at once (one chair alone needs none).
+ * every route may be driven at once (one chair alone needs none). No transport of its own: it
+ * speaks through a {@link Port}, which the agent implements over its yellow pages and its asks.
  */
 final class TrafficClient {
     /** How long a reservation may wait before it is asked again. */
-    private static final long WAIT_MS = 1_800_000;
+    static final long WAIT_MS = 1_800_000;
 
-    private final Agent agent;
-    private final Asks asks;
+    /** How a traffic client reaches the traffic agent. */
+    interface Port {
+        /** The traffic agent, from the yellow pages, or null if there is none. */
+        AID trafficAgent();
+
+        /** Sends a request and completes with the final answer, or null if none came within the time. */
+        CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs);
+
+        /** Sends a message that needs no answer. */
+        void send(AclMessage m);
+    }
+
+    private final Port port;
     /** Told of a route that cannot be granted: the node in the way and why. */
     private final BiConsumer<Integer, String> onRefused;
     private final Set<Integer> held = new LinkedHashSet<>();
@@ -38,17 +46,13 @@ final class TrafficClient {
     private long seq;
     private int idleAt = -1;
 
-    TrafficClient(Agent agent, Asks asks, BiConsumer<Integer, String> onRefused) {
-        this.agent = agent;
-        this.asks = asks;
+    TrafficClient(Port port, BiConsumer<Integer, String> onRefused) {
+        this.port = port;
         this.onRefused = onRefused;
     }
 
     private AID traffic() {
-        for (AgentEntry e : Platform.of(agent).searchCopy(ServiceDescription.ofType(Services.TRAFFIC))) {
-            return e.aid();
-        }
-        return null;
+        return port.trafficAgent();
     }
 
     /**
@@ -78,7 +82,7 @@ final class TrafficClient {
         req.setOntology(Services.ONTOLOGY);
         Content c = Content.of("reserve").with("at", join(at)).with("path", join(route));
         req.setContent((aside ? c.with("aside", "true") : c).toString());
-        asks.ask(req, WAIT_MS, null).thenAccept(a -> {
+        port.ask(req, WAIT_MS).thenAccept(a -> {
             if (seq != mine) {
                 return;
             }
@@ -175,7 +179,7 @@ final class TrafficClient {
         m.addReceiver(traffic);
         m.setOntology(Services.ONTOLOGY);
         m.setContent(c.toString());
-        agent.send(m);
+        port.send(m);
     }
 
     private static String reasonOf(AclMessage m) {

@@ -1,0 +1,141 @@
+package io.concord.agents.control;
+
+import io.concord.agents.proto.Content;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The traffic client alone: the test is the traffic agent (or its absence) and answers by hand. */
+class TrafficClientTest {
+    static final AID TRAFFIC = new AID("traffic@test");
+
+    AID trafficAgent = TRAFFIC;
+    final List<AclMessage> sent = new ArrayList<>();
+    final List<CompletableFuture<AclMessage>> answers = new ArrayList<>();
+    final List<String> refused = new ArrayList<>();
+
+    final TrafficClient client = new TrafficClient(new TrafficClient.Port() {
+        @Override
+        public AID trafficAgent() {
+            return trafficAgent;
+        }
+
+        @Override
+        public CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs) {
+            sent.add(request);
+            CompletableFuture<AclMessage> f = new CompletableFuture<>();
+            answers.add(f);
+            return f;
+        }
+
+        @Override
+        public void send(AclMessage m) {
+            sent.add(m);
+        }
+    }, (node, why) -> refused.add(node + " " + why));
+
+    private String said(int i) {
+        return sent.get(i).getPerformative() + " " + sent.get(i).getContent();
+    }
+
+    private static AclMessage answer(Performative p, Content c) {
+        return new AclMessage(p).setContent(c.toString());
+    }
+
+    @Test
+    void withNoTrafficAgentEveryRouteMayBeDrivenAtOnce() {
+        trafficAgent = null;
+        assertTrue(client.mayDrive(List.of(1, 2, 3), List.of(1), false));
+        client.idle(1);
+        client.alive(List.of(1));
+        client.keepOnly(List.of(2, 3));
+        assertTrue(sent.isEmpty());
+    }
+
+    @Test
+    void aRouteIsAskedForOnceWholeAndDrivenOnceGranted() {
+        List<Integer> route = new ArrayList<>(List.of(1, 2, 3));
+        assertFalse(client.mayDrive(route, List.of(1), false));
+        assertFalse(client.mayDrive(route, List.of(1), false));
+        assertEquals(1, sent.size(), "asked once");
+        assertEquals("REQUEST reserve; at=1; path=1,2,3", said(0));
+        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted").with("path", "1,2,3")));
+        assertTrue(client.mayDrive(route, List.of(1), false));
+        assertTrue(client.mayDriveNow(route));
+        assertFalse(client.mayDriveNow(new ArrayList<>(route)), "a grant is for that very route");
+        assertEquals(List.of(1, 2, 3), client.held());
+    }
+
+    @Test
+    void aStepAsideIsAskedWithPriority() {
+        client.mayDrive(List.of(4, 5), List.of(4), true);
+        assertEquals("REQUEST reserve; at=4; path=4,5; aside=true", said(0));
+    }
+
+    @Test
+    void eachNodeLeftIsGivenBack() {
+        List<Integer> route = List.of(1, 2, 3);
+        client.mayDrive(route, List.of(1), false);
+        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted")));
+        client.keepOnly(List.of(2, 3));
+        assertEquals("INFORM release; node=1", said(1));
+        client.keepOnly(List.of(2, 3));
+        assertEquals(2, sent.size(), "given back once");
+        assertEquals(List.of(2, 3), client.held());
+    }
+
+    @Test
+    void aRouteThatCannotBeGrantedIsToldWithTheNodeInTheWayButAMakeWayOrASupersededWaitIsNot() {
+        client.mayDrive(List.of(1, 2, 3), List.of(1), false);
+        answers.get(0).complete(answer(Performative.FAILURE, Content.of("refuse").with("node", 2).with("reason", "a silent chair stands there")));
+        assertEquals(List.of("2 FAILURE: a silent chair stands there"), refused);
+
+        client.mayDrive(List.of(1, 5), List.of(1), false);
+        answers.get(1).complete(answer(Performative.FAILURE, Content.of("refuse").with("reason", "make-way")));
+        client.mayDrive(List.of(1, 6), List.of(1), false);
+        answers.get(2).complete(answer(Performative.REFUSE, Content.of("refuse").with("reason", "superseded by a newer request")));
+        assertEquals(1, refused.size(), refused.toString());
+    }
+
+    @Test
+    void anAnswerToAQuestionDroppedSinceIsIgnored() {
+        List<Integer> route = List.of(1, 2, 3);
+        client.mayDrive(route, List.of(1), false);
+        client.reset();
+        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted")));
+        assertFalse(client.mayDriveNow(route));
+        assertFalse(client.mayDrive(route, List.of(1), false), "asked anew");
+        assertEquals(2, sent.size());
+    }
+
+    @Test
+    void noAnswerAsksAgainOnTheNextStep() {
+        List<Integer> route = List.of(1, 2);
+        client.mayDrive(route, List.of(1), false);
+        answers.get(0).complete(null);
+        assertFalse(client.mayDrive(route, List.of(1), false));
+        assertEquals(2, sent.size());
+    }
+
+    @Test
+    void idleIsSaidOncePerNodeAndAliveSaysWhereItStands() {
+        client.idle(7);
+        client.idle(7);
+        assertEquals(List.of("INFORM idle; at=7"), List.of(said(0)));
+        assertEquals(1, sent.size());
+        client.alive(List.of(7, 8));
+        assertEquals("INFORM here; at=7,8", said(1));
+        client.idle(8);
+        assertEquals("INFORM idle; at=8", said(2));
+        assertEquals(List.of(8), client.held());
+    }
+}
