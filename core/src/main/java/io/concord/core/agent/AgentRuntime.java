@@ -29,6 +29,7 @@ import java.util.concurrent.CompletionException;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Supplier;
 import java.util.random.RandomGenerator;
@@ -712,7 +713,7 @@ public final class AgentRuntime implements AutoCloseable {
             network.wakeup();
             Thread loop = loopThread;
             if (loop != null) {
-                java.util.concurrent.locks.LockSupport.unpark(loop);
+                LockSupport.unpark(loop);
             }
         }
     }
@@ -762,38 +763,19 @@ public final class AgentRuntime implements AutoCloseable {
         return this;
     }
 
-    /**
-     * A yield that lasts longer than this gave the CPU to a thread that used a whole time slice:
-     * the machine's cores are busy with other work. An uncontended yield returns in about a
-     * microsecond, and one that let a peer process of this machine answer (the one-process-per-agent
-     * topology on 2 cores) in tens of microseconds; one behind a busy loop, after a millisecond or
-     * more. 50 us took the peers' hand-offs for contention: books across processes went from 28
-     * to 150 us on a quiet machine.
-     */
-    static final long CONTENDED_YIELD_NS = 500_000;
-    private volatile long contendedYields;
+    /** How the loop waits when it has no work (made when the loop starts). */
+    private volatile IdleStrategy idleStrategy;
 
     /** Idle waits cut short because yielding found the cores contended (the console, the benchmarks). */
     public long contendedYields() {
-        return contendedYields;
+        IdleStrategy w = idleStrategy;
+        return w == null ? 0 : w.contendedYields();
     }
 
     private void loop() {
-        int idle = 0;
-        // The idle budget (spinning first, then yielding) adapts between 0 and its configured
-        // length: waiting awake pays when work comes back within the window (a quick reply, no
-        // kernel wake-up), and only wastes a CPU when it does not. Count both outcomes; halve or
-        // double the budget. Only a task or a datagram counts as work that came while awake: a
-        // timer was foreseen, and the park ends for it anyway. Yielding rather than spinning lets
-        // other processes of a busy machine run meanwhile: with more agent processes than cores,
-        // a spinning one holds a core that a peer needs to answer it.
-        final int maxBudget = idleSpinIterations + idleYieldIterations;
+        final IdleStrategy waiting = new IdleStrategy(clock, idleSpinIterations, idleYieldIterations);
+        idleStrategy = waiting;
         final long resolutionNs = network.awaitResolutionNs();
-        int budget = maxBudget;
-        int wins = 0;
-        int losses = 0;
-        long windowNs = 0;
-        long idleSinceNs = 0;
         while (running) {
             int work;
             try {
@@ -804,42 +786,14 @@ public final class AgentRuntime implements AutoCloseable {
                 arrived = true;
             }
             if (work > 0) {
-                if (idle > 0 && arrived) {
-                    wins++; // work came while waiting awake
-                }
-                idle = 0;
+                waiting.worked(arrived);
                 continue;
             }
-            if (idle == 0) {
-                idleSinceNs = clock.nanoTime();
-            }
-            if (idle < budget) {
-                if (idle < idleSpinIterations) {
-                    Thread.onSpinWait();
-                } else {
-                    long y0 = clock.nanoTime();
-                    Thread.yield();
-                    if (clock.nanoTime() - y0 > CONTENDED_YIELD_NS) {
-                        // Another thread ran in this one's place: the cores are contended (more
-                        // runnable threads than cores). Waiting awake then only delays this loop: a
-                        // yielding thread is runnable, and a datagram that comes waits behind the
-                        // others' time slices, where a parked one is woken at once by the kernel.
-                        // Park now, and wait awake no more until waiting awake pays again.
-                        contendedYields++;
-                        budget = 0;
-                        wins = 0;
-                        losses = 0;
-                        continue;
-                    }
-                }
-                idle++;
+            if (waiting.waitAwake()) {
                 continue;
-            }
-            if (budget == maxBudget && idle > 0) {
-                windowNs = clock.nanoTime() - idleSinceNs; // how long a full wait lasts here
             }
             parked = true;
-            long parkedAtNs = clock.nanoTime();
+            long parkedAtNs = waiting.parking();
             if (tasks.isEmpty() && running) {
                 long next = wheel.earliestDeadline();
                 long timeout = next == Long.MAX_VALUE ? TimeUnit.SECONDS.toNanos(1) : next - parkedAtNs;
@@ -848,26 +802,14 @@ public final class AgentRuntime implements AutoCloseable {
                     // a timer is due within one: sleep exactly until it instead of yielding the CPU
                     // away meanwhile (a task from another thread unparks; a datagram waits for the
                     // timer, less than a millisecond).
-                    java.util.concurrent.locks.LockSupport.parkNanos(timeout);
+                    LockSupport.parkNanos(timeout);
                 } else if (timeout > 0) {
                     // Whole units only, so as to wake before the deadline; the rest as above.
                     network.await(resolutionNs <= 1 ? timeout : timeout / resolutionNs * resolutionNs);
                 }
             }
             parked = false;
-            // Woken sooner than a full wait would have lasted: waiting awake would have caught it.
-            // (A timer cannot end a park that soon: the park lasts at least one unit of the wait.)
-            if (clock.nanoTime() - parkedAtNs < Math.max(windowNs, 20_000)) {
-                wins++;
-            } else {
-                losses++;
-            }
-            if (wins + losses >= 32) {
-                budget = wins * 4 < wins + losses ? budget / 2 : Math.min(maxBudget, Math.max(1, budget * 2));
-                wins = 0;
-                losses = 0;
-            }
-            idle = 0;
+            waiting.woke(parkedAtNs);
         }
     }
 
