@@ -7,6 +7,7 @@ import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
 import io.concord.core.layer.DropCounters;
 import io.concord.core.proto.MtsFailure;
+import io.concord.core.time.Clock;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.GatewayContext;
 import org.slf4j.Logger;
@@ -45,7 +46,7 @@ public final class HttpMtp implements Gateway {
     /** Messages given to the client and not done yet; any thread reads it to refuse past {@link #OUT_QUEUE}. */
     private final java.util.concurrent.atomic.AtomicInteger outQueued = new java.util.concurrent.atomic.AtomicInteger();
     private final AccServer.Limits limits;
-    private final java.util.function.LongSupplier nanos;
+    private final Clock clock;
     private final DropCounters drops = new DropCounters();
     private final java.util.Set<String> warned = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final ReplyLimit replyLimit;
@@ -64,16 +65,17 @@ public final class HttpMtp implements Gateway {
     }
 
     public HttpMtp(String host, int port, String advertisedHost) {
-        this(host, port, advertisedHost, AccServer.Limits.DEFAULT, System::nanoTime);
+        this(host, port, advertisedHost, AccServer.Limits.DEFAULT, Clock.system());
     }
 
-    HttpMtp(String host, int port, String advertisedHost, AccServer.Limits limits, java.util.function.LongSupplier nanos) {
+    /** ... with the server's limits, and the clock that times them and dates the envelopes sent. */
+    HttpMtp(String host, int port, String advertisedHost, AccServer.Limits limits, Clock clock) {
         this.host = host;
         this.port = port;
         this.advertisedHost = advertisedHost;
         this.limits = limits;
-        this.nanos = nanos;
-        this.replyLimit = new ReplyLimit(nanos);
+        this.clock = clock;
+        this.replyLimit = new ReplyLimit(clock::nanoTime);
     }
 
     @Override
@@ -163,7 +165,7 @@ public final class HttpMtp implements Gateway {
     @Override
     public void start(GatewayContext ctx) {
         this.context = ctx;
-        BridgeLoop l = BridgeLoop.of(ctx, "concord-http");
+        BridgeLoop l = BridgeLoop.of(ctx, "concord-http", clock);
         CompletableFuture<Void> started = new CompletableFuture<>();
         Runnable open = () -> {
             try {
@@ -177,8 +179,8 @@ public final class HttpMtp implements Gateway {
                     public void dropped(String reason, java.net.InetAddress from, String why, boolean answered) {
                         count(reason, from, why, answered);
                     }
-                }, nanos, l);
-                client = new MtpClient(l, nanos);
+                }, clock::nanoTime, l);
+                client = new MtpClient(l, clock::nanoTime);
                 started.complete(null);
             } catch (RuntimeException e) {
                 started.completeExceptionally(e);
@@ -542,11 +544,11 @@ public final class HttpMtp implements Gateway {
 
     /**
      * The bytes of one POST of an ACL payload to a foreign ACC, as JADE writes it (the multipart
-     * body of the XML envelope and the string ACL, with a random boundary): what this bridge sends,
-     * for tools and benchmarks that speak to JADE the same way.
+     * body of the XML envelope and the string ACL, with a random boundary), dated now by the
+     * system's clock: what this bridge sends, for tools and benchmarks that speak to JADE the same way.
      */
     public static byte[] jadePost(String url, AID receiver, AID sender, String payload) {
-        return MtpClient.request(url, receiver, sender, payload);
+        return MtpClient.request(url, receiver, sender, payload, Clock.system().epochMillis());
     }
 
     /** Posts to the receiver's next address; on failure tries the one after, and tells the sender when none is left. Loop. */
@@ -555,7 +557,7 @@ public final class HttpMtp implements Gateway {
         String url = urls.get(at);
         byte[] request;
         try {
-            request = MtpClient.request(url, receiver, m.getSender(), payload);
+            request = MtpClient.request(url, receiver, m.getSender(), payload, clock.epochMillis());
         } catch (IllegalArgumentException e) {
             done(ctx, original, receiver, m, payload, urls, at, url + ": " + e.getMessage());
             return;

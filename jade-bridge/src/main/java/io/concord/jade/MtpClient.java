@@ -383,12 +383,12 @@ final class MtpClient {
         }
     }
 
-    /** The bytes of one POST, as JADE writes it. */
-    static byte[] request(String url, AID receiver, AID sender, String payload) {
+    /** The bytes of one POST, as JADE writes it, its envelope dated {@code epochMs}. */
+    static byte[] request(String url, AID receiver, AID sender, String payload, long epochMs) {
         URI u = URI.create(url);
         int port = u.getPort() < 0 ? 80 : u.getPort();
         byte[] acl = payload.getBytes(StandardCharsets.UTF_8);
-        FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length);
+        FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length, epochMs);
         byte[] rnd = new byte[16];
         java.util.concurrent.ThreadLocalRandom.current().nextBytes(rnd);
         String boundary = HexFormat.of().formatHex(rnd).substring(1);

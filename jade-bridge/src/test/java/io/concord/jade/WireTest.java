@@ -85,7 +85,7 @@ class WireTest {
     void theEnvelopeItWritesReadsBack() {
         AID bob = new AID("bob@j", "http://h:1/acc");
         AID me = new AID("me@c&co", "http://h:2/acc");
-        FipaEnvelope e = FipaEnvelope.forOne(bob, me, 42);
+        FipaEnvelope e = FipaEnvelope.forOne(bob, me, 42, io.concord.core.time.ManualClock.DEFAULT_EPOCH_MS);
         String xml = e.toXml();
         assertTrue(xml.contains("<intended-receiver>") && !xml.contains("\n<params") && xml.contains("me@c&amp;co"), xml);
         assertTrue(e.date().matches("\\d{8}Z\\d{9}"), e.date());
