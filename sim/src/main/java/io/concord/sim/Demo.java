@@ -135,6 +135,7 @@ public final class Demo {
 
     private static String await(LinkedBlockingQueue<String> events, java.util.function.Predicate<String> p, int seconds)
             throws InterruptedException {
+        // Wall time: the demo waits as a person would for its child JVMs to print.
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
         String l;
         while ((l = events.poll(Math.max(1, end - System.nanoTime()), TimeUnit.NANOSECONDS)) != null) {
