@@ -267,7 +267,7 @@ class HttpBridgeLimitsTest {
         assertOk(exchange(s, request(b.toString())), "the message in the first two parts is read; the rest is never looked at");
         assertOk(exchange(s, request(body("echo"))), "and the server is free for the next");
         assertEquals(2, delivered.size());
-        assertEquals(2, HttpMtp.split(b.toString(), BOUNDARY).size());
+        assertEquals(2, MtpMultipart.split(b.toString(), BOUNDARY).size());
     }
 
     @Test
