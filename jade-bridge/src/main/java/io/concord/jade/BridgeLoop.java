@@ -1,6 +1,7 @@
 package io.concord.jade;
 
 import io.concord.core.net.Channels;
+import io.concord.core.time.Clock;
 import io.concord.layers.platform.GatewayContext;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -46,10 +47,13 @@ interface BridgeLoop {
     /** Stops a thread of the bridge's own, after the tasks already given to it; nothing for the platform's loop. Any thread. */
     void close();
 
-    /** The platform's loop, if it lends its selector; else a new thread of the bridge's own. Call on the loop. */
-    static BridgeLoop of(GatewayContext ctx, String threadName) {
+    /**
+     * The platform's loop, if it lends its selector; else a new thread of the bridge's own, whose
+     * timers run by {@code clock}. Call on the loop.
+     */
+    static BridgeLoop of(GatewayContext ctx, String threadName, Clock clock) {
         Channels channels = ctx.channels();
-        return channels == null ? new Own(threadName) : new Platform(ctx, channels, Thread.currentThread());
+        return channels == null ? new Own(threadName, clock) : new Platform(ctx, channels, Thread.currentThread());
     }
 
     /** The agents' loop. */
@@ -97,6 +101,7 @@ interface BridgeLoop {
         private final ConcurrentLinkedQueue<Runnable> tasks = new ConcurrentLinkedQueue<>();
         private final PriorityQueue<Timer> timers = new PriorityQueue<>();
         private final Thread thread;
+        private final Clock clock;
         private volatile boolean running = true;
         private long timerSeq;
 
@@ -107,7 +112,9 @@ interface BridgeLoop {
             }
         }
 
-        Own(String threadName) {
+        /** A selector thread whose timers ({@link #after}) run by {@code clock}. */
+        Own(String threadName, Clock clock) {
+            this.clock = clock;
             try {
                 selector = Selector.open();
             } catch (IOException e) {
@@ -136,7 +143,7 @@ interface BridgeLoop {
 
         @Override
         public void after(long ms, Runnable task) {
-            timers.add(new Timer(System.nanoTime() + ms * 1_000_000L, timerSeq++, task));
+            timers.add(new Timer(clock.nanoTime() + ms * 1_000_000L, timerSeq++, task));
         }
 
         @Override
@@ -156,14 +163,14 @@ interface BridgeLoop {
             try {
                 while (running) {
                     Timer first = timers.peek();
-                    long waitMs = first == null ? 1_000 : Math.max(0, (first.dueNs() - System.nanoTime() + 999_999) / 1_000_000);
+                    long waitMs = first == null ? 1_000 : Math.max(0, (first.dueNs() - clock.nanoTime() + 999_999) / 1_000_000);
                     if (!tasks.isEmpty() || waitMs == 0) {
                         selector.selectNow();
                     } else {
                         selector.select(waitMs);
                     }
                     runTasks();
-                    long now = System.nanoTime();
+                    long now = clock.nanoTime();
                     for (SelectionKey k : selector.selectedKeys()) {
                         if (k.isValid()) {
                             ((Channels.Ready) k.attachment()).onReady(k, now);

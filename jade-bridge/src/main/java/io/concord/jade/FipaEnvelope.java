@@ -5,7 +5,9 @@ import javax.xml.stream.XMLInputFactory;
 import javax.xml.stream.XMLStreamConstants;
 import javax.xml.stream.XMLStreamException;
 import javax.xml.stream.XMLStreamReader;
+import java.time.Instant;
 import java.time.LocalDateTime;
+import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
@@ -26,10 +28,13 @@ public record FipaEnvelope(List<AID> to, AID from, String aclRepresentation, int
         intendedReceivers = List.copyOf(intendedReceivers);
     }
 
-    /** An envelope for one receiver of a string-encoded payload. */
-    public static FipaEnvelope forOne(AID receiver, AID sender, int payloadBytes) {
+    /**
+     * An envelope for one receiver of a string-encoded payload, dated {@code epochMs} (the
+     * caller's clock, {@link io.concord.core.time.Clock#epochMillis()}) in this host's time zone.
+     */
+    public static FipaEnvelope forOne(AID receiver, AID sender, int payloadBytes, long epochMs) {
         return new FipaEnvelope(List.of(receiver), sender, STRING_REP, payloadBytes, "UTF-8",
-                LocalDateTime.now().format(DATE), List.of(receiver));
+                LocalDateTime.ofInstant(Instant.ofEpochMilli(epochMs), ZoneId.systemDefault()).format(DATE), List.of(receiver));
     }
 
     public String toXml() {

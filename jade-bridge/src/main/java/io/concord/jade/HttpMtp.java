@@ -7,17 +7,16 @@ import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
 import io.concord.core.layer.DropCounters;
 import io.concord.core.proto.MtsFailure;
+import io.concord.core.time.Clock;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.GatewayContext;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-import java.io.IOException;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -45,7 +44,7 @@ public final class HttpMtp implements Gateway {
     /** Messages given to the client and not done yet; any thread reads it to refuse past {@link #OUT_QUEUE}. */
     private final java.util.concurrent.atomic.AtomicInteger outQueued = new java.util.concurrent.atomic.AtomicInteger();
     private final AccServer.Limits limits;
-    private final java.util.function.LongSupplier nanos;
+    private final Clock clock;
     private final DropCounters drops = new DropCounters();
     private final java.util.Set<String> warned = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final ReplyLimit replyLimit;
@@ -64,16 +63,17 @@ public final class HttpMtp implements Gateway {
     }
 
     public HttpMtp(String host, int port, String advertisedHost) {
-        this(host, port, advertisedHost, AccServer.Limits.DEFAULT, System::nanoTime);
+        this(host, port, advertisedHost, AccServer.Limits.DEFAULT, Clock.system());
     }
 
-    HttpMtp(String host, int port, String advertisedHost, AccServer.Limits limits, java.util.function.LongSupplier nanos) {
+    /** ... with the server's limits, and the clock that times them and dates the envelopes sent. */
+    HttpMtp(String host, int port, String advertisedHost, AccServer.Limits limits, Clock clock) {
         this.host = host;
         this.port = port;
         this.advertisedHost = advertisedHost;
         this.limits = limits;
-        this.nanos = nanos;
-        this.replyLimit = new ReplyLimit(nanos);
+        this.clock = clock;
+        this.replyLimit = new ReplyLimit(clock::nanoTime);
     }
 
     @Override
@@ -163,7 +163,7 @@ public final class HttpMtp implements Gateway {
     @Override
     public void start(GatewayContext ctx) {
         this.context = ctx;
-        BridgeLoop l = BridgeLoop.of(ctx, "concord-http");
+        BridgeLoop l = BridgeLoop.of(ctx, "concord-http", clock);
         CompletableFuture<Void> started = new CompletableFuture<>();
         Runnable open = () -> {
             try {
@@ -177,8 +177,8 @@ public final class HttpMtp implements Gateway {
                     public void dropped(String reason, java.net.InetAddress from, String why, boolean answered) {
                         count(reason, from, why, answered);
                     }
-                }, nanos, l);
-                client = new MtpClient(l, nanos);
+                }, clock::nanoTime, l);
+                client = new MtpClient(l, clock::nanoTime);
                 started.complete(null);
             } catch (RuntimeException e) {
                 started.completeExceptionally(e);
@@ -248,7 +248,7 @@ public final class HttpMtp implements Gateway {
             return refuse(x, 403, "http-untrusted", from);
         }
         String type = x.header("content-type");
-        String boundary = boundaryOf(type);
+        String boundary = MtpMultipart.boundaryOf(type);
         if (boundary == null) {
             return refuse(x, 406, "http-malformed", "the Content-Type must be multipart/mixed with a boundary, got " + type);
         }
@@ -305,24 +305,6 @@ public final class HttpMtp implements Gateway {
         }
     }
 
-    static String boundaryOf(String contentType) {
-        if (contentType == null || !contentType.toLowerCase(Locale.ROOT).startsWith("multipart/mixed")) {
-            return null;
-        }
-        int at = contentType.toLowerCase(Locale.ROOT).indexOf("boundary=");
-        if (at < 0) {
-            return null;
-        }
-        String b = contentType.substring(at + 9).trim();
-        int semi = b.indexOf(';');
-        if (b.startsWith("\"")) {
-            int end = b.indexOf('"', 1);
-            return end > 1 ? b.substring(1, end) : null;
-        }
-        b = semi >= 0 ? b.substring(0, semi).trim() : b;
-        return b.isEmpty() ? null : b;
-    }
-
     /** A request whose envelope is fine but whose ACL message does not parse. */
     static final class BadAcl extends IllegalArgumentException {
         BadAcl(String message) {
@@ -335,14 +317,14 @@ public final class HttpMtp implements Gateway {
     }
 
     /**
-     * Parses a multipart body (as ISO-8859-1 text, so bytes survive): the envelope, then the payload.
+     * Parses a multipart body ({@link MtpMultipart}, as ISO-8859-1 text, so bytes survive): the
+     * envelope, then the payload.
      *
      * @throws IllegalArgumentException saying what is wrong
      */
     static Inbound parse(String body, String boundary) {
-        List<String> parts = split(body, boundary);
-        String envXml = content(parts.get(0));
-        FipaEnvelope env = FipaEnvelope.parse(new String(envXml.getBytes(StandardCharsets.ISO_8859_1), StandardCharsets.UTF_8));
+        MtpMultipart.Parts parts = MtpMultipart.decode(body, boundary);
+        FipaEnvelope env = FipaEnvelope.parse(new String(MtpMultipart.bytes(parts.envelope()), StandardCharsets.UTF_8));
         if (!env.aclRepresentation().equalsIgnoreCase(FipaEnvelope.STRING_REP)) {
             throw new IllegalArgumentException("only " + FipaEnvelope.STRING_REP + " payloads are understood, got "
                     + env.aclRepresentation());
@@ -355,7 +337,7 @@ public final class HttpMtp implements Gateway {
                 throw new IllegalArgumentException("an unknown payload-encoding " + env.payloadEncoding());
             }
         }
-        String payload = new String(content(parts.get(1)).getBytes(StandardCharsets.ISO_8859_1), cs);
+        String payload = new String(MtpMultipart.bytes(parts.payload()), cs);
         AclMessage m;
         try {
             m = StringAclCodec.INSTANCE.decode(payload.trim());
@@ -374,42 +356,6 @@ public final class HttpMtp implements Gateway {
     }
 
     /**
-     * The first two parts of a multipart body, the envelope and the payload (any further part is
-     * not read). Each delimiter is found by one scan from where the last ended: the work is linear
-     * in the body's length however many parts it has.
-     *
-     * @throws IllegalArgumentException if the boundary never shows or a part is never closed
-     */
-    static List<String> split(String body, String boundary) {
-        String delim = "--" + boundary;
-        String close = "\n" + delim;
-        int at = 0;
-        if (!body.startsWith(delim)) {
-            at = body.indexOf(close) + 1;
-            if (at == 0) {
-                throw new IllegalArgumentException("the body never shows the boundary " + boundary);
-            }
-        }
-        List<String> parts = new ArrayList<>(2);
-        while (parts.size() < 2) {
-            int start = at + delim.length();
-            if (body.startsWith("--", start)) {
-                break; // the closing delimiter
-            }
-            int end = body.indexOf(close, start);
-            if (end < 0) {
-                throw new IllegalArgumentException("a multipart part is never closed by --" + boundary);
-            }
-            parts.add(body.substring(start, end > start && body.charAt(end - 1) == '\r' ? end - 1 : end));
-            at = end + 1;
-        }
-        if (parts.size() < 2) {
-            throw new IllegalArgumentException("a FIPA message has two parts, the envelope and the payload; got " + parts.size());
-        }
-        return parts;
-    }
-
-    /**
      * A message that comes in over HTTP comes from outside the platform: one whose sender names an
      * agent of this platform is somebody posing as it (its own agents never use this door in).
      */
@@ -421,24 +367,6 @@ public final class HttpMtp implements Gateway {
             throw new IllegalArgumentException("the sender " + sender.name() + " is an agent of this platform ("
                     + platform + "); a message over HTTP must come from an agent of another platform");
         }
-    }
-
-    /** The content of a part: after its headers and the blank line. */
-    private static String content(String part) {
-        int crlf = part.indexOf("\r\n\r\n");
-        int lf = part.indexOf("\n\n");
-        int cut;
-        int skip;
-        if (crlf >= 0 && (lf < 0 || crlf <= lf)) {
-            cut = crlf;
-            skip = 4;
-        } else if (lf >= 0) {
-            cut = lf;
-            skip = 2;
-        } else {
-            throw new IllegalArgumentException("a multipart part has no blank line after its headers");
-        }
-        return part.substring(cut + skip);
     }
 
     /** On the loop: to the platform's agents, or answered here (DF, AMS), or a FAILURE back. */
@@ -542,11 +470,11 @@ public final class HttpMtp implements Gateway {
 
     /**
      * The bytes of one POST of an ACL payload to a foreign ACC, as JADE writes it (the multipart
-     * body of the XML envelope and the string ACL, with a random boundary): what this bridge sends,
-     * for tools and benchmarks that speak to JADE the same way.
+     * body of the XML envelope and the string ACL, with a random boundary), dated now by the
+     * system's clock: what this bridge sends, for tools and benchmarks that speak to JADE the same way.
      */
     public static byte[] jadePost(String url, AID receiver, AID sender, String payload) {
-        return MtpClient.request(url, receiver, sender, payload);
+        return MtpClient.request(url, receiver, sender, payload, Clock.system().epochMillis());
     }
 
     /** Posts to the receiver's next address; on failure tries the one after, and tells the sender when none is left. Loop. */
@@ -555,7 +483,7 @@ public final class HttpMtp implements Gateway {
         String url = urls.get(at);
         byte[] request;
         try {
-            request = MtpClient.request(url, receiver, m.getSender(), payload);
+            request = MtpClient.request(url, receiver, m.getSender(), payload, clock.epochMillis());
         } catch (IllegalArgumentException e) {
             done(ctx, original, receiver, m, payload, urls, at, url + ": " + e.getMessage());
             return;

@@ -14,7 +14,6 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HexFormat;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Consumer;
@@ -383,27 +382,20 @@ final class MtpClient {
         }
     }
 
-    /** The bytes of one POST, as JADE writes it. */
-    static byte[] request(String url, AID receiver, AID sender, String payload) {
+    /** The bytes of one POST, as JADE writes it ({@link MtpMultipart}), its envelope dated {@code epochMs}. */
+    static byte[] request(String url, AID receiver, AID sender, String payload, long epochMs) {
         URI u = URI.create(url);
         int port = u.getPort() < 0 ? 80 : u.getPort();
         byte[] acl = payload.getBytes(StandardCharsets.UTF_8);
-        FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length);
-        byte[] rnd = new byte[16];
-        java.util.concurrent.ThreadLocalRandom.current().nextBytes(rnd);
-        String boundary = HexFormat.of().formatHex(rnd).substring(1);
-        ByteArrayOutputStream body = new ByteArrayOutputStream(acl.length + 1024);
-        body.writeBytes(("This is not part of the MIME multipart encoded message.\r\n--" + boundary
-                + "\r\nContent-Type: application/xml\r\n\r\n" + env.toXml() + "\r\n--" + boundary
-                + "\r\nContent-Type: application/text; charset=UTF-8\r\n\r\n").getBytes(StandardCharsets.UTF_8));
-        body.writeBytes(acl);
-        body.writeBytes(("\r\n--" + boundary + "--\r\n").getBytes(StandardCharsets.UTF_8));
+        FipaEnvelope env = FipaEnvelope.forOne(receiver, sender, acl.length, epochMs);
+        String boundary = MtpMultipart.newBoundary();
+        byte[] body = MtpMultipart.encode(boundary, env.toXml(), acl);
         String head = "POST " + url + " HTTP/1.1\r\nCache-Control: no-cache\r\nMime-Version: 1.0\r\nHost: " + u.getHost()
-                + ":" + port + "\r\nContent-Type: multipart/mixed ; boundary=\"" + boundary + "\"\r\nContent-Length: "
-                + body.size() + "\r\nConnection: Keep-Alive\r\n\r\n";
-        ByteArrayOutputStream all = new ByteArrayOutputStream(head.length() + body.size());
+                + ":" + port + "\r\nContent-Type: " + MtpMultipart.contentType(boundary) + "\r\nContent-Length: "
+                + body.length + "\r\nConnection: Keep-Alive\r\n\r\n";
+        ByteArrayOutputStream all = new ByteArrayOutputStream(head.length() + body.length);
         all.writeBytes(head.getBytes(StandardCharsets.US_ASCII));
-        all.writeBytes(body.toByteArray());
+        all.writeBytes(body);
         return all.toByteArray();
     }
 }

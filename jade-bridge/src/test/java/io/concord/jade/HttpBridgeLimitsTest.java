@@ -78,7 +78,19 @@ class HttpBridgeLimitsTest {
 
     private HttpMtp start(int maxConnections) {
         mtp = new HttpMtp("127.0.0.1", 0, "127.0.0.1",
-                new AccServer.Limits(maxConnections, 16 * 1024, HttpMtp.MAX_BODY, 10_000_000_000L, 120_000_000_000L), clock::get);
+                new AccServer.Limits(maxConnections, 16 * 1024, HttpMtp.MAX_BODY, 10_000_000_000L, 120_000_000_000L),
+                new io.concord.core.time.Clock() {
+                    // The server's thread reads the time the test's thread moves: an AtomicLong, not a ManualClock.
+                    @Override
+                    public long nanoTime() {
+                        return clock.get();
+                    }
+
+                    @Override
+                    public long epochMillis() {
+                        return io.concord.core.time.ManualClock.DEFAULT_EPOCH_MS + clock.get() / 1_000_000;
+                    }
+                });
         mtp.start(context);
         return mtp;
     }
@@ -255,7 +267,7 @@ class HttpBridgeLimitsTest {
         assertOk(exchange(s, request(b.toString())), "the message in the first two parts is read; the rest is never looked at");
         assertOk(exchange(s, request(body("echo"))), "and the server is free for the next");
         assertEquals(2, delivered.size());
-        assertEquals(2, HttpMtp.split(b.toString(), BOUNDARY).size());
+        assertEquals(2, MtpMultipart.split(b.toString(), BOUNDARY).size());
     }
 
     @Test

@@ -57,7 +57,7 @@ class HttpMtpFuzzTest {
             String boundary;
             HttpMtp.Inbound in;
             try {
-                boundary = type == null ? null : HttpMtp.boundaryOf(type);
+                boundary = type == null ? null : MtpMultipart.boundaryOf(type);
                 if (boundary == null) {
                     refused++;
                     continue;

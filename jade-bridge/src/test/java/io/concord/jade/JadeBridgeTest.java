@@ -138,53 +138,11 @@ class JadeBridgeTest {
         }
     }
 
-    /** A Concord book seller: QUERY-REF gives its price, REQUEST gets AGREE; CFP gets PROPOSE, accept gets INFORM. */
-    static final class ConcordSeller extends Agent {
-        final int price;
-
-        ConcordSeller(int price) {
-            this.price = price;
-        }
-
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour() {
-                @Override
-                public void action() {
-                    AclMessage m = myAgent.receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    AclMessage r = m.createReply();
-                    switch (m.getPerformative()) {
-                        case QUERY_REF -> {
-                            r.setPerformative(Performative.INFORM);
-                            r.setContent(Integer.toString(price));
-                        }
-                        case REQUEST -> {
-                            r.setPerformative(Performative.AGREE);
-                            r.setContent("(sold " + m.getContent() + ")");
-                        }
-                        case CFP -> {
-                            r.setPerformative(Performative.PROPOSE);
-                            r.setContent(Integer.toString(price));
-                        }
-                        case ACCEPT_PROPOSAL -> {
-                            r.setPerformative(Performative.INFORM);
-                            r.setContent("(sold at " + price + ")");
-                        }
-                        default -> {
-                            return;
-                        }
-                    }
-                    myAgent.send(r);
-                }
-            });
-        }
-    }
-
-    /** The same seller in JADE; the contract net through jade.proto.ContractNetResponder. */
+    /**
+     * A book seller in JADE: QUERY-REF gives its price, REQUEST gets AGREE, as the annex seller
+     * ({@link io.concord.examples.BookSeller}) answers on Concord; and a contract net, through
+     * jade.proto.ContractNetResponder.
+     */
     public static final class JadeSeller extends jade.core.Agent {
         @Override
         protected void setup() {
@@ -532,7 +490,7 @@ class JadeBridgeTest {
     void aJadeBuyerBuysFromConcordSellers() throws Exception {
         int[] prices = {42, 35, 39};
         for (int i = 0; i < prices.length; i++) {
-            concord.startAgent("cseller" + i, new ConcordSeller(prices[i]));
+            concord.startAgent("cseller" + i, new io.concord.examples.BookSeller(prices[i]));
         }
         awaitListed("cseller0", "cseller1", "cseller2");
         Object outcome = onJade(a -> {
@@ -556,13 +514,14 @@ class JadeBridgeTest {
             }
             ACLMessage buy = best.createReply();
             buy.setPerformative(ACLMessage.REQUEST);
-            buy.setContent("dune");
+            buy.setContent("1"); // one book
             a.send(buy);
             ACLMessage agree = a.blockingReceive(MessageTemplate.and(MessageTemplate.MatchConversationId("jb1"),
                     MessageTemplate.MatchPerformative(ACLMessage.AGREE)), 30_000);
-            return agree == null ? "no agree" : best.getSender().getLocalName() + " " + agree.getContent();
+            return agree == null ? "no agree" : best.getSender().getLocalName() + " at " + best.getContent() + " agreed by "
+                    + agree.getSender().getLocalName();
         });
-        assertEquals("cseller1 (sold dune)", outcome);
+        assertEquals("cseller1 at 35 agreed by cseller1", outcome);
     }
 
     @Test

@@ -31,7 +31,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class MtpClientTest {
     private final AtomicLong clock = new AtomicLong(1_000_000_000L);
-    private final BridgeLoop loop = new BridgeLoop.Own("mtp-client-test");
+    private final BridgeLoop loop = new BridgeLoop.Own("mtp-client-test", io.concord.core.time.Clock.system());
     private final List<AutoCloseable> open = new ArrayList<>();
     private MtpClient client;
 
@@ -55,7 +55,7 @@ class MtpClientTest {
         CompletableFuture<String> done = new CompletableFuture<>();
         String url = "http://127.0.0.1:" + port + "/acc";
         byte[] request = MtpClient.request(url, new AID("buyer@10.200.0.2:1099/JADE", url), AID.local("seller", "ourplat"),
-                "(INFORM :content \"" + i + "\")");
+                "(INFORM :content \"" + i + "\")", io.concord.core.time.ManualClock.DEFAULT_EPOCH_MS);
         loop.execute(() -> client.post(new MtpClient.Post(url, request, done::complete)));
         return done;
     }

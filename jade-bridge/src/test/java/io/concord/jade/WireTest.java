@@ -28,7 +28,7 @@ class WireTest {
 
     @Test
     void readsTheRequestJadeSends() {
-        String boundary = HttpMtp.boundaryOf("multipart/mixed ; boundary=\"7b446481f5ae2c17c233efb80dd6246\"");
+        String boundary = MtpMultipart.boundaryOf("multipart/mixed ; boundary=\"7b446481f5ae2c17c233efb80dd6246\"");
         assertEquals("7b446481f5ae2c17c233efb80dd6246", boundary);
         HttpMtp.Inbound in = HttpMtp.parse(JADE_BODY, boundary);
         assertEquals(List.of(new AID("bob@foreignplat")), in.envelope().deliverTo());
@@ -40,7 +40,7 @@ class WireTest {
 
     @Test
     void rejectsWhatItCannotUseAndSaysWhy() {
-        assertEquals(null, HttpMtp.boundaryOf("text/plain"));
+        assertEquals(null, MtpMultipart.boundaryOf("text/plain"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HttpMtp.parse("no boundary here", "b"))
                 .getMessage().contains("boundary"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HttpMtp.parse(
@@ -85,7 +85,7 @@ class WireTest {
     void theEnvelopeItWritesReadsBack() {
         AID bob = new AID("bob@j", "http://h:1/acc");
         AID me = new AID("me@c&co", "http://h:2/acc");
-        FipaEnvelope e = FipaEnvelope.forOne(bob, me, 42);
+        FipaEnvelope e = FipaEnvelope.forOne(bob, me, 42, io.concord.core.time.ManualClock.DEFAULT_EPOCH_MS);
         String xml = e.toXml();
         assertTrue(xml.contains("<intended-receiver>") && !xml.contains("\n<params") && xml.contains("me@c&amp;co"), xml);
         assertTrue(e.date().matches("\\d{8}Z\\d{9}"), e.date());

@@ -25,15 +25,15 @@ public record Frame(int type, int flags, int seq, long timeMs, byte[] body) {
         public static final int STOP = 0x02;
         /** Host to board: the state rate. */
         public static final int CONFIGURE = 0x03;
-        /** Host to board: are you there (a nonce, echoed in the ACK). */
+        /** Host to board: are you there (a nonce, echoed in the ACK); with SYNC, a new session, which disarms the board. */
         public static final int PING = 0x04;
-        /** Board to host: encoders, ranges, bumper, battery, e-stop, faults, and a marker fix. */
+        /** Board to host: boot number, encoders, ranges, bumper, e-stop, armed (and why not), battery, faults, and a marker fix. */
         public static final int STATE = 0x81;
-        /** Board to host: firmware version and the chair's layout. */
+        /** Board to host: the protocol's version, the boot number, the firmware's version and the chair's layout. */
         public static final int HELLO = 0x82;
         /** Board to host: a host frame taken. */
         public static final int ACK = 0x83;
-        /** Board to host: a host frame refused, with the reason. */
+        /** Board to host: a host frame refused, with the reason and why the board is not armed. */
         public static final int NAK = 0x84;
 
         private Type() {

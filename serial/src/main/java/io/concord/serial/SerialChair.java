@@ -11,6 +11,7 @@ import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Odometry;
 import io.concord.agents.chair.Pose;
 import io.concord.core.agent.AgentRuntime;
+import io.concord.core.time.Clock;
 
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -91,13 +92,15 @@ public final class SerialChair implements ChairDriver {
 
     private final Settings settings;
     private final AgentRuntime runtime;
+    private final Clock clock;
+    private final BoardLink.Opener opener;
     private final FrameCodec codec;
     private final FrameReceiver receiver;
     private final Thread reader;
     private final Thread heartbeat;
     /** Guards the port's writes and the sending side's sequence number, session and STOP flag. */
     private final Object sendLock = new Object();
-    private volatile SerialPort port;
+    private volatile BoardLink port;
     private volatile boolean closed;
     private volatile long lastFrameNanos;
     /** True once a frame has come since the port was opened. */
@@ -121,6 +124,9 @@ public final class SerialChair implements ChairDriver {
     // heartbeat thread
     private final long[] gapsUs = new long[1 << 16];
     private volatile int gapCount;
+    private int gapAt;
+    /** When the heartbeat last sent the command, or -1 after a pause (no port, command expired). */
+    private long lastSent = -1;
     // loop-confined
     private ChairListener listener;
     private ChairReadings latest;
@@ -129,13 +135,24 @@ public final class SerialChair implements ChairDriver {
     private long boot = -1;
     private Boolean boardArmed;
     private boolean nakLogged;
-    private final long startNanos = System.nanoTime();
+    private final long startNanos;
     private long reconnects;
     private long accepted;
 
-    private SerialChair(AgentRuntime runtime, Settings settings) {
+    /**
+     * A driver whose threads are not started: {@link #open} starts them; a test drives its steps
+     * ({@link #openPort}, {@link #onBytes}, {@link #beat}) itself on a manual clock.
+     *
+     * @param clock  every time the driver reads: its frames' times, the heartbeat, the deadlines
+     * @param opener opens the link to the board
+     */
+    SerialChair(AgentRuntime runtime, Settings settings, Clock clock, BoardLink.Opener opener) {
         this.runtime = runtime;
         this.settings = settings;
+        this.clock = clock;
+        this.opener = opener;
+        this.startNanos = clock.nanoTime();
+        this.confirmedNanos = startNanos;
         this.codec = new FrameCodec(settings.key());
         this.layout = settings.layout();
         this.odometry = new Odometry(settings.layout(), settings.start());
@@ -159,8 +176,7 @@ public final class SerialChair implements ChairDriver {
             throw new IllegalArgumentException("no serial port at " + settings.port() + "; ports found: "
                     + (found.isEmpty() ? "none" : found) + " (pseudo-terminals, such as socat's, are never listed: give their path)");
         }
-        SerialChair c = new SerialChair(runtime, settings);
-        c.confirmedNanos = System.nanoTime();
+        SerialChair c = new SerialChair(runtime, settings, Clock.system(), () -> openSerialPort(settings));
         c.reader.start();
         c.heartbeat.start();
         return c;
@@ -200,7 +216,7 @@ public final class SerialChair implements ChairDriver {
         long c = ((long) l << 32) | (r & 0xFFFFFFFFL);
         boolean change = c != command || expired;
         command = c;
-        confirmedNanos = System.nanoTime();
+        confirmedNanos = clock.nanoTime();
         if (change) {
             expired = false;
             sendCommand();
@@ -319,47 +335,54 @@ public final class SerialChair implements ChairDriver {
 
     private void heartbeatLoop() {
         long period = settings.heartbeatMs() * 1_000_000;
-        long next = System.nanoTime() + period;
-        long lastSent = -1;
-        int i = 0;
+        long next = clock.nanoTime() + period;
         while (!closed) {
-            long wait = next - System.nanoTime();
+            long wait = next - clock.nanoTime();
             if (wait > 0) {
                 LockSupport.parkNanos(wait);
                 continue;
             }
-            long now = System.nanoTime();
+            long now = clock.nanoTime();
             next = Math.max(next + period, now + period / 2);
-            watchSilence(now);
-            if (port == null) {
-                lastSent = -1;
-                continue;
-            }
-            if (now - confirmedNanos > settings.commandDeadlineMs() * 1_000_000) {
-                if (!expired) {
-                    // The loop has not confirmed the command in time (frozen, or far behind): one
-                    // STOP, then silence, so that the board trips and needs a decision to drive again.
-                    expired = true;
-                    LOG.warn("{}: the agents have not confirmed the drive command for {} ms (over {} ms): sends STOP and"
-                            + " stops the heartbeat; the board's watchdog trips", settings.name(), (now - confirmedNanos) / 1_000_000,
-                            settings.commandDeadlineMs());
-                    synchronized (sendLock) {
-                        command = 0;
-                        stopSent = false;
-                    }
-                    sendCommand();
-                }
-                lastSent = -1;
-                continue;
-            }
-            sendCommand();
-            if (lastSent >= 0) {
-                gapsUs[i] = (now - lastSent) / 1_000;
-                i = (i + 1) & (gapsUs.length - 1);
-                gapCount++;
-            }
-            lastSent = now;
+            beat(now);
         }
+    }
+
+    /**
+     * One heartbeat at {@code now} (the heartbeat thread's, or a test's): watches for a silent
+     * board, then sends the command again if the loop confirmed it within the deadline; past the
+     * deadline, one STOP and then nothing until the loop confirms a command again.
+     */
+    void beat(long now) {
+        watchSilence(now);
+        if (port == null) {
+            lastSent = -1;
+            return;
+        }
+        if (now - confirmedNanos > settings.commandDeadlineMs() * 1_000_000) {
+            if (!expired) {
+                // The loop has not confirmed the command in time (frozen, or far behind): one
+                // STOP, then silence, so that the board trips and needs a decision to drive again.
+                expired = true;
+                LOG.warn("{}: the agents have not confirmed the drive command for {} ms (over {} ms): sends STOP and"
+                        + " stops the heartbeat; the board's watchdog trips", settings.name(), (now - confirmedNanos) / 1_000_000,
+                        settings.commandDeadlineMs());
+                synchronized (sendLock) {
+                    command = 0;
+                    stopSent = false;
+                }
+                sendCommand();
+            }
+            lastSent = -1;
+            return;
+        }
+        sendCommand();
+        if (lastSent >= 0) {
+            gapsUs[gapAt] = (now - lastSent) / 1_000;
+            gapAt = (gapAt + 1) & (gapsUs.length - 1);
+            gapCount++;
+        }
+        lastSent = now;
     }
 
     private void watchSilence(long now) {
@@ -392,7 +415,7 @@ public final class SerialChair implements ChairDriver {
 
     /** Under sendLock. */
     private boolean write(int type, byte[] body) {
-        SerialPort p = port;
+        BoardLink p = port;
         if (p == null) {
             return false;
         }
@@ -405,14 +428,14 @@ public final class SerialChair implements ChairDriver {
         return sendFrame(p, type, 0, body);
     }
 
-    private boolean sendFrame(SerialPort p, int type, int flags, byte[] body) {
+    private boolean sendFrame(BoardLink p, int type, int flags, byte[] body) {
         byte[] b = codec.encode(new Frame(type, flags, seq, nowMs(), body));
         seq = (seq + 1) & 0xFFFF;
-        return p.writeBytes(b, b.length) == b.length;
+        return p.write(b);
     }
 
     private long nowMs() {
-        return ((System.nanoTime() - startNanos) / 1_000_000) & 0xFFFFFFFFL;
+        return ((clock.nanoTime() - startNanos) / 1_000_000) & 0xFFFFFFFFL;
     }
 
     // ---- receiving (reader thread, then the loop) ---------------------------------------------------
@@ -421,7 +444,7 @@ public final class SerialChair implements ChairDriver {
         byte[] buf = new byte[1024];
         long backoffMs = 100;
         while (!closed) {
-            SerialPort p = port;
+            BoardLink p = port;
             if (p == null) {
                 if (openPort()) {
                     backoffMs = 100;
@@ -431,38 +454,36 @@ public final class SerialChair implements ChairDriver {
                 }
                 continue;
             }
-            int n = p.readBytes(buf, buf.length);
+            int n = p.read(buf);
             if (port != p) {
                 continue; // closed meanwhile (a silent board, or close())
             }
-            if (n < 0 || !Files.exists(Path.of(settings.port()))) {
+            if (n < 0) {
                 lost("the port " + settings.port() + " is gone");
                 continue;
             }
             if (n > 0) {
-                receiver.feed(buf, 0, n, nowMs());
+                onBytes(buf, n);
             }
         }
     }
 
-    private boolean openPort() {
-        if (closed || !Files.exists(Path.of(settings.port())) && !settings.port().toUpperCase().startsWith("COM")) {
+    /** The board's next bytes, as they came off the port (the reader thread, or a test). */
+    void onBytes(byte[] buf, int n) {
+        receiver.feed(buf, 0, n, nowMs());
+    }
+
+    /** Opens the link and starts a new session on it; false if it cannot be opened now (the reader thread, or a test). */
+    boolean openPort() {
+        if (closed) {
             return false;
         }
-        // A relative path is made absolute: jSerialComm would take a bare name for one under /dev.
-        String where = settings.port().toUpperCase().startsWith("COM") ? settings.port() : Path.of(settings.port()).toAbsolutePath().toString();
-        SerialPort p = SerialPort.getCommPort(where);
-        p.setComPortParameters(settings.baud(), 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
-        // A read returns as soon as a byte is there (a timeout on a pty is only good to about 10 ms,
-        // which a STATE frame's way to the agent then carried); the heartbeat thread watches for a
-        // silent board, and closing the port ends a read.
-        p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 0, 0);
-        if (!p.openPort()) {
-            LOG.warn("{}: cannot open {} (error {}); tries again", settings.name(), settings.port(), p.getLastErrorCode());
+        BoardLink p = opener.open();
+        if (p == null) {
             return false;
         }
         receiver.reset();
-        lastFrameNanos = System.nanoTime();
+        lastFrameNanos = clock.nanoTime();
         heard = false;
         macAtOpen = receiver.drops().get("mac");
         macLogged = false;
@@ -475,6 +496,26 @@ public final class SerialChair implements ChairDriver {
         return true;
     }
 
+    /** The board's serial port, opened and set up; null if it is not there or cannot be opened now. */
+    private static BoardLink openSerialPort(Settings settings) {
+        if (!Files.exists(Path.of(settings.port())) && !settings.port().toUpperCase().startsWith("COM")) {
+            return null;
+        }
+        // A relative path is made absolute: jSerialComm would take a bare name for one under /dev.
+        String where = settings.port().toUpperCase().startsWith("COM") ? settings.port() : Path.of(settings.port()).toAbsolutePath().toString();
+        SerialPort p = SerialPort.getCommPort(where);
+        p.setComPortParameters(settings.baud(), 8, SerialPort.ONE_STOP_BIT, SerialPort.NO_PARITY);
+        // A read returns as soon as a byte is there (a timeout on a pty is only good to about 10 ms,
+        // which a STATE frame's way to the agent then carried); the heartbeat thread watches for a
+        // silent board, and closing the port ends a read.
+        p.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, 0, 0);
+        if (!p.openPort()) {
+            LOG.warn("{}: cannot open {} (error {}); tries again", settings.name(), settings.port(), p.getLastErrorCode());
+            return null;
+        }
+        return new SerialPortLink(p, Path.of(settings.port()));
+    }
+
     private void lost(String why) {
         if (port == null) {
             return;
@@ -485,13 +526,13 @@ public final class SerialChair implements ChairDriver {
     }
 
     private void closePort() {
-        SerialPort p;
+        BoardLink p;
         synchronized (sendLock) {
             p = port;
             port = null;
         }
         if (p != null) {
-            p.closePort();
+            p.close();
         }
     }
 
@@ -504,7 +545,7 @@ public final class SerialChair implements ChairDriver {
     }
 
     private void onBoardFrame(Frame f) {
-        lastFrameNanos = System.nanoTime();
+        lastFrameNanos = clock.nanoTime();
         heard = true;
         accepted++;
         try {

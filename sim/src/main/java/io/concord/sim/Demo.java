@@ -1,9 +1,9 @@
 package io.concord.sim;
 
+import io.concord.examples.BookBuyer;
+import io.concord.examples.BookSeller;
 import io.concord.layers.Boot;
 import io.concord.layers.security.PlatformKey;
-import io.concord.sim.books.BookBuyer;
-import io.concord.sim.books.BookSeller;
 
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
@@ -22,13 +22,13 @@ import java.util.concurrent.TimeUnit;
  * runs the platform demo: three JVMs on this machine, started with the {@link Boot} command line and
  * nothing configured but the agents. They find each other by port binding (7001 and up), elect
  * a container, and build the white and yellow pages; a buyer finds three book sellers in the DF,
- * asks them by name with a contract net and buys from the cheapest. Then the container's JVM is
+ * asks each its price by name (QUERY-REF) and orders from the cheapest (REQUEST): the annex agents
+ * of {@code io.concord.examples}, as the runnable jar runs them. Then the container's JVM is
  * killed ({@code kill -9}) and the other two elect a new one. Every JVM's output is shown,
  * prefixed with its letter.
  */
 public final class Demo {
     private static final PrintStream OUT = System.out;
-    private static final String TITLE = "The Art of Agents";
 
     private Demo() {
     }
@@ -63,12 +63,13 @@ public final class Demo {
         LinkedBlockingQueue<String> events = new LinkedBlockingQueue<>();
         Map<String, Jvm> jvms = new LinkedHashMap<>();
         try {
-            jvms.put("A", spawn("A", platform, "seller1:" + BookSeller.class.getName() + "(" + TITLE + ",42);"
-                    + "seller2:" + BookSeller.class.getName() + "(" + TITLE + ",35)", events));
-            jvms.put("B", spawn("B", platform, "seller3:" + BookSeller.class.getName() + "(" + TITLE + ",39)", events));
-            jvms.put("C", spawn("C", platform, "buyer:" + BookBuyer.class.getName() + "(" + TITLE + ",3)", events));
+            jvms.put("A", spawn("A", platform, "seller1:" + BookSeller.class.getName() + "(42);"
+                    + "seller2:" + BookSeller.class.getName() + "(35)", events));
+            jvms.put("B", spawn("B", platform, "seller3:" + BookSeller.class.getName() + "(39)", events));
+            // With no seller named, the buyer asks the DF's, once it lists all three.
+            jvms.put("C", spawn("C", platform, "buyer:" + BookBuyer.class.getName() + "(sellers=3)", events));
 
-            String done = await(events, l -> l.endsWith("buyer: DONE"), 60);
+            String done = await(events, l -> l.contains("buyer: bought "), 60);
             if (done == null) {
                 OUT.println("The buyer did not finish within 60 s.");
                 return;
@@ -135,6 +136,7 @@ public final class Demo {
 
     private static String await(LinkedBlockingQueue<String> events, java.util.function.Predicate<String> p, int seconds)
             throws InterruptedException {
+        // Wall time: the demo waits as a person would for its child JVMs to print.
         long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
         String l;
         while ((l = events.poll(Math.max(1, end - System.nanoTime()), TimeUnit.NANOSECONDS)) != null) {

@@ -275,7 +275,7 @@ public final class HospitalDemo {
             for (TaskSpec t : o.tasks()) {
                 fs.add(medical.transport(t.from(), t.to(), t.priority(), t.unloadS()));
             }
-            long t0 = System.nanoTime();
+            long t0 = System.nanoTime(); // wall time, printed beside the hospital's: the demo's own figure, not the platform's clock
             sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), (long) (o.maxSeconds() * 1000));
             double wall = (System.nanoTime() - t0) / 1e9;
             writePicture(world, o);
@@ -479,6 +479,7 @@ public final class HospitalDemo {
     static boolean staff(Options o) throws Exception {
         Platform platform = Platform.builder().name("hospital").build();
         AgentRuntime rt = platform.runtime();
+        // Wall time: the staff's terminal prints how long each line took a person to see, and gives up after a minute.
         long start = System.nanoTime();
         MedicalAgent medical = new MedicalAgent(line -> OUT.printf(Locale.ROOT, "%6.1f s  %s%n", (System.nanoTime() - start) / 1e9, line));
         platform.startAgent("medical", medical);

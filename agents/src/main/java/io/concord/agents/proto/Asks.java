@@ -20,6 +20,15 @@ import java.util.function.Consumer;
  * conversation id; an AGREE is passed to an optional callback, the first other answer completes
  * the future (REFUSE, FAILURE and NOT-UNDERSTOOD included: look at the performative), and no
  * answer within the timeout completes it with null. One instance per agent, added as a behaviour.
+ *
+ * <p>Not {@link io.concord.core.proto.Conversations#request}, which is FIPA-Request's initiator:
+ * its future completes only on an INFORM (an INFORM-REF or a CONFIRM would be out of sequence and
+ * never answer it), fails on REFUSE, FAILURE and NOT-UNDERSTOOD, keeps no AGREE for its caller (a
+ * traffic agent's AGREE says whose reservation the chair waits behind), times out only by a
+ * {@code :reply-by} carried on the message, and names the protocol and a reply-with of its own on
+ * the wire. These questions are answered as docs/wheelchair-protocol.md says, time out on the
+ * asker's own deadline with no {@code :reply-by} sent, and carry their conversation id as their
+ * reply-with: what the other agents receive stays as it is.
  */
 public final class Asks extends CyclicBehaviour {
     private record Pending(CompletableFuture<AclMessage> answer, Consumer<AclMessage> onAgree, long deadlineMs) {

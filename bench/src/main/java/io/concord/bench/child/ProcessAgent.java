@@ -4,11 +4,11 @@ import io.concord.bench.Platforms;
 import io.concord.bench.Rounds;
 import io.concord.bench.jmh.ChainBenchmark;
 
-import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.concord.ConcordChainLink;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
+import io.concord.examples.BookSeller;
 
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
@@ -28,7 +28,7 @@ public final class ProcessAgent {
         String platform = args[args.length - 1];
         try (AgentRuntime rt = Platforms.concord(platform)) {
             Agent agent = kind.equals("link") ? new ConcordChainLink(new Rounds(), false, ChainBenchmark.SECRET)
-                    : new ConcordBooks.Seller(Integer.parseInt(args[2]));
+                    : new BookSeller(Integer.parseInt(args[2]));
             AID aid = rt.startAgent(name, agent);
             System.out.println("READY " + aid.addresses().get(0));
             System.out.flush();

@@ -7,12 +7,19 @@ import jade.core.behaviours.CyclicBehaviour;
 import jade.lang.acl.ACLMessage;
 import jade.lang.acl.MessageTemplate;
 
-/** The book buyer and sellers on JADE, with the same conversation rules as the Concord version. */
+/**
+ * The book buyer and sellers on JADE, speaking what Concord's annex agents speak
+ * ({@code io.concord.examples.BookBuyer} and {@code BookSeller}, which the benchmark runs on
+ * Concord): QUERY-REF to every seller, the quotes within a second, REQUEST {@code 1} to the
+ * cheapest, AGREE. Left out, since the benchmark never meets them: the buyer's new attempt after
+ * a REFUSE, a price above 80 or an order nobody answers, and the sellers' REFUSE and
+ * NOT-UNDERSTOOD.
+ */
 public final class JadeBooks {
     private JadeBooks() {
     }
 
-    /** Answers QUERY-REF with its price and REQUEST with AGREE. Arguments: price, Rounds. */
+    /** Answers QUERY-REF with its price and an order (REQUEST) with AGREE. Arguments: price, Rounds. */
     public static class Seller extends Agent {
         @Override
         protected void setup() {
@@ -25,9 +32,15 @@ public final class JadeBooks {
                         block();
                         return;
                     }
+                    boolean query = m.getPerformative() == ACLMessage.QUERY_REF;
+                    if (!query && m.getPerformative() != ACLMessage.REQUEST) {
+                        return;
+                    }
                     ACLMessage reply = m.createReply();
-                    reply.setPerformative(m.getPerformative() == ACLMessage.QUERY_REF ? ACLMessage.INFORM : ACLMessage.AGREE);
-                    reply.setContent(m.getPerformative() == ACLMessage.QUERY_REF ? price : "ok");
+                    reply.setPerformative(query ? ACLMessage.INFORM : ACLMessage.AGREE);
+                    if (query) {
+                        reply.setContent(price);
+                    }
                     send(reply);
                 }
             });
@@ -38,14 +51,15 @@ public final class JadeBooks {
     }
 
     /**
-     * Asks every seller, waits for all quotes (or the timeout), requests from the cheapest, waits
-     * for its AGREE. Arguments: Rounds, S, timeout ms.
+     * Asks every seller, waits for all quotes (or a second), orders one book from the cheapest,
+     * waits for its AGREE. Arguments: Rounds, S, timeout ms.
      */
     public static class Buyer extends Agent {
         private Rounds rounds;
         private int sellers;
         private long timeoutMs;
-        private int round;
+        private int attempt;
+        private String conversation;
         private int quotes;
         private int best;
         private AID bestSeller;
@@ -65,10 +79,10 @@ public final class JadeBooks {
                         startRound();
                         return;
                     }
-                    ACLMessage m = receive(MessageTemplate.MatchConversationId("r" + round));
+                    ACLMessage m = conversation == null ? null : receive(MessageTemplate.MatchConversationId(conversation));
                     if (m == null) {
                         long left = deadline - System.currentTimeMillis();
-                        if (!requested && round > 0 && left <= 0) {
+                        if (!requested && conversation != null && left <= 0) {
                             request();
                         } else {
                             block(Math.max(1, left));
@@ -76,7 +90,7 @@ public final class JadeBooks {
                         return;
                     }
                     if (m.getPerformative() == ACLMessage.INFORM && !requested) {
-                        int p = Integer.parseInt(m.getContent());
+                        int p = Integer.parseInt(m.getContent().trim());
                         if (bestSeller == null || p < best) {
                             best = p;
                             bestSeller = m.getSender();
@@ -84,7 +98,7 @@ public final class JadeBooks {
                         if (++quotes == sellers) {
                             request();
                         }
-                    } else if (m.getPerformative() == ACLMessage.AGREE) {
+                    } else if (m.getPerformative() == ACLMessage.AGREE && m.getSender().equals(bestSeller)) {
                         if (rounds.roundDone()) {
                             startRound();
                         }
@@ -95,7 +109,8 @@ public final class JadeBooks {
         }
 
         private void startRound() {
-            round++;
+            attempt++;
+            conversation = "books-" + getLocalName() + "-" + attempt;
             quotes = 0;
             bestSeller = null;
             requested = false;
@@ -104,7 +119,8 @@ public final class JadeBooks {
             for (int i = 0; i < sellers; i++) {
                 q.addReceiver(new AID("seller" + i, AID.ISLOCALNAME));
             }
-            q.setConversationId("r" + round);
+            q.setConversationId(conversation);
+            q.setReplyWith(conversation + "-q");
             q.setContent("(price (book \"The Art of Agents\"))");
             send(q);
         }
@@ -113,8 +129,8 @@ public final class JadeBooks {
             requested = true;
             ACLMessage r = new ACLMessage(ACLMessage.REQUEST);
             r.addReceiver(bestSeller);
-            r.setConversationId("r" + round);
-            r.setContent("(buy (book \"The Art of Agents\"))");
+            r.setConversationId(conversation);
+            r.setContent("1");
             send(r);
         }
     }

@@ -2,11 +2,12 @@ package io.concord.bench.jmh;
 
 import io.concord.bench.Platforms;
 
-import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.jade.JadeBooks;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
+import io.concord.examples.BookBuyer;
+import io.concord.examples.BookSeller;
 import jade.wrapper.AgentController;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;
@@ -22,10 +23,12 @@ import java.util.List;
 /**
  * Experiment 5 of the dissertation: one buyer, S sellers in one JVM. QUERY-REF to all sellers,
  * INFORM quotes (a buyer timeout for missing ones), REQUEST to the cheapest, AGREE. Time per round.
+ * On Concord, the annex agents themselves ({@code io.concord.examples}); on JADE, {@link JadeBooks}.
  */
 @State(Scope.Benchmark)
 public class BooksBenchmark extends RoundBenchmark {
     public static final int ROUNDS = 50;
+    /** How long the buyer waits for quotes: the annex buyer's second. */
     static final long TIMEOUT_MS = 1_000;
 
     @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
@@ -34,7 +37,6 @@ public class BooksBenchmark extends RoundBenchmark {
     @Param({"1", "5", "10", "15"})
     public int s;
 
-    private ConcordBooks.Buyer buyer;
 
     static int price(int i) {
         return 40 + (i * 7919) % 23;
@@ -56,12 +58,11 @@ public class BooksBenchmark extends RoundBenchmark {
         AgentRuntime concord = driver.concord;
         List<AID> sellers = new ArrayList<>();
         for (int i = 0; i < s; i++) {
-            sellers.add(concord.startAgent("seller" + i, new ConcordBooks.Seller(price(i))));
+            sellers.add(concord.startAgent("seller" + i, new BookSeller(price(i))));
         }
-        buyer = new ConcordBooks.Buyer(rounds, TIMEOUT_MS);
-        buyer.sellers = sellers;
+        BookBuyer buyer = new BookBuyer(sellers, rounds::roundDone);
         concord.startAgent("buyer", buyer);
-        driver.concordStart = buyer::startRound;
+        driver.concordStart = buyer::buy;
     }
 
     @Benchmark

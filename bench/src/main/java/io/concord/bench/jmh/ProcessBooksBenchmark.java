@@ -4,12 +4,12 @@ import io.concord.bench.Platforms;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ProcessAgent;
 
-import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.jade.JadeBooks;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.bench.jade.JadeProcessAgent;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
+import io.concord.examples.BookBuyer;
 import jade.wrapper.AgentController;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;
@@ -34,7 +34,6 @@ public class ProcessBooksBenchmark extends RoundBenchmark {
     public int s;
 
     private final Children children = driver.children;
-    private ConcordBooks.Buyer buyer;
 
     @Setup(Level.Trial)
     public void start() throws Exception {
@@ -60,10 +59,9 @@ public class ProcessBooksBenchmark extends RoundBenchmark {
         }
         driver.concord = Platforms.concord(platform);
         AgentRuntime concord = driver.concord;
-        buyer = new ConcordBooks.Buyer(rounds, BooksBenchmark.TIMEOUT_MS);
-        buyer.sellers = sellers;
+        BookBuyer buyer = new BookBuyer(sellers, rounds::roundDone);
         concord.startAgent("buyer", buyer);
-        driver.concordStart = buyer::startRound;
+        driver.concordStart = buyer::buy;
     }
 
     @Benchmark

@@ -1,7 +1,7 @@
 package io.concord.core.net;
 
 /**
- * A datagram network with its port space: real UDP sockets ({@link SocketNetwork}) or the
+ * A datagram network with its port space: real sockets, UDP and TCP ({@link SocketNetwork}), or the
  * deterministic virtual network of the test kit. One loop polls it; {@link #wakeup()} is the only
  * method other threads may call.
  */

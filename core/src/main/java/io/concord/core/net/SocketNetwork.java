@@ -1,5 +1,6 @@
 package io.concord.core.net;
 
+import io.concord.core.time.Clock;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -98,6 +99,7 @@ public final class SocketNetwork implements Network, Channels {
     private static final Logger LOG = LoggerFactory.getLogger(SocketNetwork.class);
 
     private final Selector selector;
+    private final Clock clock;
     private final ByteBuffer receiveBuffer = ByteBuffer.allocateDirect(MAX_DATAGRAM + 1);
     private final byte[] receiveArray = new byte[MAX_DATAGRAM + 1];
     private final Map<InetSocketAddress, Address> addressCache = new HashMap<>();
@@ -132,6 +134,16 @@ public final class SocketNetwork implements Network, Channels {
      * false (or {@code -Dconcord.bundle.off=true}) for one datagram per frame.
      */
     public SocketNetwork(int socketBufferBytes, boolean localDelivery, boolean bundling) {
+        this(socketBufferBytes, localDelivery, bundling, Clock.system());
+    }
+
+    /**
+     * ... and the {@code clock} that times what the sockets themselves take (the 5 s a TCP
+     * connection may take to open): the system's by default, since a socket connects in real time
+     * whatever clock the agents' loop runs on.
+     */
+    public SocketNetwork(int socketBufferBytes, boolean localDelivery, boolean bundling, Clock clock) {
+        this.clock = java.util.Objects.requireNonNull(clock, "clock");
         this.socketBufferBytes = socketBufferBytes;
         this.localDelivery = localDelivery;
         this.bundling = bundling;
@@ -176,7 +188,7 @@ public final class SocketNetwork implements Network, Channels {
         if (transport == Transport.UDP) {
             return tryBind(host, port, receiver);
         }
-        return TcpEndpoint.bind(selector, host, port, receiver);
+        return TcpEndpoint.bind(selector, host, port, receiver, clock);
     }
 
     /**

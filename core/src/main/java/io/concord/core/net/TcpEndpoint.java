@@ -1,5 +1,6 @@
 package io.concord.core.net;
 
+import io.concord.core.time.Clock;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -46,16 +47,18 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
     private final Selector selector;
     private final ServerSocketChannel server;
     private final Receiver receiver;
+    private final Clock clock;
     private final Address local;
     private final byte[] preamble;
     private final Map<Address, Outbound> outbound = new HashMap<>();
     private final Set<Inbound> inbound = new HashSet<>();
     private boolean open = true;
 
-    private TcpEndpoint(Selector selector, ServerSocketChannel server, Receiver receiver) throws IOException {
+    private TcpEndpoint(Selector selector, ServerSocketChannel server, Receiver receiver, Clock clock) throws IOException {
         this.selector = selector;
         this.server = server;
         this.receiver = receiver;
+        this.clock = clock;
         InetSocketAddress la = (InetSocketAddress) server.getLocalAddress();
         this.local = new Address(la.getAddress().getHostAddress(), la.getPort());
         byte[] me = local.toString().getBytes(StandardCharsets.UTF_8);
@@ -66,14 +69,14 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
         System.arraycopy(me, 0, preamble, 6, me.length);
     }
 
-    static TcpEndpoint bind(Selector selector, String host, int port, Receiver receiver) {
+    static TcpEndpoint bind(Selector selector, String host, int port, Receiver receiver, Clock clock) {
         ServerSocketChannel ch = null;
         try {
             ch = ServerSocketChannel.open();
             ch.setOption(StandardSocketOptions.SO_REUSEADDR, true);
             ch.bind(new InetSocketAddress(host, port));
             ch.configureBlocking(false);
-            TcpEndpoint ep = new TcpEndpoint(selector, ch, receiver);
+            TcpEndpoint ep = new TcpEndpoint(selector, ch, receiver, clock);
             ch.register(selector, SelectionKey.OP_ACCEPT, ep);
             return ep;
         } catch (BindException e) {
@@ -143,7 +146,7 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
             return false;
         }
         Outbound o = outbound.get(to);
-        if (o != null && !o.connected && !o.closed && System.nanoTime() - o.startedNs > CONNECT_TIMEOUT_NS) {
+        if (o != null && !o.connected && !o.closed && clock.nanoTime() - o.startedNs > CONNECT_TIMEOUT_NS) {
             receiver.onRefused(to, "tcp-connect-timeout", "the connection to " + to + " did not open in "
                     + CONNECT_TIMEOUT_NS / 1_000_000_000L + " s; " + o.queue.size() + " frames waiting for it dropped");
             o.close();
@@ -203,7 +206,7 @@ final class TcpEndpoint implements Endpoint, SocketNetwork.Handler {
         private SelectionKey key;
         private boolean connected;
         private boolean closed;
-        private final long startedNs = System.nanoTime();
+        private final long startedNs = clock.nanoTime();
 
         Outbound(Address peer, SocketChannel ch) {
             this.peer = peer;

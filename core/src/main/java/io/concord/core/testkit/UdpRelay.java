@@ -1,6 +1,7 @@
 package io.concord.core.testkit;
 
 import io.concord.core.net.Address;
+import io.concord.core.time.Clock;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -128,10 +129,12 @@ public final class UdpRelay implements AutoCloseable {
      * @return false if some are still held after {@code timeoutMs}
      */
     public boolean awaitDelayedSent(long timeoutMs) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+        // The system's clock: the relay's delays run on a real scheduler, between real sockets.
+        Clock clock = Clock.system();
+        long deadline = clock.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
         synchronized (idle) {
             while (delayed > 0) {
-                long left = deadline - System.nanoTime();
+                long left = deadline - clock.nanoTime();
                 if (left <= 0) {
                     return false;
                 }

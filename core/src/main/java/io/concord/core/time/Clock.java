@@ -2,7 +2,8 @@ package io.concord.core.time;
 
 /**
  * The one source of time. Everything that needs time is given a clock; only this package reads
- * the system's. Read it once per work cycle and pass the value down ({@code nowNs}).
+ * the system's (the benchmarks, and the demos' wall-clock printing, measure real time and read it
+ * directly; each says so). Read it once per work cycle and pass the value down ({@code nowNs}).
  */
 public interface Clock {
 

@@ -3,6 +3,7 @@ package io.concord.sim.board;
 import com.fazecast.jSerialComm.SerialPort;
 
 import io.concord.agents.map.HospitalMap;
+import io.concord.core.time.Clock;
 import io.concord.serial.Board;
 import io.concord.serial.FrameCodec;
 import io.concord.sim.world.ChairConfig;
@@ -53,7 +54,8 @@ public final class BoardEmulator {
     private final SimChair chair;
     private final Board board;
     private final Faults faults;
-    private final long startNs = System.nanoTime();
+    private final Clock clock;
+    private final long startNs;
     private final ConcurrentLinkedQueue<String> commands = new ConcurrentLinkedQueue<>();
     private final PrintStream out;
     private final double clockRate;
@@ -73,8 +75,11 @@ public final class BoardEmulator {
     private final ArrayDeque<byte[]> held = new ArrayDeque<>();
     private byte[] reorderHeld;
 
+    /** @param clock the real time the board's clock and the world follow (times {@code clockRate} for the board's) */
     BoardEmulator(String path, HospitalMap map, int atNode, long seed, byte[] key, Faults faults, PrintStream out, double clockRate,
-                  long boot) {
+                  long boot, Clock clock) {
+        this.clock = clock;
+        this.startNs = clock.nanoTime();
         this.path = path;
         this.clockRate = clockRate;
         this.boot = boot;
@@ -88,7 +93,7 @@ public final class BoardEmulator {
 
     /** The board's clock: real time, times the clock's rate. */
     private long nowMs() {
-        return (long) ((System.nanoTime() - startNs) / 1e6 * clockRate);
+        return (long) ((clock.nanoTime() - startNs) / 1e6 * clockRate);
     }
 
     /** Runs until {@code quit} on standard input. */
@@ -143,7 +148,7 @@ public final class BoardEmulator {
                     }
                 }
             }
-            while (world.worldTimeNs() + stepNs <= System.nanoTime() - startNs) {
+            while (world.worldTimeNs() + stepNs <= clock.nanoTime() - startNs) {
                 world.step();
             }
             if (tripWhenDriving && (board.motors()[0] != 0 || board.motors()[1] != 0)) {
@@ -347,7 +352,7 @@ public final class BoardEmulator {
             return;
         }
         new BoardEmulator(port, map, at, seed, key, new Faults(drop, corrupt, dup, reorder, garbage, delay, new SplittableRandom(seed)),
-                System.out, clockRate, boot).run();
+                System.out, clockRate, boot, Clock.system()).run();
         System.exit(0);
     }
 

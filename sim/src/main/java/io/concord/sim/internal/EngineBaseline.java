@@ -68,6 +68,7 @@ public final class EngineBaseline {
             world.step(1 / 60f, 8, 3);
             steps[0]++;
         };
+        // Wall time: this is a benchmark's measurement (bench's sim figures), not the platform's clock.
         long warmEnd = System.nanoTime() + (long) (seconds * 1e9);
         while (System.nanoTime() < warmEnd) {
             step.run();

@@ -78,7 +78,7 @@ public class ChainLink extends Agent {
             rounds = -1;
             return;
         }
-        totalNs += System.nanoTime() - roundStartNs;
+        totalNs += runtime().clock().nanoTime() - roundStartNs;
         if (round == rounds) {
             System.out.println(getLocalName() + ": chain: " + rounds + " rounds through " + next.name() + " and back, mean "
                     + (totalNs / rounds / 1000) + " us a round");
@@ -90,7 +90,7 @@ public class ChainLink extends Agent {
     }
 
     private void pass(String content) {
-        roundStartNs = System.nanoTime();
+        roundStartNs = runtime().clock().nanoTime();
         AclMessage m = new AclMessage(Performative.QUERY_REF).addReceiver(next);
         m.setContent(content);
         send(m);

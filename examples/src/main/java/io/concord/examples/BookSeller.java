@@ -6,7 +6,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.Inbox;
 import io.concord.core.agent.OneShotBehaviour;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.PlatformServices;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.SplittableRandom;
@@ -18,29 +18,47 @@ import java.util.SplittableRandom;
  * buyers on Concord, and JADE agents through the DF mirror, find it.
  *
  * <p>Boot arguments: {@code BookSeller(price)}, or none for a random price from 0 to 99 for every
- * query, as the annex's seller does. Prints what it says.
+ * query, as the annex's seller does. Prints what it says. A program (the benchmarks, the tests)
+ * gives the price to {@link #BookSeller(int)} instead, and the seller says nothing; on a runtime
+ * that is not a {@code Platform} (the benchmarks'), it answers all the same, in no DF.
  */
 public class BookSeller extends Agent {
     private Integer fixed;
     private SplittableRandom random;
+    private final boolean prints;
+
+    /** The seller Boot starts: its price from the arguments; prints what it says. */
+    public BookSeller() {
+        this.prints = true;
+    }
+
+    /** A seller at a fixed price that prints nothing, for a program. */
+    public BookSeller(int price) {
+        this.fixed = price;
+        this.prints = false;
+    }
 
     @Override
     protected void setup() {
         Object[] a = getArguments();
-        if (a.length > 0 && !a[0].toString().isBlank()) {
+        if (fixed == null && a.length > 0 && !a[0].toString().isBlank()) {
             try {
                 fixed = Integer.parseInt(a[0].toString().trim());
             } catch (NumberFormatException e) {
                 throw new IllegalArgumentException("BookSeller(price): the price is a whole number, got '" + a[0] + "'");
             }
-        } else {
+        } else if (fixed == null) {
             random = new SplittableRandom();
         }
         addBehaviour(new OneShotBehaviour(this) {
             @Override
             public void action() {
-                Platform.of(myAgent).register(ServiceDescription.of("book-selling", getLocalName()))
-                        .whenComplete((ok, e) -> System.out.println(getLocalName() + ": " + (e == null
+                PlatformServices platform = Receivers.platform(myAgent);
+                if (platform == null) {
+                    return; // a bare runtime: no DF to be found in
+                }
+                platform.register(ServiceDescription.of("book-selling", getLocalName()))
+                        .whenComplete((ok, e) -> say(getLocalName() + ": " + (e == null
                                 ? "selling; registered book-selling with the DF"
                                 : "could not register with the DF: " + e.getMessage())));
             }
@@ -55,7 +73,9 @@ public class BookSeller extends Agent {
                 int price = fixed != null ? fixed : random.nextInt(100);
                 reply.setPerformative(Performative.INFORM);
                 reply.setContent(Integer.toString(price));
-                System.out.println(getLocalName() + ": QUERY-REF from " + m.getSender().name() + ", answers $" + price);
+                if (prints) {
+                    say(getLocalName() + ": QUERY-REF from " + m.getSender().name() + ", answers $" + price);
+                }
             }
             case REQUEST -> {
                 int quantity;
@@ -65,8 +85,10 @@ public class BookSeller extends Agent {
                     quantity = 0;
                 }
                 reply.setPerformative(quantity >= 1 ? Performative.AGREE : Performative.REFUSE);
-                System.out.println(getLocalName() + ": order of " + m.getContent() + " from " + m.getSender().name()
-                        + ", " + reply.getPerformative().wireName());
+                if (prints) {
+                    say(getLocalName() + ": order of " + m.getContent() + " from " + m.getSender().name()
+                            + ", " + reply.getPerformative().wireName());
+                }
             }
             case FAILURE, NOT_UNDERSTOOD, AGREE, REFUSE, INFORM -> {
                 return; // answers to nothing it asked: never answered, or two agents would answer each other forever
@@ -77,5 +99,11 @@ public class BookSeller extends Agent {
             }
         }
         send(reply);
+    }
+
+    private void say(String line) {
+        if (prints) {
+            System.out.println(line);
+        }
     }
 }

@@ -4,6 +4,7 @@ import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.PlatformServices;
 
 import java.util.List;
 
@@ -32,6 +33,15 @@ final class Receivers {
             throw new IllegalArgumentException("an empty agent name");
         }
         return a.contains("@") ? new AID(a) : AID.local(a, self.platform());
+    }
+
+    /** The agent's platform services (its DF, its agent list), or null if it runs on a bare runtime, not a {@code Platform}. */
+    static PlatformServices platform(Agent self) {
+        try {
+            return Platform.of(self);
+        } catch (IllegalStateException notOnAPlatform) {
+            return null;
+        }
     }
 
     /**
