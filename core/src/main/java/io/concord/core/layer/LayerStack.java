@@ -212,6 +212,11 @@ public final class LayerStack {
         }
 
         @Override
+        public <T> T find(Class<T> type) {
+            return LayerStack.this.find(type);
+        }
+
+        @Override
         public StackHost host() {
             return host;
         }

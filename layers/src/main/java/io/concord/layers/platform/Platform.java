@@ -49,11 +49,9 @@ public final class Platform implements AutoCloseable {
         java.util.Set<io.concord.layers.Defence> off = b.off;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
-            io.concord.layers.observe.ObserverLayer observer = new io.concord.layers.observe.ObserverLayer();
-            l.add(observer);
+            l.add(new io.concord.layers.observe.ObserverLayer());
             l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get(), off));
             l.addAll(safety.get());
-            observer.stack(l);
             return l;
         };
     }
