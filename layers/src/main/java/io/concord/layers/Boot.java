@@ -6,6 +6,7 @@ import io.concord.core.agent.PortRange;
 import io.concord.core.net.Transport;
 import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.Role;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -150,11 +151,11 @@ public final class Boot {
             String[] last = {""};
             java.util.function.Consumer<ContainerLayer> print = l -> {
                 String now = l.role() + " " + l.containerName() + " " + l.agents().size() + " " + l.globalAgents().size();
-                if (!now.equals(last[0]) && l.role() != ContainerLayer.Role.SEEKING && l.containerName() != null) {
+                if (!now.equals(last[0]) && l.role() != Role.SEEKING && l.containerName() != null) {
                     last[0] = now;
                     int here = l.agents().size();
                     int elsewhere = l.globalAgents().size();
-                    out.println(aid.localName() + ": " + (l.role() == ContainerLayer.Role.CONTAINER
+                    out.println(aid.localName() + ": " + (l.role() == Role.CONTAINER
                             ? "I am the container (term " + l.term() + ")"
                             : "container is " + l.containerName() + " (term " + l.term() + ")")
                             + ", " + here + (here == 1 ? " agent" : " agents") + " here"

@@ -8,6 +8,7 @@ import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.Role;
 import io.concord.layers.security.IdentityStore;
 import io.concord.layers.security.PlatformKey;
 
@@ -177,7 +178,7 @@ public final class PlatformHarness {
     private static ContainerLayer single(List<ContainerLayer> layers, String exclude) {
         ContainerLayer found = null;
         for (ContainerLayer l : layers) {
-            if (l.role() == ContainerLayer.Role.CONTAINER && !l.selfEntry().name().equals(exclude)) {
+            if (l.role() == Role.CONTAINER && !l.selfEntry().name().equals(exclude)) {
                 if (found != null) {
                     return null;
                 }
@@ -189,7 +190,7 @@ public final class PlatformHarness {
 
     private static boolean allFollow(List<ContainerLayer> layers, ContainerLayer c) {
         for (ContainerLayer l : layers) {
-            if (l.role() == ContainerLayer.Role.SEEKING || !c.containerName().equals(l.containerName())) {
+            if (l.role() == Role.SEEKING || !c.containerName().equals(l.containerName())) {
                 return false;
             }
         }

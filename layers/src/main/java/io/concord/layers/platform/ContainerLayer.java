@@ -9,7 +9,6 @@ import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
 import io.concord.layers.frame.Frames;
-import io.concord.layers.parser.Membership;
 
 import java.util.ArrayList;
 import java.util.Collection;
@@ -50,15 +49,6 @@ import java.util.function.Consumer;
  * and counted ({@code foreign-platform}), as is a malformed one ({@code malformed-platform}).
  */
 public final class ContainerLayer extends Layer {
-    /** The agent's part in the platform. */
-    public enum Role { SEEKING, MEMBER, CONTAINER, STOPPED }
-
-    static final String ONTOLOGY = Membership.PLATFORM_ONTOLOGY;
-    static final String LANGUAGE = "concord-lines";
-    static final String P_DISCOVERY = "concord-discovery";
-    static final String P_LAL = "concord-lal";
-    static final String P_MAINTENANCE = "concord-maintenance";
-    static final String P_SERVICES = "concord-services";
     /** How long a message that only a container can carry waits for one to be elected. */
     static final long CONTAINER_WAIT_MS = 2_000;
     static final int MAX_WAITING = 256;
@@ -319,7 +309,7 @@ public final class ContainerLayer extends Layer {
         AID r = env.receiver();
         AclMessage m = env.message();
         return st.container == null && roles != null && roles.kind() != Role.STOPPED && m != null
-                && !ONTOLOGY.equals(m.getOntology()) && (!platform.equals(r.platform()) && relay.reaches(r)
+                && !Protocol.ONTOLOGY.equals(m.getOntology()) && (!platform.equals(r.platform()) && relay.reaches(r)
                 || r.name().equals(amsName) || r.name().equals(dfName));
     }
 
@@ -330,7 +320,7 @@ public final class ContainerLayer extends Layer {
     private void refuse(Envelope env, String reason, String why, String failure) {
         layerContext.drop(env, reason, why);
         AclMessage m = env.message();
-        if (failure != null && m != null && !ONTOLOGY.equals(m.getOntology())) {
+        if (failure != null && m != null && !Protocol.ONTOLOGY.equals(m.getOntology())) {
             layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, env.receiver(), failure),
                     selfAid, null));
         }
@@ -349,7 +339,7 @@ public final class ContainerLayer extends Layer {
         AID r = env.receiver();
         AID via = env.header(Frames.ENVELOPE_VIA);
         if (relay != null && relay.present() && r != null && via != null && env.message() != null
-                && !ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
+                && !Protocol.ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
             ctx.passDown(Envelope.outgoing(relay.wrap(env.message(), r, via), via, env.destination()));
             return;
         }
@@ -359,7 +349,7 @@ public final class ContainerLayer extends Layer {
     /** Platform and service messages are this layer's own: they take the stacks. */
     @Override
     public boolean mayHandOver(AclMessage m) {
-        return !ONTOLOGY.equals(m.getOntology()) && !addressedToService(m);
+        return !Protocol.ONTOLOGY.equals(m.getOntology()) && !addressedToService(m);
     }
 
     // ---- up ---------------------------------------------------------------------------------------
@@ -368,7 +358,7 @@ public final class ContainerLayer extends Layer {
     public void onUp(LayerContext ctx, Envelope env) {
         AclMessage m = env.message();
         boolean forService = addressedToService(m);
-        boolean platformMessage = !forService && ONTOLOGY.equals(m.getOntology());
+        boolean platformMessage = !forService && Protocol.ONTOLOGY.equals(m.getOntology());
         if (!platformMessage && !forService) {
             if (roles == null || roles.kind() == Role.STOPPED) {
                 ctx.passUp(env);

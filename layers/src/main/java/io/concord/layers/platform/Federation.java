@@ -25,7 +25,6 @@ import java.util.TreeMap;
  * its new container, whose announcement replaces the old one.
  */
 final class Federation implements PlatformMessage.Handler {
-    static final String P_NETWORK = "concord-network";
     /**
      * Other hosts' containers known at most. Announcements name hosts second hand, and anyone with
      * the platform key can announce: a new one past the limit takes the place of one never
@@ -189,7 +188,7 @@ final class Federation implements PlatformMessage.Handler {
             to.add(f.entry.aid());
         }
         for (AID a : to) {
-            layer.send(Performative.INFORM, P_NETWORK, a, content);
+            layer.send(Performative.INFORM, Protocol.P_NETWORK, a, content);
         }
         // Lists not yet confirmed go again: distribution heals itself under loss.
         for (Facilitator f : fal.values()) {
@@ -268,7 +267,7 @@ final class Federation implements PlatformMessage.Handler {
     private void sendLal(Facilitator f) {
         List<String> pages = agent.lalPages();
         for (int i = 0; i < pages.size(); i++) {
-            layer.send(Performative.INFORM_REF, P_NETWORK, f.entry.aid(), new PlatformMessage.GalUpdate(f.secret, agent.term(),
+            layer.send(Performative.INFORM_REF, Protocol.P_NETWORK, f.entry.aid(), new PlatformMessage.GalUpdate(f.secret, agent.term(),
                     agent.lalSequence(), PlatformMessage.Page.of(i, pages.size(), pages.get(i))));
         }
     }
@@ -356,7 +355,7 @@ final class Federation implements PlatformMessage.Handler {
 
     /** Asks a facilitator with a smaller name, which opens contacts, to open one with us. */
     private void askForContact(AgentEntry e) {
-        layer.send(Performative.REQUEST, P_NETWORK, e.aid(), new PlatformMessage.ContactMe(agent.term(), ownHost(), layer.selfEntry()));
+        layer.send(Performative.REQUEST, Protocol.P_NETWORK, e.aid(), new PlatformMessage.ContactMe(agent.term(), ownHost(), layer.selfEntry()));
     }
 
     /** A new container for a host replaces the old one: no stale container lingers. */
@@ -385,7 +384,7 @@ final class Federation implements PlatformMessage.Handler {
             f.secret = HexFormat.of().formatHex(s);
         }
         f.contactAttempts++;
-        layer.send(Performative.REQUEST, P_NETWORK, f.entry.aid(),
+        layer.send(Performative.REQUEST, Protocol.P_NETWORK, f.entry.aid(),
                 new PlatformMessage.WhoIsFacilitator(f.secret, agent.term(), ownHost(), layer.selfEntry()));
         f.contactTimer = layer.after(Math.max(50, config.announcePeriodMs() / 2), () -> {
             f.contactTimer = -1;
@@ -463,7 +462,7 @@ final class Federation implements PlatformMessage.Handler {
         if (layer.selfEntry().name().compareTo(f.entry.name()) < 0) {
             contact(f);
         } else {
-            layer.send(Performative.INFORM, P_NETWORK, f.entry.aid(),
+            layer.send(Performative.INFORM, Protocol.P_NETWORK, f.entry.aid(),
                     new PlatformMessage.Announce(agent.term(), ownHost(), agent.lalSequence(), layer.selfEntry(), List.of()));
         }
     }

@@ -39,7 +39,7 @@ abstract class Follower extends RoleBase {
             st.seq = -1;
         } else if (p.seq() <= st.seq) {
             // Already held: confirm again (our confirmation may have been lost).
-            ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(),
+            ctx.send(Performative.CONFIRM, Protocol.P_LAL, m.getSender(),
                     new PlatformMessage.Held(false, st.term, st.seq, null, null));
             resetWatch();
             return;
@@ -74,7 +74,7 @@ abstract class Follower extends RoleBase {
         } else {
             st.selfEntry = mine;
         }
-        ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
+        ctx.send(Performative.CONFIRM, Protocol.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
         roles.publish();
     }
 
@@ -107,7 +107,7 @@ abstract class Follower extends RoleBase {
         } else {
             st.selfEntry = mine;
         }
-        ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
+        ctx.send(Performative.CONFIRM, Protocol.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
         roles.publish();
     }
 
@@ -131,7 +131,7 @@ abstract class Follower extends RoleBase {
         st.timeoutMs = a.timeout();
         resetWatch();
         AgentLists l = st.lists;
-        ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, m.getSender(),
+        ctx.send(Performative.CONFIRM, Protocol.P_MAINTENANCE, m.getSender(),
                 new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
     }
 

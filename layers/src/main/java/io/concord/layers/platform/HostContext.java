@@ -11,8 +11,8 @@ import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
 import io.concord.layers.frame.Frames;
 
-import static io.concord.layers.platform.ContainerLayer.LANGUAGE;
-import static io.concord.layers.platform.ContainerLayer.ONTOLOGY;
+import static io.concord.layers.platform.Protocol.LANGUAGE;
+import static io.concord.layers.platform.Protocol.ONTOLOGY;
 
 /** The container layer's {@link PlatformContext}: its node's services, narrowed to what the platform uses. */
 final class HostContext implements PlatformContext {

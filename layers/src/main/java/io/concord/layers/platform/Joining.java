@@ -57,7 +57,7 @@ final class Joining {
 
     private void send() {
         timer = ctx.cancel(timer);
-        ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, target.aid(), new PlatformMessage.Join(claimTerm, st.selfEntry));
+        ctx.send(Performative.INFORM_REF, Protocol.P_LAL, target.aid(), new PlatformMessage.Join(claimTerm, st.selfEntry));
         // Backing off: the first join to a container may wait for a signed handshake on a cold JVM.
         timer = ctx.after(ctx.config().joinRetryMs() << Math.min(failures, 4), this::onTimeout);
     }

@@ -24,7 +24,7 @@ public final class PlatformServices {
 
     /** True if this agent is its host's container now. */
     public boolean isContainer() {
-        return layer.role() == ContainerLayer.Role.CONTAINER;
+        return layer.role() == Role.CONTAINER;
     }
 
     /** The container's name, or {@code null} while none is known. */

@@ -54,7 +54,7 @@ final class Roles implements Federation.Host {
         return current;
     }
 
-    ContainerLayer.Role kind() {
+    Role kind() {
         return current.kind();
     }
 
@@ -118,7 +118,7 @@ final class Roles implements Federation.Host {
         PlatformMessage claim = new PlatformMessage.ContainerIs(t, better, st.selfEntry);
         for (AgentEntry e : st.lists.lal.values()) {
             if (!e.name().equals(ctx.self()) && !e.name().equals(better.name())) {
-                ctx.send(Performative.INFORM, ContainerLayer.P_DISCOVERY, e.aid(), claim);
+                ctx.send(Performative.INFORM, Protocol.P_DISCOVERY, e.aid(), claim);
             }
         }
         join.start(better, t);
@@ -126,7 +126,7 @@ final class Roles implements Federation.Host {
 
     void becomeMember(AgentEntry by, long t, long period, long timeout) {
         boolean sameContainer = st.container != null && st.container.name().equals(by.name()) && st.term == t;
-        boolean changed = current.kind() != ContainerLayer.Role.MEMBER || !sameContainer;
+        boolean changed = current.kind() != Role.MEMBER || !sameContainer;
         if (federation != null) {
             federation.stop();
         }
@@ -185,7 +185,7 @@ final class Roles implements Federation.Host {
             st.lalCopyFrom = anyone ? null : pick.name();
             st.lalCopyAt = anyone ? Address.parse(pick.addresses().get(0)) : null;
             st.lalCopyUntilNs = ctx.nowNs() + 2_000_000_000L;
-            ctx.send(Performative.REQUEST, ContainerLayer.P_LAL, pick, new PlatformMessage.LalRequest(st.term, st.selfEntry));
+            ctx.send(Performative.REQUEST, Protocol.P_LAL, pick, new PlatformMessage.LalRequest(st.term, st.selfEntry));
         }
         MemberRole m = become(new MemberRole(this));
         st.container = null;
@@ -200,7 +200,7 @@ final class Roles implements Federation.Host {
 
     /** The agent stops: it says so (a container to every member, a member to its container). */
     void stop() {
-        ContainerLayer.Role was = current.kind();
+        Role was = current.kind();
         current.leave();
         join.stop();
         if (federation != null) {
@@ -210,14 +210,14 @@ final class Roles implements Federation.Host {
             relay.stopGateway();
         }
         PlatformMessage leave = new PlatformMessage.Leave(st.term);
-        if (was == ContainerLayer.Role.CONTAINER) {
+        if (was == Role.CONTAINER) {
             for (AgentEntry e : st.lists.lal.values()) {
                 if (!e.name().equals(ctx.self())) {
-                    ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), leave);
+                    ctx.send(Performative.INFORM, Protocol.P_MAINTENANCE, e.aid(), leave);
                 }
             }
-        } else if (was == ContainerLayer.Role.MEMBER && st.container != null && !st.container.name().equals(ctx.self())) {
-            ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, st.container.aid(), leave);
+        } else if (was == Role.MEMBER && st.container != null && !st.container.name().equals(ctx.self())) {
+            ctx.send(Performative.INFORM, Protocol.P_MAINTENANCE, st.container.aid(), leave);
         }
         current = new Stopped(this);
     }
@@ -298,7 +298,7 @@ final class Roles implements Federation.Host {
         }
         verified.put(claimed.name(), now);
         ctx.trace("verify-claim", claimed.name());
-        ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, claimed.aid(),
+        ctx.send(Performative.QUERY_REF, Protocol.P_DISCOVERY, claimed.aid(),
                 new PlatformMessage.WhoIsContainer(st.round, st.selfEntry));
     }
 
@@ -332,8 +332,8 @@ final class Roles implements Federation.Host {
         }
 
         @Override
-        ContainerLayer.Role kind() {
-            return ContainerLayer.Role.STOPPED;
+        Role kind() {
+            return Role.STOPPED;
         }
 
         @Override

@@ -27,8 +27,8 @@ final class SeekingRole extends Follower {
     }
 
     @Override
-    ContainerLayer.Role kind() {
-        return ContainerLayer.Role.SEEKING;
+    Role kind() {
+        return Role.SEEKING;
     }
 
     /** Starts a round of discovery. */
@@ -55,7 +55,7 @@ final class SeekingRole extends Follower {
         open.sort(java.util.Comparator.comparingInt(a -> Math.abs(a.port() - own)));
         for (Address a : open.subList(0, Math.min(open.size(), batch()))) {
             sentTo.add(a);
-            ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, ctx.anyAt(a), ask);
+            ctx.send(Performative.QUERY_REF, Protocol.P_DISCOVERY, ctx.anyAt(a), ask);
         }
         discoveryTimer = cancel(discoveryTimer);
         discoveryTimer = after(ctx.config().discoveryTimeoutMs() << Math.min(attempt - 1, 4), this::onDiscoveryTimeout);

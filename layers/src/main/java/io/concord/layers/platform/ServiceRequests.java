@@ -48,12 +48,12 @@ final class ServiceRequests {
     }
 
     private boolean containerKnown() {
-        return roles.kind() != ContainerLayer.Role.SEEKING && roles.st.container != null;
+        return roles.kind() != Role.SEEKING && roles.st.container != null;
     }
 
     CompletableFuture<AclMessage> request(boolean df, Performative p, String content) {
         Request r = new Request(df, p, content, ctx.self() + "-p" + (++counter));
-        if (roles.kind() == ContainerLayer.Role.STOPPED) {
+        if (roles.kind() == Role.STOPPED) {
             r.future.completeExceptionally(new IllegalStateException("the agent has stopped"));
             return r.future;
         }
@@ -68,7 +68,7 @@ final class ServiceRequests {
 
     private void send(Request r) {
         r.attempts++;
-        AclMessage m = ctx.message(r.act, ContainerLayer.P_SERVICES, io.concord.core.acl.AID.local(r.df ? "df" : "ams", ctx.platform()),
+        AclMessage m = ctx.message(r.act, Protocol.P_SERVICES, io.concord.core.acl.AID.local(r.df ? "df" : "ams", ctx.platform()),
                 r.content);
         m.setReplyWith(r.replyWith);
         PlatformState st = roles.st;

@@ -40,7 +40,7 @@ class CoLocatedTest {
 
     /** One container, followed by all, listing exactly {@code n} agents in every copy. */
     private static boolean agreed(List<ContainerLayer> layers, int n) {
-        List<ContainerLayer> containers = layers.stream().filter(l -> l.role() == ContainerLayer.Role.CONTAINER).toList();
+        List<ContainerLayer> containers = layers.stream().filter(l -> l.role() == Role.CONTAINER).toList();
         if (containers.size() != 1) {
             return false;
         }

@@ -101,9 +101,9 @@ class InsiderClaimTest {
                 m.execute(() -> {
                     for (AID t : targets) {
                         AclMessage claim = new AclMessage(Performative.INFORM).addReceiver(t);
-                        claim.setOntology(ContainerLayer.ONTOLOGY);
-                        claim.setLanguage(ContainerLayer.LANGUAGE);
-                        claim.setProtocol(ContainerLayer.P_DISCOVERY);
+                        claim.setOntology(Protocol.ONTOLOGY);
+                        claim.setLanguage(Protocol.LANGUAGE);
+                        claim.setProtocol(Protocol.P_DISCOVERY);
                         claim.setContent(new PlatformMessage.ContainerIs(term + 1_000, claimant, claimant).encode());
                         x.send(claim);
                     }

@@ -89,7 +89,7 @@ final class NetworkWorld implements AutoCloseable {
     String container(String host) {
         String found = null;
         for (String n : live.get(host).keySet()) {
-            if (layer(host, n).role() == ContainerLayer.Role.CONTAINER) {
+            if (layer(host, n).role() == Role.CONTAINER) {
                 if (found != null) {
                     return null;
                 }

@@ -96,7 +96,7 @@ final class PlatformWorld implements AutoCloseable {
         List<String> out = new ArrayList<>();
         for (String n : live.keySet()) {
             ContainerLayer c = layer(n);
-            if (c != null && c.role() == ContainerLayer.Role.CONTAINER) {
+            if (c != null && c.role() == Role.CONTAINER) {
                 out.add(n);
             }
         }

@@ -93,7 +93,7 @@ class RegistrationFlapTest {
             Platform p1 = platform(rt1);
             Platform p2 = platform(rt2);
             AID boss = p1.startAgent("boss", new PlatformWorld.Idle());
-            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == ContainerLayer.Role.CONTAINER, 5_000));
+            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == Role.CONTAINER, 5_000));
             ApiSeller apiSeller = new ApiSeller();
             AID api = p2.startAgent("api-seller", apiSeller);
             p2.startAgent("acl-seller", new AclSeller());
@@ -129,7 +129,7 @@ class RegistrationFlapTest {
             Platform p1 = platform(rt1);
             Platform p2 = platform(rt2);
             AID boss = p1.startAgent("boss", new PlatformWorld.Idle());
-            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == ContainerLayer.Role.CONTAINER, 5_000));
+            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == Role.CONTAINER, 5_000));
             AID api = p2.startAgent("api-seller", new PlatformWorld.Idle());
             assertTrue(sim.runUntil(() -> listed(rt1, boss, "api-seller"), 10_000));
             // The container forgets the agent (as in a flap), and the agent registers at that moment.

@@ -174,7 +174,7 @@ class SlowNotDeadTest {
     private static String containerOf(Map<AID, AgentRuntime> agents) {
         for (AID a : agents.keySet()) {
             ContainerLayer l = layer(agents, a);
-            if (l != null && l.role() == ContainerLayer.Role.CONTAINER) {
+            if (l != null && l.role() == Role.CONTAINER) {
                 return a.name();
             }
         }
@@ -191,7 +191,7 @@ class SlowNotDeadTest {
             if (l == null) {
                 return false;
             }
-            if (l.role() == ContainerLayer.Role.CONTAINER) {
+            if (l.role() == Role.CONTAINER) {
                 if (c != null) {
                     return false;
                 }
