@@ -1,7 +1,7 @@
 package io.concord.console;
 
 import io.concord.core.acl.AID;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;

@@ -10,7 +10,7 @@ import io.concord.core.agent.TickerBehaviour;
 import io.concord.layers.observe.ObserverLayer;
 import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import com.fasterxml.jackson.databind.JsonNode;

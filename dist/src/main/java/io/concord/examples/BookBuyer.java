@@ -7,7 +7,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.Agent;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;

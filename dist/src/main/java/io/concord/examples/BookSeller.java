@@ -6,7 +6,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.Inbox;
 import io.concord.core.agent.OneShotBehaviour;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.SplittableRandom;

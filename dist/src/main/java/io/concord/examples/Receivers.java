@@ -3,7 +3,7 @@ package io.concord.examples;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 
 import java.util.List;
 

@@ -3,7 +3,7 @@ package io.concord.jade;
 import io.concord.core.acl.AID;
 import io.concord.layers.Boot;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.Role;
 import org.junit.jupiter.api.Test;
 

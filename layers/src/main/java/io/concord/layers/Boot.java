@@ -5,7 +5,6 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.PortRange;
 import io.concord.core.net.Transport;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.Role;
 
 import java.io.IOException;
@@ -334,8 +333,8 @@ public final class Boot {
                                                                                             Map<String, String> settings) {
         String h = hostPort[0];
         int port = Integer.parseInt(hostPort[1]);
-        io.concord.layers.platform.GatewayProvider http = null;
-        for (io.concord.layers.platform.GatewayProvider g : java.util.ServiceLoader.load(io.concord.layers.platform.GatewayProvider.class)) {
+        io.concord.layers.GatewayProvider http = null;
+        for (io.concord.layers.GatewayProvider g : java.util.ServiceLoader.load(io.concord.layers.GatewayProvider.class)) {
             if (g.kind().equals("http")) {
                 http = g;
             }
@@ -343,7 +342,7 @@ public final class Boot {
         if (http == null) {
             throw new BootException("-http needs the JADE bridge: add concord-jade-bridge to the class path");
         }
-        io.concord.layers.platform.GatewayProvider provider = http;
+        io.concord.layers.GatewayProvider provider = http;
         String fh = h;
         int fp = port;
         Map<String, String> own = new java.util.HashMap<>();

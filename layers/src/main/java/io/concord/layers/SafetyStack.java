@@ -1,5 +1,6 @@
 package io.concord.layers;
 
+import io.concord.layers.defence.Defence;
 import io.concord.core.layer.Layer;
 import io.concord.core.net.Address;
 import io.concord.core.net.Transport;

@@ -4,7 +4,7 @@ import io.concord.agents.control.ControlAgent;
 import io.concord.agents.door.DoorAgent;
 import io.concord.agents.plan.PlannerAgent;
 import io.concord.agents.traffic.TrafficAgent;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
 import io.concord.sim.world.WorldDoor;

@@ -17,7 +17,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.Inbox;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;

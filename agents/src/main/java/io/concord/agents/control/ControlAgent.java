@@ -26,7 +26,7 @@ import io.concord.core.agent.Agent;
 import io.concord.core.proto.ContractNetResponder;
 import io.concord.core.proto.FipaProtocols;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;

@@ -11,7 +11,7 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.proto.RefuseException;
 import io.concord.core.proto.SubscriptionResponder;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayDeque;

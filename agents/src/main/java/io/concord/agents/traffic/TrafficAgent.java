@@ -10,7 +10,7 @@ import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.TickerBehaviour;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;

@@ -9,7 +9,7 @@ import io.concord.core.agent.PortRange;
 import io.concord.jade.HttpMtp;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.security.IdentityStore;
 
 /**

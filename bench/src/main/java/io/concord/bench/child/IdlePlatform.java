@@ -3,7 +3,7 @@ package io.concord.bench.child;
 import io.concord.core.acl.AID;
 import io.concord.layers.Boot;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 
 import java.io.PrintStream;
 import java.io.OutputStream;

@@ -7,7 +7,7 @@ import io.concord.core.agent.PortRange;
 import io.concord.core.layer.Tracer;
 import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.io.BufferedReader;
@@ -59,9 +59,9 @@ public final class LoadChild {
         };
         AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).tracer(tracer).build();
         // A 7th argument names defences to build the stacks without (a comparison run: PORT_CHECK).
-        io.concord.layers.Defence[] off = args.length > 6 && !args[6].isEmpty()
-                ? java.util.Arrays.stream(args[6].split(",")).map(io.concord.layers.Defence::valueOf).toArray(io.concord.layers.Defence[]::new)
-                : new io.concord.layers.Defence[0];
+        io.concord.layers.defence.Defence[] off = args.length > 6 && !args[6].isEmpty()
+                ? java.util.Arrays.stream(args[6].split(",")).map(io.concord.layers.defence.Defence::valueOf).toArray(io.concord.layers.defence.Defence[]::new)
+                : new io.concord.layers.defence.Defence[0];
         Platform p = Platform.builder().name(name).runtime(rt).ports(PortRange.of(first, last)).withoutDefences(off).build();
         rt.start();
         AID[] aids = new AID[n];

@@ -7,7 +7,7 @@ import io.concord.console.Console;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 
 import java.io.InputStream;
 import java.net.URI;

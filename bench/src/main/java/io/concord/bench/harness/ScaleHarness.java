@@ -10,7 +10,7 @@ import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.platform.NetworkConfig;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.PlatformConfig;
 import io.concord.layers.security.PlatformKey;
 

@@ -8,7 +8,7 @@ import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Pose;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.Board;
 import io.concord.serial.BoardProtocol;
 import io.concord.serial.Frame;

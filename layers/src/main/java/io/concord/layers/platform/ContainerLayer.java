@@ -92,14 +92,14 @@ public final class ContainerLayer extends Layer {
 
     /**
      * ... without some defences: only for the threat tests, which show the threat reaching an
-     * agent without its defence ({@link io.concord.layers.Defence#CLAIM_CHECK}).
+     * agent without its defence ({@link io.concord.layers.defence.Defence#CLAIM_CHECK}).
      */
-    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, java.util.Set<io.concord.layers.Defence> off) {
+    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, java.util.Set<io.concord.layers.defence.Defence> off) {
         this.config = config;
         this.network = network;
         this.gateway = gateway;
-        st.claimCheck = !off.contains(io.concord.layers.Defence.CLAIM_CHECK);
-        st.portCheck = !off.contains(io.concord.layers.Defence.PORT_CHECK);
+        st.claimCheck = !off.contains(io.concord.layers.defence.Defence.CLAIM_CHECK);
+        st.portCheck = !off.contains(io.concord.layers.defence.Defence.PORT_CHECK);
     }
 
     public ContainerLayer() {
@@ -503,11 +503,20 @@ public final class ContainerLayer extends Layer {
     }
 
     /**
+     * Asks the platform's DF itself (not this agent's copy of the lists) for the agents whose
+     * services match the template; the future completes with the entries it answered. Loop thread
+     * only.
+     */
+    public CompletableFuture<List<AgentEntry>> searchAtDf(ServiceDescription template) {
+        return request(true, Performative.REQUEST, ServiceRequests.searchContent(template)).thenApply(ServiceRequests::entries);
+    }
+
+    /**
      * The agent's own registration: these services added to ({@code add}) or in place of those it
      * asked for before. It sends them again whenever its container does not hold them (a flap, a
      * failover, a refusal); the future completes once the DF took them. Loop thread only.
      */
-    CompletableFuture<Void> registerServices(List<ServiceDescription> services, boolean add) {
+    public CompletableFuture<Void> registerServices(List<ServiceDescription> services, boolean add) {
         if (registrations == null) {
             return CompletableFuture.failedFuture(new IllegalStateException("the agent has not started"));
         }

@@ -12,9 +12,9 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeoutException;
 
 /**
- * Requests of the Java API ({@link PlatformServices}) to this platform's DF or AMS: held until the
- * agent knows its container, sent again on timeout (every request is idempotent), and completed
- * with the reply.
+ * Requests of the Java API ({@code PlatformServices}, above this package) to this platform's DF
+ * or AMS: held until the agent knows its container, sent again on timeout (every request is
+ * idempotent), and completed with the reply.
  */
 final class ServiceRequests {
     private static final int ATTEMPTS = 4;
@@ -64,6 +64,21 @@ final class ServiceRequests {
             waitingForContainer.add(r);
         }
         return r.future;
+    }
+
+    /** The content of a DF search for the agents whose services match the template. */
+    static String searchContent(ServiceDescription template) {
+        StringBuilder b = new StringBuilder();
+        Lines.appendService(b, template);
+        return Lines.content("search", Lines.params("template", b.toString()), List.of());
+    }
+
+    /** The entries of the DF's answer to a search; its refusal, as an exception. */
+    static List<AgentEntry> entries(AclMessage reply) {
+        if (reply.getPerformative() != Performative.INFORM) {
+            throw new IllegalStateException("the DF answered " + reply.getPerformative().wireName() + ": " + reply.getContent());
+        }
+        return Lines.parse(reply.getContent()).entries();
     }
 
     private void send(Request r) {

@@ -215,10 +215,10 @@ public final class SecurityLayer extends Layer {
      * A security layer with some defences off: only for the threat tests, through
      * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
      */
-    public SecurityLayer(Config config, java.util.Set<io.concord.layers.Defence> off) {
+    public SecurityLayer(Config config, java.util.Set<io.concord.layers.defence.Defence> off) {
         this.config = config;
-        this.hmacTag = !off.contains(io.concord.layers.Defence.HMAC_TAG);
-        this.safetyCode = !off.contains(io.concord.layers.Defence.SAFETY_CODE);
+        this.hmacTag = !off.contains(io.concord.layers.defence.Defence.HMAC_TAG);
+        this.safetyCode = !off.contains(io.concord.layers.defence.Defence.SAFETY_CODE);
     }
 
     @Override

@@ -156,12 +156,12 @@ public final class SequenceLayer extends Layer {
      * A sequence layer with some defences off: only for the threat tests, through
      * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
      */
-    public SequenceLayer(Config config, java.util.Set<io.concord.layers.Defence> off) {
-        this.sequenceWindow = !off.contains(io.concord.layers.Defence.SEQUENCE_WINDOW);
-        this.retransmission = !off.contains(io.concord.layers.Defence.RETRANSMISSION);
-        this.reorderBuffer = !off.contains(io.concord.layers.Defence.REORDER_BUFFER);
-        this.flowControl = !off.contains(io.concord.layers.Defence.FLOW_CONTROL);
-        this.sessionProof = !off.contains(io.concord.layers.Defence.SESSION_PROOF);
+    public SequenceLayer(Config config, java.util.Set<io.concord.layers.defence.Defence> off) {
+        this.sequenceWindow = !off.contains(io.concord.layers.defence.Defence.SEQUENCE_WINDOW);
+        this.retransmission = !off.contains(io.concord.layers.defence.Defence.RETRANSMISSION);
+        this.reorderBuffer = !off.contains(io.concord.layers.defence.Defence.REORDER_BUFFER);
+        this.flowControl = !off.contains(io.concord.layers.defence.Defence.FLOW_CONTROL);
+        this.sessionProof = !off.contains(io.concord.layers.defence.Defence.SESSION_PROOF);
         this.config = config;
         // A receiver with frames held for it is never forgotten: they would be lost, and the agent
         // stay paused.

@@ -63,8 +63,8 @@ public final class TemporalLayer extends Layer {
      * A temporal layer with some defences off: only for the threat tests, through
      * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
      */
-    public TemporalLayer(Config config, PlatformClock clock, java.util.Set<io.concord.layers.Defence> off) {
-        this.acceptanceWindow = !off.contains(io.concord.layers.Defence.ACCEPTANCE_WINDOW);
+    public TemporalLayer(Config config, PlatformClock clock, java.util.Set<io.concord.layers.defence.Defence> off) {
+        this.acceptanceWindow = !off.contains(io.concord.layers.defence.Defence.ACCEPTANCE_WINDOW);
         this.config = config;
         this.clock = clock;
     }

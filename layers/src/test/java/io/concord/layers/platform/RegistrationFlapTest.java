@@ -1,5 +1,7 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
+import io.concord.layers.PlatformServices;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -71,7 +73,7 @@ class RegistrationFlapTest {
      * happens across hosts, or to a process hung past the bound.
      */
     private static Platform platform(AgentRuntime rt) {
-        return Platform.builder().runtime(rt).ports(new PortRange(7001, 50, 10)).withoutDefences(io.concord.layers.Defence.PORT_CHECK)
+        return Platform.builder().runtime(rt).ports(new PortRange(7001, 50, 10)).withoutDefences(io.concord.layers.defence.Defence.PORT_CHECK)
                 .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).network(null).build();
     }
 

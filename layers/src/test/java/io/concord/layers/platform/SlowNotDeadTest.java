@@ -1,12 +1,13 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
-import io.concord.layers.Defence;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.security.PlatformKey;

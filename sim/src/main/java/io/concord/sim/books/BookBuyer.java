@@ -6,7 +6,7 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.proto.Conversations;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.Comparator;

@@ -8,7 +8,7 @@ import io.concord.core.proto.ContractNetResponder;
 import io.concord.core.proto.FailureException;
 import io.concord.core.proto.FipaProtocols;
 import io.concord.core.proto.RefuseException;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 /**
