@@ -2,8 +2,8 @@ package io.concord.examples;
 
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
-import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.Platform;
+import io.concord.layers.platform.AgentEntry;
 
 import java.util.List;
 

@@ -1,15 +1,14 @@
 package io.concord.bench.child;
 
 import io.concord.bench.Platforms;
-import io.concord.bench.jmh.HttpBenchmark;
-
 import io.concord.bench.jade.JadeHttpEcho;
 import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.jmh.HttpBenchmark;
 import io.concord.core.agent.PortRange;
 import io.concord.jade.HttpMtp;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.Platform;
 import io.concord.layers.security.IdentityStore;
 
 /**

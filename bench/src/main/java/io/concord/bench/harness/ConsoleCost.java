@@ -6,8 +6,8 @@ import io.concord.bench.concord.ConcordChainLink;
 import io.concord.console.Console;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.PortRange;
-import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.Platform;
+import io.concord.layers.platform.ContainerLayer;
 
 import java.io.InputStream;
 import java.net.URI;

@@ -8,11 +8,15 @@ import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
+import io.concord.core.net.Neighbourhood;
+import io.concord.core.proto.MtsFailure;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
 
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
 
@@ -87,19 +91,19 @@ public final class ContainerLayer extends Layer {
 
     /** ... and reaches foreign platforms through a gateway (the JADE bridge), or none if {@code null}. */
     public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway) {
-        this(config, network, gateway, java.util.Set.of());
+        this(config, network, gateway, Set.of());
     }
 
     /**
      * ... without some defences: only for the threat tests, which show the threat reaching an
-     * agent without its defence ({@link io.concord.layers.defence.Defence#CLAIM_CHECK}).
+     * agent without its defence ({@link Defence#CLAIM_CHECK}).
      */
-    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, java.util.Set<io.concord.layers.defence.Defence> off) {
+    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, Set<Defence> off) {
         this.config = config;
         this.network = network;
         this.gateway = gateway;
-        st.claimCheck = !off.contains(io.concord.layers.defence.Defence.CLAIM_CHECK);
-        st.portCheck = !off.contains(io.concord.layers.defence.Defence.PORT_CHECK);
+        st.claimCheck = !off.contains(Defence.CLAIM_CHECK);
+        st.portCheck = !off.contains(Defence.PORT_CHECK);
     }
 
     public ContainerLayer() {
@@ -210,7 +214,7 @@ public final class ContainerLayer extends Layer {
         context = new HostContext(host, layerContext, config, st, platform, selfAid, this::place);
         relay = new GatewayRelay(context, st, gateway, this::role, m -> layerContext.passUp(Envelope.outgoing(m, selfAid, null)),
                 host::execute);
-        io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
+        Neighbourhood around = host.capability(Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();
         gate = new MembershipGate(context, layerContext, st.lists, self);
         forContainer = new WaitRoom(context, CONTAINER_WAIT_MS, MAX_WAITING, (h, why) -> refuse(h.env(),
@@ -321,7 +325,7 @@ public final class ContainerLayer extends Layer {
         layerContext.drop(env, reason, why);
         AclMessage m = env.message();
         if (failure != null && m != null && !Protocol.ONTOLOGY.equals(m.getOntology())) {
-            layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, env.receiver(), failure),
+            layerContext.passUp(Envelope.outgoing(MtsFailure.of(platform, m, env.receiver(), failure),
                     selfAid, null));
         }
     }

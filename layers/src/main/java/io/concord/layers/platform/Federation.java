@@ -5,8 +5,11 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
+import io.concord.core.net.Neighbourhood;
 
+import java.security.SecureRandom;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.HexFormat;
 import java.util.List;
@@ -71,7 +74,7 @@ final class Federation implements PlatformMessage.Handler {
 
     private final PlatformContext layer;
     private final Host agent;
-    private final io.concord.core.net.Neighbourhood around;
+    private final Neighbourhood around;
     private final NetworkConfig config;
     private final Map<String, Facilitator> fal = new TreeMap<>();
     private Endpoint listener;
@@ -93,7 +96,7 @@ final class Federation implements PlatformMessage.Handler {
     private boolean running;
 
     /** @param around the node's neighbourhood: its shared listener and broadcast addresses ({@code null}: none) */
-    Federation(PlatformContext ctx, NetworkConfig config, io.concord.core.net.Neighbourhood around, Host agent) {
+    Federation(PlatformContext ctx, NetworkConfig config, Neighbourhood around, Host agent) {
         this.layer = ctx;
         this.config = config;
         this.around = around;
@@ -248,7 +251,7 @@ final class Federation implements PlatformMessage.Handler {
                 }
             }
         }
-        out.sort(java.util.Comparator.comparing(AgentEntry::name));
+        out.sort(Comparator.comparing(AgentEntry::name));
         return out;
     }
 
@@ -379,7 +382,7 @@ final class Federation implements PlatformMessage.Handler {
     private void contact(Facilitator f) {
         if (f.secret == null) {
             byte[] s = new byte[16];
-            java.security.SecureRandom r = new java.security.SecureRandom();
+            SecureRandom r = new SecureRandom();
             r.nextBytes(s);
             f.secret = HexFormat.of().formatHex(s);
         }

@@ -1,7 +1,9 @@
 package io.concord.layers.platform;
 
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.core.net.Address;
 
 import java.util.List;
 
@@ -152,7 +154,7 @@ abstract class Follower extends RoleBase {
     }
 
     /** True if this agent asked that agent for a copy of its LAL, lately. */
-    private boolean asked(io.concord.core.acl.AID sender) {
+    private boolean asked(AID sender) {
         if (ctx.nowNs() - st.lalCopyUntilNs > 0) {
             return false;
         }
@@ -163,7 +165,7 @@ abstract class Follower extends RoleBase {
             return false;
         }
         for (String uri : sender.addresses()) {
-            if (st.lalCopyAt.equals(io.concord.core.net.Address.parse(uri))) {
+            if (st.lalCopyAt.equals(Address.parse(uri))) {
                 return true;
             }
         }

@@ -5,6 +5,7 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
+import io.concord.core.net.Channels;
 import io.concord.core.proto.MtsFailure;
 
 import java.util.List;
@@ -138,7 +139,7 @@ final class GatewayRelay implements PlatformMessage.Handler {
         }
 
         @Override
-        public io.concord.core.net.Channels channels() {
+        public Channels channels() {
             return ctx.channels();
         }
 

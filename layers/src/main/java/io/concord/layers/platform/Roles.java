@@ -4,9 +4,14 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
+import io.concord.core.net.Neighbourhood;
+import io.concord.layers.frame.Frames;
 
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Holds an agent's current role and swaps it: each transition of the dissertation's figures is one
@@ -31,14 +36,14 @@ final class Roles implements Federation.Host {
      */
     private final Runnable listsChanged;
     /** When this agent last asked each claimed container itself whether it is (bounded). */
-    private final java.util.Map<String, Long> verified = new java.util.LinkedHashMap<>(16, 0.75f, true) {
+    private final Map<String, Long> verified = new LinkedHashMap<>(16, 0.75f, true) {
         @Override
-        protected boolean removeEldestEntry(java.util.Map.Entry<String, Long> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<String, Long> eldest) {
             return size() > 64;
         }
     };
 
-    Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, io.concord.core.net.Neighbourhood around,
+    Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, Neighbourhood around,
           GatewayRelay relay, Runnable publish, Runnable listsChanged) {
         this.ctx = ctx;
         this.st = st;
@@ -181,7 +186,7 @@ final class Roles implements Federation.Host {
         }
         if (!known.isEmpty()) {
             AID pick = known.get(ctx.random().nextInt(known.size()));
-            boolean anyone = pick.name().startsWith(io.concord.layers.frame.Frames.ANY_LOCAL_NAME + "@");
+            boolean anyone = pick.name().startsWith(Frames.ANY_LOCAL_NAME + "@");
             st.lalCopyFrom = anyone ? null : pick.name();
             st.lalCopyAt = anyone ? Address.parse(pick.addresses().get(0)) : null;
             st.lalCopyUntilNs = ctx.nowNs() + 2_000_000_000L;
@@ -312,7 +317,7 @@ final class Roles implements Federation.Host {
     }
 
     /** Only these names' entries changed: only their routes follow (see {@link AgentLists#updateRoutes}). */
-    void routesChanged(java.util.Collection<String> names) {
+    void routesChanged(Collection<String> names) {
         st.lists.updateRoutes(names, ctx.nowNs());
         listsChanged.run();
     }

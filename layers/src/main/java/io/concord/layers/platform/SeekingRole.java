@@ -5,6 +5,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -52,7 +53,7 @@ final class SeekingRole extends Follower {
             }
         }
         int own = st.selfEntry.port();
-        open.sort(java.util.Comparator.comparingInt(a -> Math.abs(a.port() - own)));
+        open.sort(Comparator.comparingInt(a -> Math.abs(a.port() - own)));
         for (Address a : open.subList(0, Math.min(open.size(), batch()))) {
             sentTo.add(a);
             ctx.send(Performative.QUERY_REF, Protocol.P_DISCOVERY, ctx.anyAt(a), ask);

@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.layer.SendRejectedException;
@@ -83,7 +84,7 @@ final class ServiceRequests {
 
     private void send(Request r) {
         r.attempts++;
-        AclMessage m = ctx.message(r.act, Protocol.P_SERVICES, io.concord.core.acl.AID.local(r.df ? "df" : "ams", ctx.platform()),
+        AclMessage m = ctx.message(r.act, Protocol.P_SERVICES, AID.local(r.df ? "df" : "ams", ctx.platform()),
                 r.content);
         m.setReplyWith(r.replyWith);
         PlatformState st = roles.st;

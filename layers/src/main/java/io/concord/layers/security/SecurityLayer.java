@@ -4,22 +4,29 @@ import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
+import io.concord.core.time.LoopLimits;
+import io.concord.core.time.TokenBucket;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
 
-import javax.crypto.Cipher;
-import java.security.GeneralSecurityException;
-import javax.crypto.Mac;
-import javax.crypto.spec.GCMParameterSpec;
-import javax.crypto.spec.SecretKeySpec;
 import java.nio.charset.StandardCharsets;
+import java.security.GeneralSecurityException;
 import java.security.MessageDigest;
+import java.security.SecureRandom;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.zip.CRC32C;
+import javax.crypto.Cipher;
+import javax.crypto.Mac;
+import javax.crypto.spec.GCMParameterSpec;
+import javax.crypto.spec.SecretKeySpec;
 
 /**
  * The security layer: frames every message with the Concord header (source and destination ids,
@@ -116,7 +123,7 @@ public final class SecurityLayer extends Layer {
     static final int HELLO_BURST = 256;
     static final int HELLOS_PER_SECOND = 64;
     /**
-     * ... and by all the agents of one loop together (the runtime's {@link io.concord.core.time.LoopLimits}):
+     * ... and by all the agents of one loop together (the runtime's {@link LoopLimits}):
      * the loop's time is what the signature work takes, so its bound must not grow with the number
      * of agents the loop runs (100 agents at 64 a second each would be its whole time).
      */
@@ -128,7 +135,7 @@ public final class SecurityLayer extends Layer {
     private final Config config;
     private final boolean hmacTag;
     private final boolean safetyCode;
-    private final java.security.SecureRandom random = new java.security.SecureRandom();
+    private final SecureRandom random = new SecureRandom();
     private final CRC32C crc = new CRC32C();
     private final long[] recentTags = new long[RECENT_TAGS];
     private final byte[] nonce = new byte[12];
@@ -148,7 +155,7 @@ public final class SecurityLayer extends Layer {
             return false;
         }
     };
-    private final java.util.List<Pair> evicted = new java.util.ArrayList<>();
+    private final List<Pair> evicted = new ArrayList<>();
     /** When a REKEY notice last went to each source id (bounded: forgetting one costs a notice). */
     private final Map<Long, Long> rekeyed = new LinkedHashMap<>(64, 0.75f, true) {
         @Override
@@ -156,10 +163,10 @@ public final class SecurityLayer extends Layer {
             return size() > REKEY_MEMORY;
         }
     };
-    private io.concord.core.time.TokenBucket hellos = new io.concord.core.time.TokenBucket(HELLO_BURST, HELLOS_PER_SECOND);
+    private TokenBucket hellos = new TokenBucket(HELLO_BURST, HELLOS_PER_SECOND);
     /** The loop's hello budget, shared with its other agents; {@code null} on a host that offers none. */
-    private io.concord.core.time.TokenBucket loopHellos;
-    private final io.concord.core.time.TokenBucket rekeys = new io.concord.core.time.TokenBucket(REKEY_NOTICES_PER_SECOND,
+    private TokenBucket loopHellos;
+    private final TokenBucket rekeys = new TokenBucket(REKEY_NOTICES_PER_SECOND,
             REKEY_NOTICES_PER_SECOND);
     private long rekeysSent;
     private long hellosSent;
@@ -208,17 +215,17 @@ public final class SecurityLayer extends Layer {
     }
 
     public SecurityLayer(Config config) {
-        this(config, java.util.Set.of());
+        this(config, Set.of());
     }
 
     /**
      * A security layer with some defences off: only for the threat tests, through
-     * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
+     * {@code SafetyStack.Builder.withoutDefences}, above the layers.
      */
-    public SecurityLayer(Config config, java.util.Set<io.concord.layers.defence.Defence> off) {
+    public SecurityLayer(Config config, Set<Defence> off) {
         this.config = config;
-        this.hmacTag = !off.contains(io.concord.layers.defence.Defence.HMAC_TAG);
-        this.safetyCode = !off.contains(io.concord.layers.defence.Defence.SAFETY_CODE);
+        this.hmacTag = !off.contains(Defence.HMAC_TAG);
+        this.safetyCode = !off.contains(Defence.SAFETY_CODE);
     }
 
     @Override
@@ -228,11 +235,11 @@ public final class SecurityLayer extends Layer {
 
     @Override
     public void init(LayerContext ctx) {
-        io.concord.core.time.LoopLimits limits = ctx.host().capability(io.concord.core.time.LoopLimits.class);
+        LoopLimits limits = ctx.host().capability(LoopLimits.class);
         loopHellos = limits == null ? null : limits.bucket("hellos", LOOP_HELLO_BURST, LOOP_HELLOS_PER_SECOND);
         ownName = ctx.host().nodeName();
         ownId = Frames.id(ownName);
-        counter = new java.security.SecureRandom().nextLong() & 0x3FFF_FFFF_FFFF_FFFFL;
+        counter = new SecureRandom().nextLong() & 0x3FFF_FFFF_FFFF_FFFFL;
         try {
             if (config.protection() != Protection.CRC) {
                 platformKeyBytes = config.platformKey().bytes();
@@ -767,7 +774,7 @@ public final class SecurityLayer extends Layer {
             return;
         }
         if (type == HELLO) {
-            io.concord.core.time.TokenBucket over = !hellos.take(ctx.nowNs()) ? hellos
+            TokenBucket over = !hellos.take(ctx.nowNs()) ? hellos
                     : loopHellos != null && !loopHellos.take(ctx.nowNs()) ? loopHellos : null;
             if (over != null) {
                 ctx.drop(env, "handshake-limit", "more hellos than " + over.burst() + " at once and " + (int) over.perSecond()
@@ -842,7 +849,7 @@ public final class SecurityLayer extends Layer {
 
     /** Answers hellos at another rate than {@link #HELLO_BURST} and {@link #HELLOS_PER_SECOND}: for tests. */
     void helloRate(int burst, int perSecond) {
-        hellos = new io.concord.core.time.TokenBucket(burst, perSecond);
+        hellos = new TokenBucket(burst, perSecond);
     }
 
     /** The initiator derived the key of one of our replies: use it. */

@@ -3,13 +3,20 @@ package io.concord.layers.sequence;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
+import io.concord.core.layer.SendRejectedException;
 import io.concord.core.layer.StackEvent;
+import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
 
+import java.util.ArrayDeque;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.Map;
+import java.util.Set;
+import java.util.function.Predicate;
 
 /**
  * Sequence numbers per sender and receiver: against repetition, deletion and resequencing.
@@ -83,7 +90,7 @@ public final class SequenceLayer extends Layer {
         long acked;
         /** The receiver's session, from its acknowledgements; 0 until the first. */
         int peerSession;
-        final java.util.Set<Integer> endedSessions = new java.util.LinkedHashSet<>();
+        final Set<Integer> endedSessions = new LinkedHashSet<>();
         Address address;
         final byte[][] ring;
         final long[] ringSeq;
@@ -93,7 +100,7 @@ public final class SequenceLayer extends Layer {
         /** Frames past the acknowledged ones the receiver takes (its window); -1 until it says. */
         int credit = -1;
         /** Frames the agent sent that wait for the receiver's window to open, in order. */
-        final java.util.ArrayDeque<Envelope> held = new java.util.ArrayDeque<>();
+        final ArrayDeque<Envelope> held = new ArrayDeque<>();
         /** Counted among the receivers that hold the agent back. */
         boolean holding;
 
@@ -149,19 +156,19 @@ public final class SequenceLayer extends Layer {
     private int stream;
 
     public SequenceLayer(Config config) {
-        this(config, java.util.Set.of());
+        this(config, Set.of());
     }
 
     /**
      * A sequence layer with some defences off: only for the threat tests, through
-     * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
+     * {@code SafetyStack.Builder.withoutDefences}, above the layers.
      */
-    public SequenceLayer(Config config, java.util.Set<io.concord.layers.defence.Defence> off) {
-        this.sequenceWindow = !off.contains(io.concord.layers.defence.Defence.SEQUENCE_WINDOW);
-        this.retransmission = !off.contains(io.concord.layers.defence.Defence.RETRANSMISSION);
-        this.reorderBuffer = !off.contains(io.concord.layers.defence.Defence.REORDER_BUFFER);
-        this.flowControl = !off.contains(io.concord.layers.defence.Defence.FLOW_CONTROL);
-        this.sessionProof = !off.contains(io.concord.layers.defence.Defence.SESSION_PROOF);
+    public SequenceLayer(Config config, Set<Defence> off) {
+        this.sequenceWindow = !off.contains(Defence.SEQUENCE_WINDOW);
+        this.retransmission = !off.contains(Defence.RETRANSMISSION);
+        this.reorderBuffer = !off.contains(Defence.REORDER_BUFFER);
+        this.flowControl = !off.contains(Defence.FLOW_CONTROL);
+        this.sessionProof = !off.contains(Defence.SESSION_PROOF);
         this.config = config;
         // A receiver with frames held for it is never forgotten: they would be lost, and the agent
         // stay paused.
@@ -169,7 +176,7 @@ public final class SequenceLayer extends Layer {
         this.ins = lru(config.maxPeers(), in -> true);
     }
 
-    private static <V> Map<Long, V> lru(int max, java.util.function.Predicate<V> forgettable) {
+    private static <V> Map<Long, V> lru(int max, Predicate<V> forgettable) {
         return new LinkedHashMap<>(64, 0.75f, true) {
             @Override
             protected boolean removeEldestEntry(Map.Entry<Long, V> eldest) {
@@ -258,7 +265,7 @@ public final class SequenceLayer extends Layer {
 
     private void hold(LayerContext ctx, Envelope env, Out o) {
         if (o.held.size() >= MAX_HELD) {
-            throw new io.concord.core.layer.SendRejectedException("flow-control", MAX_HELD + " messages to " + o.address
+            throw new SendRejectedException("flow-control", MAX_HELD + " messages to " + o.address
                     + " wait already for it to take the ones before (it is slower than this sender, or gone); "
                     + "send fewer in one action of a behaviour: the agent is paused until the receiver catches up");
         }
@@ -736,7 +743,7 @@ public final class SequenceLayer extends Layer {
 
     @Override
     public void onEvent(LayerContext ctx, StackEvent event) {
-        if (!event.up() && io.concord.core.layer.StackHost.INBOX_DRAINED.equals(event.type())) {
+        if (!event.up() && StackHost.INBOX_DRAINED.equals(event.type())) {
             for (Map.Entry<Long, In> e : ins.entrySet()) {
                 if (e.getValue().closed) {
                     sendAck(ctx, e.getKey(), e.getValue());

@@ -1,12 +1,13 @@
 package io.concord.sim.books;
 
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.proto.Conversations;
-import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.Platform;
+import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.Comparator;
@@ -44,7 +45,7 @@ public class BookBuyer extends Agent {
                 System.out.println(getLocalName() + ": the DF lists " + sellers.size() + " sellers of \"" + title + "\": "
                         + sellers.stream().map(e -> e.aid().localName() + "@" + e.address()).toList());
                 AclMessage cfp = new AclMessage(Performative.CFP);
-                sellers.forEach(s -> cfp.addReceiver(io.concord.core.acl.AID.local(s.aid().localName(), s.aid().platform())));
+                sellers.forEach(s -> cfp.addReceiver(AID.local(s.aid().localName(), s.aid().platform())));
                 cfp.setContent(title);
                 cfp.setReplyByEpochMs(currentTimeMillis() + 3_000);
                 System.out.println(getLocalName() + ": CFP \"" + title + "\" to " + sellers.size() + " sellers, by name");
