@@ -6,7 +6,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
 import io.concord.core.net.Channels;
-import io.concord.core.proto.MtsFailure;
+import io.concord.core.acl.MtsFailure;
 
 import java.util.List;
 import java.util.function.Consumer;
