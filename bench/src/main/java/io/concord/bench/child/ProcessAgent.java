@@ -1,11 +1,10 @@
 package io.concord.bench.child;
 
-import io.concord.bench.Platforms;
-import io.concord.bench.Rounds;
-import io.concord.bench.jmh.ChainBenchmark;
-
 import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Platforms;
+import io.concord.bench.support.Rounds;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
@@ -27,7 +26,7 @@ public final class ProcessAgent {
         String name = args[1];
         String platform = args[args.length - 1];
         try (AgentRuntime rt = Platforms.concord(platform)) {
-            Agent agent = kind.equals("link") ? new ConcordChainLink(new Rounds(), false, ChainBenchmark.SECRET)
+            Agent agent = kind.equals("link") ? new ConcordChainLink(new Rounds(), false, Chain.SECRET)
                     : new ConcordBooks.Seller(Integer.parseInt(args[2]));
             AID aid = rt.startAgent(name, agent);
             System.out.println("READY " + aid.addresses().get(0));

@@ -1,6 +1,6 @@
 package io.concord.bench.concord;
 
-import io.concord.bench.Rounds;
+import io.concord.bench.support.Rounds;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;

@@ -1,10 +1,10 @@
 package io.concord.bench.harness;
 
-import io.concord.bench.Rounds;
 import io.concord.bench.child.AttackChild;
 import io.concord.bench.child.Children;
 import io.concord.bench.concord.ConcordChainLink;
-import io.concord.bench.jmh.ChainBenchmark;
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Rounds;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
@@ -39,7 +39,7 @@ import java.util.concurrent.TimeUnit;
 public final class AttackHarness {
     static final int AGENTS = 6;
     static final int ROUNDS = 50;
-    static final String SECRET = ChainBenchmark.SECRET;
+    static final String SECRET = Chain.SECRET;
 
     /** What one attack measured. */
     public record Result(String kind, double usBefore, double usDuring, long forged, double heapMbMax, double heapMbAfterGc,

@@ -1,8 +1,8 @@
 package io.concord.bench.harness;
 
-import io.concord.bench.Platforms;
-import io.concord.bench.Rounds;
 import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.support.Platforms;
+import io.concord.bench.support.Rounds;
 import io.concord.console.Console;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.PortRange;

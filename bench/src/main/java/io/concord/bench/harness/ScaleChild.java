@@ -1,6 +1,6 @@
-package io.concord.bench.child;
+package io.concord.bench.harness;
 
-import io.concord.bench.harness.ScaleHarness;
+
 
 /**
  * {@code <agents> <hosts> <seed>}: one point of the scale simulation in a JVM of its own, with the

@@ -1,10 +1,9 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.Platforms;
-
 import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.jade.JadeBooks;
 import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.support.Platforms;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import jade.wrapper.AgentController;

@@ -1,13 +1,12 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.Platforms;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ProcessAgent;
-
 import io.concord.bench.concord.ConcordBooks;
 import io.concord.bench.jade.JadeBooks;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.bench.jade.JadeProcessAgent;
+import io.concord.bench.support.Platforms;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import jade.wrapper.AgentController;
