@@ -7,14 +7,9 @@ import io.concord.core.time.LoopLimits;
 import io.concord.core.time.TokenBucket;
 import io.concord.layers.frame.Frames;
 
-import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.security.SecureRandom;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashMap;
-import java.util.List;
-import java.util.Map;
 import javax.crypto.spec.SecretKeySpec;
 
 /**
@@ -27,8 +22,8 @@ import javax.crypto.spec.SecretKeySpec;
  * and {@code EncryptBase}). One per agent, called on its loop.
  */
 final class Handshake {
-    private static final int HELLO = 1;
-    private static final int HELLO_REPLY = 2;
+    private static final int HELLO = Hello.HELLO;
+    private static final int HELLO_REPLY = Hello.REPLY;
     /**
      * Key confirmation: the initiator proves it derived the key the reply's challenge gave, so the
      * responder starts using it. Until then the responder keeps the key it had.
@@ -45,11 +40,8 @@ final class Handshake {
      * sealed with a pair key it does not have (it restarted, or the frame is forged).
      */
     private static final int REKEY = 3;
-    private static final long REKEY_EVERY_MS = 1_000;
-    private static final int REKEY_MEMORY = 1024;
     /** REKEY notices sent at most a second, to all sources together. */
-    static final int REKEY_NOTICES_PER_SECOND = 64;
-    private static final int MAX_PAIRS = 4096;
+    static final int REKEY_NOTICES_PER_SECOND = RekeyLimit.NOTICES_PER_SECOND;
     /**
      * Hellos answered at most: {@link #HELLO_BURST} at once, then {@link #HELLOS_PER_SECOND}. Each
      * costs a signature check, a key agreement and a signature; a holder of the platform key can
@@ -76,34 +68,11 @@ final class Handshake {
     private final Identity identity;
     private final SecureRandom random = new SecureRandom();
     private final Pins pins = new Pins();
-    /**
-     * Pairs, least recently used first. Only this agent's own sends and signed handshakes create
-     * one, so strangers cannot push real pairs out; one pushed out by this agent's own traffic
-     * to more than {@link #MAX_PAIRS} peers has its waiting messages counted as dropped.
-     */
-    private final Map<Long, Pair> pairs = new LinkedHashMap<>(64, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<Long, Pair> eldest) {
-            if (size() > MAX_PAIRS) {
-                evicted.add(eldest.getValue());
-                return true;
-            }
-            return false;
-        }
-    };
-    private final List<Pair> evicted = new ArrayList<>();
-    /** When a REKEY notice last went to each source id (bounded: forgetting one costs a notice). */
-    private final Map<Long, Long> rekeyed = new LinkedHashMap<>(64, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<Long, Long> eldest) {
-            return size() > REKEY_MEMORY;
-        }
-    };
+    private final Pairs pairs = new Pairs();
     private TokenBucket hellos;
     /** The loop's hello budget, shared with its other agents; {@code null} on a host that offers none. */
     private TokenBucket loopHellos;
-    private final TokenBucket rekeys = new TokenBucket(REKEY_NOTICES_PER_SECOND,
-            REKEY_NOTICES_PER_SECOND);
+    private final RekeyLimit rekeys = new RekeyLimit();
     private long rekeysSent;
     private long hellosSent;
 
@@ -134,8 +103,7 @@ final class Handshake {
      * peer runs, which it starts if none does.
      */
     void onDown(LayerContext ctx, Envelope env) {
-        Pair p = pairs.computeIfAbsent(env.peerId(), k -> new Pair());
-        dropEvicted(ctx);
+        Pair p = pairs.getOrAdd(ctx, env.peerId());
         if (p.key != null) {
             sealer.seal(env, Frames.PROTECTION_GCM_PAIR, 0, p.key, p.encrypt);
             ctx.passDown(env);
@@ -148,20 +116,6 @@ final class Handshake {
         p.queue.add(env);
         p.address = env.destination();
         startHandshake(ctx, env.peerId(), p);
-    }
-
-    /** Counts the messages of pairs pushed out of the table: nothing is lost uncounted. */
-    private void dropEvicted(LayerContext ctx) {
-        for (Pair gone : evicted) {
-            if (gone.timer >= 0) {
-                ctx.host().cancel(gone.timer);
-            }
-            for (Envelope e : gone.queue) {
-                ctx.drop(e, "pair-evicted", "more than " + MAX_PAIRS + " peers: the least recently used pair was forgotten");
-            }
-            gone.queue.clear();
-        }
-        evicted.clear();
     }
 
     /**
@@ -219,15 +173,7 @@ final class Handshake {
     }
 
     private void rekeyAtMostEverySecond(LayerContext ctx, long src, Address to) {
-        long now = ctx.host().clock().epochMillis();
-        Long last = rekeyed.get(src);
-        if (last == null || now - last >= REKEY_EVERY_MS) {
-            // ... and at most REKEY_NOTICES_PER_SECOND in all: forged frames with a new source id
-            // each would otherwise cost a sealed notice and a send apiece.
-            if (!rekeys.take(ctx.nowNs())) {
-                return;
-            }
-            rekeyed.put(src, now);
+        if (rekeys.allow(ctx, src)) {
             sendRekey(ctx, src, to);
         }
     }
@@ -281,7 +227,7 @@ final class Handshake {
             return;
         }
         long now = ctx.host().clock().epochMillis();
-        if (p.timer >= 0 || (p.lastRekeyAnswered != Long.MIN_VALUE && now - p.lastRekeyAnswered < REKEY_EVERY_MS)) {
+        if (p.timer >= 0 || (p.lastRekeyAnswered != Long.MIN_VALUE && now - p.lastRekeyAnswered < RekeyLimit.EVERY_MS)) {
             ctx.drop(env, "rekey-limit", "a rekey notice from " + Long.toHexString(src)
                     + " while a handshake with it runs or within a second of the last");
             return;
@@ -322,25 +268,7 @@ final class Handshake {
 
     private byte[] sendSigned(LayerContext ctx, long peerId, Address to, int type, byte[] challenge, byte[] echo) {
         hellosSent++;
-        byte[] name = ownName.getBytes(StandardCharsets.UTF_8);
-        int signedLen = 1 + 2 + name.length + 32 + 32 + 8 + CHALLENGE_BYTES + (echo != null ? CHALLENGE_BYTES : 0);
-        byte[] signed = new byte[signedLen + 8];
-        signed[0] = (byte) type;
-        Frames.putShort(signed, 1, name.length);
-        System.arraycopy(name, 0, signed, 3, name.length);
-        int p = 3 + name.length;
-        System.arraycopy(identity.signingPublicKey(), 0, signed, p, 32);
-        System.arraycopy(identity.agreementPublicKey(), 0, signed, p + 32, 32);
-        Frames.putLong(signed, p + 64, ctx.host().clock().epochMillis());
-        System.arraycopy(challenge, 0, signed, p + 72, CHALLENGE_BYTES);
-        if (echo != null) {
-            System.arraycopy(echo, 0, signed, p + 72 + CHALLENGE_BYTES, CHALLENGE_BYTES);
-        }
-        // The signature also covers the destination id, so a hello cannot be replayed to another agent.
-        Frames.putLong(signed, signedLen, peerId);
-        byte[] sig = identity.sign(signed, 0, signedLen + 8);
-        byte[] body = Arrays.copyOf(signed, signedLen + 64);
-        System.arraycopy(sig, 0, body, signedLen, 64);
+        byte[] body = Hello.write(identity, ownName, type, ctx.host().clock().epochMillis(), challenge, echo, peerId);
         sendHandshakeBody(ctx, peerId, to, body);
         return body;
     }
@@ -390,18 +318,18 @@ final class Handshake {
         }
         int type = b[off];
         int nameLen = Frames.getShort(b, off + 1);
-        int signedLen = 1 + 2 + nameLen + 32 + 32 + 8 + CHALLENGE_BYTES + (type == HELLO_REPLY ? CHALLENGE_BYTES : 0);
+        int signedLen = Hello.signedLength(type, nameLen);
         if ((type != HELLO && type != HELLO_REPLY) || len != signedLen + 64) {
             ctx.drop(env, "malformed-handshake", "type " + type + ", " + len + " bytes");
             return;
         }
-        String name = new String(b, off + 3, nameLen, StandardCharsets.UTF_8);
-        int p = off + 3 + nameLen;
-        byte[] signingKey = Arrays.copyOfRange(b, p, p + 32);
-        byte[] agreementKey = Arrays.copyOfRange(b, p + 32, p + 64);
-        long ts = Frames.getLong(b, p + 64);
-        byte[] challenge = Arrays.copyOfRange(b, p + 72, p + 72 + CHALLENGE_BYTES);
-        byte[] echo = type == HELLO_REPLY ? Arrays.copyOfRange(b, p + 72 + CHALLENGE_BYTES, p + 72 + 2 * CHALLENGE_BYTES) : null;
+        Hello hello = Hello.read(b, off, type, nameLen);
+        String name = hello.name();
+        byte[] signingKey = hello.signingKey();
+        byte[] agreementKey = hello.agreementKey();
+        long ts = hello.timeMs();
+        byte[] challenge = hello.challenge();
+        byte[] echo = hello.echo();
         if (Frames.id(name) != src) {
             ctx.drop(env, "masquerade", "a handshake for " + name + " from the frame id of another agent");
             return;
@@ -432,11 +360,7 @@ final class Handshake {
                 return;
             }
         }
-        byte[] signed = new byte[signedLen + 8];
-        System.arraycopy(b, off, signed, 0, signedLen);
-        Frames.putLong(signed, signedLen, ownId);
-        byte[] sig = Arrays.copyOfRange(b, off + signedLen, off + signedLen + 64);
-        if (!Identity.verify(signingKey, signed, 0, signed.length, sig)) {
+        if (!hello.signedFor(b, off, signedLen, ownId)) {
             ctx.drop(env, "masquerade", "the handshake of " + name + " is not signed by the key it presents");
             return;
         }
@@ -454,8 +378,7 @@ final class Handshake {
                 // pinned now, or pinned before with this key
             }
         }
-        Pair pair = pairs.computeIfAbsent(src, k -> new Pair());
-        dropEvicted(ctx);
+        Pair pair = pairs.getOrAdd(ctx, src);
         if (type == HELLO_REPLY) {
             // Fresh: it echoes the challenge of our hello under way. Use the key, and confirm it.
             byte[] key = PairKeys.derive(identity.agree(agreementKey), sealer.platformKeyBytes(), ownId, src, pair.challenge, challenge);
