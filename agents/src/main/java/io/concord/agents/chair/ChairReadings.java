@@ -1,6 +1,8 @@
 package io.concord.agents.chair;
 
 import java.util.Arrays;
+import java.util.Collections;
+import java.util.EnumSet;
 import java.util.Set;
 
 /**
@@ -28,7 +30,8 @@ public record ChairReadings(long timeNs, long seq, long leftTicks, long rightTic
     /** Copies the arrays and sets, so that the record stays immutable. */
     public ChairReadings {
         ranges = ranges.clone();
-        faults = Set.copyOf(faults);
+        // In the enum's order, in every JVM (Set.copyOf iterates in an order salted per run).
+        faults = Collections.unmodifiableSet(faults.isEmpty() ? EnumSet.noneOf(ChairFault.class) : EnumSet.copyOf(faults));
     }
 
     /** The distance in metres read by sensor {@code index}. */

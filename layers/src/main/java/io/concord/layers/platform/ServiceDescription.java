@@ -1,6 +1,7 @@
 package io.concord.layers.platform;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -17,7 +18,9 @@ public record ServiceDescription(String type, String name, Map<String, String> p
                                  List<String> ontologies, List<String> languages, List<String> protocols) {
 
     public ServiceDescription {
-        properties = properties == null ? Map.of() : Map.copyOf(new TreeMap<>(properties));
+        // Sorted, in every JVM: Map.copyOf iterates in an order salted per JVM run, so the same
+        // registration went on the wire with its properties in another order from run to run.
+        properties = properties == null ? Map.of() : Collections.unmodifiableMap(new TreeMap<>(properties));
         ontologies = ontologies == null ? List.of() : List.copyOf(ontologies);
         languages = languages == null ? List.of() : List.copyOf(languages);
         protocols = protocols == null ? List.of() : List.copyOf(protocols);
