@@ -1,7 +1,5 @@
 package io.concord.bench.harness;
 
-
-
 /**
  * {@code <agents> <hosts> <seed>}: one point of the scale simulation in a JVM of its own, with the
  * heap it needs (every simulated agent holds the whole list: 5,000 agents hold 25 million entries),

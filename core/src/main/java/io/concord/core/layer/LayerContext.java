@@ -1,6 +1,5 @@
 package io.concord.core.layer;
 
-
 /**
  * A layer's handle on its place in the stack. Layers never hold their neighbours; they forward
  * through this context, which makes each layer testable alone (see {@code LayerHarness}).

@@ -1,6 +1,5 @@
 package io.concord.layers.defence;
 
-
 /**
  * The safety stack's defences, one per EN 50159 threat test. Every one is on in every stack,
  * unless a test builds a stack without some ({@code withoutDefences} of {@code SafetyStack.Builder} and

@@ -1,6 +1,5 @@
 package io.concord.layers.observe;
 
-
 /** Writes the few JSON strings the observation service sends (no parser: the console reads them). */
 public final class Json {
     private Json() {

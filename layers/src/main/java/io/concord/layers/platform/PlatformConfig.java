@@ -1,6 +1,5 @@
 package io.concord.layers.platform;
 
-
 /**
  * The timing of the container layer. The maintenance period grows with the number of agents, as
  * in the dissertation: {@code period = basePeriodMs + perAgentMicros * agents / 1000}; an agent (or

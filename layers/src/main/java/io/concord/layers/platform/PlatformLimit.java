@@ -1,6 +1,5 @@
 package io.concord.layers.platform;
 
-
 /**
  * A platform message that would make an agent hold more than a limit allows (a list's pages, the
  * hosts it knows): it is dropped and counted with {@link #reason()}, as a malformed one is.
