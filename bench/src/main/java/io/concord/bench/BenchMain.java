@@ -1,11 +1,22 @@
 package io.concord.bench;
 
+import io.concord.agents.map.HospitalMap;
+import io.concord.bench.child.Children;
+import io.concord.bench.child.IdlePlatform;
+import io.concord.bench.child.LoadChild;
+import io.concord.bench.harness.AttackHarness;
+import io.concord.bench.harness.ConsoleCost;
+import io.concord.bench.harness.HeartbeatBench;
 import io.concord.bench.harness.HospitalBench;
 import io.concord.bench.harness.NetworkHarness;
 import io.concord.bench.harness.PlatformHarness;
+import io.concord.bench.harness.ScaleChild;
+import io.concord.bench.harness.ScaleHarness;
 import io.concord.bench.harness.SerialBench;
 import io.concord.bench.harness.SimHarness;
 import io.concord.bench.harness.StressHarness;
+import io.concord.bench.harness.ThroughputHarness;
+import io.concord.bench.jade.JadeIdle;
 import io.concord.bench.jmh.BooksBenchmark;
 import io.concord.bench.jmh.ChainBenchmark;
 import io.concord.bench.jmh.HttpBenchmark;
@@ -15,7 +26,11 @@ import io.concord.bench.jmh.StackBenchmark;
 import io.concord.bench.jmh.UdpBaselineBenchmark;
 import io.concord.bench.report.Charts;
 import io.concord.bench.report.Machine;
-
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Platforms;
+import io.concord.core.net.Transport;
+import io.concord.core.testkit.NetnsHosts;
+import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.results.RunResult;
 import org.openjdk.jmh.runner.Runner;
 import org.openjdk.jmh.runner.RunnerException;
@@ -23,19 +38,23 @@ import org.openjdk.jmh.runner.options.ChainedOptionsBuilder;
 import org.openjdk.jmh.runner.options.OptionsBuilder;
 import org.openjdk.jmh.runner.options.TimeValue;
 
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.time.LocalDate;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
-
-import io.concord.core.net.Transport;
+import java.util.function.ToDoubleFunction;
 
 /**
  * {@code bench/run quick|full [name ...]}: runs the named benchmarks (all by default), prints one
@@ -139,7 +158,7 @@ public final class BenchMain {
     private ChainedOptionsBuilder options(Class<?> benchmark) {
         return new OptionsBuilder()
                 .include("\\." + benchmark.getSimpleName() + "\\.")
-                .mode(org.openjdk.jmh.annotations.Mode.SampleTime)
+                .mode(Mode.SampleTime)
                 .timeUnit(TimeUnit.MICROSECONDS)
                 .forks(1)
                 .jvmArgsAppend("-Djava.awt.headless=true", "-Dorg.slf4j.simpleLogger.defaultLogLevel=error")
@@ -311,7 +330,7 @@ public final class BenchMain {
         Charts.line(reportDir.resolve(png), (name.equals("chain") ? "Chain" : "Book buyer")
                 + ": time per round, one process per agent", label, "µs per round", byPlatform);
         md.append("\n![").append(name).append(" processes](").append(png).append(")\n");
-        Files.writeString(reportDir.resolve(name + ".md"), md.toString(), java.nio.file.StandardOpenOption.APPEND);
+        Files.writeString(reportDir.resolve(name + ".md"), md.toString(), StandardOpenOption.APPEND);
     }
 
     /** Experiments 1 and 2: bootstrap of N agents started at once, one maintenance cycle, failover. */
@@ -399,7 +418,7 @@ public final class BenchMain {
         }
     }
 
-    private static <T> double med(List<T> l, java.util.function.ToDoubleFunction<T> f) {
+    private static <T> double med(List<T> l, ToDoubleFunction<T> f) {
         double[] v = l.stream().mapToDouble(f).sorted().toArray();
         return v.length == 0 ? -1 : v[v.length / 2];
     }
@@ -443,12 +462,12 @@ public final class BenchMain {
         long warmupS = Long.getLong("concord.idle.warmup", full ? 180 : 60);
         long windowS = Long.getLong("concord.idle.seconds", full ? 60 : 30);
         Map<String, TreeMap<Integer, Double>> pct = Charts.series(List.of("concord", "jade"));
-        try (io.concord.bench.child.Children kids = new io.concord.bench.child.Children()) {
+        try (Children kids = new Children()) {
             int port = 7600;
             for (int n : sizes) {
-                kids.start(io.concord.bench.child.IdlePlatform.class, "idle" + n, Integer.toString(port), Integer.toString(n));
+                kids.start(IdlePlatform.class, "idle" + n, Integer.toString(port), Integer.toString(n));
                 port += n + 30;
-                kids.start(io.concord.bench.jade.JadeIdle.class, Integer.toString(n));
+                kids.start(JadeIdle.class, Integer.toString(n));
             }
             kids.awaitReady();
             sleepS(warmupS);
@@ -511,10 +530,10 @@ public final class BenchMain {
         int perProcess = hostCount == 1 ? 5 : 3;
         int total = processes * perProcess;
         int perHost = total / hostCount;
-        io.concord.core.testkit.NetnsHosts net = null;
+        NetnsHosts net = null;
         if (hostCount > 1) {
             try {
-                net = new io.concord.core.testkit.NetnsHosts("cl" + (ProcessHandle.current().pid() % 100_000), hostCount);
+                net = new NetnsHosts("cl" + (ProcessHandle.current().pid() % 100_000), hostCount);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted", e);
@@ -531,7 +550,7 @@ public final class BenchMain {
 
     private StringBuilder loadMd;
 
-    private void loadOn(long phaseS, int hostCount, io.concord.core.testkit.NetnsHosts net, int processes, int perProcess, int total,
+    private void loadOn(long phaseS, int hostCount, NetnsHosts net, int processes, int perProcess, int total,
             int perHost) throws IOException {
         String tag = hostCount == 1 ? "" : " hosts=" + hostCount;
         String platform = "load" + ProcessHandle.current().pid() + "h" + hostCount;
@@ -551,12 +570,12 @@ public final class BenchMain {
                 + "each: one container per host, the hosts' lists shared by the federation\n\n");
         md.append("| phase | busy loops | false evictions | elections | lost registrations | worst loop lag ms | kill -9 seen after ms |\n"
                 + "|---|---|---|---|---|---|---|\n");
-        try (io.concord.bench.child.Children kids = new io.concord.bench.child.Children()) {
+        try (Children kids = new Children()) {
             for (int i = 0; i < processes; i++) {
                 int h = i % hostCount + 1;
-                kids.startWith(net == null ? List.of() : net.exec(h), io.concord.bench.child.LoadChild.class, platform, first, last,
+                kids.startWith(net == null ? List.of() : net.exec(h), LoadChild.class, platform, first, last,
                         Integer.toString(i), Integer.toString(perProcess), Integer.toString(perHost), without,
-                        net == null ? "127.0.0.1" : io.concord.core.testkit.NetnsHosts.address(h), Integer.toString(total));
+                        net == null ? "127.0.0.1" : NetnsHosts.address(h), Integer.toString(total));
             }
             kids.awaitReady();
             for (int i = 0; i < processes; i++) {
@@ -576,9 +595,9 @@ public final class BenchMain {
                 double killMs = Double.NaN;
                 try {
                     if (kill) {
-                        kids.startWith(net == null ? List.of() : net.exec(1), io.concord.bench.child.LoadChild.class, platform, first,
+                        kids.startWith(net == null ? List.of() : net.exec(1), LoadChild.class, platform, first,
                                 last, "v" + ph, "1", Integer.toString(perHost + 1), without,
-                                net == null ? "127.0.0.1" : io.concord.core.testkit.NetnsHosts.address(1), Integer.toString(total + 1));
+                                net == null ? "127.0.0.1" : NetnsHosts.address(1), Integer.toString(total + 1));
                         kids.readLine(victim, "READY"); // started after the others were ready
                         kids.ask(0, "stats", "STATS"); // its join is not part of the phase
                     }
@@ -681,10 +700,10 @@ public final class BenchMain {
         for (String mode : List.of("onejvm", "processes")) {
             for (String shape : List.of("1to1", "16to1", "16pairs")) {
                 for (int bytes : List.of(100, 1000)) {
-                    Map<String, io.concord.bench.harness.ThroughputHarness.Result> r = new TreeMap<>();
+                    Map<String, ThroughputHarness.Result> r = new TreeMap<>();
                     for (String platform : List.of("concord", "jade", "udp")) {
                         try {
-                            r.put(platform, io.concord.bench.harness.ThroughputHarness.run(platform, shape, mode.equals("processes"),
+                            r.put(platform, ThroughputHarness.run(platform, shape, mode.equals("processes"),
                                     bytes, warm, window));
                         } catch (Exception e) {
                             throw new IOException("throughput " + platform + " " + shape + " " + mode + " " + bytes + " failed: " + e, e);
@@ -701,7 +720,7 @@ public final class BenchMain {
                     if (!groups.contains(group)) {
                         groups.add(group);
                     }
-                    Map<String, List<Double>> perMode = bars.computeIfAbsent(mode, k -> new java.util.LinkedHashMap<>());
+                    Map<String, List<Double>> perMode = bars.computeIfAbsent(mode, k -> new LinkedHashMap<>());
                     perMode.computeIfAbsent("Concord", k -> new ArrayList<>()).add(c);
                     perMode.computeIfAbsent("JADE", k -> new ArrayList<>()).add(j);
                     perMode.computeIfAbsent("UDP", k -> new ArrayList<>()).add(u);
@@ -741,14 +760,14 @@ public final class BenchMain {
         for (int[] p : points) {
             // Each point in a JVM of its own with a large heap: all the simulated hosts' agents live
             // in it, each with the whole list (5,000 agents: 25 million entries, about 8 GB).
-            io.concord.bench.harness.ScaleHarness.Result r;
+            ScaleHarness.Result r;
             try {
                 Process child = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx" + heap,
                         "-Dorg.slf4j.simpleLogger.defaultLogLevel=error", "-cp", System.getProperty("java.class.path"),
-                        io.concord.bench.child.ScaleChild.class.getName(), Integer.toString(p[0]), Integer.toString(p[1]), "7")
+                        ScaleChild.class.getName(), Integer.toString(p[0]), Integer.toString(p[1]), "7")
                         .redirectErrorStream(true).start();
                 String point = null;
-                try (var out = new java.io.BufferedReader(new java.io.InputStreamReader(child.getInputStream()))) {
+                try (var out = new BufferedReader(new InputStreamReader(child.getInputStream()))) {
                     String line;
                     StringBuilder said = new StringBuilder();
                     while ((line = out.readLine()) != null) {
@@ -764,7 +783,7 @@ public final class BenchMain {
                     }
                 }
                 child.waitFor();
-                r = io.concord.bench.child.ScaleChild.parse(point);
+                r = ScaleChild.parse(point);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
                 throw new IOException("interrupted", e);
@@ -817,9 +836,9 @@ public final class BenchMain {
                 + "| heap MB at most | heap MB after GC | drops counted by the agents |\n|---|---|---|---|---|---|---|---|---|\n");
         // -Dconcord.attack.kinds=handshake,tcp runs only those (to profile one).
         for (String kind : System.getProperty("concord.attack.kinds", "cpu,forged,handshake,tcp").split(",")) {
-            io.concord.bench.harness.AttackHarness.Result r;
+            AttackHarness.Result r;
             try {
-                r = io.concord.bench.harness.AttackHarness.run(kind, seconds);
+                r = AttackHarness.run(kind, seconds);
             } catch (Exception e) {
                 throw new IOException("the attack harness failed for " + kind + ": " + e, e);
             }
@@ -915,7 +934,7 @@ public final class BenchMain {
 
     private void sim() throws IOException {
         double seconds = Double.parseDouble(System.getProperty("concord.sim.seconds", full ? "600" : "20"));
-        io.concord.agents.map.HospitalMap map = io.concord.agents.map.HospitalMap.defaultHospital();
+        HospitalMap map = HospitalMap.defaultHospital();
         StringBuilder md = new StringBuilder(header("Hospital simulation", "The default hospital (" + map.nodes().size()
                 + " nodes, " + map.doors().size() + " doors, " + map.walls().size() + " wall fixtures) stepped at 60 Hz on the test kit's virtual clock, as fast as one core allows, with "
                 + "chairs that drive from node to node at random with every sensor on (8 sonars of 5 rays at 10 Hz, 4 "
@@ -954,9 +973,9 @@ public final class BenchMain {
     }
 
     private void console() throws IOException {
-        io.concord.bench.harness.ConsoleCost.Outcome o;
+        ConsoleCost.Outcome o;
         try {
-            o = io.concord.bench.harness.ConsoleCost.run(full);
+            o = ConsoleCost.run(full);
         } catch (IOException | RuntimeException e) {
             throw e;
         } catch (Exception e) {
@@ -995,7 +1014,7 @@ public final class BenchMain {
         md.append(String.format(Locale.ROOT, "| figure | value |%n|---|---|%n| A* on the default hospital | %.2f µs |%n"
                         + "| A* on 1,000 nodes | %.2f µs |%n| award, median of %d (CFP to ACCEPT, class 7, loopback) | %.2f ms |%n"
                         + "| award, each | %s |%n| the scenario, simulated | %.1f s |%n", o.planUs(), o.plan1000Us(),
-                o.awardMs().length, o.awardMedianMs(), java.util.Arrays.toString(java.util.Arrays.stream(o.awardMs())
+                o.awardMs().length, o.awardMedianMs(), Arrays.toString(Arrays.stream(o.awardMs())
                         .map(v -> Math.round(v * 100) / 100.0).toArray()), o.taskS()));
         Files.writeString(reportDir.resolve("hospital.md"), md.toString());
     }
@@ -1023,15 +1042,15 @@ public final class BenchMain {
                 SerialBench.percentile(o.cmdToMotorUs(), 50), SerialBench.percentile(o.cmdToMotorUs(), 99), o.cmdToMotorUs().length,
                 SerialBench.percentile(o.sensorToAgentUs(), 50), SerialBench.percentile(o.sensorToAgentUs(), 99), o.sensorToAgentUs().length,
                 SerialBench.percentile(o.watchdogStopMs(), 50), SerialBench.percentile(o.watchdogStopMs(), 99), o.watchdogStopMs().length));
-        io.concord.bench.harness.HeartbeatBench.Outcome hb;
+        HeartbeatBench.Outcome hb;
         try {
-            hb = io.concord.bench.harness.HeartbeatBench.run(full);
+            hb = HeartbeatBench.run(full);
         } catch (IOException | RuntimeException e) {
             throw e;
         } catch (Exception e) {
             throw new IllegalStateException("the heartbeat benchmark failed", e);
         }
-        System.out.println(io.concord.bench.harness.HeartbeatBench.describe(hb));
+        System.out.println(HeartbeatBench.describe(hb));
         md.append(String.format(Locale.ROOT, "%n## The heartbeat on a busy host, and the e-stop%n%n"
                         + "The host's driver behind its safety supervisor, the loop confirming a drive command at every STATE; the "
                         + "heartbeat from its own thread every 50 ms. Quiet, then beside 4 busy loops (processes that spin) on the %d "
@@ -1047,9 +1066,9 @@ public final class BenchMain {
                         + "| e-stop to the host's STOP | median %.1f ms | 99th percentile %.1f ms (%d presses) |%n",
                 Runtime.getRuntime().availableProcessors(), full ? 30 : 6,
                 SerialBench.percentile(hb.hostQuietMs(), 99), SerialBench.percentile(hb.hostLoadedMs(), 99),
-                java.util.Arrays.stream(hb.hostQuietMs()).max().orElse(Double.NaN), java.util.Arrays.stream(hb.hostLoadedMs()).max().orElse(Double.NaN),
+                Arrays.stream(hb.hostQuietMs()).max().orElse(Double.NaN), Arrays.stream(hb.hostLoadedMs()).max().orElse(Double.NaN),
                 SerialBench.percentile(hb.boardQuietMs(), 99), SerialBench.percentile(hb.boardLoadedMs(), 99),
-                java.util.Arrays.stream(hb.boardQuietMs()).max().orElse(Double.NaN), java.util.Arrays.stream(hb.boardLoadedMs()).max().orElse(Double.NaN),
+                Arrays.stream(hb.boardQuietMs()).max().orElse(Double.NaN), Arrays.stream(hb.boardLoadedMs()).max().orElse(Double.NaN),
                 hb.tripsQuiet(), hb.tripsLoaded(), SerialBench.percentile(hb.estopToStopMs(), 50),
                 SerialBench.percentile(hb.estopToStopMs(), 99), hb.estopToStopMs().length));
         Files.writeString(reportDir.resolve("serial.md"), md.toString());

@@ -1,7 +1,8 @@
 package io.concord.console;
 
 import io.concord.core.acl.AID;
-import io.concord.layers.platform.Platform;
+import io.concord.core.net.Address;
+import io.concord.layers.Platform;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
@@ -69,7 +70,7 @@ public final class Console implements AutoCloseable {
          */
         public static Config parse(String hostPort) {
             String s = hostPort.trim();
-            io.concord.core.net.Address a = s.contains(":") ? io.concord.core.net.Address.parse(s) : null;
+            Address a = s.contains(":") ? Address.parse(s) : null;
             if (a == null && !s.matches("[0-9]{1,5}")) {
                 throw new IllegalArgumentException("the console is given as [host:]port, e.g. 7070 or 0.0.0.0:7070; got '" + hostPort + "'");
             }

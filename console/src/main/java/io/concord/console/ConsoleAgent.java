@@ -1,24 +1,25 @@
 package io.concord.console;
 
-import io.concord.core.acl.AID;
-import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
-import io.concord.core.agent.Agent;
-import io.concord.core.acl.MessageTemplate;
-import io.concord.core.agent.Inbox;
-import io.concord.core.agent.TickerBehaviour;
-import io.concord.layers.observe.ObserverLayer;
-import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
-import io.concord.layers.platform.ServiceDescription;
-
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MessageTemplate;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.Inbox;
+import io.concord.core.agent.TickerBehaviour;
+import io.concord.layers.Platform;
+import io.concord.layers.observe.ObserverLayer;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.ContainerLayer;
+import io.concord.layers.platform.ServiceDescription;
 
+import java.io.IOException;
 import java.util.ArrayDeque;
+import java.util.Collection;
 import java.util.Deque;
 import java.util.HashMap;
 import java.util.Iterator;
@@ -109,7 +110,7 @@ final class ConsoleAgent extends Agent {
         hub.publish("platform", o.toString());
     }
 
-    private ArrayNode entries(java.util.Collection<AgentEntry> list) {
+    private ArrayNode entries(Collection<AgentEntry> list) {
         ArrayNode a = json.createArrayNode();
         for (AgentEntry e : list) {
             ObjectNode n = a.addObject();
@@ -217,7 +218,7 @@ final class ConsoleAgent extends Agent {
         try {
             JsonNode n = json.readTree(s);
             return n != null && n.isObject() ? n : null;
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             return null;
         }
     }

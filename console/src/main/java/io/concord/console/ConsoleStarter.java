@@ -1,7 +1,7 @@
 package io.concord.console;
 
-import io.concord.layers.platform.ConsoleProvider;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.ConsoleProvider;
+import io.concord.layers.Platform;
 
 import java.io.PrintStream;
 import java.io.UncheckedIOException;

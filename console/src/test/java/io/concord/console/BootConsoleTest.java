@@ -1,7 +1,7 @@
 package io.concord.console;
 
 import io.concord.layers.Boot;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 
 import org.junit.jupiter.api.Test;
 

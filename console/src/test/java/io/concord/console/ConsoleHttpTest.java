@@ -2,7 +2,7 @@ package io.concord.console;
 
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.PortRange;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import org.junit.jupiter.api.AfterAll;

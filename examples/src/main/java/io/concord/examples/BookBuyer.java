@@ -4,10 +4,10 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
-import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;

@@ -6,7 +6,8 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.Inbox;
 import io.concord.core.agent.OneShotBehaviour;
-import io.concord.layers.platform.PlatformServices;
+import io.concord.layers.Platform;
+import io.concord.layers.PlatformServices;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.SplittableRandom;

@@ -2,9 +2,9 @@ package io.concord.examples;
 
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
-import io.concord.layers.platform.PlatformServices;
+import io.concord.layers.PlatformServices;
 
 import java.util.List;
 

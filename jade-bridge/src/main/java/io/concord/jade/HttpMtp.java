@@ -6,7 +6,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
 import io.concord.core.layer.DropCounters;
-import io.concord.core.proto.MtsFailure;
+import io.concord.core.acl.MtsFailure;
 import io.concord.core.time.Clock;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.GatewayContext;

@@ -1,7 +1,7 @@
 package io.concord.jade;
 
 import io.concord.layers.platform.Gateway;
-import io.concord.layers.platform.GatewayProvider;
+import io.concord.layers.GatewayProvider;
 
 
 /** Provides the HTTP MTP to {@code Boot -http}, by {@link java.util.ServiceLoader}. */

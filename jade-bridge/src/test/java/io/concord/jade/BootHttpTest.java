@@ -3,7 +3,8 @@ package io.concord.jade;
 import io.concord.core.acl.AID;
 import io.concord.layers.Boot;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
+import io.concord.layers.platform.Role;
 import org.junit.jupiter.api.Test;
 
 import java.io.ByteArrayOutputStream;
@@ -34,7 +35,7 @@ class BootHttpTest {
             p.runtime().execute(() -> {
                 ContainerLayer l = Platform.containerLayer(p.runtime(), AID.local("echo", name));
                 Consumer<ContainerLayer> check = x -> {
-                    if (x.role() == ContainerLayer.Role.CONTAINER) {
+                    if (x.role() == Role.CONTAINER) {
                         container.complete(null);
                     }
                 };

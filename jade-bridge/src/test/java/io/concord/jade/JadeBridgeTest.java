@@ -7,7 +7,7 @@ import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 import io.concord.layers.security.IdentityStore;
 import io.concord.layers.security.PlatformKey;

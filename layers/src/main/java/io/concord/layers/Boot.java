@@ -5,20 +5,28 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.PortRange;
 import io.concord.core.net.Transport;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.Gateway;
+import io.concord.layers.platform.NetworkConfig;
+import io.concord.layers.platform.Role;
+import io.concord.layers.security.PlatformKey;
 
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.Reader;
+import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Properties;
+import java.util.ServiceLoader;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
 
 /**
  * The command line, in the style of JADE's {@code jade.Boot}: starts agents on this host's
@@ -87,13 +95,13 @@ public final class Boot {
                 .transport(transport(s.getOrDefault("transport", "udp")));
         if (s.containsKey("key")) {
             try {
-                b.platformKey(io.concord.layers.security.PlatformKey.load(java.nio.file.Path.of(s.get("key").trim())));
-            } catch (IllegalStateException | java.io.UncheckedIOException e) {
+                b.platformKey(PlatformKey.load(Path.of(s.get("key").trim())));
+            } catch (IllegalStateException | UncheckedIOException e) {
                 throw new BootException("-key: " + e.getMessage(), e);
             }
         }
         try {
-            io.concord.layers.platform.NetworkConfig net = io.concord.layers.platform.NetworkConfig.defaults();
+            NetworkConfig net = NetworkConfig.defaults();
             if (s.containsKey("discovery-port")) {
                 net = net.withPort(Integer.parseInt(s.get("discovery-port").trim()));
             }
@@ -148,13 +156,13 @@ public final class Boot {
         p.runtime().execute(() -> {
             ContainerLayer c = Platform.containerLayer(p.runtime(), aid);
             String[] last = {""};
-            java.util.function.Consumer<ContainerLayer> print = l -> {
+            Consumer<ContainerLayer> print = l -> {
                 String now = l.role() + " " + l.containerName() + " " + l.agents().size() + " " + l.globalAgents().size();
-                if (!now.equals(last[0]) && l.role() != ContainerLayer.Role.SEEKING && l.containerName() != null) {
+                if (!now.equals(last[0]) && l.role() != Role.SEEKING && l.containerName() != null) {
                     last[0] = now;
                     int here = l.agents().size();
                     int elsewhere = l.globalAgents().size();
-                    out.println(aid.localName() + ": " + (l.role() == ContainerLayer.Role.CONTAINER
+                    out.println(aid.localName() + ": " + (l.role() == Role.CONTAINER
                             ? "I am the container (term " + l.term() + ")"
                             : "container is " + l.containerName() + " (term " + l.term() + ")")
                             + ", " + here + (here == 1 ? " agent" : " agents") + " here"
@@ -329,12 +337,12 @@ public final class Boot {
     }
 
     /** The JADE bridge's HTTP MTP, from concord-jade-bridge. */
-    private static java.util.function.Supplier<io.concord.layers.platform.Gateway> httpGateway(String[] hostPort,
+    private static Supplier<Gateway> httpGateway(String[] hostPort,
                                                                                             Map<String, String> settings) {
         String h = hostPort[0];
         int port = Integer.parseInt(hostPort[1]);
-        io.concord.layers.platform.GatewayProvider http = null;
-        for (io.concord.layers.platform.GatewayProvider g : java.util.ServiceLoader.load(io.concord.layers.platform.GatewayProvider.class)) {
+        GatewayProvider http = null;
+        for (GatewayProvider g : ServiceLoader.load(GatewayProvider.class)) {
             if (g.kind().equals("http")) {
                 http = g;
             }
@@ -342,10 +350,10 @@ public final class Boot {
         if (http == null) {
             throw new BootException("-http needs the JADE bridge: add concord-jade-bridge to the class path");
         }
-        io.concord.layers.platform.GatewayProvider provider = http;
+        GatewayProvider provider = http;
         String fh = h;
         int fp = port;
-        Map<String, String> own = new java.util.HashMap<>();
+        Map<String, String> own = new HashMap<>();
         for (String k : List.of("http-platforms", "http-hosts")) {
             if (settings.containsKey(k)) {
                 own.put(k, settings.get(k));

@@ -4,6 +4,7 @@ import io.concord.core.layer.Layer;
 import io.concord.core.net.Address;
 import io.concord.core.net.Transport;
 import io.concord.layers.communication.CommunicationLayer;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.parser.Membership;
 import io.concord.layers.parser.ParserLayer;
@@ -15,9 +16,12 @@ import io.concord.layers.temporal.PlatformClock;
 import io.concord.layers.temporal.TemporalLayer;
 
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collection;
 import java.util.EnumSet;
 import java.util.List;
 import java.util.Objects;
+import java.util.Set;
 import java.util.function.Supplier;
 
 /**
@@ -139,12 +143,12 @@ public final class SafetyStack {
          * real platform.
          */
         public Builder withoutDefences(Defence... defences) {
-            off.addAll(java.util.Arrays.asList(defences));
+            off.addAll(Arrays.asList(defences));
             return this;
         }
 
         /** As {@link #withoutDefences(Defence...)}. */
-        public Builder withoutDefences(java.util.Collection<Defence> defences) {
+        public Builder withoutDefences(Collection<Defence> defences) {
             off.addAll(defences);
             return this;
         }
@@ -200,7 +204,7 @@ public final class SafetyStack {
                     + (out.contains(LayerKind.SEQUENCE) ? 0 : SequenceLayer.HEADER_BYTES)
                     + (out.contains(LayerKind.TEMPORAL) ? 0 : TemporalLayer.HEADER_BYTES);
             int limit = frameLimit;
-            java.util.Set<Defence> offHere = java.util.Set.copyOf(off);
+            Set<Defence> offHere = Set.copyOf(off);
             return () -> {
                 PlatformClock clock = new PlatformClock();
                 List<Layer> layers = new ArrayList<>(5);

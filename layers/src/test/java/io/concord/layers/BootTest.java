@@ -1,7 +1,6 @@
 package io.concord.layers;
 
 import io.concord.core.agent.Agent;
-import io.concord.layers.platform.Platform;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

@@ -1,5 +1,6 @@
 package io.concord.layers;
 
+import io.concord.layers.defence.Defence;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;

@@ -1,10 +1,12 @@
 package io.concord.sim;
 
+import io.concord.agents.chair.ChairDriver;
 import io.concord.agents.control.ControlAgent;
 import io.concord.agents.door.DoorAgent;
+import io.concord.agents.map.HospitalMap;
 import io.concord.agents.plan.PlannerAgent;
 import io.concord.agents.traffic.TrafficAgent;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
 import io.concord.sim.world.WorldDoor;
@@ -69,7 +71,7 @@ public final class Hospital {
      * Starts the planner and the control agent of any chair: a simulated one, or a real or
      * emulated one over its serial link ({@code io.concord.serial.SerialChair}).
      */
-    public void addChair(Platform platform, io.concord.agents.map.HospitalMap map, io.concord.agents.chair.ChairDriver c,
+    public void addChair(Platform platform, HospitalMap map, ChairDriver c,
                          Consumer<String> log) {
         PlannerAgent p = new PlannerAgent(map, c.name(), log);
         platform.startAgent("planner-" + c.name(), p);

@@ -6,30 +6,40 @@ import io.concord.agents.map.MapException;
 import io.concord.agents.map.Node;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.agents.proto.Services;
+import io.concord.console.Console;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
+import io.concord.serial.PairingKey;
+import io.concord.serial.SerialChair;
 import io.concord.sim.render.HospitalPicture;
+import io.concord.sim.world.AugmentedChair;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
 
 import java.io.BufferedReader;
+import java.io.IOException;
 import java.io.InputStreamReader;
 import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 
 /**
@@ -45,7 +55,7 @@ import java.util.function.Consumer;
 public final class HospitalDemo {
     private static final PrintStream OUT = System.out;
     /** Where chairs wait, in the order they are added. */
-    static final int[] PARKING = java.util.Arrays.copyOf(Hospital.STARTS, 5);
+    static final int[] PARKING = Arrays.copyOf(Hospital.STARTS, 5);
 
     private HospitalDemo() {
     }
@@ -109,7 +119,7 @@ public final class HospitalDemo {
         Options o;
         HospitalMap map;
         try {
-            o = parse(role == null ? args : java.util.Arrays.copyOfRange(args, 1, args.length));
+            o = parse(role == null ? args : Arrays.copyOfRange(args, 1, args.length));
             map = o.map() == null ? HospitalMap.defaultHospital() : HospitalMap.load(o.map());
             check(map, o);
         } catch (IllegalArgumentException e) {
@@ -199,7 +209,7 @@ public final class HospitalDemo {
             throw new IllegalArgumentException("--pair-key is the key the chair's board is paired with: it needs --serial PORT");
         }
         if (pairKey != null) {
-            io.concord.serial.PairingKey.read(pairKey);   // a missing or short key stops the demo here, with why
+            PairingKey.read(pairKey);   // a missing or short key stops the demo here, with why
         }
         if (serial != null) {
             speed = 1;   // the board (real or emulated) keeps real time
@@ -209,7 +219,7 @@ public final class HospitalDemo {
         }
         if (console != null) {
             try {
-                io.concord.console.Console.Config.parse(console);
+                Console.Config.parse(console);
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException("--console: " + e.getMessage());
             }
@@ -220,7 +230,7 @@ public final class HospitalDemo {
     private static void check(HospitalMap map, Options o) {
         for (int i = 0; i < o.chairs(); i++) {
             if (!map.hasNode(PARKING[i])) {
-                throw new MapException("--map", List.of("the demo parks its chairs at nodes " + java.util.Arrays.toString(PARKING)
+                throw new MapException("--map", List.of("the demo parks its chairs at nodes " + Arrays.toString(PARKING)
                         + "; node " + PARKING[i] + " is missing"));
             }
         }
@@ -330,7 +340,7 @@ public final class HospitalDemo {
                 + "(the Medical agent). No address is configured: they find each other by port binding on 127.0.0.1 "
                 + "(7001 and up) and elect a container. The world runs %.0f times faster than real time.%n%n", o.speed());
         Process ward = spawn("ward", o);
-        List<Process> children = new java.util.concurrent.CopyOnWriteArrayList<>(List.of(ward));
+        List<Process> children = new CopyOnWriteArrayList<>(List.of(ward));
         // Stopped (Ctrl-C, kill), the launcher stops its JVMs first: a ward left running would keep driving a real chair.
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             for (Process p : children) {
@@ -382,7 +392,7 @@ public final class HospitalDemo {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), "-Dorg.slf4j.simpleLogger.defaultLogLevel=warn"));
         // The parent's -D options (concord.home, the idle strategy, a log level) hold in its children too.
-        for (String arg : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+        for (String arg : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
             if (arg.startsWith("-D")) {
                 cmd.add(arg);
             }
@@ -402,7 +412,7 @@ public final class HospitalDemo {
                     }
                     watch.accept(line);
                 }
-            } catch (java.io.IOException e) {
+            } catch (IOException e) {
                 // the process ended
             }
         }, "demo-" + prefix.trim());
@@ -421,19 +431,19 @@ public final class HospitalDemo {
         if (o.console() != null) {
             HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
             platform.startAgent("desk", desk);
-            io.concord.console.Console c = io.concord.console.Console.start(platform, io.concord.console.Console.Config.parse(o.console()));
+            Console c = Console.start(platform, Console.Config.parse(o.console()));
             c.addView(new HospitalView(world, hospital, desk));
             OUT.println("console: " + c.uri() + "  (the hospital, the platform, the safety counters and the sniffer)");
         }
-        java.util.concurrent.atomic.AtomicReference<io.concord.serial.SerialChair> serialChair = new java.util.concurrent.atomic.AtomicReference<>();
+        AtomicReference<SerialChair> serialChair = new AtomicReference<>();
         if (o.serial() != null) {
             // chair1 is on its serial port; the world keeps the doors (and any other chairs).
             rt.execute(() -> {
-                io.concord.serial.SerialChair c = io.concord.serial.SerialChair.open(rt,
-                        io.concord.serial.SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))
-                                .withKey(o.pairKey() == null ? null : io.concord.serial.PairingKey.read(o.pairKey())));
+                SerialChair c = SerialChair.open(rt,
+                        SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))
+                                .withKey(o.pairKey() == null ? null : PairingKey.read(o.pairKey())));
                 serialChair.set(c);
-                hospital.addChair(platform, map, o.augmented() ? new io.concord.sim.world.AugmentedChair(c, world) : c, log);
+                hospital.addChair(platform, map, o.augmented() ? new AugmentedChair(c, world) : c, log);
             });
         }
         CountDownLatch stopped = new CountDownLatch(1);
@@ -441,7 +451,7 @@ public final class HospitalDemo {
             CountDownLatch drawn = new CountDownLatch(1);
             rt.execute(() -> {
                 try {
-                    io.concord.serial.SerialChair s = serialChair.get();
+                    SerialChair s = serialChair.get();
                     if (s != null) {
                         s.close();   // a STOP now, rather than the board's watchdog 200 ms after the last frame
                     }
@@ -509,7 +519,7 @@ public final class HospitalDemo {
         }
         try {
             CompletableFuture.allOf(fs.toArray(new CompletableFuture[0])).get((long) (o.maxSeconds() / o.speed()) + 60, TimeUnit.SECONDS);
-        } catch (java.util.concurrent.TimeoutException e) {
+        } catch (TimeoutException e) {
             OUT.println("staff: not every transport ended in time");
         }
         boolean ok = report(fs);

@@ -1,5 +1,8 @@
 package io.concord.sim;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.control.ControlAgent;
 import io.concord.agents.control.TaskView;
@@ -7,6 +10,7 @@ import io.concord.agents.door.DoorAgent;
 import io.concord.agents.map.Door;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.Node;
+import io.concord.agents.map.Point;
 import io.concord.agents.map.Wall;
 import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
@@ -16,16 +20,12 @@ import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.Inbox;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
 import io.concord.sim.world.WorldDoor;
-
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -333,7 +333,7 @@ public final class HospitalView implements ConsoleView {
         return seen.length() == 0 ? state : state + " (" + seen + ")";
     }
 
-    private static double toSegment(Pose p, io.concord.agents.map.Point a, io.concord.agents.map.Point b) {
+    private static double toSegment(Pose p, Point a, Point b) {
         double dx = b.x() - a.x();
         double dy = b.y() - a.y();
         double len2 = dx * dx + dy * dy;

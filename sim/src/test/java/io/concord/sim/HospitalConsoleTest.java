@@ -5,7 +5,7 @@ import io.concord.agents.medical.MedicalAgent;
 import io.concord.console.Browser;
 import io.concord.console.Console;
 import io.concord.core.agent.PortRange;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
 

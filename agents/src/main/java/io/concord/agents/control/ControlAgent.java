@@ -21,7 +21,7 @@ import io.concord.core.agent.WakerBehaviour;
 import io.concord.core.proto.ContractNetResponder;
 import io.concord.core.proto.FipaProtocols;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.Arrays;

@@ -2,16 +2,16 @@ package io.concord.agents.door;
 
 import io.concord.agents.map.Door;
 import io.concord.agents.proto.Content;
-import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
+import io.concord.core.agent.Inbox;
 import io.concord.core.agent.TickerBehaviour;
 import io.concord.core.proto.RefuseException;
 import io.concord.core.proto.SubscriptionResponder;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayDeque;

@@ -1,17 +1,18 @@
 package io.concord.agents.medical;
 
 import io.concord.agents.proto.Content;
-import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
+import io.concord.core.agent.Inbox;
+import io.concord.core.agent.WakerBehaviour;
 import io.concord.core.proto.ContractNetInitiator;
 import io.concord.core.proto.FipaProtocols;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.AgentEntry;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;
@@ -326,7 +327,7 @@ public class MedicalAgent extends Agent {
                         if (now - since < settings.waitForChairMs()) {
                             log.accept(getLocalName() + ": no chair can take " + id + " now (" + String.join("; ", unavailable)
                                     + "); asks again in " + settings.retryMs() / 1000 + " s");
-                            addBehaviour(new io.concord.core.agent.WakerBehaviour(myAgent, settings.retryMs()) {
+                            addBehaviour(new WakerBehaviour(myAgent, settings.retryMs()) {
                                 @Override
                                 protected void onWake() {
                                     auction(id, from, to, tp, unload, round, f, since);

@@ -2,15 +2,15 @@ package io.concord.agents.traffic;
 
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Content;
-import io.concord.core.agent.Inbox;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
+import io.concord.core.agent.Inbox;
 import io.concord.core.agent.TickerBehaviour;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;

@@ -1,15 +1,14 @@
 package io.concord.bench.child;
 
-import io.concord.bench.Platforms;
-import io.concord.bench.jmh.HttpBenchmark;
-
+import io.concord.bench.concord.ConcordHttpEcho;
 import io.concord.bench.jade.JadeHttpEcho;
 import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.support.Platforms;
 import io.concord.core.agent.PortRange;
 import io.concord.jade.HttpMtp;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.security.IdentityStore;
 
 /**
@@ -37,7 +36,7 @@ public final class HttpTarget {
                     .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(Platforms.KEY)
                             .identities(IdentityStore.ephemeral()).build())
                     .gateway(() -> new HttpMtp("127.0.0.1", port)).build();
-            p.startAgent("echo", new HttpBenchmark.Echo());
+            p.startAgent("echo", new ConcordHttpEcho());
             platform = p;
         }
         System.out.println("READY echo@httptarget");

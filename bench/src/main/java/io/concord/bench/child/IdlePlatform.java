@@ -2,11 +2,11 @@ package io.concord.bench.child;
 
 import io.concord.core.acl.AID;
 import io.concord.layers.Boot;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
 
-import java.io.PrintStream;
 import java.io.OutputStream;
+import java.io.PrintStream;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 

@@ -5,14 +5,17 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.layer.Tracer;
+import io.concord.layers.Platform;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
@@ -59,9 +62,9 @@ public final class LoadChild {
         };
         AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).tracer(tracer).build();
         // A 7th argument names defences to build the stacks without (a comparison run: PORT_CHECK).
-        io.concord.layers.Defence[] off = args.length > 6 && !args[6].isEmpty()
-                ? java.util.Arrays.stream(args[6].split(",")).map(io.concord.layers.Defence::valueOf).toArray(io.concord.layers.Defence[]::new)
-                : new io.concord.layers.Defence[0];
+        Defence[] off = args.length > 6 && !args[6].isEmpty()
+                ? Arrays.stream(args[6].split(",")).map(Defence::valueOf).toArray(Defence[]::new)
+                : new Defence[0];
         Platform p = Platform.builder().name(name).runtime(rt).ports(PortRange.of(first, last)).withoutDefences(off).build();
         rt.start();
         AID[] aids = new AID[n];
@@ -118,7 +121,7 @@ public final class LoadChild {
             if (l == null || l.containerName() == null) {
                 f.complete(0);
             } else if (services) {
-                java.util.List<AgentEntry> found = l.search(ServiceDescription.ofType("load-service"));
+                List<AgentEntry> found = l.search(ServiceDescription.ofType("load-service"));
                 f.complete(found.size());
             } else {
                 f.complete(l.agents().size());

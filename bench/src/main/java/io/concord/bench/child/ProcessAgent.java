@@ -1,8 +1,8 @@
 package io.concord.bench.child;
 
-import io.concord.bench.Platforms;
-import io.concord.bench.Rounds;
-import io.concord.bench.jmh.ChainBenchmark;
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Platforms;
+import io.concord.bench.support.Rounds;
 
 import io.concord.bench.concord.ConcordChainLink;
 import io.concord.core.acl.AID;
@@ -27,7 +27,7 @@ public final class ProcessAgent {
         String name = args[1];
         String platform = args[args.length - 1];
         try (AgentRuntime rt = Platforms.concord(platform)) {
-            Agent agent = kind.equals("link") ? new ConcordChainLink(new Rounds(), false, ChainBenchmark.SECRET)
+            Agent agent = kind.equals("link") ? new ConcordChainLink(new Rounds(), false, Chain.SECRET)
                     : new BookSeller(Integer.parseInt(args[2]));
             AID aid = rt.startAgent(name, agent);
             System.out.println("READY " + aid.addresses().get(0));

@@ -1,11 +1,14 @@
 package io.concord.bench.child;
 
-import io.concord.bench.Platforms;
+import io.concord.bench.support.Platforms;
 import io.concord.bench.throughput.ConcordReceiver;
 import io.concord.bench.throughput.Counters;
 import io.concord.bench.throughput.JadeReceiver;
 import io.concord.bench.throughput.UdpFloor;
 import io.concord.core.agent.AgentRuntime;
+import jade.core.Profile;
+import jade.core.ProfileImpl;
+import jade.wrapper.ContainerController;
 
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
@@ -37,12 +40,12 @@ public final class ThroughputChild {
             case "jade" -> {
                 jade.core.Runtime jrt = jade.core.Runtime.instance();
                 jrt.setCloseVM(false);
-                jade.core.Profile p = new jade.core.ProfileImpl();
-                p.setParameter(jade.core.Profile.MAIN_HOST, "127.0.0.1");
-                p.setParameter(jade.core.Profile.MAIN_PORT, args[2]);
-                p.setParameter(jade.core.Profile.LOCAL_HOST, "127.0.0.1");
-                p.setParameter(jade.core.Profile.CONTAINER_NAME, "receivers");
-                jade.wrapper.ContainerController c = jrt.createAgentContainer(p);
+                Profile p = new ProfileImpl();
+                p.setParameter(Profile.MAIN_HOST, "127.0.0.1");
+                p.setParameter(Profile.MAIN_PORT, args[2]);
+                p.setParameter(Profile.LOCAL_HOST, "127.0.0.1");
+                p.setParameter(Profile.CONTAINER_NAME, "receivers");
+                ContainerController c = jrt.createAgentContainer(p);
                 for (int i = 0; i < r; i++) {
                     c.createNewAgent("r" + i, JadeReceiver.class.getName(), new Object[0]).start();
                 }

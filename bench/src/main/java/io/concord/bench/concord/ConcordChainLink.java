@@ -1,11 +1,13 @@
 package io.concord.bench.concord;
 
-import io.concord.bench.Rounds;
+import io.concord.bench.support.Rounds;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.CyclicBehaviour;
+
+import java.util.concurrent.atomic.AtomicLong;
 
 /** A link of the chain on Concord, with exactly the rules of the JADE version. */
 public class ConcordChainLink extends Agent {
@@ -19,7 +21,7 @@ public class ConcordChainLink extends Agent {
      * in {@link #strangers} (the attack benchmark's forged deliveries).
      */
     public volatile AID previous;
-    public final java.util.concurrent.atomic.AtomicLong strangers = new java.util.concurrent.atomic.AtomicLong();
+    public final AtomicLong strangers = new AtomicLong();
 
     public ConcordChainLink(Rounds rounds, boolean first, String secret) {
         this.rounds = rounds;

@@ -1,18 +1,19 @@
 package io.concord.bench.harness;
 
-import io.concord.bench.Rounds;
 import io.concord.bench.child.AttackChild;
-import io.concord.bench.concord.ConcordChainLink;
 import io.concord.bench.child.Children;
+import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Rounds;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.net.Address;
 import io.concord.core.net.Transport;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.security.IdentityStore;
 import io.concord.layers.security.PlatformKey;
 
@@ -38,7 +39,7 @@ import java.util.concurrent.TimeUnit;
 public final class AttackHarness {
     static final int AGENTS = 6;
     static final int ROUNDS = 50;
-    static final String SECRET = io.concord.bench.jmh.ChainBenchmark.SECRET;
+    static final String SECRET = Chain.SECRET;
 
     /** What one attack measured. */
     public record Result(String kind, double usBefore, double usDuring, long forged, double heapMbMax, double heapMbAfterGc,

@@ -1,13 +1,13 @@
 package io.concord.bench.harness;
 
-import io.concord.bench.Platforms;
-import io.concord.bench.Rounds;
 import io.concord.bench.concord.ConcordChainLink;
+import io.concord.bench.support.Platforms;
+import io.concord.bench.support.Rounds;
 import io.concord.console.Console;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.PortRange;
+import io.concord.layers.Platform;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
 
 import java.io.InputStream;
 import java.net.URI;

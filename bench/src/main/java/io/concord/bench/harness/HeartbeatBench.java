@@ -1,12 +1,11 @@
 package io.concord.bench.harness;
 
 import com.fazecast.jSerialComm.SerialPort;
-
 import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.ChairSupervisor;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.Board;
 import io.concord.serial.FrameCodec;
 import io.concord.serial.SerialChair;
@@ -14,12 +13,15 @@ import io.concord.serial.SerialChair;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * The heartbeat a busy host gives the board, and how fast an e-stop reaches the agents: over a
@@ -62,7 +64,7 @@ public final class HeartbeatBench {
             Board board = new Board(motors, codec, "bench", bytes -> bp.writeBytes(bytes, bytes.length));
             ConcurrentLinkedQueue<Runnable> onBoard = new ConcurrentLinkedQueue<>();
             AtomicBoolean stop = new AtomicBoolean();
-            List<Double> boardGaps = java.util.Collections.synchronizedList(new ArrayList<>());
+            List<Double> boardGaps = Collections.synchronizedList(new ArrayList<>());
             long[] trips = new long[1];
             Thread boardThread = new Thread(() -> {
                 byte[] buf = new byte[512];
@@ -94,7 +96,7 @@ public final class HeartbeatBench {
                     }
                     wasTripped = board.tripped();
                     if (n <= 0) {
-                        java.util.concurrent.locks.LockSupport.parkNanos(100_000);
+                        LockSupport.parkNanos(100_000);
                     }
                 }
             }, "bench-board");
@@ -214,7 +216,7 @@ public final class HeartbeatBench {
     private static void awaitArmed(AgentRuntime rt, ChairSupervisor s) throws Exception {
         long end = System.nanoTime() + 10_000_000_000L;
         while (System.nanoTime() < end) {
-            java.util.concurrent.CompletableFuture<Boolean> f = new java.util.concurrent.CompletableFuture<>();
+            CompletableFuture<Boolean> f = new CompletableFuture<>();
             rt.execute(() -> f.complete(s.armed()));
             if (f.get(10, TimeUnit.SECONDS)) {
                 return;

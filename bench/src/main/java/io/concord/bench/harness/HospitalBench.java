@@ -10,10 +10,11 @@ import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.ServiceDescription;
+import io.concord.layers.security.PlatformKey;
 import io.concord.sim.Hospital;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
@@ -26,6 +27,7 @@ import java.util.SplittableRandom;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 
 /**
  * The wheelchair's figures: A* on the default hospital and on a generated 1,000-node graph (Nav2's
@@ -134,7 +136,7 @@ public final class HospitalBench {
         }
     }
 
-    private static void waitUntil(AgentRuntime rt, java.util.function.BooleanSupplier c, int seconds) throws Exception {
+    private static void waitUntil(AgentRuntime rt, BooleanSupplier c, int seconds) throws Exception {
         long end = System.nanoTime() + seconds * 1_000_000_000L;
         while (System.nanoTime() < end) {
             CompletableFuture<Boolean> f = new CompletableFuture<>();
@@ -154,7 +156,7 @@ public final class HospitalBench {
             AgentRuntime rt = sim.newRuntime("h1");
             Platform platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 200, 10))
                     .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(
-                            io.concord.layers.security.PlatformKey.of(new byte[32])).build()).build();
+                            PlatformKey.of(new byte[32])).build()).build();
             HospitalWorld world = HospitalWorld.builder(HospitalMap.defaultHospital()).seed(2010).build();
             world.addChair("chair1", ChairConfig.standard().withWatchdog(0.3), world.poseAt(19, 90));
             world.attach(rt);

@@ -4,17 +4,21 @@ import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.platform.ContainerLayer;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.platform.Role;
 import io.concord.layers.security.IdentityStore;
 import io.concord.layers.security.PlatformKey;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Supplier;
 
 /**
  * Experiments 1 and 2 of the dissertation on real UDP sockets in one JVM, with the class-7 stack:
@@ -27,7 +31,7 @@ public final class PlatformHarness {
     public record Bootstrap(int agents, boolean converged, double electMs, double collectMs, double distributeMs,
                      double totalMs, double cycleMs) {
         public String line() {
-            return String.format(java.util.Locale.ROOT,
+            return String.format(Locale.ROOT,
                     "RESULT bootstrap agents=%d converged=%s elect_ms=%.1f collect_ms=%.1f distribute_ms=%.1f total_ms=%.1f",
                     agents, converged, electMs, collectMs, distributeMs, totalMs);
         }
@@ -35,7 +39,7 @@ public final class PlatformHarness {
 
     public record Failover(int agents, boolean converged, double detectedMs, double newContainerMs, double lalCompleteMs) {
         public String line() {
-            return String.format(java.util.Locale.ROOT,
+            return String.format(Locale.ROOT,
                     "RESULT failover agents=%d detected_ms=%.1f new_container_ms=%.1f lal_complete_ms=%.1f",
                     agents, detectedMs, newContainerMs, lalCompleteMs);
         }
@@ -100,7 +104,7 @@ public final class PlatformHarness {
             try {
                 boot.get(20, TimeUnit.SECONDS);
                 ok = true;
-            } catch (java.util.concurrent.TimeoutException e) {
+            } catch (TimeoutException e) {
                 ok = false;
             }
             double elect = ms(t[0] - t0[0]);
@@ -167,7 +171,7 @@ public final class PlatformHarness {
         try {
             done.get(20, TimeUnit.SECONDS);
             ok = true;
-        } catch (java.util.concurrent.TimeoutException e) {
+        } catch (TimeoutException e) {
             ok = false;
         }
         return new Failover(n, ok, ms(t[1] - t[0]), ms(t[2] - t[0]), ok ? ms(t[3] - t[0]) : -1);
@@ -177,7 +181,7 @@ public final class PlatformHarness {
     private static ContainerLayer single(List<ContainerLayer> layers, String exclude) {
         ContainerLayer found = null;
         for (ContainerLayer l : layers) {
-            if (l.role() == ContainerLayer.Role.CONTAINER && !l.selfEntry().name().equals(exclude)) {
+            if (l.role() == Role.CONTAINER && !l.selfEntry().name().equals(exclude)) {
                 if (found != null) {
                     return null;
                 }
@@ -189,7 +193,7 @@ public final class PlatformHarness {
 
     private static boolean allFollow(List<ContainerLayer> layers, ContainerLayer c) {
         for (ContainerLayer l : layers) {
-            if (l.role() == ContainerLayer.Role.SEEKING || !c.containerName().equals(l.containerName())) {
+            if (l.role() == Role.SEEKING || !c.containerName().equals(l.containerName())) {
                 return false;
             }
         }
@@ -213,7 +217,7 @@ public final class PlatformHarness {
     }
 
     /** What the supplier returns, computed on the runtime's loop. */
-    static <T> T onLoop(AgentRuntime rt, java.util.function.Supplier<T> s) throws Exception {
+    static <T> T onLoop(AgentRuntime rt, Supplier<T> s) throws Exception {
         CompletableFuture<T> f = new CompletableFuture<>();
         rt.execute(() -> f.complete(s.get()));
         return f.get(10, TimeUnit.SECONDS);

@@ -6,17 +6,18 @@ import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
+import io.concord.layers.Platform;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.platform.NetworkConfig;
-import io.concord.layers.platform.Platform;
 import io.concord.layers.platform.PlatformConfig;
 import io.concord.layers.security.PlatformKey;
 
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -35,7 +36,7 @@ public final class ScaleHarness {
                          double msgsPerCyclePerAgent, double bytesPerCyclePerAgent, double periodMs, double convergeKbPerAgent,
                          double healKbPerAgent, double allUpMs, double wallS) {
         public String line() {
-            return String.format(java.util.Locale.ROOT, "RESULT scale %d %d converge_ms=%.0f heal_ms=%.0f "
+            return String.format(Locale.ROOT, "RESULT scale %d %d converge_ms=%.0f heal_ms=%.0f "
                             + "msgs_per_cycle_per_agent=%.2f bytes_per_cycle_per_agent=%.0f converge_kb_per_agent=%.1f "
                             + "heal_kb_per_agent=%.1f", agents, hosts, convergeMs, healMs, msgsPerCyclePerAgent,
                     bytesPerCyclePerAgent, convergeKbPerAgent, healKbPerAgent);

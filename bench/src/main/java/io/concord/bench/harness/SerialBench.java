@@ -1,14 +1,13 @@
 package io.concord.bench.harness;
 
 import com.fazecast.jSerialComm.SerialPort;
-
 import io.concord.agents.chair.ChairDriver;
 import io.concord.agents.chair.ChairLayout;
 import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Pose;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.Board;
 import io.concord.serial.BoardProtocol;
 import io.concord.serial.Frame;
@@ -18,6 +17,7 @@ import io.concord.serial.SerialChair;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -25,6 +25,8 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * The serial link's timings over a real pty pair (socat), the board's logic on one end in a
@@ -99,7 +101,7 @@ public final class SerialBench {
                 }
                 bp.writeBytes(bytes, bytes.length);
             });
-            java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
+            AtomicBoolean stop = new AtomicBoolean();
             Thread boardThread = new Thread(() -> {
                 byte[] buf = new byte[512];
                 board.switchOn(0);
@@ -114,7 +116,7 @@ public final class SerialBench {
                     }
                     board.tick(now);
                     if (n <= 0) {
-                        java.util.concurrent.locks.LockSupport.parkNanos(100_000);
+                        LockSupport.parkNanos(100_000);
                     }
                 }
             }, "bench-board");
@@ -122,7 +124,7 @@ public final class SerialBench {
             boardThread.start();
 
             int samples = full ? 400 : 100;
-            List<Double> sensor = java.util.Collections.synchronizedList(new ArrayList<>());
+            List<Double> sensor = Collections.synchronizedList(new ArrayList<>());
             List<Double> cmd = new ArrayList<>();
             try (Platform platform = Platform.builder().name("bench").build()) {
                 AgentRuntime rt = platform.runtime();

@@ -1,7 +1,6 @@
 package io.concord.bench.harness;
 
-import io.concord.bench.Platforms;
-
+import io.concord.bench.support.Platforms;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -130,7 +129,7 @@ public final class StressHarness {
                 rates.add((now - before) * 1e9 / (System.nanoTime() - start));
                 before = now;
                 System.gc();
-                java.lang.Runtime rt = java.lang.Runtime.getRuntime();
+                Runtime rt = Runtime.getRuntime();
                 heaps.add((rt.totalMemory() - rt.freeMemory()) / 1048576.0);
             }
             return new Outcome(transport, rates, heaps, receiver.small.get(), sender.refused.get(),

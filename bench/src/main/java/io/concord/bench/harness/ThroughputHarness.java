@@ -1,9 +1,9 @@
 package io.concord.bench.harness;
 
-import io.concord.bench.Platforms;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ThroughputChild;
 import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.support.Platforms;
 import io.concord.bench.throughput.ConcordReceiver;
 import io.concord.bench.throughput.ConcordSender;
 import io.concord.bench.throughput.Counters;
@@ -13,6 +13,7 @@ import io.concord.bench.throughput.UdpFloor;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -132,7 +133,7 @@ public final class ThroughputHarness {
     private static long count(Children kids) {
         try {
             return Long.parseLong(kids.ask(0, "COUNT", "COUNT").substring(6).trim());
-        } catch (java.io.IOException e) {
+        } catch (IOException e) {
             throw new IllegalStateException("the receivers' JVM did not answer: " + e.getMessage(), e);
         }
     }

@@ -1,6 +1,6 @@
 package io.concord.bench.jade;
 
-import io.concord.bench.Rounds;
+import io.concord.bench.support.Rounds;
 import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.CyclicBehaviour;

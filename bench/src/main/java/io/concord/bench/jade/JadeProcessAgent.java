@@ -1,6 +1,6 @@
 package io.concord.bench.jade;
 
-import io.concord.bench.Rounds;
+import io.concord.bench.support.Rounds;
 import jade.core.Profile;
 import jade.core.ProfileImpl;
 import jade.core.Runtime;

@@ -1,6 +1,6 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.Platforms;
+import io.concord.bench.support.Platforms;
 
 import io.concord.bench.jade.JadeBooks;
 import io.concord.bench.jade.JadePlatform;
@@ -8,7 +8,6 @@ import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.examples.BookBuyer;
 import io.concord.examples.BookSeller;
-import jade.wrapper.AgentController;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;

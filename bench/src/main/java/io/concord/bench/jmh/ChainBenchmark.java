@@ -1,10 +1,10 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.Platforms;
-
 import io.concord.bench.concord.ConcordChainLink;
 import io.concord.bench.jade.JadeChainLink;
 import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Platforms;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import jade.wrapper.AgentController;
@@ -26,7 +26,6 @@ import java.util.List;
 @State(Scope.Benchmark)
 public class ChainBenchmark extends RoundBenchmark {
     public static final int ROUNDS = 50;
-    public static final String SECRET = "s".repeat(492) + "checksum";
 
     @Param({Platforms.CONCORD_CLASS7, Platforms.JADE})
     public String platform;
@@ -42,7 +41,7 @@ public class ChainBenchmark extends RoundBenchmark {
             driver.jade = new JadePlatform();
             rounds.expectReady(n);
             for (int i = n - 1; i >= 0; i--) {
-                AgentController a = driver.jade.start("link" + i, JadeChainLink.class, rounds, i, n, SECRET);
+                AgentController a = driver.jade.start("link" + i, JadeChainLink.class, rounds, i, n, Chain.SECRET);
                 if (i == 0) {
                     driver.jadeStarter = a;
                 }
@@ -55,7 +54,7 @@ public class ChainBenchmark extends RoundBenchmark {
         List<ConcordChainLink> links = new ArrayList<>();
         List<AID> ids = new ArrayList<>();
         for (int i = 0; i < n; i++) {
-            ConcordChainLink l = new ConcordChainLink(rounds, i == 0, SECRET);
+            ConcordChainLink l = new ConcordChainLink(rounds, i == 0, Chain.SECRET);
             links.add(l);
             ids.add(concord.startAgent("link" + i, l));
         }

@@ -1,8 +1,6 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.RoundDriver;
 import io.concord.bench.child.HttpTarget;
-
 import io.concord.bench.jade.JadeHttpRequester;
 import io.concord.bench.jade.JadePlatform;
 import org.openjdk.jmh.annotations.Benchmark;
@@ -29,13 +27,6 @@ public class HttpBenchmark {
     public String target;
 
     private final RoundDriver driver = new RoundDriver();
-
-    /** A Concord echo: the request's content back, unchanged. */
-    public static final class Echo extends io.concord.core.testkit.EchoAgent {
-        public Echo() {
-            super("", m -> { });
-        }
-    }
 
     @Setup(Level.Trial)
     public void start() throws Exception {

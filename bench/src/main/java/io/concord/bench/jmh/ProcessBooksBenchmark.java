@@ -1,16 +1,15 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.Platforms;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ProcessAgent;
 
 import io.concord.bench.jade.JadeBooks;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.bench.jade.JadeProcessAgent;
+import io.concord.bench.support.Platforms;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.examples.BookBuyer;
-import jade.wrapper.AgentController;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.OperationsPerInvocation;

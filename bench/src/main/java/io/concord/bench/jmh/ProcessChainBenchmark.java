@@ -1,13 +1,13 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.Platforms;
 import io.concord.bench.child.Children;
 import io.concord.bench.child.ProcessAgent;
-
 import io.concord.bench.concord.ConcordChainLink;
 import io.concord.bench.jade.JadeChainLink;
 import io.concord.bench.jade.JadePlatform;
 import io.concord.bench.jade.JadeProcessAgent;
+import io.concord.bench.support.Chain;
+import io.concord.bench.support.Platforms;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import jade.wrapper.AgentController;
@@ -49,7 +49,7 @@ public class ProcessChainBenchmark extends RoundBenchmark {
             }
             children.awaitReady();
             rounds.expectReady(1);
-            driver.jadeStarter = driver.jade.start("link0", JadeChainLink.class, rounds, 0, n, ChainBenchmark.SECRET);
+            driver.jadeStarter = driver.jade.start("link0", JadeChainLink.class, rounds, 0, n, Chain.SECRET);
             rounds.awaitReady();
             return;
         }
@@ -59,7 +59,7 @@ public class ProcessChainBenchmark extends RoundBenchmark {
         List<String> addresses = children.awaitReady();
         driver.concord = Platforms.concord(platform);
         AgentRuntime concord = driver.concord;
-        first = new ConcordChainLink(rounds, true, ChainBenchmark.SECRET);
+        first = new ConcordChainLink(rounds, true, Chain.SECRET);
         AID firstAid = concord.startAgent("link0", first);
         for (int i = 1; i < n; i++) {
             AID next = i + 1 < n ? new AID("link" + (i + 1) + "@bench", addresses.get(i)) : firstAid;

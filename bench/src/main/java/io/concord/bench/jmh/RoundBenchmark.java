@@ -1,7 +1,6 @@
 package io.concord.bench.jmh;
 
-import io.concord.bench.RoundDriver;
-import io.concord.bench.Rounds;
+import io.concord.bench.support.Rounds;
 import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.TearDown;
 

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
 
 /**
  * A FIPA ACL message (SC00061): a performative and the FIPA parameters, plus user-defined
@@ -30,7 +31,7 @@ public final class AclMessage {
     private Performative performative;
     private AID sender;
     private List<AID> receivers;
-    private java.util.function.Supplier<List<AID>> lazyReceivers;
+    private Supplier<List<AID>> lazyReceivers;
     private final List<AID> replyTo = new ArrayList<>(0);
     private String content;
     private byte[] byteContent;
@@ -86,7 +87,7 @@ public final class AclMessage {
      * message to many agents rarely reads the list; building it is much of the cost of decoding.
      * The decoder must have validated the bytes already: it must not fail.
      */
-    public void setReceiversLazily(java.util.function.Supplier<List<AID>> decoder) {
+    public void setReceiversLazily(Supplier<List<AID>> decoder) {
         this.receivers = null;
         this.lazyReceivers = Objects.requireNonNull(decoder, "decoder");
     }
@@ -370,6 +371,6 @@ public final class AclMessage {
 
     @Override
     public String toString() {
-        return io.concord.core.codec.StringAclCodec.INSTANCE.encodeToString(this);
+        return FipaStringWriter.write(this, false);
     }
 }

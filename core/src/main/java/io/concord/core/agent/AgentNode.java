@@ -2,16 +2,28 @@ package io.concord.core.agent;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.MtsFailure;
 import io.concord.core.layer.DropCounters;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.LayerStack;
+import io.concord.core.layer.SendRejectedException;
+import io.concord.core.layer.StackEvent;
 import io.concord.core.layer.StackHost;
 import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
+import io.concord.core.net.Channels;
 import io.concord.core.net.Endpoint;
+import io.concord.core.net.Neighbourhood;
 import io.concord.core.net.SocketNetwork;
 import io.concord.core.net.Transport;
 import io.concord.core.time.Clock;
+import io.concord.core.time.LoopLimits;
+
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.LongSupplier;
+import java.util.random.RandomGenerator;
 
 /**
  * What the runtime keeps per agent: its endpoint, its stack, its counters. The stack's top
@@ -28,8 +40,8 @@ final class AgentNode implements StackHost {
     boolean queued;
     /** Set when the agent crashes: from then on nothing leaves or enters its stack. */
     boolean crashed;
-    java.util.function.LongSupplier platformTime;
-    java.util.List<Address> neighbours = java.util.List.of();
+    LongSupplier platformTime;
+    List<Address> neighbours = List.of();
 
     AgentNode(AgentRuntime runtime, Agent agent, AID aid, Endpoint endpoint, Transport transport) {
         this.runtime = runtime;
@@ -78,8 +90,8 @@ final class AgentNode implements StackHost {
     }
 
     /** Senders waiting for this agent to take its mailbox down, and the receivers this one waits for. */
-    final java.util.Set<AgentNode> heldSenders = new java.util.LinkedHashSet<>();
-    final java.util.Set<AgentNode> waitingOn = new java.util.LinkedHashSet<>();
+    final Set<AgentNode> heldSenders = new LinkedHashSet<>();
+    final Set<AgentNode> waitingOn = new LinkedHashSet<>();
 
     /**
      * Hands an application message of this agent to an agent of the runtime in memory (see
@@ -95,7 +107,7 @@ final class AgentNode implements StackHost {
             String why = peer.aid.name() + "'s mailbox holds " + runtime.mailboxCapacity() + " messages; "
                     + "send again when it has taken some (this agent was paused from half of it)";
             drops.record(aid.name(), "flow-control", why);
-            throw new io.concord.core.layer.SendRejectedException("flow-control", why);
+            throw new SendRejectedException("flow-control", why);
         }
         runtime.countHandOver();
         if (peer.agent.inboxFull()) {
@@ -117,7 +129,7 @@ final class AgentNode implements StackHost {
      * protocols end instead of waiting.
      */
     private void returnFailure(AclMessage original, AID receiver) {
-        deliverMessage(io.concord.core.proto.MtsFailure.of(runtime.platformName(), original, receiver,
+        deliverMessage(MtsFailure.of(runtime.platformName(), original, receiver,
                 "Agent not found: " + receiver.name()));
     }
 
@@ -169,7 +181,7 @@ final class AgentNode implements StackHost {
     void inboxDrained() {
         runtime.releaseSenders(this);
         if (!crashed && endpoint.isOpen()) {
-            stack.fireEvent(new io.concord.core.layer.StackEvent(INBOX_DRAINED, null, false));
+            stack.fireEvent(new StackEvent(INBOX_DRAINED, null, false));
         }
     }
 
@@ -218,20 +230,20 @@ final class AgentNode implements StackHost {
     }
 
     @Override
-    public void setPlatformTime(java.util.function.LongSupplier epochMillis) {
+    public void setPlatformTime(LongSupplier epochMillis) {
         this.platformTime = epochMillis;
     }
 
     /** The platform's time for this agent: its stack's platform clock if one was set, else the runtime's. */
     long platformMillis() {
-        java.util.function.LongSupplier t = platformTime;
+        LongSupplier t = platformTime;
         return t != null ? t.getAsLong() : runtime.clock().epochMillis();
     }
 
     /** What the container layer discovers with: the ports held around this node's, and the shared listener. */
-    private final io.concord.core.net.Neighbourhood neighbourhood = new io.concord.core.net.Neighbourhood() {
+    private final Neighbourhood neighbourhood = new Neighbourhood() {
         @Override
-        public java.util.List<Address> neighbours() {
+        public List<Address> neighbours() {
             return neighbours;
         }
 
@@ -246,9 +258,9 @@ final class AgentNode implements StackHost {
         }
 
         @Override
-        public java.util.List<String> broadcastAddresses() {
+        public List<String> broadcastAddresses() {
             return transport == Transport.UDP ? runtime.network().broadcastAddresses(endpoint.localAddress().host())
-                    : java.util.List.of();
+                    : List.of();
         }
 
         @Override
@@ -274,12 +286,12 @@ final class AgentNode implements StackHost {
      */
     private final CoLocated coLocated = new CoLocated() {
         @Override
-        public boolean here(io.concord.core.net.Address address) {
+        public boolean here(Address address) {
             return endpoint.inMemoryTo(address) && runtime.coLocated().here(address);
         }
 
         @Override
-        public Runnable whenGone(io.concord.core.net.Address address, Runnable callback) {
+        public Runnable whenGone(Address address, Runnable callback) {
             // Not for an agent that has gone itself meanwhile (a whole runtime crashing at once).
             return runtime.coLocated().whenGone(address, () -> {
                 if (endpoint.isOpen()) {
@@ -289,23 +301,23 @@ final class AgentNode implements StackHost {
         }
 
         @Override
-        public <T> T layer(io.concord.core.net.Address address, Class<T> type) {
+        public <T> T layer(Address address, Class<T> type) {
             return endpoint.inMemoryTo(address) ? runtime.coLocated().layer(address, type) : null;
         }
     };
 
     @Override
     public <T> T capability(Class<T> type) {
-        if (type == io.concord.core.net.Neighbourhood.class) {
+        if (type == Neighbourhood.class) {
             return type.cast(neighbourhood);
         }
         if (type == CoLocated.class) {
             return type.cast(coLocated);
         }
-        if (type == io.concord.core.net.Channels.class) {
-            return runtime.network() instanceof io.concord.core.net.Channels c ? type.cast(c) : null;
+        if (type == Channels.class) {
+            return runtime.network() instanceof Channels c ? type.cast(c) : null;
         }
-        return type == io.concord.core.time.LoopLimits.class ? type.cast(runtime.loopLimits()) : null;
+        return type == LoopLimits.class ? type.cast(runtime.loopLimits()) : null;
     }
 
     @Override
@@ -314,7 +326,7 @@ final class AgentNode implements StackHost {
     }
 
     @Override
-    public java.util.random.RandomGenerator random() {
+    public RandomGenerator random() {
         return runtime.random();
     }
 

@@ -1,7 +1,10 @@
 package io.concord.core.codec;
 
+import io.concord.core.acl.FipaStringWriter;
 import io.concord.core.time.Clock;
 
+import java.time.DateTimeException;
+import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.ZoneOffset;
@@ -37,22 +40,7 @@ public final class FipaDates {
      * @throws IllegalArgumentException if the instant is outside the years 1 to 9999
      */
     public static String format(long epochMs) {
-        if (epochMs >= GREGORIAN_CUTOVER_MS) {
-            if (epochMs >= YEAR_10000_MS) {
-                throw new IllegalArgumentException("a FIPA date-time has a four-digit year; " + epochMs
-                        + " ms is after the year 9999");
-            }
-            return UTC.format(java.time.Instant.ofEpochMilli(epochMs));
-        }
-        GregorianCalendar c = new GregorianCalendar(TimeZone.getTimeZone("UTC"));
-        c.setTimeInMillis(epochMs);
-        if (c.get(Calendar.ERA) == GregorianCalendar.BC) {
-            throw new IllegalArgumentException("a FIPA date-time has a four-digit year from 1; " + epochMs
-                    + " ms is before the year 1");
-        }
-        return String.format("%04d%02d%02dT%02d%02d%02d%03dZ", c.get(Calendar.YEAR), c.get(Calendar.MONTH) + 1,
-                c.get(Calendar.DAY_OF_MONTH), c.get(Calendar.HOUR_OF_DAY), c.get(Calendar.MINUTE),
-                c.get(Calendar.SECOND), c.get(Calendar.MILLISECOND));
+        return FipaStringWriter.formatDate(epochMs);
     }
 
     /**
@@ -61,11 +49,7 @@ public final class FipaDates {
      * takes it back), for logs and for messages that never leave Concord.
      */
     public static String formatAnyYear(long epochMs) {
-        try {
-            return format(epochMs);
-        } catch (IllegalArgumentException outside) {
-            return UTC.format(java.time.Instant.ofEpochMilli(epochMs));
-        }
+        return FipaStringWriter.formatDateAnyYear(epochMs);
     }
 
     /**
@@ -106,7 +90,7 @@ public final class FipaDates {
         }
         try {
             if (relative) {
-                ZonedDateTime now = java.time.Instant.ofEpochMilli(clock.epochMillis()).atZone(ZoneOffset.UTC);
+                ZonedDateTime now = Instant.ofEpochMilli(clock.epochMillis()).atZone(ZoneOffset.UTC);
                 return now.plusYears(f[0]).plusMonths(f[1]).plusDays(f[2]).plusHours(f[3]).plusMinutes(f[4])
                         .plusSeconds(f[5]).plusNanos(f[6] * 1_000_000L).toInstant().toEpochMilli();
             }
@@ -116,7 +100,7 @@ public final class FipaDates {
                 return ldt.atZone(zone).toInstant().toEpochMilli();
             }
             return julian(f, utc);
-        } catch (java.time.DateTimeException | ArithmeticException | IllegalArgumentException e) {
+        } catch (DateTimeException | ArithmeticException | IllegalArgumentException e) {
             throw new AclParseException(at, "a valid calendar date-time", "'" + v + "' (" + e.getMessage() + ")");
         }
     }

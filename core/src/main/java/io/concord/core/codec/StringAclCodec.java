@@ -2,12 +2,14 @@ package io.concord.core.codec;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.FipaStringWriter;
 import io.concord.core.acl.Performative;
 import io.concord.core.time.Clock;
 
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Base64;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -79,7 +81,7 @@ public final class StringAclCodec implements AclCodec {
      * Never throws: {@code toString} and Concord's own hops use it.
      */
     public String encodeToString(AclMessage m) {
-        return new Writer(false).message(m);
+        return FipaStringWriter.write(m, false);
     }
 
     /**
@@ -91,244 +93,7 @@ public final class StringAclCodec implements AclCodec {
      *         outside the years 1 to 9999
      */
     public String encodeForJade(AclMessage m) {
-        return new Writer(true).message(m);
-    }
-
-    /**
-     * One message's writer.
-     *
-     * <p>JADE escapes only the quote, so a quoted value that ends in a backslash looks as if its
-     * closing quote were escaped. JADE's lexer takes the longest string it can, so it still reads
-     * such a value right when no other quote follows it in the message: the writer puts one such
-     * value (the content first) as the message's last slot. Any other one is written as a byte
-     * string {@code #n"...}, which needs no escaping; JADE counts its length in characters where
-     * FIPA counts bytes, so for JADE that only works for ASCII text.
-     */
-    private static final class Writer {
-        private final boolean forJade;
-        private final StringBuilder sb = new StringBuilder(256);
-        private String lastSlot;
-        private String lastValue;
-
-        Writer(boolean forJade) {
-            this.forJade = forJade;
-        }
-
-        String message(AclMessage m) {
-            sb.append('(').append(m.getPerformative().wireName()).append('\n');
-            if (m.getSender() != null) {
-                sb.append(" :sender  ");
-                writeAid(m.getSender());
-                sb.append('\n');
-            }
-            if (!m.getReceivers().isEmpty()) {
-                sb.append(" :receiver  ");
-                writeAidSet(m.getReceivers());
-                sb.append('\n');
-            }
-            if (!m.getReplyTo().isEmpty()) {
-                sb.append(" :reply-to  ");
-                writeAidSet(m.getReplyTo());
-                sb.append('\n');
-            }
-            boolean base64 = false;
-            if (forJade && m.hasByteSequenceContent() && m.getByteSequenceContent().length == 0) {
-                // JADE reads :X-JADE-Encoding only with some content: for JADE, "no bytes" is empty text.
-                sb.append(" :content  \"\"\n");
-            } else if (m.hasByteSequenceContent()) {
-                sb.append(" :content  ");
-                writeQuoted(Base64.getEncoder().encodeToString(m.getByteSequenceContent()));
-                sb.append('\n');
-                base64 = true;
-            } else if (m.getContent() != null) {
-                String c = m.getContent();
-                if (!goesLast("content", c)) {
-                    sb.append(" :content  ");
-                    writeQuoted(c);
-                    sb.append('\n');
-                }
-            }
-            slot("reply-with", m.getReplyWith());
-            slot("in-reply-to", m.getInReplyTo());
-            slot("encoding", m.getEncoding());
-            slot("language", m.getLanguage());
-            slot("ontology", m.getOntology());
-            if (m.hasReplyBy()) {
-                sb.append(" :reply-by  ").append(forJade ? FipaDates.format(m.getReplyByEpochMs())
-                        : FipaDates.formatAnyYear(m.getReplyByEpochMs()));
-            }
-            if (m.getProtocol() != null) {
-                sb.append("\n :protocol  ");
-                writeProtocol(m.getProtocol());
-            }
-            if (m.getConversationId() != null && !goesLast("conversation-id", m.getConversationId())) {
-                sb.append("\n :conversation-id  ");
-                writeValue("conversation-id", m.getConversationId());
-            }
-            if (base64) {
-                sb.append(" :X-JADE-Encoding Base64");
-            }
-            for (Map.Entry<String, String> e : m.getUserDefinedParameters().entrySet()) {
-                if (!goesLast("X-" + e.getKey(), e.getValue())) {
-                    sb.append(" :X-").append(e.getKey()).append(' ');
-                    writeValue("X-" + e.getKey(), e.getValue());
-                }
-            }
-            if (lastSlot != null) {
-                sb.append("\n :").append(lastSlot).append("  ");
-                writeQuoted(lastValue);
-            }
-            sb.append(" )");
-            return sb.toString();
-        }
-
-        private void slot(String name, String value) {
-            if (value != null && !goesLast(name, value)) {
-                sb.append(" :").append(name).append("  ");
-                writeValue(name, value);
-                sb.append(' ');
-            }
-        }
-
-        /**
-         * Keeps the slot for the end of the message if its value must be quoted (content always is)
-         * and ends in a backslash, and the last place is still free (the content asks first).
-         */
-        private boolean goesLast(String slot, String v) {
-            if (lastSlot != null || !v.endsWith("\\") || (!slot.equals("content") && isPlainWord(v))) {
-                return false;
-            }
-            lastSlot = slot;
-            lastValue = v;
-            return true;
-        }
-
-        private void writeAidSet(List<AID> aids) {
-            sb.append("(set ");
-            for (AID a : aids) {
-                writeAid(a);
-                sb.append(' ');
-            }
-            sb.append(')');
-        }
-
-        private void writeAid(AID aid) {
-            sb.append("( agent-identifier :name ");
-            writeValue("the AID name", aid.name());
-            sb.append(' ');
-            if (!aid.addresses().isEmpty()) {
-                sb.append(" :addresses (sequence ");
-                for (String a : aid.addresses()) {
-                    writeAddress(aid, a);
-                    sb.append(' ');
-                }
-                sb.append(')');
-            }
-            if (!aid.resolvers().isEmpty()) {
-                sb.append(" :resolvers (sequence ");
-                for (AID r : aid.resolvers()) {
-                    writeAid(r);
-                    sb.append(' ');
-                }
-                sb.append(')');
-            }
-            for (Map.Entry<String, String> e : aid.userDefined().entrySet()) {
-                sb.append(" :X-").append(e.getKey()).append(' ');
-                writeValue("the AID slot X-" + e.getKey(), e.getValue());
-            }
-            sb.append(')');
-        }
-
-        /** JADE reads {@code :protocol} only as a bare word. */
-        private void writeProtocol(String v) {
-            if (isPlainWord(v)) {
-                sb.append(v);
-            } else if (forJade) {
-                throw new IllegalArgumentException("the protocol '" + v + "' cannot be sent to JADE, whose parser reads "
-                        + ":protocol only as a word (printable ASCII without spaces, quotes or parentheses, not "
-                        + "starting with a digit, '-', '#' or ':'); name the protocol like fipa-request");
-            } else {
-                writeValue("protocol", v);
-            }
-        }
-
-        /** JADE reads an address bare or quoted, but not one with spaces, parentheses or quotes. */
-        private void writeAddress(AID aid, String a) {
-            if (isPlainWord(a)) {
-                sb.append(a);
-                return;
-            }
-            if (forJade) {
-                for (int i = 0; i < a.length(); i++) {
-                    char c = a.charAt(i);
-                    if (c <= 0x20 || c >= 0x7f || c == '"' || c == '(' || c == ')') {
-                        throw new IllegalArgumentException("the address '" + a + "' of " + aid.name() + " cannot be sent "
-                                + "to JADE, whose parser reads no spaces, quotes, parentheses or non-ASCII characters in "
-                                + "an address; write it as a URL (percent-encoded)");
-                    }
-                }
-                if (a.endsWith("\\")) {
-                    throw new IllegalArgumentException("the address '" + a + "' of " + aid.name() + " cannot be sent "
-                            + "to JADE: it is not a word and ends in a backslash");
-                }
-            }
-            writeValue("an address", a);
-        }
-
-        /** Bare if a word, else quoted; a quoted value that ends in a backslash as a byte string. */
-        private void writeValue(String slot, String v) {
-            if (isPlainWord(v)) {
-                sb.append(v);
-            } else if (!v.endsWith("\\")) {
-                writeQuoted(v);
-            } else {
-                writeByteString(slot, v);
-            }
-        }
-
-        private void writeByteString(String slot, String v) {
-            for (int i = 0; i < v.length(); i++) {
-                if (v.charAt(i) >= 0x80) {
-                    if (forJade) {
-                        throw new IllegalArgumentException(slot + " '" + v + "' cannot be sent to JADE: it ends in a "
-                                + "backslash, which JADE's quoting cannot express except as the message's last value "
-                                + "(taken by " + lastSlot + "), and it is not ASCII, so it cannot be a byte string "
-                                + "JADE counts the same way");
-                    }
-                    break;
-                }
-            }
-            sb.append('#').append(v.getBytes(StandardCharsets.UTF_8).length).append('"').append(v);
-        }
-
-        private void writeQuoted(String v) {
-            sb.append('"');
-            for (int i = 0; i < v.length(); i++) {
-                char c = v.charAt(i);
-                if (c == '"') {
-                    sb.append('\\');
-                }
-                sb.append(c);
-            }
-            sb.append('"');
-        }
-    }
-
-    /**
-     * A value JADE reads back unchanged when written bare: printable ASCII, no quote, parenthesis
-     * or whitespace, and not starting like a number, a byte string or a parameter name.
-     */
-    static boolean isPlainWord(String v) {
-        if (v.isEmpty() || "#0123456789-:".indexOf(v.charAt(0)) >= 0) {
-            return false;
-        }
-        for (int i = 0; i < v.length(); i++) {
-            char c = v.charAt(i);
-            if (c <= 0x20 || c >= 0x7f || c == '"' || c == '(' || c == ')') {
-                return false;
-            }
-        }
-        return true;
+        return FipaStringWriter.write(m, true);
     }
 
     /** Reads one message; the whole input must be that message (trailing whitespace allowed). */
@@ -382,7 +147,7 @@ public final class StringAclCodec implements AclCodec {
         int[] nextChoices() {
             for (int j = met - 1; j >= 0; j--) {
                 if (taken[j] + 1 < ends[j]) {
-                    int[] next = java.util.Arrays.copyOf(taken, j + 1);
+                    int[] next = Arrays.copyOf(taken, j + 1);
                     next[j]++;
                     return next;
                 }
@@ -644,8 +409,8 @@ public final class StringAclCodec implements AclCodec {
         /** Picks one of an ambiguous string's ends: the longest unless this reading says otherwise. */
         private int chooseEnd(int start, int longest, int shorter) {
             if (met == ends.length) {
-                ends = java.util.Arrays.copyOf(ends, met * 2);
-                taken = java.util.Arrays.copyOf(taken, met * 2);
+                ends = Arrays.copyOf(ends, met * 2);
+                taken = Arrays.copyOf(taken, met * 2);
             }
             int choice = met < forced.length ? forced[met] : 0;
             ends[met] = shorter + 1;

@@ -26,6 +26,14 @@ public interface LayerContext {
      */
     void drop(Envelope env, String reason, String detail);
 
+    /**
+     * The topmost layer of this type in the same stack, or {@code null} if it has none: how a layer
+     * reads the state of another (the observer reports the container's role and the temporal
+     * layer's clock). Messages still go only to the neighbours, through {@link #passDown} and
+     * {@link #passUp}.
+     */
+    <T> T find(Class<T> type);
+
     /** The node's services: time, timers, tracing. */
     StackHost host();
 

@@ -1,11 +1,14 @@
 package io.concord.core.layer;
 
+import io.concord.core.acl.AclMessage;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Objects;
+import java.util.Set;
 import java.util.function.Consumer;
 
 /**
@@ -93,7 +96,7 @@ public final class LayerStack {
     }
 
     /** True if every layer of this stack lets the message be handed over in memory ({@link Layer#mayHandOver}). */
-    public boolean mayHandOver(io.concord.core.acl.AclMessage message) {
+    public boolean mayHandOver(AclMessage message) {
         for (Ctx c : contexts) {
             if (!c.layer.mayHandOver(message)) {
                 return false;
@@ -212,12 +215,17 @@ public final class LayerStack {
         }
 
         @Override
+        public <T> T find(Class<T> type) {
+            return LayerStack.this.find(type);
+        }
+
+        @Override
         public StackHost host() {
             return host;
         }
 
         /** Exception classes this layer has thrown, each logged with its stack trace once. */
-        private final java.util.Set<Class<?>> traced = new java.util.HashSet<>();
+        private final Set<Class<?>> traced = new HashSet<>();
 
         void failed(Envelope env, RuntimeException e) {
             // Once per layer and exception class with the stack trace; after that only counted (a

@@ -37,6 +37,8 @@ public final class LayerHarness implements StackHost {
     private final String name;
     private java.util.function.Predicate<io.concord.core.net.Address> inMemory = a -> false;
     private boolean tracing = true;
+    private boolean inboxFull;
+    private boolean backpressure;
     private final io.concord.core.net.Address localAddress;
     private final Map<Class<?>, Object> capabilities;
     private final java.util.SplittableRandom random;
@@ -126,6 +128,26 @@ public final class LayerHarness implements StackHost {
      */
     public void setTracing(boolean on) {
         this.tracing = on;
+    }
+
+    /** Says whether the agent's mailbox is over half full, as a runtime would ({@link StackHost#inboxFull}). */
+    public void setInboxFull(boolean full) {
+        this.inboxFull = full;
+    }
+
+    @Override
+    public boolean inboxFull() {
+        return inboxFull;
+    }
+
+    @Override
+    public void backpressure(boolean on) {
+        this.backpressure = on;
+    }
+
+    /** True while a layer asks to pause the agent's behaviours ({@link StackHost#backpressure}), as flow control does. */
+    public boolean backpressured() {
+        return backpressure;
     }
 
     /** Sends an envelope into the top of the stack. */

@@ -78,6 +78,24 @@ class LayerStackTest {
     }
 
     @Test
+    void aLayerFindsAnotherOfItsStackThroughItsContextTopmostFirst() {
+        List<String> log = new ArrayList<>();
+        Recording upper = new Recording("upper", log);
+        Recording lower = new Recording("lower", log);
+        Layer[] seen = new Layer[2];
+        Layer bottom = new Layer() {
+            @Override
+            public void start(LayerContext ctx) {
+                seen[0] = ctx.find(Recording.class);
+                seen[1] = ctx.find(CodecLayer.class);
+            }
+        };
+        new LayerHarness(upper, lower, bottom);
+        assertSame(upper, seen[0]);
+        assertNull(seen[1]);
+    }
+
+    @Test
     void aLayerThatThrowsLosesOnlyThatMessageWhichIsCountedAsALayerError() {
         Layer faulty = new Layer() {
             @Override

@@ -48,7 +48,7 @@ public final class Frames {
     /**
      * Envelope header id the container layer sets going down when the copy for a receiver goes to
      * another agent's node, which serves it (the container, for {@code df@platform} or a foreign
-     * agent): the {@link io.concord.core.acl.AID} of that node. The frame's destination id is its.
+     * agent): the {@code AID} of that node. The frame's destination id is its.
      */
     public static final int ENVELOPE_VIA = 10;
     /** The local name of the receiver that stands for {@link #ANY}: {@code *@platform}. */

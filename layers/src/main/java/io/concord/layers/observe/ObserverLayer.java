@@ -64,7 +64,6 @@ public final class ObserverLayer extends Layer {
     public boolean mayHandOver(AclMessage m) {
         return sniffers.isEmpty() && !ONTOLOGY.equals(m.getOntology());
     }
-    private List<io.concord.core.layer.Layer> stack = List.of();
     private LayerContext ctx;
     private AID self;
 
@@ -73,15 +72,10 @@ public final class ObserverLayer extends Layer {
         return "observer";
     }
 
-    /** The agent's layers, so that status can read the container's and the clock's state. */
-    public void stack(List<io.concord.core.layer.Layer> layers) {
-        this.stack = List.copyOf(layers);
-    }
-
     @Override
     public void start(LayerContext c) {
         this.ctx = c;
-        ContainerLayer container = find(ContainerLayer.class);
+        ContainerLayer container = c.find(ContainerLayer.class);
         self = container != null && container.selfEntry() != null ? container.selfEntry().aid() : new AID(c.host().nodeName());
     }
 
@@ -93,15 +87,6 @@ public final class ObserverLayer extends Layer {
     /** Subscribers now (tests, the console). */
     public int sniffers() {
         return sniffers.size();
-    }
-
-    private <T> T find(Class<T> type) {
-        for (io.concord.core.layer.Layer l : stack) {
-            if (type.isInstance(l)) {
-                return type.cast(l);
-            }
-        }
-        return null;
     }
 
     @Override
@@ -168,13 +153,13 @@ public final class ObserverLayer extends Layer {
     public String status() {
         StringBuilder b = new StringBuilder(256).append('{');
         Json.field(b, "agent", self.name()).append(',');
-        ContainerLayer c = find(ContainerLayer.class);
+        ContainerLayer c = ctx.find(ContainerLayer.class);
         if (c != null) {
             Json.field(b, "role", c.role().name()).append(',');
             Json.field(b, "container", c.containerName()).append(',');
             b.append("\"term\":").append(c.term()).append(',');
         }
-        TemporalLayer t = find(TemporalLayer.class);
+        TemporalLayer t = ctx.find(TemporalLayer.class);
         if (t != null) {
             b.append("\"clockOffsetUs\":").append(t.clock().offsetUs()).append(",\"clockSynced\":").append(t.clock().isSynced()).append(',');
         }

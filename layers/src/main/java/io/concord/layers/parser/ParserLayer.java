@@ -7,6 +7,7 @@ import io.concord.core.codec.BinaryAclCodec;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
+import io.concord.core.layer.SendRejectedException;
 import io.concord.core.layer.StackEvent;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.sequence.SequenceLayer;
@@ -108,7 +109,7 @@ public final class ParserLayer extends Layer {
             lastLength = aclBytes;
         }
         if ((long) aclBytes + overheadBytes > maxFrameBytes) {
-            throw new io.concord.core.layer.SendRejectedException("too-large", "the message to "
+            throw new SendRejectedException("too-large", "the message to "
                     + env.receiver().name() + " encodes to " + aclBytes + " bytes; with the stack's " + overheadBytes
                     + " bytes of headers its frame would be " + (aclBytes + overheadBytes) + " bytes, over the limit of "
                     + maxFrameBytes + "; shorten its content, or raise maxFrameBytes (up to 65507 on UDP)");

@@ -10,6 +10,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Predicate;
 
 /**
  * The agent lists as one agent holds them: the Local Agent List of its host (from its container, or
@@ -130,8 +132,8 @@ final class AgentLists {
     }
 
     /** Routes shared by every agent of this JVM, as the entries are (see {@link Lines}); immutable. */
-    private static final java.util.concurrent.ConcurrentHashMap<AgentEntry, Route> SHARED_ROUTES =
-            new java.util.concurrent.ConcurrentHashMap<>();
+    private static final ConcurrentHashMap<AgentEntry, Route> SHARED_ROUTES =
+            new ConcurrentHashMap<>();
 
     /**
      * What changed from {@code sent} to {@code now}, as a delta message carries it: the entries
@@ -158,7 +160,7 @@ final class AgentLists {
      * if {@code mayPut} lets them; returns the names touched, for their routes.
      */
     static List<String> apply(List<AgentEntry> changed, int removed, Map<String, AgentEntry> list,
-                              java.util.function.Predicate<String> mayPut) {
+                              Predicate<String> mayPut) {
         int r = Math.min(removed, changed.size());
         List<String> names = new ArrayList<>(changed.size());
         for (int i = 0; i < changed.size(); i++) {

@@ -8,12 +8,15 @@ import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
+import io.concord.core.net.Neighbourhood;
+import io.concord.core.acl.MtsFailure;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
-import io.concord.layers.parser.Membership;
 
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
 
@@ -50,15 +53,6 @@ import java.util.function.Consumer;
  * and counted ({@code foreign-platform}), as is a malformed one ({@code malformed-platform}).
  */
 public final class ContainerLayer extends Layer {
-    /** The agent's part in the platform. */
-    public enum Role { SEEKING, MEMBER, CONTAINER, STOPPED }
-
-    static final String ONTOLOGY = Membership.PLATFORM_ONTOLOGY;
-    static final String LANGUAGE = "concord-lines";
-    static final String P_DISCOVERY = "concord-discovery";
-    static final String P_LAL = "concord-lal";
-    static final String P_MAINTENANCE = "concord-maintenance";
-    static final String P_SERVICES = "concord-services";
     /** How long a message that only a container can carry waits for one to be elected. */
     static final long CONTAINER_WAIT_MS = 2_000;
     static final int MAX_WAITING = 256;
@@ -97,19 +91,19 @@ public final class ContainerLayer extends Layer {
 
     /** ... and reaches foreign platforms through a gateway (the JADE bridge), or none if {@code null}. */
     public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway) {
-        this(config, network, gateway, java.util.Set.of());
+        this(config, network, gateway, Set.of());
     }
 
     /**
      * ... without some defences: only for the threat tests, which show the threat reaching an
-     * agent without its defence ({@link io.concord.layers.Defence#CLAIM_CHECK}).
+     * agent without its defence ({@link Defence#CLAIM_CHECK}).
      */
-    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, java.util.Set<io.concord.layers.Defence> off) {
+    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, Set<Defence> off) {
         this.config = config;
         this.network = network;
         this.gateway = gateway;
-        st.claimCheck = !off.contains(io.concord.layers.Defence.CLAIM_CHECK);
-        st.portCheck = !off.contains(io.concord.layers.Defence.PORT_CHECK);
+        st.claimCheck = !off.contains(Defence.CLAIM_CHECK);
+        st.portCheck = !off.contains(Defence.PORT_CHECK);
     }
 
     public ContainerLayer() {
@@ -220,7 +214,7 @@ public final class ContainerLayer extends Layer {
         context = new HostContext(host, layerContext, config, st, platform, selfAid, this::place);
         relay = new GatewayRelay(context, st, gateway, this::role, m -> layerContext.passUp(Envelope.outgoing(m, selfAid, null)),
                 host::execute);
-        io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
+        Neighbourhood around = host.capability(Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();
         gate = new MembershipGate(context, layerContext, st.lists, self);
         forContainer = new WaitRoom(context, CONTAINER_WAIT_MS, MAX_WAITING, (h, why) -> refuse(h.env(),
@@ -319,7 +313,7 @@ public final class ContainerLayer extends Layer {
         AID r = env.receiver();
         AclMessage m = env.message();
         return st.container == null && roles != null && roles.kind() != Role.STOPPED && m != null
-                && !ONTOLOGY.equals(m.getOntology()) && (!platform.equals(r.platform()) && relay.reaches(r)
+                && !Protocol.ONTOLOGY.equals(m.getOntology()) && (!platform.equals(r.platform()) && relay.reaches(r)
                 || r.name().equals(amsName) || r.name().equals(dfName));
     }
 
@@ -330,8 +324,8 @@ public final class ContainerLayer extends Layer {
     private void refuse(Envelope env, String reason, String why, String failure) {
         layerContext.drop(env, reason, why);
         AclMessage m = env.message();
-        if (failure != null && m != null && !ONTOLOGY.equals(m.getOntology())) {
-            layerContext.passUp(Envelope.outgoing(io.concord.core.proto.MtsFailure.of(platform, m, env.receiver(), failure),
+        if (failure != null && m != null && !Protocol.ONTOLOGY.equals(m.getOntology())) {
+            layerContext.passUp(Envelope.outgoing(MtsFailure.of(platform, m, env.receiver(), failure),
                     selfAid, null));
         }
     }
@@ -349,7 +343,7 @@ public final class ContainerLayer extends Layer {
         AID r = env.receiver();
         AID via = env.header(Frames.ENVELOPE_VIA);
         if (relay != null && relay.present() && r != null && via != null && env.message() != null
-                && !ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
+                && !Protocol.ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
             ctx.passDown(Envelope.outgoing(relay.wrap(env.message(), r, via), via, env.destination()));
             return;
         }
@@ -359,7 +353,7 @@ public final class ContainerLayer extends Layer {
     /** Platform and service messages are this layer's own: they take the stacks. */
     @Override
     public boolean mayHandOver(AclMessage m) {
-        return !ONTOLOGY.equals(m.getOntology()) && !addressedToService(m);
+        return !Protocol.ONTOLOGY.equals(m.getOntology()) && !addressedToService(m);
     }
 
     // ---- up ---------------------------------------------------------------------------------------
@@ -368,7 +362,7 @@ public final class ContainerLayer extends Layer {
     public void onUp(LayerContext ctx, Envelope env) {
         AclMessage m = env.message();
         boolean forService = addressedToService(m);
-        boolean platformMessage = !forService && ONTOLOGY.equals(m.getOntology());
+        boolean platformMessage = !forService && Protocol.ONTOLOGY.equals(m.getOntology());
         if (!platformMessage && !forService) {
             if (roles == null || roles.kind() == Role.STOPPED) {
                 ctx.passUp(env);
@@ -513,11 +507,20 @@ public final class ContainerLayer extends Layer {
     }
 
     /**
+     * Asks the platform's DF itself (not this agent's copy of the lists) for the agents whose
+     * services match the template; the future completes with the entries it answered. Loop thread
+     * only.
+     */
+    public CompletableFuture<List<AgentEntry>> searchAtDf(ServiceDescription template) {
+        return request(true, Performative.REQUEST, ServiceRequests.searchContent(template)).thenApply(ServiceRequests::entries);
+    }
+
+    /**
      * The agent's own registration: these services added to ({@code add}) or in place of those it
      * asked for before. It sends them again whenever its container does not hold them (a flap, a
      * failover, a refusal); the future completes once the DF took them. Loop thread only.
      */
-    CompletableFuture<Void> registerServices(List<ServiceDescription> services, boolean add) {
+    public CompletableFuture<Void> registerServices(List<ServiceDescription> services, boolean add) {
         if (registrations == null) {
             return CompletableFuture.failedFuture(new IllegalStateException("the agent has not started"));
         }

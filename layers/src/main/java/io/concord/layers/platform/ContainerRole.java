@@ -54,8 +54,8 @@ final class ContainerRole extends RoleBase {
     }
 
     @Override
-    ContainerLayer.Role kind() {
-        return ContainerLayer.Role.CONTAINER;
+    Role kind() {
+        return Role.CONTAINER;
     }
 
     /** Takes the role: announces it, and asks every listed agent for its information (fig. 5.11). */
@@ -69,12 +69,12 @@ final class ContainerRole extends RoleBase {
         ctx.trace("container", "term=" + st.term + " agents=" + lists.lal.size() + ": " + why);
         // Announce to those who wait, and ask every listed agent for its information (rebuild).
         for (AgentEntry s : st.seekers.values()) {
-            ctx.send(Performative.INFORM, ContainerLayer.P_DISCOVERY, s.aid(), new PlatformMessage.ContainerIs(st.term, st.selfEntry, null));
+            ctx.send(Performative.INFORM, Protocol.P_DISCOVERY, s.aid(), new PlatformMessage.ContainerIs(st.term, st.selfEntry, null));
         }
         st.seekers.clear();
         for (AgentEntry e : lists.lal.values()) {
             if (!e.name().equals(ctx.self())) {
-                ctx.send(Performative.REQUEST, ContainerLayer.P_LAL, e.aid(), new PlatformMessage.AgentInfoRequest(st.term, st.selfEntry));
+                ctx.send(Performative.REQUEST, Protocol.P_LAL, e.aid(), new PlatformMessage.AgentInfoRequest(st.term, st.selfEntry));
             }
         }
         if (lists.lal.size() > 1) {
@@ -320,7 +320,7 @@ final class ContainerRole extends RoleBase {
                 pushTo(e.aid(), all);
             } else {
                 for (int i = 0; i < changes.size(); i++) {
-                    ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, e.aid(), new PlatformMessage.LalDelta(st.term, lalSentSeq,
+                    ctx.send(Performative.INFORM_REF, Protocol.P_LAL, e.aid(), new PlatformMessage.LalDelta(st.term, lalSentSeq,
                             st.seq, st.periodMs, st.timeoutMs, removed, PlatformMessage.Page.of(i, changes.size(), changes.get(i))));
                 }
             }
@@ -340,7 +340,7 @@ final class ContainerRole extends RoleBase {
 
     private void pushTo(AID to, List<String> p) {
         for (int i = 0; i < p.size(); i++) {
-            ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, to, new PlatformMessage.LalPage(st.term, st.seq, st.periodMs,
+            ctx.send(Performative.INFORM_REF, Protocol.P_LAL, to, new PlatformMessage.LalPage(st.term, st.seq, st.periodMs,
                     st.timeoutMs, PlatformMessage.Page.of(i, p.size(), p.get(i))));
         }
     }
@@ -481,7 +481,7 @@ final class ContainerRole extends RoleBase {
             } else {
                 cycleAwaiting.add(e.name());
             }
-            ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), alive);
+            ctx.send(Performative.INFORM, Protocol.P_MAINTENANCE, e.aid(), alive);
         }
         // Keep asking the potential agents of the range that are not listed: a container elected
         // while one of them was slow to answer finds the other container this way.
@@ -500,7 +500,7 @@ final class ContainerRole extends RoleBase {
             }
             for (Address a : st.asked.keySet()) {
                 if (!listed.contains(a)) {
-                    ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, ctx.anyAt(a), q);
+                    ctx.send(Performative.QUERY_REF, Protocol.P_DISCOVERY, ctx.anyAt(a), q);
                 }
             }
         }
@@ -598,7 +598,7 @@ final class ContainerRole extends RoleBase {
                 pushGalTo(e.aid(), pages);
             } else {
                 for (int i = 0; i < pages.size(); i++) {
-                    ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, e.aid(), new PlatformMessage.GalDelta(st.term, from,
+                    ctx.send(Performative.INFORM_REF, Protocol.P_LAL, e.aid(), new PlatformMessage.GalDelta(st.term, from,
                             lists.gseq, removed, PlatformMessage.Page.of(i, pages.size(), pages.get(i))));
                 }
             }
@@ -607,7 +607,7 @@ final class ContainerRole extends RoleBase {
 
     private void pushGalTo(AID to, List<String> p) {
         for (int i = 0; i < p.size(); i++) {
-            ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, to,
+            ctx.send(Performative.INFORM_REF, Protocol.P_LAL, to,
                     new PlatformMessage.GalPage(st.term, st.lists.gseq, PlatformMessage.Page.of(i, p.size(), p.get(i))));
         }
     }

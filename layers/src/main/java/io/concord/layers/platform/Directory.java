@@ -122,7 +122,7 @@ final class Directory {
         // receiver's identification check holds the sender's name to that.
         r.setSender(ctx.selfAid());
         r.setContent(content);
-        r.setLanguage(ContainerLayer.LANGUAGE);
+        r.setLanguage(Protocol.LANGUAGE);
         return r;
     }
 }

@@ -5,8 +5,11 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
+import io.concord.core.net.Neighbourhood;
 
+import java.security.SecureRandom;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.HexFormat;
 import java.util.List;
@@ -25,7 +28,6 @@ import java.util.TreeMap;
  * its new container, whose announcement replaces the old one.
  */
 final class Federation implements PlatformMessage.Handler {
-    static final String P_NETWORK = "concord-network";
     /**
      * Other hosts' containers known at most. Announcements name hosts second hand, and anyone with
      * the platform key can announce: a new one past the limit takes the place of one never
@@ -72,7 +74,7 @@ final class Federation implements PlatformMessage.Handler {
 
     private final PlatformContext layer;
     private final Host agent;
-    private final io.concord.core.net.Neighbourhood around;
+    private final Neighbourhood around;
     private final NetworkConfig config;
     private final Map<String, Facilitator> fal = new TreeMap<>();
     private Endpoint listener;
@@ -94,7 +96,7 @@ final class Federation implements PlatformMessage.Handler {
     private boolean running;
 
     /** @param around the node's neighbourhood: its shared listener and broadcast addresses ({@code null}: none) */
-    Federation(PlatformContext ctx, NetworkConfig config, io.concord.core.net.Neighbourhood around, Host agent) {
+    Federation(PlatformContext ctx, NetworkConfig config, Neighbourhood around, Host agent) {
         this.layer = ctx;
         this.config = config;
         this.around = around;
@@ -189,7 +191,7 @@ final class Federation implements PlatformMessage.Handler {
             to.add(f.entry.aid());
         }
         for (AID a : to) {
-            layer.send(Performative.INFORM, P_NETWORK, a, content);
+            layer.send(Performative.INFORM, Protocol.P_NETWORK, a, content);
         }
         // Lists not yet confirmed go again: distribution heals itself under loss.
         for (Facilitator f : fal.values()) {
@@ -249,7 +251,7 @@ final class Federation implements PlatformMessage.Handler {
                 }
             }
         }
-        out.sort(java.util.Comparator.comparing(AgentEntry::name));
+        out.sort(Comparator.comparing(AgentEntry::name));
         return out;
     }
 
@@ -268,7 +270,7 @@ final class Federation implements PlatformMessage.Handler {
     private void sendLal(Facilitator f) {
         List<String> pages = agent.lalPages();
         for (int i = 0; i < pages.size(); i++) {
-            layer.send(Performative.INFORM_REF, P_NETWORK, f.entry.aid(), new PlatformMessage.GalUpdate(f.secret, agent.term(),
+            layer.send(Performative.INFORM_REF, Protocol.P_NETWORK, f.entry.aid(), new PlatformMessage.GalUpdate(f.secret, agent.term(),
                     agent.lalSequence(), PlatformMessage.Page.of(i, pages.size(), pages.get(i))));
         }
     }
@@ -356,7 +358,7 @@ final class Federation implements PlatformMessage.Handler {
 
     /** Asks a facilitator with a smaller name, which opens contacts, to open one with us. */
     private void askForContact(AgentEntry e) {
-        layer.send(Performative.REQUEST, P_NETWORK, e.aid(), new PlatformMessage.ContactMe(agent.term(), ownHost(), layer.selfEntry()));
+        layer.send(Performative.REQUEST, Protocol.P_NETWORK, e.aid(), new PlatformMessage.ContactMe(agent.term(), ownHost(), layer.selfEntry()));
     }
 
     /** A new container for a host replaces the old one: no stale container lingers. */
@@ -380,12 +382,12 @@ final class Federation implements PlatformMessage.Handler {
     private void contact(Facilitator f) {
         if (f.secret == null) {
             byte[] s = new byte[16];
-            java.security.SecureRandom r = new java.security.SecureRandom();
+            SecureRandom r = new SecureRandom();
             r.nextBytes(s);
             f.secret = HexFormat.of().formatHex(s);
         }
         f.contactAttempts++;
-        layer.send(Performative.REQUEST, P_NETWORK, f.entry.aid(),
+        layer.send(Performative.REQUEST, Protocol.P_NETWORK, f.entry.aid(),
                 new PlatformMessage.WhoIsFacilitator(f.secret, agent.term(), ownHost(), layer.selfEntry()));
         f.contactTimer = layer.after(Math.max(50, config.announcePeriodMs() / 2), () -> {
             f.contactTimer = -1;
@@ -463,7 +465,7 @@ final class Federation implements PlatformMessage.Handler {
         if (layer.selfEntry().name().compareTo(f.entry.name()) < 0) {
             contact(f);
         } else {
-            layer.send(Performative.INFORM, P_NETWORK, f.entry.aid(),
+            layer.send(Performative.INFORM, Protocol.P_NETWORK, f.entry.aid(),
                     new PlatformMessage.Announce(agent.term(), ownHost(), agent.lalSequence(), layer.selfEntry(), List.of()));
         }
     }

@@ -1,7 +1,9 @@
 package io.concord.layers.platform;
 
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.core.net.Address;
 
 import java.util.List;
 
@@ -39,7 +41,7 @@ abstract class Follower extends RoleBase {
             st.seq = -1;
         } else if (p.seq() <= st.seq) {
             // Already held: confirm again (our confirmation may have been lost).
-            ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(),
+            ctx.send(Performative.CONFIRM, Protocol.P_LAL, m.getSender(),
                     new PlatformMessage.Held(false, st.term, st.seq, null, null));
             resetWatch();
             return;
@@ -74,7 +76,7 @@ abstract class Follower extends RoleBase {
         } else {
             st.selfEntry = mine;
         }
-        ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
+        ctx.send(Performative.CONFIRM, Protocol.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
         roles.publish();
     }
 
@@ -107,7 +109,7 @@ abstract class Follower extends RoleBase {
         } else {
             st.selfEntry = mine;
         }
-        ctx.send(Performative.CONFIRM, ContainerLayer.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
+        ctx.send(Performative.CONFIRM, Protocol.P_LAL, m.getSender(), new PlatformMessage.Held(false, st.term, st.seq, null, null));
         roles.publish();
     }
 
@@ -131,7 +133,7 @@ abstract class Follower extends RoleBase {
         st.timeoutMs = a.timeout();
         resetWatch();
         AgentLists l = st.lists;
-        ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, m.getSender(),
+        ctx.send(Performative.CONFIRM, Protocol.P_MAINTENANCE, m.getSender(),
                 new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
     }
 
@@ -152,7 +154,7 @@ abstract class Follower extends RoleBase {
     }
 
     /** True if this agent asked that agent for a copy of its LAL, lately. */
-    private boolean asked(io.concord.core.acl.AID sender) {
+    private boolean asked(AID sender) {
         if (ctx.nowNs() - st.lalCopyUntilNs > 0) {
             return false;
         }
@@ -163,7 +165,7 @@ abstract class Follower extends RoleBase {
             return false;
         }
         for (String uri : sender.addresses()) {
-            if (st.lalCopyAt.equals(io.concord.core.net.Address.parse(uri))) {
+            if (st.lalCopyAt.equals(Address.parse(uri))) {
                 return true;
             }
         }

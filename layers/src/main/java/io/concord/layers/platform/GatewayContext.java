@@ -2,6 +2,7 @@ package io.concord.layers.platform;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.net.Channels;
 
 import java.util.List;
 
@@ -19,7 +20,7 @@ public interface GatewayContext {
      * between the socket and the agents); {@code null} where the platform's network has none (the
      * test kit's virtual network): the gateway then runs a selector thread of its own.
      */
-    default io.concord.core.net.Channels channels() {
+    default Channels channels() {
         return null;
     }
 

@@ -5,7 +5,8 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.codec.AclParseException;
 import io.concord.core.codec.StringAclCodec;
-import io.concord.core.proto.MtsFailure;
+import io.concord.core.net.Channels;
+import io.concord.core.acl.MtsFailure;
 
 import java.util.List;
 import java.util.function.Consumer;
@@ -21,12 +22,12 @@ final class GatewayRelay implements PlatformMessage.Handler {
     private final PlatformContext ctx;
     private final PlatformState st;
     private final Gateway gateway;
-    private final Supplier<ContainerLayer.Role> role;
+    private final Supplier<Role> role;
     private final Consumer<AclMessage> toAgent;
     private final Consumer<Runnable> onLoop;
     private boolean started;
 
-    GatewayRelay(PlatformContext ctx, PlatformState st, Gateway gateway, Supplier<ContainerLayer.Role> role,
+    GatewayRelay(PlatformContext ctx, PlatformState st, Gateway gateway, Supplier<Role> role,
                  Consumer<AclMessage> toAgent, Consumer<Runnable> onLoop) {
         this.ctx = ctx;
         this.st = st;
@@ -47,7 +48,7 @@ final class GatewayRelay implements PlatformMessage.Handler {
 
     /** This agent's message for a foreign receiver, wrapped for its container (the node {@code via}). */
     AclMessage wrap(AclMessage message, AID receiver, AID via) {
-        return ctx.message(Performative.INFORM, ContainerLayer.P_SERVICES, via, new PlatformMessage.RelayOut(receiver.name(),
+        return ctx.message(Performative.INFORM, Protocol.P_SERVICES, via, new PlatformMessage.RelayOut(receiver.name(),
                 String.join(",", receiver.addresses()), StringAclCodec.INSTANCE.encodeToString(message)).encode());
     }
 
@@ -83,7 +84,7 @@ final class GatewayRelay implements PlatformMessage.Handler {
         }
         String addrs = r.addresses();
         AID receiver = new AID(r.receiver(), addrs.isEmpty() ? new String[0] : addrs.split(","));
-        boolean container = role.get() == ContainerLayer.Role.CONTAINER;
+        boolean container = role.get() == Role.CONTAINER;
         if (container && !started) {
             startGateway();
         }
@@ -138,7 +139,7 @@ final class GatewayRelay implements PlatformMessage.Handler {
         }
 
         @Override
-        public io.concord.core.net.Channels channels() {
+        public Channels channels() {
             return ctx.channels();
         }
 
@@ -158,7 +159,7 @@ final class GatewayRelay implements PlatformMessage.Handler {
             if (e == null) {
                 return false;
             }
-            ctx.send(Performative.INFORM, ContainerLayer.P_SERVICES, e.aid(),
+            ctx.send(Performative.INFORM, Protocol.P_SERVICES, e.aid(),
                     new PlatformMessage.RelayIn(e.name(), StringAclCodec.INSTANCE.encodeToString(message)));
             return true;
         }

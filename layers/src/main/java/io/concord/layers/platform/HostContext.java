@@ -3,16 +3,22 @@ package io.concord.layers.platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.core.agent.CoLocated;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.SendRejectedException;
 import io.concord.core.layer.StackHost;
 import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
+import io.concord.core.net.Channels;
+import io.concord.core.net.Neighbourhood;
 import io.concord.layers.frame.Frames;
 
-import static io.concord.layers.platform.ContainerLayer.LANGUAGE;
-import static io.concord.layers.platform.ContainerLayer.ONTOLOGY;
+import java.util.function.Predicate;
+import java.util.random.RandomGenerator;
+
+import static io.concord.layers.platform.Protocol.LANGUAGE;
+import static io.concord.layers.platform.Protocol.ONTOLOGY;
 
 /** The container layer's {@link PlatformContext}: its node's services, narrowed to what the platform uses. */
 final class HostContext implements PlatformContext {
@@ -23,14 +29,14 @@ final class HostContext implements PlatformContext {
     private final String self;
     private final AID selfAid;
     private final LayerContext layer;
-    private final java.util.function.Predicate<Envelope> place;
+    private final Predicate<Envelope> place;
 
     /**
      * @param layer the container layer's place in the stack: its own messages go down from there
      * @param place gives a copy its destination (false if it has none, and was dropped)
      */
     HostContext(StackHost host, LayerContext layer, PlatformConfig config, PlatformState st, String platform, AID selfAid,
-                java.util.function.Predicate<Envelope> place) {
+                Predicate<Envelope> place) {
         this.host = host;
         this.layer = layer;
         this.place = place;
@@ -94,7 +100,7 @@ final class HostContext implements PlatformContext {
         if (!st.portCheck) {
             return null;
         }
-        io.concord.core.net.Address at = e.transportAddress();
+        Address at = e.transportAddress();
         if (at != null && at.equals(host.localAddress())) {
             return e.name().equals(self); // this agent holds that port now: whoever had it before is gone
         }
@@ -102,22 +108,22 @@ final class HostContext implements PlatformContext {
         if (holder != null && !holder.equals(e.name())) {
             return Boolean.FALSE; // another agent speaks from its port now: its process is gone
         }
-        io.concord.core.net.Neighbourhood around = host.capability(io.concord.core.net.Neighbourhood.class);
+        Neighbourhood around = host.capability(Neighbourhood.class);
         return around == null ? null : around.held(at);
     }
 
     @Override
-    public io.concord.core.agent.CoLocated coLocated() {
-        return host.capability(io.concord.core.agent.CoLocated.class);
+    public CoLocated coLocated() {
+        return host.capability(CoLocated.class);
     }
 
     @Override
-    public io.concord.core.net.Channels channels() {
-        return host.capability(io.concord.core.net.Channels.class);
+    public Channels channels() {
+        return host.capability(Channels.class);
     }
 
     @Override
-    public java.util.random.RandomGenerator random() {
+    public RandomGenerator random() {
         return host.random();
     }
 

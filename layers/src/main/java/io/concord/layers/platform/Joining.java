@@ -2,6 +2,8 @@ package io.concord.layers.platform;
 
 import io.concord.core.acl.Performative;
 
+import java.util.function.Consumer;
+
 
 /**
  * A join under way (dissertation fig. 5.7): INFORM-REF join to a container, sent again with a
@@ -12,7 +14,7 @@ import io.concord.core.acl.Performative;
 final class Joining {
     private final PlatformContext ctx;
     private final PlatformState st;
-    private final java.util.function.Consumer<AgentEntry> onFailed;
+    private final Consumer<AgentEntry> onFailed;
     private AgentEntry target;
     /** The term the target claimed. */
     private long targetTerm;
@@ -21,7 +23,7 @@ final class Joining {
     private int failures;
     private long timer = -1;
 
-    Joining(PlatformContext ctx, PlatformState st, java.util.function.Consumer<AgentEntry> onFailed) {
+    Joining(PlatformContext ctx, PlatformState st, Consumer<AgentEntry> onFailed) {
         this.ctx = ctx;
         this.st = st;
         this.onFailed = onFailed;
@@ -57,7 +59,7 @@ final class Joining {
 
     private void send() {
         timer = ctx.cancel(timer);
-        ctx.send(Performative.INFORM_REF, ContainerLayer.P_LAL, target.aid(), new PlatformMessage.Join(claimTerm, st.selfEntry));
+        ctx.send(Performative.INFORM_REF, Protocol.P_LAL, target.aid(), new PlatformMessage.Join(claimTerm, st.selfEntry));
         // Backing off: the first join to a container may wait for a signed handshake on a cold JVM.
         timer = ctx.after(ctx.config().joinRetryMs() << Math.min(failures, 4), this::onTimeout);
     }

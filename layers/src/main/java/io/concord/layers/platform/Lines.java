@@ -1,11 +1,15 @@
 package io.concord.layers.platform;
 
+import io.concord.core.acl.AclMessage;
+
+import java.io.ByteArrayOutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
 
 /**
  * The content of platform messages: plain text a sniffer shows, one command line of
@@ -48,7 +52,7 @@ final class Lines {
          * @throws IllegalArgumentException if it is missing
          * @throws NotTheSender if it names another agent
          */
-        AgentEntry senderEntry(io.concord.core.acl.AclMessage m) {
+        AgentEntry senderEntry(AclMessage m) {
             if (entries.isEmpty()) {
                 throw new IllegalArgumentException("a '" + command + "' message must carry its sender's entry first");
             }
@@ -60,7 +64,7 @@ final class Lines {
          *
          * @throws NotTheSender if it names another agent
          */
-        AgentEntry spokenBy(AgentEntry e, io.concord.core.acl.AclMessage m) {
+        AgentEntry spokenBy(AgentEntry e, AclMessage m) {
             if (e != null && !e.name().equals(m.getSender().name())) {
                 throw new NotTheSender("a '" + command + "' message from " + m.getSender().name() + " in the name of " + e.name());
             }
@@ -100,7 +104,7 @@ final class Lines {
             return s;
         }
         byte[] utf = s.getBytes(StandardCharsets.UTF_8);
-        java.io.ByteArrayOutputStream out = new java.io.ByteArrayOutputStream(utf.length);
+        ByteArrayOutputStream out = new ByteArrayOutputStream(utf.length);
         for (int i = 0; i < utf.length; i++) {
             if (utf[i] == '%') {
                 if (i + 2 >= utf.length) {
@@ -212,7 +216,7 @@ final class Lines {
      * 5,000 simulated agents, 25 million entries would not fit in 14 GB). Entries are immutable.
      * Bounded: emptied when it grows past {@link #MAX_SHARED}.
      */
-    private static final java.util.concurrent.ConcurrentHashMap<String, AgentEntry> SHARED = new java.util.concurrent.ConcurrentHashMap<>();
+    private static final ConcurrentHashMap<String, AgentEntry> SHARED = new ConcurrentHashMap<>();
     static final int MAX_SHARED = 200_000;
 
     static AgentEntry parseEntry(String line) {

@@ -22,8 +22,8 @@ final class MemberRole extends Follower {
     }
 
     @Override
-    ContainerLayer.Role kind() {
-        return ContainerLayer.Role.MEMBER;
+    Role kind() {
+        return Role.MEMBER;
     }
 
     @Override
@@ -136,7 +136,7 @@ final class MemberRole extends Follower {
     private void probe() {
         if (st.container != null) {
             AgentLists l = st.lists;
-            ctx.send(Performative.CONFIRM, ContainerLayer.P_MAINTENANCE, st.container.aid(),
+            ctx.send(Performative.CONFIRM, Protocol.P_MAINTENANCE, st.container.aid(),
                     new PlatformMessage.Held(true, st.term, st.seq, l.gseq, l.galFrom));
         }
     }
@@ -156,7 +156,7 @@ final class MemberRole extends Follower {
     private boolean stillContainerHere() {
         AgentEntry c = st.container;
         ContainerLayer there = c == null || roles.join.target() != null || !ctx.here(c) ? null : ctx.peerLayer(c);
-        if (there == null || there.role() != ContainerLayer.Role.CONTAINER || there.term() != st.term) {
+        if (there == null || there.role() != Role.CONTAINER || there.term() != st.term) {
             return false;
         }
         if (there.lalSequence() != st.seq) {

@@ -3,7 +3,12 @@ package io.concord.layers.platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.core.agent.CoLocated;
+import io.concord.core.layer.SendRejectedException;
 import io.concord.core.net.Address;
+import io.concord.core.net.Channels;
+
+import java.util.random.RandomGenerator;
 
 /**
  * What the roles, the federation, the gateway relay and the directory may use of the container
@@ -37,18 +42,18 @@ interface PlatformContext {
     /** Cancels a timer if {@code id >= 0}; returns -1, to assign back. */
     long cancel(long id);
 
-    java.util.random.RandomGenerator random();
+    RandomGenerator random();
 
     /**
      * The agents of this agent's runtime, reached in memory: they live and die with this loop, so
      * they need no alive messages to be known alive. {@code null} where the node offers none.
      */
-    default io.concord.core.agent.CoLocated coLocated() {
+    default CoLocated coLocated() {
         return null;
     }
 
     /** The loop's selector, for a gateway that serves sockets on the loop; {@code null} where the network has none. */
-    default io.concord.core.net.Channels channels() {
+    default Channels channels() {
         return null;
     }
 
@@ -57,7 +62,7 @@ interface PlatformContext {
      * lets a layer read its peer's in memory (on the loop); {@code null} otherwise.
      */
     default ContainerLayer peerLayer(AgentEntry e) {
-        io.concord.core.agent.CoLocated c = coLocated();
+        CoLocated c = coLocated();
         Address a = e.transportAddress();
         return c == null || a == null ? null : c.layer(a, ContainerLayer.class);
     }
@@ -73,7 +78,7 @@ interface PlatformContext {
 
     /** True if the entry's agent runs in this agent's runtime, reached in memory. */
     default boolean here(AgentEntry e) {
-        io.concord.core.agent.CoLocated c = coLocated();
+        CoLocated c = coLocated();
         Address a = e.transportAddress();
         return c != null && a != null && c.here(a);
     }
@@ -90,7 +95,7 @@ interface PlatformContext {
     /**
      * Sends a message through this agent's whole stack, as the agent would.
      *
-     * @throws io.concord.core.layer.SendRejectedException if the stack refuses it at once
+     * @throws SendRejectedException if the stack refuses it at once
      */
     void sendOrThrow(AclMessage m);
 

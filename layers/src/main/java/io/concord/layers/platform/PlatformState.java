@@ -58,9 +58,9 @@ final class PlatformState {
     /** A silent agent of this host is checked by its port before it is taken for dead (off only in tests). */
     boolean portCheck = true;
     /** The agent last heard from each transport address (bounded): a port taken by another agent tells its former holder gone. */
-    final java.util.Map<io.concord.core.net.Address, String> heardAt = new java.util.LinkedHashMap<>(64, 0.75f, true) {
+    final Map<Address, String> heardAt = new LinkedHashMap<>(64, 0.75f, true) {
         @Override
-        protected boolean removeEldestEntry(java.util.Map.Entry<io.concord.core.net.Address, String> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<Address, String> eldest) {
             return size() > 1_024;
         }
     };

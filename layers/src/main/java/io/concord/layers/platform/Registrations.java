@@ -2,13 +2,13 @@ package io.concord.layers.platform;
 
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeoutException;
 
 /**
  * An agent's own yellow-pages registration, kept by the agent: what it asked the DF for
@@ -142,8 +142,8 @@ final class Registrations {
             refusalLogged = true;
             LOG.info("{}: the DF did not take its services ({}); it registers them again when its container lists it", ctx.self(), why);
         }
-        boolean timeout = error instanceof java.util.concurrent.TimeoutException
-                || error != null && error.getCause() instanceof java.util.concurrent.TimeoutException;
+        boolean timeout = error instanceof TimeoutException
+                || error != null && error.getCause() instanceof TimeoutException;
         if (error != null && !timeout) {
             // The agent stopped, or its message could not go: nothing to retry.
             failWaiting(error);

@@ -27,7 +27,7 @@ abstract class RoleBase implements PlatformMessage.Handler {
         this.st = roles.st;
     }
 
-    abstract ContainerLayer.Role kind();
+    abstract Role kind();
 
     /** A timer of this role: cancelled when the role is left. */
     final long after(long ms, Runnable task) {
@@ -71,7 +71,7 @@ abstract class RoleBase implements PlatformMessage.Handler {
     public void onWhoIsContainer(PlatformMessage.WhoIsContainer w, AclMessage m) {
         AgentEntry asker = w.asker();
         PlatformMessage answer;
-        if (st.container != null && kind() != ContainerLayer.Role.SEEKING) {
+        if (st.container != null && kind() != Role.SEEKING) {
             answer = new PlatformMessage.ContainerIs(st.term, st.container, st.selfEntry);
         } else {
             addSeeker(asker);
@@ -103,7 +103,7 @@ abstract class RoleBase implements PlatformMessage.Handler {
             return;
         }
         boolean ownClaim = (!st.fromAny || !st.claimCheck) && c.container().name().equals(m.getSender().name());
-        if (!ownClaim && kind() != ContainerLayer.Role.SEEKING) {
+        if (!ownClaim && kind() != Role.SEEKING) {
             // A member or a container changes sides only on the claimed container's own word,
             // sealed to it; anything else is a hint, and the claimed container is asked itself.
             roles.verifyClaim(c.container());
@@ -145,7 +145,7 @@ abstract class RoleBase implements PlatformMessage.Handler {
     /** Says which container this agent follows, to an agent that follows a worse one. */
     final void tellBetter(AID to) {
         if (st.container != null) {
-            ctx.send(Performative.INFORM, ContainerLayer.P_DISCOVERY, to,
+            ctx.send(Performative.INFORM, Protocol.P_DISCOVERY, to,
                     new PlatformMessage.ContainerIs(st.term, st.container, st.selfEntry));
         }
     }

@@ -4,9 +4,14 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
+import io.concord.core.net.Neighbourhood;
+import io.concord.layers.frame.Frames;
 
 import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Holds an agent's current role and swaps it: each transition of the dissertation's figures is one
@@ -31,14 +36,14 @@ final class Roles implements Federation.Host {
      */
     private final Runnable listsChanged;
     /** When this agent last asked each claimed container itself whether it is (bounded). */
-    private final java.util.Map<String, Long> verified = new java.util.LinkedHashMap<>(16, 0.75f, true) {
+    private final Map<String, Long> verified = new LinkedHashMap<>(16, 0.75f, true) {
         @Override
-        protected boolean removeEldestEntry(java.util.Map.Entry<String, Long> eldest) {
+        protected boolean removeEldestEntry(Map.Entry<String, Long> eldest) {
             return size() > 64;
         }
     };
 
-    Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, io.concord.core.net.Neighbourhood around,
+    Roles(PlatformContext ctx, PlatformState st, NetworkConfig network, Neighbourhood around,
           GatewayRelay relay, Runnable publish, Runnable listsChanged) {
         this.ctx = ctx;
         this.st = st;
@@ -54,7 +59,7 @@ final class Roles implements Federation.Host {
         return current;
     }
 
-    ContainerLayer.Role kind() {
+    Role kind() {
         return current.kind();
     }
 
@@ -118,7 +123,7 @@ final class Roles implements Federation.Host {
         PlatformMessage claim = new PlatformMessage.ContainerIs(t, better, st.selfEntry);
         for (AgentEntry e : st.lists.lal.values()) {
             if (!e.name().equals(ctx.self()) && !e.name().equals(better.name())) {
-                ctx.send(Performative.INFORM, ContainerLayer.P_DISCOVERY, e.aid(), claim);
+                ctx.send(Performative.INFORM, Protocol.P_DISCOVERY, e.aid(), claim);
             }
         }
         join.start(better, t);
@@ -126,7 +131,7 @@ final class Roles implements Federation.Host {
 
     void becomeMember(AgentEntry by, long t, long period, long timeout) {
         boolean sameContainer = st.container != null && st.container.name().equals(by.name()) && st.term == t;
-        boolean changed = current.kind() != ContainerLayer.Role.MEMBER || !sameContainer;
+        boolean changed = current.kind() != Role.MEMBER || !sameContainer;
         if (federation != null) {
             federation.stop();
         }
@@ -181,11 +186,11 @@ final class Roles implements Federation.Host {
         }
         if (!known.isEmpty()) {
             AID pick = known.get(ctx.random().nextInt(known.size()));
-            boolean anyone = pick.name().startsWith(io.concord.layers.frame.Frames.ANY_LOCAL_NAME + "@");
+            boolean anyone = pick.name().startsWith(Frames.ANY_LOCAL_NAME + "@");
             st.lalCopyFrom = anyone ? null : pick.name();
             st.lalCopyAt = anyone ? Address.parse(pick.addresses().get(0)) : null;
             st.lalCopyUntilNs = ctx.nowNs() + 2_000_000_000L;
-            ctx.send(Performative.REQUEST, ContainerLayer.P_LAL, pick, new PlatformMessage.LalRequest(st.term, st.selfEntry));
+            ctx.send(Performative.REQUEST, Protocol.P_LAL, pick, new PlatformMessage.LalRequest(st.term, st.selfEntry));
         }
         MemberRole m = become(new MemberRole(this));
         st.container = null;
@@ -200,7 +205,7 @@ final class Roles implements Federation.Host {
 
     /** The agent stops: it says so (a container to every member, a member to its container). */
     void stop() {
-        ContainerLayer.Role was = current.kind();
+        Role was = current.kind();
         current.leave();
         join.stop();
         if (federation != null) {
@@ -210,14 +215,14 @@ final class Roles implements Federation.Host {
             relay.stopGateway();
         }
         PlatformMessage leave = new PlatformMessage.Leave(st.term);
-        if (was == ContainerLayer.Role.CONTAINER) {
+        if (was == Role.CONTAINER) {
             for (AgentEntry e : st.lists.lal.values()) {
                 if (!e.name().equals(ctx.self())) {
-                    ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, e.aid(), leave);
+                    ctx.send(Performative.INFORM, Protocol.P_MAINTENANCE, e.aid(), leave);
                 }
             }
-        } else if (was == ContainerLayer.Role.MEMBER && st.container != null && !st.container.name().equals(ctx.self())) {
-            ctx.send(Performative.INFORM, ContainerLayer.P_MAINTENANCE, st.container.aid(), leave);
+        } else if (was == Role.MEMBER && st.container != null && !st.container.name().equals(ctx.self())) {
+            ctx.send(Performative.INFORM, Protocol.P_MAINTENANCE, st.container.aid(), leave);
         }
         current = new Stopped(this);
     }
@@ -298,7 +303,7 @@ final class Roles implements Federation.Host {
         }
         verified.put(claimed.name(), now);
         ctx.trace("verify-claim", claimed.name());
-        ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, claimed.aid(),
+        ctx.send(Performative.QUERY_REF, Protocol.P_DISCOVERY, claimed.aid(),
                 new PlatformMessage.WhoIsContainer(st.round, st.selfEntry));
     }
 
@@ -312,7 +317,7 @@ final class Roles implements Federation.Host {
     }
 
     /** Only these names' entries changed: only their routes follow (see {@link AgentLists#updateRoutes}). */
-    void routesChanged(java.util.Collection<String> names) {
+    void routesChanged(Collection<String> names) {
         st.lists.updateRoutes(names, ctx.nowNs());
         listsChanged.run();
     }
@@ -332,8 +337,8 @@ final class Roles implements Federation.Host {
         }
 
         @Override
-        ContainerLayer.Role kind() {
-            return ContainerLayer.Role.STOPPED;
+        Role kind() {
+            return Role.STOPPED;
         }
 
         @Override

@@ -5,6 +5,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -27,8 +28,8 @@ final class SeekingRole extends Follower {
     }
 
     @Override
-    ContainerLayer.Role kind() {
-        return ContainerLayer.Role.SEEKING;
+    Role kind() {
+        return Role.SEEKING;
     }
 
     /** Starts a round of discovery. */
@@ -52,10 +53,10 @@ final class SeekingRole extends Follower {
             }
         }
         int own = st.selfEntry.port();
-        open.sort(java.util.Comparator.comparingInt(a -> Math.abs(a.port() - own)));
+        open.sort(Comparator.comparingInt(a -> Math.abs(a.port() - own)));
         for (Address a : open.subList(0, Math.min(open.size(), batch()))) {
             sentTo.add(a);
-            ctx.send(Performative.QUERY_REF, ContainerLayer.P_DISCOVERY, ctx.anyAt(a), ask);
+            ctx.send(Performative.QUERY_REF, Protocol.P_DISCOVERY, ctx.anyAt(a), ask);
         }
         discoveryTimer = cancel(discoveryTimer);
         discoveryTimer = after(ctx.config().discoveryTimeoutMs() << Math.min(attempt - 1, 4), this::onDiscoveryTimeout);

@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
@@ -54,7 +55,7 @@ public record ServiceDescription(String type, String name, Map<String, String> p
     }
 
     private static List<String> plus(List<String> l, String v) {
-        java.util.ArrayList<String> r = new java.util.ArrayList<>(l);
+        ArrayList<String> r = new ArrayList<>(l);
         r.add(Objects.requireNonNull(v));
         return r;
     }

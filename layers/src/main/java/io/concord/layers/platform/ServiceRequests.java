@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.layer.SendRejectedException;
@@ -12,9 +13,9 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeoutException;
 
 /**
- * Requests of the Java API ({@link PlatformServices}) to this platform's DF or AMS: held until the
- * agent knows its container, sent again on timeout (every request is idempotent), and completed
- * with the reply.
+ * Requests of the Java API ({@code PlatformServices}, above this package) to this platform's DF
+ * or AMS: held until the agent knows its container, sent again on timeout (every request is
+ * idempotent), and completed with the reply.
  */
 final class ServiceRequests {
     private static final int ATTEMPTS = 4;
@@ -48,12 +49,12 @@ final class ServiceRequests {
     }
 
     private boolean containerKnown() {
-        return roles.kind() != ContainerLayer.Role.SEEKING && roles.st.container != null;
+        return roles.kind() != Role.SEEKING && roles.st.container != null;
     }
 
     CompletableFuture<AclMessage> request(boolean df, Performative p, String content) {
         Request r = new Request(df, p, content, ctx.self() + "-p" + (++counter));
-        if (roles.kind() == ContainerLayer.Role.STOPPED) {
+        if (roles.kind() == Role.STOPPED) {
             r.future.completeExceptionally(new IllegalStateException("the agent has stopped"));
             return r.future;
         }
@@ -66,9 +67,24 @@ final class ServiceRequests {
         return r.future;
     }
 
+    /** The content of a DF search for the agents whose services match the template. */
+    static String searchContent(ServiceDescription template) {
+        StringBuilder b = new StringBuilder();
+        Lines.appendService(b, template);
+        return Lines.content("search", Lines.params("template", b.toString()), List.of());
+    }
+
+    /** The entries of the DF's answer to a search; its refusal, as an exception. */
+    static List<AgentEntry> entries(AclMessage reply) {
+        if (reply.getPerformative() != Performative.INFORM) {
+            throw new IllegalStateException("the DF answered " + reply.getPerformative().wireName() + ": " + reply.getContent());
+        }
+        return Lines.parse(reply.getContent()).entries();
+    }
+
     private void send(Request r) {
         r.attempts++;
-        AclMessage m = ctx.message(r.act, ContainerLayer.P_SERVICES, io.concord.core.acl.AID.local(r.df ? "df" : "ams", ctx.platform()),
+        AclMessage m = ctx.message(r.act, Protocol.P_SERVICES, AID.local(r.df ? "df" : "ams", ctx.platform()),
                 r.content);
         m.setReplyWith(r.replyWith);
         PlatformState st = roles.st;

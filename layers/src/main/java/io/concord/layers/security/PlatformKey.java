@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.PosixFilePermission;
 import java.nio.file.attribute.PosixFilePermissions;
+import java.security.MessageDigest;
 import java.security.SecureRandom;
 import java.util.Arrays;
 import java.util.HexFormat;
@@ -229,7 +230,7 @@ public final class PlatformKey {
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof PlatformKey other && java.security.MessageDigest.isEqual(key, other.key);
+        return o instanceof PlatformKey other && MessageDigest.isEqual(key, other.key);
     }
 
     @Override

@@ -4,7 +4,10 @@ import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
+
+import java.util.Set;
 
 /**
  * The temporal layer: stamps every frame with the platform time and drops frames whose stamp lies
@@ -56,15 +59,15 @@ public final class TemporalLayer extends Layer {
     private int exchanges;
 
     public TemporalLayer(Config config, PlatformClock clock) {
-        this(config, clock, java.util.Set.of());
+        this(config, clock, Set.of());
     }
 
     /**
      * A temporal layer with some defences off: only for the threat tests, through
-     * {@link io.concord.layers.SafetyStack.Builder#withoutDefences}.
+     * {@code SafetyStack.Builder.withoutDefences}, above the layers.
      */
-    public TemporalLayer(Config config, PlatformClock clock, java.util.Set<io.concord.layers.Defence> off) {
-        this.acceptanceWindow = !off.contains(io.concord.layers.Defence.ACCEPTANCE_WINDOW);
+    public TemporalLayer(Config config, PlatformClock clock, Set<Defence> off) {
+        this.acceptanceWindow = !off.contains(Defence.ACCEPTANCE_WINDOW);
         this.config = config;
         this.clock = clock;
     }

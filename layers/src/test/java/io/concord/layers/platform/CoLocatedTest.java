@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.PortRange;
@@ -40,7 +41,7 @@ class CoLocatedTest {
 
     /** One container, followed by all, listing exactly {@code n} agents in every copy. */
     private static boolean agreed(List<ContainerLayer> layers, int n) {
-        List<ContainerLayer> containers = layers.stream().filter(l -> l.role() == ContainerLayer.Role.CONTAINER).toList();
+        List<ContainerLayer> containers = layers.stream().filter(l -> l.role() == Role.CONTAINER).toList();
         if (containers.size() != 1) {
             return false;
         }

@@ -3,7 +3,7 @@ package io.concord.layers.platform;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.layer.Envelope;
 import io.concord.core.acl.Performative;
-import io.concord.layers.platform.ContainerLayer.Role;
+import io.concord.layers.platform.Role;
 import io.concord.layers.platform.PlatformMessage.AgentInfo;
 import io.concord.layers.platform.PlatformMessage.AgentInfoRequest;
 import io.concord.layers.platform.PlatformMessage.Alive;
@@ -23,9 +23,9 @@ import org.junit.jupiter.api.Test;
 import java.util.ArrayList;
 import java.util.List;
 
-import static io.concord.layers.platform.ContainerLayer.P_DISCOVERY;
-import static io.concord.layers.platform.ContainerLayer.P_LAL;
-import static io.concord.layers.platform.ContainerLayer.P_MAINTENANCE;
+import static io.concord.layers.platform.Protocol.P_DISCOVERY;
+import static io.concord.layers.platform.Protocol.P_LAL;
+import static io.concord.layers.platform.Protocol.P_MAINTENANCE;
 import static io.concord.layers.platform.OneAgent.other;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -739,7 +739,7 @@ class ContainerRulesTest {
             Kept g = new Kept();
             OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), g);
             AgentEntry m = other("m", 7002, -10);
-            c.from(m, Performative.INFORM, ContainerLayer.P_SERVICES, relay("m"));
+            c.from(m, Performative.INFORM, Protocol.P_SERVICES, relay("m"));
             assertEquals(1, g.out.size());
             assertEquals("m@p", g.out.get(0).getSender().name());
         }
@@ -802,7 +802,7 @@ class ContainerRulesTest {
             Kept g = new Kept();
             OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), g);
             AgentEntry m = other("m", 7002, -10);
-            c.from(m, Performative.INFORM, ContainerLayer.P_SERVICES, relay("victim"));
+            c.from(m, Performative.INFORM, Protocol.P_SERVICES, relay("victim"));
             assertTrue(g.out.isEmpty(), "carried out in victim's name: " + g.out);
             assertEquals(1, c.h.drops().get("masquerade"));
         }
@@ -855,7 +855,7 @@ class ContainerRulesTest {
             assertEquals(expected, gaps);
             assertTrue(gaps.size() < 70, "a minute alone (240 at the period), " + gaps.size() + " announcements");
             AgentEntry z = on2("z");
-            c.from(z, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, z, List.of()));
+            c.from(z, Performative.INFORM, Protocol.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, z, List.of()));
             c.sent();
             List<Long> known = announcementGaps(c, 3_000, z);
             assertTrue(known.stream().allMatch(g -> g <= 250), "another host known: " + known);
@@ -885,7 +885,7 @@ class ContainerRulesTest {
             for (long t = 1; t <= ms; t++) {
                 c.advance(1);
                 if (peer != null && t % 250 == 0) {
-                    c.from(peer, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, peer, List.of()));
+                    c.from(peer, Performative.INFORM, Protocol.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, peer, List.of()));
                 }
                 if (!c.sent(PlatformMessage.Announce.class).isEmpty()) {
                     gaps.add(t - last);
@@ -900,12 +900,12 @@ class ContainerRulesTest {
             OneAgent c = container();
             c.sent();
             AgentEntry z = on2("z");
-            c.from(z, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, z, List.of()));
+            c.from(z, Performative.INFORM, Protocol.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.2", 1, z, List.of()));
             List<PlatformMessage.WhoIsFacilitator> opened = c.sent(PlatformMessage.WhoIsFacilitator.class);
             assertEquals(1, opened.size(), "me@p < z@p: me opens");
             assertEquals(32, opened.get(0).secret().length(), "a 128-bit secret");
             AgentEntry a = on2("a");
-            c.from(a, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.3", 1, a, List.of()));
+            c.from(a, Performative.INFORM, Protocol.P_NETWORK, new PlatformMessage.Announce(1, "127.0.0.3", 1, a, List.of()));
             List<OneAgent.Out> out = c.sent();
             assertTrue(out.stream().anyMatch(o -> o.what() instanceof PlatformMessage.ContactMe && o.to().equals("a@p")), out.toString());
             assertTrue(out.stream().noneMatch(o -> o.what() instanceof PlatformMessage.WhoIsFacilitator), "a@p < me@p: a opens");
@@ -919,13 +919,13 @@ class ContainerRulesTest {
             c.advance(10);
             c.sent();
             AgentEntry a = on2("a");
-            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.REQUEST, Protocol.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
             List<OneAgent.Out> out = c.sent();
             assertTrue(out.stream().anyMatch(o -> o.what() instanceof PlatformMessage.IsFacilitator i && i.secret().equals("s3cret")));
             assertTrue(out.stream().anyMatch(o -> o.what() instanceof PlatformMessage.GalUpdate u && o.to().equals("a@p")
                     && names(u.page().entries()).equals(List.of("m@p", "me@p"))), "our list goes to the other host: " + out);
             AgentEntry b = new AgentEntry("b@p", "udp://127.0.0.2:7002", OneAgent.EPOCH, List.of());
-            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+            c.from(a, Performative.INFORM_REF, Protocol.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
                     PlatformMessage.Page.of(0, 1, body(List.of(a, b)))));
             assertEquals(List.of("a@p", "b@p"), names(List.copyOf(c.layer.globalAgents())));
             c.advance(ContainerRole.GAL_PUSH_DELAY_MS); // changes arriving together go out together
@@ -937,9 +937,9 @@ class ContainerRulesTest {
         void aListWithoutTheAgreedSecretIsDiscardedCountedAndItsSenderTold() {
             OneAgent c = container();
             AgentEntry a = on2("a");
-            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.REQUEST, Protocol.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
             c.sent();
-            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("guess", 1, 1,
+            c.from(a, Performative.INFORM_REF, Protocol.P_NETWORK, new PlatformMessage.GalUpdate("guess", 1, 1,
                     PlatformMessage.Page.of(0, 1, body(List.of(a, on2("x"))))));
             assertTrue(c.layer.globalAgents().isEmpty());
             assertEquals(1, c.h.drops().get("bad-secret"));
@@ -950,8 +950,8 @@ class ContainerRulesTest {
         void aHostSilentForTheHostTimeoutLeavesTheGal() {
             OneAgent c = container();
             AgentEntry a = on2("a");
-            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
-            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+            c.from(a, Performative.REQUEST, Protocol.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.INFORM_REF, Protocol.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
                     PlatformMessage.Page.of(0, 1, body(List.of(a)))));
             assertEquals(List.of("a@p"), names(List.copyOf(c.layer.globalAgents())));
             c.advance(1_500);
@@ -988,8 +988,8 @@ class ContainerRulesTest {
         void announcementsOfManyHostsMakeAContainerKnowAtMostTheHostLimitAndKeepItsContacts() {
             OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), net, null);
             AgentEntry a = new AgentEntry("a@p", "udp://127.0.0.2:7001", OneAgent.EPOCH - 5_000, List.of());
-            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
-            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+            c.from(a, Performative.REQUEST, Protocol.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.INFORM_REF, Protocol.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
                     Page.of(0, 1, body(List.of(a)))));
             c.sent();
             // A key holder announces a host that knows 1,000 more: each would be a facilitator to
@@ -1000,7 +1000,7 @@ class ContainerRulesTest {
                         OneAgent.EPOCH, List.of()));
             }
             AgentEntry z = new AgentEntry("zz@p", "udp://10.200.9.9:7001", OneAgent.EPOCH, List.of());
-            c.fromAny(z, Performative.INFORM, Federation.P_NETWORK, new PlatformMessage.Announce(1, "10.200.9.9", 1, z, made));
+            c.fromAny(z, Performative.INFORM, Protocol.P_NETWORK, new PlatformMessage.Announce(1, "10.200.9.9", 1, z, made));
             assertEquals(Federation.MAX_FACILITATORS, c.layer.federation().facilitators().size(), "no more hosts known than the limit");
             assertTrue(c.h.drops().get("facilitator-limit") >= 1_000 + 1 - (Federation.MAX_FACILITATORS - 1));
             assertTrue(c.layer.federation().facilitators().containsKey("a@p"), "the host in contact is never the one forgotten");
@@ -1015,7 +1015,7 @@ class ContainerRulesTest {
         void aListWhosePagesGrowPastTheLimitIsDroppedAndCounted() {
             OneAgent c = new OneAgent("me", 7001, PlatformConfig.defaults(), net, null);
             AgentEntry a = new AgentEntry("a@p", "udp://127.0.0.2:7001", OneAgent.EPOCH - 5_000, List.of());
-            c.from(a, Performative.REQUEST, Federation.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
+            c.from(a, Performative.REQUEST, Protocol.P_NETWORK, new PlatformMessage.WhoIsFacilitator("s3cret", 1, "127.0.0.2", a));
             // A version announced as 10,000 pages, each of some 8 KiB, whose last page never comes.
             List<AgentEntry> page = new ArrayList<>();
             for (int i = 0; i < 60; i++) {
@@ -1025,14 +1025,14 @@ class ContainerRulesTest {
             String text = body(page);
             int sent = 0;
             while ((long) sent * text.length() <= PageAssembler.MAX_BYTES) {
-                c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
+                c.from(a, Performative.INFORM_REF, Protocol.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 1,
                         Page.of(sent, 10_000, text)));
                 sent++;
             }
             assertEquals(1, c.h.drops().get("list-too-large"), "the pages held past " + PageAssembler.MAX_BYTES + " bytes are dropped");
             assertTrue(c.layer.globalAgents().isEmpty());
             // The next version is taken whole.
-            c.from(a, Performative.INFORM_REF, Federation.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 2,
+            c.from(a, Performative.INFORM_REF, Protocol.P_NETWORK, new PlatformMessage.GalUpdate("s3cret", 1, 2,
                     Page.of(0, 1, body(List.of(a)))));
             assertEquals(List.of("a@p"), names(List.copyOf(c.layer.globalAgents())));
         }

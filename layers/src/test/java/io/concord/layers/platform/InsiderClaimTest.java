@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -9,7 +10,7 @@ import io.concord.core.agent.PortRange;
 import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
-import io.concord.layers.Defence;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.frame.Frames;
@@ -101,9 +102,9 @@ class InsiderClaimTest {
                 m.execute(() -> {
                     for (AID t : targets) {
                         AclMessage claim = new AclMessage(Performative.INFORM).addReceiver(t);
-                        claim.setOntology(ContainerLayer.ONTOLOGY);
-                        claim.setLanguage(ContainerLayer.LANGUAGE);
-                        claim.setProtocol(ContainerLayer.P_DISCOVERY);
+                        claim.setOntology(Protocol.ONTOLOGY);
+                        claim.setLanguage(Protocol.LANGUAGE);
+                        claim.setProtocol(Protocol.P_DISCOVERY);
                         claim.setContent(new PlatformMessage.ContainerIs(term + 1_000, claimant, claimant).encode());
                         x.send(claim);
                     }

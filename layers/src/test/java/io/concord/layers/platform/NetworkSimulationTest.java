@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -210,7 +211,7 @@ class NetworkSimulationTest {
         AclMessage m = new AclMessage(Performative.INFORM_REF);
         m.addReceiver(w.live.get(host).get(c)); // with its address: the rogue has not joined yet
         m.setOntology("concord-platform");
-        m.setProtocol(Federation.P_NETWORK);
+        m.setProtocol(Protocol.P_NETWORK);
         m.setContent("gal-update secret=00000000000000000000000000000000 term=99 seq=99 page=0 pages=1\n"
                 + "ghost@net udp://h9:7001 1 -");
         w.hosts.get(other).agent(rogue).send(m);

@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
@@ -89,7 +90,7 @@ final class NetworkWorld implements AutoCloseable {
     String container(String host) {
         String found = null;
         for (String n : live.get(host).keySet()) {
-            if (layer(host, n).role() == ContainerLayer.Role.CONTAINER) {
+            if (layer(host, n).role() == Role.CONTAINER) {
                 if (found != null) {
                     return null;
                 }

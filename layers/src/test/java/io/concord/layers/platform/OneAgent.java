@@ -114,8 +114,8 @@ final class OneAgent {
         AclMessage m = new AclMessage(act);
         m.setSender(sender.aid());
         m.addReceiver(self.aid());
-        m.setOntology(ContainerLayer.ONTOLOGY);
-        m.setLanguage(ContainerLayer.LANGUAGE);
+        m.setOntology(Protocol.ONTOLOGY);
+        m.setLanguage(Protocol.LANGUAGE);
         m.setProtocol(protocol);
         m.setContent(content.encode());
         return m;
@@ -142,7 +142,7 @@ final class OneAgent {
         return out;
     }
 
-    ContainerLayer.Role role() {
+    Role role() {
         return layer.role();
     }
 

@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.layers.Profile;
 import org.junit.jupiter.api.Test;
@@ -33,7 +34,7 @@ class PlatformBasicsTest {
                 aids.add(p.startAgent("t" + i, new PlatformWorld.Idle()));
             }
             java.util.function.BooleanSupplier agreed = () -> {
-                long containers = aids.stream().filter(a -> Platform.containerLayer(rt, a).role() == ContainerLayer.Role.CONTAINER).count();
+                long containers = aids.stream().filter(a -> Platform.containerLayer(rt, a).role() == Role.CONTAINER).count();
                 return containers == 1 && aids.stream().allMatch(a -> Platform.containerLayer(rt, a).agents().size() == 5);
             };
             assertTrue(sim.runUntil(agreed, 5_000));

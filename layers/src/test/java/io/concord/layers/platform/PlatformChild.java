@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.testkit.EchoAgent;
 
 import io.concord.core.acl.AID;

@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.layer.Envelope;
@@ -39,8 +40,8 @@ class PlatformMessageFuzzTest {
     private static final String[] PIECES = {" ", "\n", "=", ",", ";", "%", "%2", "%zz", "-1", "0", "9223372036854775807",
             "99999999999999999999", "udp://127.0.0.1:7002", "udp://[::1]:1", "c@p", "me@p", "y@p", "\u00e9", "\u0000",
             "term=", "page=0", "pages=1000000", "seq=-5", "x".repeat(300)};
-    private static final String[] PROTOCOLS = {ContainerLayer.P_DISCOVERY, ContainerLayer.P_LAL, ContainerLayer.P_MAINTENANCE,
-            ContainerLayer.P_SERVICES, "concord-network", "concord-relay", "other"};
+    private static final String[] PROTOCOLS = {Protocol.P_DISCOVERY, Protocol.P_LAL, Protocol.P_MAINTENANCE,
+            Protocol.P_SERVICES, "concord-network", "concord-relay", "other"};
 
     @Test
     void noInputEscapesDeliversOrGrowsWithoutBound() {
@@ -63,8 +64,8 @@ class PlatformMessageFuzzTest {
             AclMessage m = new AclMessage(Performative.values()[r.nextInt(Performative.values().length)]);
             m.setSender(y.aid());
             m.addReceiver(a.self.aid());
-            m.setOntology(ContainerLayer.ONTOLOGY);
-            m.setLanguage(ContainerLayer.LANGUAGE);
+            m.setOntology(Protocol.ONTOLOGY);
+            m.setLanguage(Protocol.LANGUAGE);
             m.setProtocol(PROTOCOLS[r.nextInt(PROTOCOLS.length)]);
             m.setContent(content);
             Envelope env = Envelope.outgoing(m, a.self.aid(), null);
@@ -102,16 +103,16 @@ class PlatformMessageFuzzTest {
     private static OneAgent fresh(int kind, AgentEntry c, AgentEntry y) {
         if (kind == 1) {
             OneAgent me = new OneAgent("me", 7001, PlatformConfig.defaults(), NetworkConfig.defaults(), null);
-            me.from(y, Performative.INFORM_REF, ContainerLayer.P_LAL, new Join(1, y));
+            me.from(y, Performative.INFORM_REF, Protocol.P_LAL, new Join(1, y));
             me.advance(10);
             me.sent();
             return me;
         }
         OneAgent a = new OneAgent("me", 7001, PlatformConfig.defaults(), NetworkConfig.defaults(), null, 7002, 7003);
         if (kind == 0) {
-            a.from(c, Performative.INFORM, ContainerLayer.P_DISCOVERY, new ContainerIs(1, c, null));
-            a.from(c, Performative.CONFIRM, ContainerLayer.P_LAL, new Joined(1, 40, 250, c));
-            a.from(c, Performative.INFORM_REF, ContainerLayer.P_LAL, new LalPage(1, 2, 40, 250,
+            a.from(c, Performative.INFORM, Protocol.P_DISCOVERY, new ContainerIs(1, c, null));
+            a.from(c, Performative.CONFIRM, Protocol.P_LAL, new Joined(1, 40, 250, c));
+            a.from(c, Performative.INFORM_REF, Protocol.P_LAL, new LalPage(1, 2, 40, 250,
                     Page.of(0, 1, String.join("\n", AgentLists.pages(List.of(c, y, a.self), 100_000)))));
         }
         a.sent();

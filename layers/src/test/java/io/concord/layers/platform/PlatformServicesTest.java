@@ -1,5 +1,7 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
+import io.concord.layers.PlatformServices;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;

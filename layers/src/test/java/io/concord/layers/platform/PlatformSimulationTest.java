@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.layers.Profile;

@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.testkit.EchoAgent;
 
 import io.concord.core.acl.AID;
@@ -64,11 +65,11 @@ class PlatformSocketsTest {
     }
 
     private static boolean agreed(List<ContainerLayer> layers, int n) {
-        long containers = layers.stream().filter(l -> l.role() == ContainerLayer.Role.CONTAINER).count();
+        long containers = layers.stream().filter(l -> l.role() == Role.CONTAINER).count();
         if (containers != 1) {
             return false;
         }
-        ContainerLayer c = layers.stream().filter(l -> l.role() == ContainerLayer.Role.CONTAINER).findFirst().orElseThrow();
+        ContainerLayer c = layers.stream().filter(l -> l.role() == Role.CONTAINER).findFirst().orElseThrow();
         for (ContainerLayer l : layers) {
             if (l.agents().size() != n || !List.copyOf(l.agents()).equals(List.copyOf(c.agents()))
                     || !c.containerName().equals(l.containerName())) {

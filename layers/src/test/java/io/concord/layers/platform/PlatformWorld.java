@@ -1,5 +1,6 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
@@ -96,7 +97,7 @@ final class PlatformWorld implements AutoCloseable {
         List<String> out = new ArrayList<>();
         for (String n : live.keySet()) {
             ContainerLayer c = layer(n);
-            if (c != null && c.role() == ContainerLayer.Role.CONTAINER) {
+            if (c != null && c.role() == Role.CONTAINER) {
                 out.add(n);
             }
         }

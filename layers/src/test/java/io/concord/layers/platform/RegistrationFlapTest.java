@@ -1,5 +1,7 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
+import io.concord.layers.PlatformServices;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -71,7 +73,7 @@ class RegistrationFlapTest {
      * happens across hosts, or to a process hung past the bound.
      */
     private static Platform platform(AgentRuntime rt) {
-        return Platform.builder().runtime(rt).ports(new PortRange(7001, 50, 10)).withoutDefences(io.concord.layers.Defence.PORT_CHECK)
+        return Platform.builder().runtime(rt).ports(new PortRange(7001, 50, 10)).withoutDefences(io.concord.layers.defence.Defence.PORT_CHECK)
                 .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).network(null).build();
     }
 
@@ -93,7 +95,7 @@ class RegistrationFlapTest {
             Platform p1 = platform(rt1);
             Platform p2 = platform(rt2);
             AID boss = p1.startAgent("boss", new PlatformWorld.Idle());
-            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == ContainerLayer.Role.CONTAINER, 5_000));
+            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == Role.CONTAINER, 5_000));
             ApiSeller apiSeller = new ApiSeller();
             AID api = p2.startAgent("api-seller", apiSeller);
             p2.startAgent("acl-seller", new AclSeller());
@@ -129,7 +131,7 @@ class RegistrationFlapTest {
             Platform p1 = platform(rt1);
             Platform p2 = platform(rt2);
             AID boss = p1.startAgent("boss", new PlatformWorld.Idle());
-            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == ContainerLayer.Role.CONTAINER, 5_000));
+            assertTrue(sim.runUntil(() -> Platform.containerLayer(rt1, boss).role() == Role.CONTAINER, 5_000));
             AID api = p2.startAgent("api-seller", new PlatformWorld.Idle());
             assertTrue(sim.runUntil(() -> listed(rt1, boss, "api-seller"), 10_000));
             // The container forgets the agent (as in a flap), and the agent registers at that moment.

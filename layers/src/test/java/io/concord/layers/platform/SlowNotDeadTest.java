@@ -1,12 +1,13 @@
 package io.concord.layers.platform;
 
+import io.concord.layers.Platform;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
-import io.concord.layers.Defence;
+import io.concord.layers.defence.Defence;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.security.PlatformKey;
@@ -174,7 +175,7 @@ class SlowNotDeadTest {
     private static String containerOf(Map<AID, AgentRuntime> agents) {
         for (AID a : agents.keySet()) {
             ContainerLayer l = layer(agents, a);
-            if (l != null && l.role() == ContainerLayer.Role.CONTAINER) {
+            if (l != null && l.role() == Role.CONTAINER) {
                 return a.name();
             }
         }
@@ -191,7 +192,7 @@ class SlowNotDeadTest {
             if (l == null) {
                 return false;
             }
-            if (l.role() == ContainerLayer.Role.CONTAINER) {
+            if (l.role() == Role.CONTAINER) {
                 if (c != null) {
                     return false;
                 }

@@ -434,13 +434,13 @@ class SecurityLayerTest {
     @Test
     void newNamesBeyondThePinLimitAreRefusedAndNoPinIsForgotten() {
         SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
-        sb.helloRate(SecurityLayer.MAX_PINS * 2, 1); // the hello rate limit is another test's
+        sb.helloRate(Pins.MAX_PINS * 2, 1); // the hello rate limit is another test's
         LayerHarness b = agent("b@p", sb);
         LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
         shakeHands(a, b, "pinned first");
         // A holder of the platform key floods handshakes under new names, each with its own identity.
         Identity one = IdentityStore.ephemeral().identityFor("x");
-        for (int i = 0; i < SecurityLayer.MAX_PINS + 10; i++) {
+        for (int i = 0; i < Pins.MAX_PINS + 10; i++) {
             LayerHarness m = agent("m" + i + "@p", keeping(one));
             m.sendDown(body("x", "b@p"));
             deliver(next(m), new Address("attacker", 9), b);
@@ -469,7 +469,7 @@ class SecurityLayerTest {
         SecurityLayer sb = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
         LayerHarness b = agent("b@p", sb);
         Identity one = IdentityStore.ephemeral().identityFor("x");
-        int n = SecurityLayer.HELLO_BURST + 100;
+        int n = Handshake.HELLO_BURST + 100;
         int replies = 0;
         for (int i = 0; i < n; i++) {
             LayerHarness m = agent("m" + i + "@p", keeping(one));
@@ -479,7 +479,7 @@ class SecurityLayerTest {
                 replies++;
             }
         }
-        assertEquals(SecurityLayer.HELLO_BURST, replies, "a signed reply to each hello of the burst, and no more");
+        assertEquals(Handshake.HELLO_BURST, replies, "a signed reply to each hello of the burst, and no more");
         assertEquals(100, b.drops().get("handshake-limit"));
         b.advanceMs(1_000);
         for (int i = 0; i < 100; i++) {
@@ -490,7 +490,7 @@ class SecurityLayerTest {
                 replies++;
             }
         }
-        assertEquals(SecurityLayer.HELLO_BURST + SecurityLayer.HELLOS_PER_SECOND, replies, "then the rate");
+        assertEquals(Handshake.HELLO_BURST + Handshake.HELLOS_PER_SECOND, replies, "then the rate");
         // Once the flood has passed, a real agent gets in.
         LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY));
         b.advanceMs(1_000);
@@ -519,11 +519,11 @@ class SecurityLayerTest {
                 replies++;
             }
         }
-        assertEquals(SecurityLayer.LOOP_HELLO_BURST, replies, "the loop's burst, though each agent alone would answer 300");
+        assertEquals(Handshake.LOOP_HELLO_BURST, replies, "the loop's burst, though each agent alone would answer 300");
         long limited = 0;
         for (LayerHarness v : victims) {
             limited += v.drops().get("handshake-limit");
         }
-        assertEquals(1_500 - SecurityLayer.LOOP_HELLO_BURST, limited);
+        assertEquals(1_500 - Handshake.LOOP_HELLO_BURST, limited);
     }
 }

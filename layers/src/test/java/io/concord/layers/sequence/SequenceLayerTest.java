@@ -189,10 +189,10 @@ class SequenceLayerTest {
     void whatTheSenderNoLongerHasIsSkippedAndCountedAsLost() {
         // With flow control a sender never has more unacknowledged than the window; without it (a
         // peer that has none) it runs past its buffer, and the receiver is told what is gone.
-        skipped(java.util.EnumSet.of(io.concord.layers.Defence.FLOW_CONTROL));
+        skipped(java.util.EnumSet.of(io.concord.layers.defence.Defence.FLOW_CONTROL));
     }
 
-    private void skipped(java.util.Set<io.concord.layers.Defence> off) {
+    private void skipped(java.util.Set<io.concord.layers.defence.Defence> off) {
         SequenceLayer.Config small = new SequenceLayer.Config(4, 4, 5, 32, 20, 30, 10, 40, 16);
         LayerHarness s = new LayerHarness(new SequenceLayer(small, off));
         LayerHarness r = new LayerHarness(new SequenceLayer(small, off));

@@ -6,7 +6,7 @@ import io.concord.agents.control.ControlAgent;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.SerialChair;
 import io.concord.sim.Hospital;
 import io.concord.sim.world.HospitalWorld;

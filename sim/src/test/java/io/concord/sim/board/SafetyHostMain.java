@@ -3,7 +3,7 @@ package io.concord.sim.board;
 import io.concord.agents.chair.ChairSupervisor;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.SerialChair;
 import io.concord.sim.Hospital;
 import io.concord.sim.world.HospitalWorld;

@@ -1,6 +1,6 @@
 package io.concord.sim.board;
 
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.SerialChair;
 
 /** A host that opens the chair's port and drives it forward at 20 %, confirming at every reading, until it is killed. */

@@ -6,7 +6,7 @@ import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.serial.BoardProtocol;
 import io.concord.serial.Frame;
 import io.concord.serial.FrameCodec;

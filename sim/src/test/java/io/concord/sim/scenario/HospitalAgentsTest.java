@@ -314,8 +314,8 @@ class HospitalAgentsTest {
         io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(13, FaultPlan.NONE);
         sim.platformName("hospital");
         try (sim) {
-            java.util.function.Function<io.concord.core.agent.AgentRuntime, io.concord.layers.platform.Platform> platformOn =
-                    rt -> io.concord.layers.platform.Platform.builder().runtime(rt)
+            java.util.function.Function<io.concord.core.agent.AgentRuntime, io.concord.layers.Platform> platformOn =
+                    rt -> io.concord.layers.Platform.builder().runtime(rt)
                             .ports(new io.concord.core.agent.PortRange(7001, 200, 10))
                             .safetyStack(io.concord.layers.SafetyStack.builder().profile(io.concord.layers.Profile.CLOSED).build())
                             .build();
@@ -335,14 +335,14 @@ class HospitalAgentsTest {
             MedicalAgent medical = new MedicalAgent(log::add);
             platformOn.apply(staff).startAgent("medical", medical);
             assertTrue(sim.runUntil(hospital::ready, 60_000));
-            assertTrue(sim.runUntil(() -> io.concord.layers.platform.Platform.of(medical).agents().size() >= 22, 30_000));
-            assertEquals("registry@hospital", io.concord.layers.platform.Platform.of(medical).container(), "the registry is container");
+            assertTrue(sim.runUntil(() -> io.concord.layers.Platform.of(medical).agents().size() >= 22, 30_000));
+            assertEquals("registry@hospital", io.concord.layers.Platform.of(medical).container(), "the registry is container");
             var f = medical.transport(3, 9, 3, 30);
             assertTrue(sim.runUntil(() -> log.stream().anyMatch(l -> l.startsWith("control-chair1: starts T1")), 60_000));
             sim.runFor(20_000);
             sim.crash(infra);
-            assertTrue(sim.runUntil(() -> !"registry@hospital".equals(io.concord.layers.platform.Platform.of(medical).container())
-                    && io.concord.layers.platform.Platform.of(medical).container() != null, 30_000), "a new container");
+            assertTrue(sim.runUntil(() -> !"registry@hospital".equals(io.concord.layers.Platform.of(medical).container())
+                    && io.concord.layers.Platform.of(medical).container() != null, 30_000), "a new container");
             assertTrue(sim.runUntil(f::isDone, 900_000), String.join("\n", ScenarioTest.tail(log, 30)));
             assertTrue(f.join().done(), f.join().toString());
             assertEquals(1, f.join().auctions(), "the same chair finished it");

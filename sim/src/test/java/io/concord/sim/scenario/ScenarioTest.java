@@ -9,7 +9,7 @@ import io.concord.core.testkit.FaultPlan;
 import io.concord.core.testkit.Simulation;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
-import io.concord.layers.platform.Platform;
+import io.concord.layers.Platform;
 import io.concord.sim.Hospital;
 import io.concord.sim.render.HospitalPicture;
 import io.concord.sim.world.ChairConfig;

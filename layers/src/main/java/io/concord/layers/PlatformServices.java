@@ -1,8 +1,10 @@
-package io.concord.layers.platform;
+package io.concord.layers;
 
-import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
+import io.concord.layers.platform.AgentEntry;
+import io.concord.layers.platform.ContainerLayer;
+import io.concord.layers.platform.Role;
+import io.concord.layers.platform.ServiceDescription;
 
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -24,7 +26,7 @@ public final class PlatformServices {
 
     /** True if this agent is its host's container now. */
     public boolean isContainer() {
-        return layer.role() == ContainerLayer.Role.CONTAINER;
+        return layer.role() == Role.CONTAINER;
     }
 
     /** The container's name, or {@code null} while none is known. */
@@ -78,17 +80,7 @@ public final class PlatformServices {
 
     /** Asks the DF itself (not this agent's copy); the same as {@link #search}. */
     public CompletableFuture<List<AgentEntry>> searchAtDf(ServiceDescription template) {
-        StringBuilder b = new StringBuilder();
-        Lines.appendService(b, template);
-        return layer.request(true, Performative.REQUEST, Lines.content("search", Lines.params("template", b.toString()), List.of()))
-                .thenApply(this::entries);
-    }
-
-    private List<AgentEntry> entries(AclMessage reply) {
-        if (reply.getPerformative() != Performative.INFORM) {
-            throw new IllegalStateException("the DF answered " + reply.getPerformative().wireName() + ": " + reply.getContent());
-        }
-        return Lines.parse(reply.getContent()).entries();
+        return layer.searchAtDf(template);
     }
 
     /** The agent these services are for. */

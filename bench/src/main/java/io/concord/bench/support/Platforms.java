@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.support;
 
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.net.SocketNetwork;

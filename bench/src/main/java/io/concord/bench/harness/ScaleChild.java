@@ -1,6 +1,4 @@
-package io.concord.bench.child;
-
-import io.concord.bench.harness.ScaleHarness;
+package io.concord.bench.harness;
 
 /**
  * {@code <agents> <hosts> <seed>}: one point of the scale simulation in a JVM of its own, with the

@@ -1,8 +1,8 @@
-package io.concord.bench;
+package io.concord.bench.jmh;
 
 import io.concord.bench.child.Children;
-
 import io.concord.bench.jade.JadePlatform;
+import io.concord.bench.support.Rounds;
 import io.concord.core.agent.AgentRuntime;
 import jade.wrapper.AgentController;
 

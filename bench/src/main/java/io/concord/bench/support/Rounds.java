@@ -1,4 +1,4 @@
-package io.concord.bench;
+package io.concord.bench.support;
 
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;

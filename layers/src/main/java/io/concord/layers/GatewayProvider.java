@@ -1,7 +1,12 @@
-package io.concord.layers.platform;
+package io.concord.layers;
+
+import io.concord.layers.platform.Gateway;
+
+import java.util.Map;
+import java.util.ServiceLoader;
 
 /**
- * Makes gateways of one kind, found with {@link java.util.ServiceLoader} (as core finds the default
+ * Makes gateways of one kind, found with {@link ServiceLoader} (as core finds the default
  * stack): {@code concord-jade-bridge} provides {@code "http"}, the JADE HTTP MTP, so that
  * {@code Boot -http 7779} needs nothing but that jar on the class path.
  */
@@ -17,7 +22,7 @@ public interface GatewayProvider {
      * ... with the kind's own settings ({@code http-platforms}, {@code http-hosts} for the HTTP
      * MTP: comma-separated names and addresses it trusts); by default they are ignored.
      */
-    default Gateway create(String host, int port, java.util.Map<String, String> settings) {
+    default Gateway create(String host, int port, Map<String, String> settings) {
         return create(host, port);
     }
 }

@@ -1,4 +1,4 @@
-package io.concord.layers.platform;
+package io.concord.layers;
 
 import io.concord.core.acl.AID;
 import io.concord.core.agent.Agent;
@@ -7,12 +7,20 @@ import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.core.layer.Layer;
 import io.concord.core.net.Transport;
-import io.concord.layers.Profile;
-import io.concord.layers.SafetyStack;
+import io.concord.layers.defence.Defence;
+import io.concord.layers.observe.ObserverLayer;
+import io.concord.layers.platform.ContainerLayer;
+import io.concord.layers.platform.Gateway;
+import io.concord.layers.platform.NetworkConfig;
+import io.concord.layers.platform.PlatformConfig;
+import io.concord.layers.security.PlatformKey;
 
+import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.ServiceLoader;
+import java.util.Set;
 import java.util.function.Supplier;
 
 /**
@@ -46,14 +54,12 @@ public final class Platform implements AutoCloseable {
         PlatformConfig config = b.config;
         NetworkConfig network = b.network;
         Supplier<Gateway> gateways = b.gateway;
-        java.util.Set<io.concord.layers.Defence> off = b.off;
+        Set<Defence> off = b.off;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
-            io.concord.layers.observe.ObserverLayer observer = new io.concord.layers.observe.ObserverLayer();
-            l.add(observer);
+            l.add(new ObserverLayer());
             l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get(), off));
             l.addAll(safety.get());
-            observer.stack(l);
             return l;
         };
     }
@@ -63,7 +69,7 @@ public final class Platform implements AutoCloseable {
         if (b.key != null) {
             sb.platformKey(b.key);
         }
-        sb.withoutDefences(b.off.toArray(io.concord.layers.Defence[]::new));
+        sb.withoutDefences(b.off.toArray(Defence[]::new));
         return sb.build();
     }
 
@@ -82,11 +88,11 @@ public final class Platform implements AutoCloseable {
         private NetworkConfig network = NetworkConfig.defaults();
         private Supplier<Gateway> gateway;
         private Supplier<List<Layer>> safety;
-        private java.util.Set<io.concord.layers.Defence> off = java.util.Set.of();
+        private Set<Defence> off = Set.of();
         private AgentRuntime runtime;
-        private io.concord.layers.security.PlatformKey key;
+        private PlatformKey key;
         private String console;
-        private java.io.PrintStream consoleOut = System.out;
+        private PrintStream consoleOut = System.out;
 
         private Builder() {
         }
@@ -102,7 +108,7 @@ public final class Platform implements AutoCloseable {
         }
 
         /** Where the console prints its address; standard output by default. */
-        public Builder consoleOut(java.io.PrintStream out) {
+        public Builder consoleOut(PrintStream out) {
             this.consoleOut = Objects.requireNonNull(out, "consoleOut");
             return this;
         }
@@ -136,7 +142,7 @@ public final class Platform implements AutoCloseable {
          * one user's platforms share whatever their names. Give a platform its own key when its
          * agents must not reach the user's other platforms.
          */
-        public Builder platformKey(io.concord.layers.security.PlatformKey k) {
+        public Builder platformKey(PlatformKey k) {
             this.key = Objects.requireNonNull(k, "platformKey");
             return this;
         }
@@ -181,8 +187,8 @@ public final class Platform implements AutoCloseable {
          * show each threat reaching an agent without its defence. It reaches only the stacks of
          * this platform (the container layer's, and the default safety layers').
          */
-        public Builder withoutDefences(io.concord.layers.Defence... defences) {
-            this.off = java.util.Set.copyOf(java.util.List.of(defences));
+        public Builder withoutDefences(Defence... defences) {
+            this.off = Set.copyOf(List.of(defences));
             return this;
         }
 
@@ -207,7 +213,7 @@ public final class Platform implements AutoCloseable {
         public Platform build() {
             ConsoleProvider consoles = null;
             if (console != null) {
-                consoles = java.util.ServiceLoader.load(ConsoleProvider.class).findFirst().orElseThrow(() -> new IllegalStateException(
+                consoles = ServiceLoader.load(ConsoleProvider.class).findFirst().orElseThrow(() -> new IllegalStateException(
                         "the console needs concord-console on the class path (io.concord:concord-console)"));
             }
             Platform p;

@@ -1,9 +1,10 @@
-package io.concord.layers;
+package io.concord.layers.defence;
 
 /**
  * The safety stack's defences, one per EN 50159 threat test. Every one is on in every stack,
- * unless a test builds a stack without some ({@link SafetyStack.Builder#withoutDefences}) to show
- * the threat it stands against reaching an agent. The switch belongs to the stacks a builder makes,
+ * unless a test builds a stack without some ({@code withoutDefences} of {@code SafetyStack.Builder} and
+ * {@code Platform.Builder}) to show the threat it stands against reaching an agent. Every layer
+ * reads its own switches here, so this sits below the layers, and the builders above them. The switch belongs to the stacks a builder makes,
  * never to the JVM: no code can weaken a stack it did not build, and tests run side by side.
  */
 public enum Defence {

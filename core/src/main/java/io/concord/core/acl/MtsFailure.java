@@ -1,8 +1,4 @@
-package io.concord.core.proto;
-
-import io.concord.core.acl.AID;
-import io.concord.core.acl.AclMessage;
-import io.concord.core.acl.Performative;
+package io.concord.core.acl;
 
 /**
  * The FAILURE a platform's AMS sends when a message cannot be delivered, written as JADE's AMS

@@ -1,9 +1,10 @@
-package io.concord.layers.platform;
+package io.concord.layers;
 
 import java.io.PrintStream;
+import java.util.ServiceLoader;
 
 /**
- * Starts the web console of a platform, found with {@link java.util.ServiceLoader}:
+ * Starts the web console of a platform, found with {@link ServiceLoader}:
  * {@code concord-console} provides it, so that {@code Boot -console 7070} and
  * {@link Platform.Builder#console(String)} need nothing but that jar on the class path.
  */

@@ -1,0 +1,39 @@
+package io.concord.layers.sequence;
+
+import io.concord.core.layer.Envelope;
+import io.concord.core.net.Address;
+
+import java.util.ArrayDeque;
+import java.util.LinkedHashSet;
+import java.util.Set;
+
+/**
+ * What the sequence layer keeps per receiver: the numbers sent and acknowledged, the frames kept
+ * for retransmission, the probe, and the flow window's share (the receiver's credit and the
+ * frames held for it). Loop thread only.
+ */
+final class SenderState {
+    long nextSeq = 1;
+    long acked;
+    /** The receiver's session, from its acknowledgements; 0 until the first. */
+    int peerSession;
+    final Set<Integer> endedSessions = new LinkedHashSet<>();
+    Address address;
+    final byte[][] ring;
+    final long[] ringSeq;
+    final int[] ringLen;
+    long probeTimer = -1;
+    int probes;
+    /** Frames past the acknowledged ones the receiver takes (its window); -1 until it says. */
+    int credit = -1;
+    /** Frames the agent sent that wait for the receiver's window to open, in order. */
+    final ArrayDeque<Envelope> held = new ArrayDeque<>();
+    /** Counted among the receivers that hold the agent back. */
+    boolean holding;
+
+    SenderState(int size) {
+        ring = new byte[size][];
+        ringSeq = new long[size];
+        ringLen = new int[size];
+    }
+}
