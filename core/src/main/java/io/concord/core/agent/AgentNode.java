@@ -331,6 +331,11 @@ final class AgentNode implements StackHost {
     }
 
     @Override
+    public void secretBytes(byte[] out) {
+        runtime.secretBytes(out);
+    }
+
+    @Override
     public String platformName() {
         return runtime.platformName();
     }

@@ -22,6 +22,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.security.SecureRandom;
 import java.util.SplittableRandom;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
@@ -53,6 +54,8 @@ public final class AgentRuntime implements AutoCloseable {
     private final String platformName;
     private final String host;
     private final RandomGenerator random;
+    /** Where secrets come from: a SecureRandom, or null when the runtime was given its random source. */
+    private final SecureRandom secrets;
     private final io.concord.core.time.LoopLimits loopLimits = new io.concord.core.time.LoopLimits();
     private final Tracer tracer;
     private final Supplier<List<Layer>> stackFactory;
@@ -88,6 +91,7 @@ public final class AgentRuntime implements AutoCloseable {
         this.platformName = b.platformName;
         this.host = b.host;
         this.random = b.random != null ? b.random : new SplittableRandom();
+        this.secrets = b.random != null ? null : new SecureRandom();
         this.tracer = b.tracer;
         this.stackFactory = b.stackFactory != null ? b.stackFactory : defaultStack();
         this.mailboxCapacity = b.mailboxCapacity;
@@ -164,12 +168,17 @@ public final class AgentRuntime implements AutoCloseable {
             return this;
         }
 
-        /** The random source; seed it for a deterministic run. */
+        /**
+         * The random source; seed it for a deterministic run. A runtime given one (or a
+         * {@link #seed}) takes its secrets from it too ({@link #secretBytes}), so that a
+         * simulation replays: never give one to a runtime that faces a network.
+         */
         public Builder random(RandomGenerator random) {
             this.random = Objects.requireNonNull(random, "random");
             return this;
         }
 
+        /** A seeded random source ({@link #random}): for simulations and tests only. */
         public Builder seed(long seed) {
             this.random = new SplittableRandom(seed);
             return this;
@@ -873,6 +882,19 @@ public final class AgentRuntime implements AutoCloseable {
 
     public RandomGenerator random() {
         return random;
+    }
+
+    /**
+     * Fills {@code out} with bytes nobody can guess (a secret, a key): from a {@link SecureRandom},
+     * unless this runtime was given its random source or a seed (a simulation, which must replay
+     * bit for bit), whose bytes it takes instead. Loop thread, or any thread for a SecureRandom.
+     */
+    public void secretBytes(byte[] out) {
+        if (secrets != null) {
+            secrets.nextBytes(out);
+        } else {
+            random.nextBytes(out);
+        }
     }
 
     /** The rate limits every agent of this loop shares. Loop thread only. */

@@ -71,6 +71,14 @@ public interface StackHost {
     /** The random source of the node's runtime: seeded, so that a simulation replays. */
     java.util.random.RandomGenerator random();
 
+    /**
+     * Fills {@code out} with bytes nobody can guess (a secret shared with a peer): a runtime's
+     * SecureRandom, or its seeded random source in a simulation, which must replay.
+     */
+    default void secretBytes(byte[] out) {
+        new java.security.SecureRandom().nextBytes(out);
+    }
+
     /** The platform name (the part after {@code @} in agent names). */
     default String platformName() {
         String n = nodeName();

@@ -239,6 +239,12 @@ public final class LayerHarness implements StackHost {
         return random;
     }
 
+    /** A harness's secrets come from its seeded random source: a test replays. */
+    @Override
+    public void secretBytes(byte[] out) {
+        random.nextBytes(out);
+    }
+
     @Override
     public Clock clock() {
         return clock;

@@ -7,7 +7,6 @@ import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
 import io.concord.core.net.Neighbourhood;
 
-import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashSet;
@@ -382,8 +381,7 @@ final class Federation implements PlatformMessage.Handler {
     private void contact(Facilitator f) {
         if (f.secret == null) {
             byte[] s = new byte[16];
-            SecureRandom r = new SecureRandom();
-            r.nextBytes(s);
+            layer.secretBytes(s); // a SecureRandom's; the seed's in a simulation, which replays
             f.secret = HexFormat.of().formatHex(s);
         }
         f.contactAttempts++;

@@ -128,6 +128,11 @@ final class HostContext implements PlatformContext {
     }
 
     @Override
+    public void secretBytes(byte[] out) {
+        host.secretBytes(out);
+    }
+
+    @Override
     public AclMessage message(Performative act, String protocol, AID to, String content) {
         AclMessage m = new AclMessage(act);
         m.setSender(selfAid);

@@ -44,6 +44,9 @@ interface PlatformContext {
 
     RandomGenerator random();
 
+    /** Fills {@code out} with bytes nobody can guess (the runtime's SecureRandom; its seeded source in a simulation). */
+    void secretBytes(byte[] out);
+
     /**
      * The agents of this agent's runtime, reached in memory: they live and die with this loop, so
      * they need no alive messages to be known alive. {@code null} where the node offers none.
