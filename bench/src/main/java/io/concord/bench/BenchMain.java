@@ -29,7 +29,7 @@ import io.concord.bench.report.Machine;
 import io.concord.bench.support.Chain;
 import io.concord.bench.support.Platforms;
 import io.concord.core.net.Transport;
-import io.concord.core.testkit.NetnsHosts;
+import io.concord.testkit.NetnsHosts;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.results.RunResult;
 import org.openjdk.jmh.runner.Runner;

@@ -2,8 +2,8 @@ package io.concord.examples;
 
 import io.concord.core.acl.AID;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;

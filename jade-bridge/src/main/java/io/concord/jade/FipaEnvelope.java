@@ -18,7 +18,7 @@ import java.util.List;
  * {@code date} (local time, {@code yyyyMMdd'Z'HHmmssSSS}) and the mandatory
  * {@code intended-receiver}. Written without indentation, as JADE's reader needs.
  */
-public record FipaEnvelope(List<AID> to, AID from, String aclRepresentation, int payloadLength, String payloadEncoding,
+record FipaEnvelope(List<AID> to, AID from, String aclRepresentation, int payloadLength, String payloadEncoding,
                            String date, List<AID> intendedReceivers) {
     public static final String STRING_REP = "fipa.acl.rep.string.std";
     private static final DateTimeFormatter DATE = DateTimeFormatter.ofPattern("yyyyMMdd'Z'HHmmssSSS");

@@ -27,7 +27,7 @@ class BootHttpTest {
     private static int postJadeRequest(String name, String ports, String... extra) throws Exception {
         int port = JadeBridgeTest.freePort();
         java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("-name", name, "-ports", ports, "-profile", "closed",
-                "-http", Integer.toString(port), "-agents", "echo:io.concord.core.testkit.EchoAgent"));
+                "-http", Integer.toString(port), "-agents", "echo:io.concord.testkit.EchoAgent"));
         args.addAll(java.util.List.of(extra));
         try (Platform p = Boot.start(args.toArray(new String[0]), new PrintStream(new ByteArrayOutputStream()))) {
             // The agent is alone, so container at once; its gateway starts as it takes the role.

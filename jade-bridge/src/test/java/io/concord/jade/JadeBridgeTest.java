@@ -72,7 +72,7 @@ class JadeBridgeTest {
     }
 
     /** A Concord echo: REQUEST in, INFORM "echo:..." back; registered in the DF as echo-service. */
-    static final class ConcordEcho extends io.concord.core.testkit.EchoAgent {
+    static final class ConcordEcho extends io.concord.testkit.EchoAgent {
         @Override
         protected void setup() {
             super.setup();

@@ -6,8 +6,8 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import io.concord.layers.security.PlatformKey;
 import org.junit.jupiter.api.Test;
 
@@ -112,7 +112,7 @@ class BadInputTest {
             ThreatWorld.Puppet sender = new ThreatWorld.Puppet();
             a.startAgent("a", sender);
             List<byte[]> captured = java.util.Collections.synchronizedList(new ArrayList<>());
-            try (io.concord.core.testkit.UdpRelay relay = new io.concord.core.testkit.UdpRelay(
+            try (io.concord.testkit.UdpRelay relay = new io.concord.testkit.UdpRelay(
                     Address.parse(bAid.addresses().get(0)), (from, to, d, out) -> {
                         captured.add(d.clone());
                         out.deliver(0, d);
@@ -123,7 +123,7 @@ class BadInputTest {
 
                 List<byte[]> wrongKey = java.util.Collections.synchronizedList(new ArrayList<>());
                 java.util.concurrent.CountDownLatch firstWrong = new java.util.concurrent.CountDownLatch(1);
-                try (io.concord.core.testkit.UdpRelay wrongRelay = new io.concord.core.testkit.UdpRelay(
+                try (io.concord.testkit.UdpRelay wrongRelay = new io.concord.testkit.UdpRelay(
                         Address.parse(bAid.addresses().get(0)), (from, to, d, out) -> {
                             wrongKey.add(d.clone());
                             firstWrong.countDown();

@@ -6,8 +6,8 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.TickerBehaviour;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 

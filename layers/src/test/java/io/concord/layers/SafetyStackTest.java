@@ -7,8 +7,8 @@ import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.OneShotBehaviour;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.SendRejectedException;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;

@@ -8,8 +8,8 @@ import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.LambdaAgent;
 import io.concord.core.agent.OneShotBehaviour;
 import io.concord.core.net.Transport;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import org.junit.jupiter.api.Test;
 
 import java.util.concurrent.atomic.AtomicReference;

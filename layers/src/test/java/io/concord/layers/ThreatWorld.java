@@ -9,10 +9,10 @@ import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.layer.Layer;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Medium;
-import io.concord.core.testkit.Simulation;
-import io.concord.core.testkit.UdpRelay;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Medium;
+import io.concord.testkit.Simulation;
+import io.concord.testkit.UdpRelay;
 import io.concord.layers.security.IdentityStore;
 import io.concord.layers.security.PlatformKey;
 

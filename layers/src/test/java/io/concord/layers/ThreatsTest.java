@@ -4,7 +4,7 @@ import io.concord.layers.defence.Defence;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-import io.concord.core.testkit.Medium;
+import io.concord.testkit.Medium;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.security.PlatformKey;
 import io.concord.layers.Profile;

@@ -2,7 +2,7 @@ package io.concord.layers;
 
 import io.concord.core.layer.Envelope;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.security.SecurityLayer;

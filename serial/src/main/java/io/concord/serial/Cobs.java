@@ -5,7 +5,7 @@ package io.concord.serial;
  * them, so that a zero byte can end each frame on the wire and a receiver finds the next frame
  * after any garbage. Costs at most one byte in 254, plus one.
  */
-public final class Cobs {
+final class Cobs {
     private Cobs() {
     }
 

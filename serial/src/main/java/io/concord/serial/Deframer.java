@@ -8,7 +8,7 @@ import java.util.function.Consumer;
  * Bytes beyond a frame's largest size are thrown away up to the next zero, counted once as
  * oversized; empty frames (two zeros in a row, a sender's way to resynchronise) are skipped.
  */
-public final class Deframer {
+final class Deframer {
     private final byte[] buf;
     private int n;
     private boolean overflow;

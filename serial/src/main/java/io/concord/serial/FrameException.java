@@ -1,7 +1,7 @@
 package io.concord.serial;
 
 /** A frame that is not taken, with the reason it is counted under and what was wrong. */
-public final class FrameException extends RuntimeException {
+final class FrameException extends RuntimeException {
     private final String reason;
 
     /**

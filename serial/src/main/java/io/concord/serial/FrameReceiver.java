@@ -11,7 +11,7 @@ import java.util.function.Consumer;
  * dropped ({@code old-boot}: a frame of the board's previous life, replayed or late); a host's
  * SYNC starts the count again at the board ({@link SequenceCheck}). Single-threaded.
  */
-public final class FrameReceiver {
+final class FrameReceiver {
     private final FrameCodec codec;
     private final boolean fromBoard;
     private final SequenceCheck check;

@@ -13,7 +13,7 @@ package io.concord.serial;
  * reference. A frame whose offset is more than the limit above the reference is stale. The
  * first frame, and a host's SYNC, start the count again.
  */
-public final class SequenceCheck {
+final class SequenceCheck {
     /** The clock drift tolerated between the two ends: 2 % (20,000 ppm), a resonator's or an RC oscillator's worst. */
     public static final double DRIFT = 0.02;
 

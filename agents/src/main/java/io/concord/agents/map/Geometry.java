@@ -1,7 +1,7 @@
 package io.concord.agents.map;
 
 /** Plane geometry on segments, for the map's checks and the world's zones. */
-public final class Geometry {
+final class Geometry {
     private Geometry() {
     }
 

@@ -34,7 +34,7 @@ import java.util.TreeMap;
  *
  * @param <T> what identifies a request to answer (the traffic agent's REQUEST message)
  */
-public final class Reservations<T> {
+final class Reservations<T> {
     /** A chair not heard of for this long keeps only the node it stands on; who waits for that node is told. */
     public static final long SILENT_MS = 60_000;
 

@@ -1,6 +1,6 @@
 package io.concord.bench.concord;
 
-import io.concord.core.testkit.EchoAgent;
+import io.concord.testkit.EchoAgent;
 
 /** A Concord echo for the HTTP benchmark: the request's content back, unchanged. */
 public final class ConcordHttpEcho extends EchoAgent {

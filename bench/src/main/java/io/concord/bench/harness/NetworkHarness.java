@@ -2,7 +2,7 @@ package io.concord.bench.harness;
 
 import io.concord.bench.child.IdleAgent;
 
-import io.concord.core.testkit.NetnsHosts;
+import io.concord.testkit.NetnsHosts;
 import io.concord.layers.Boot;
 
 import java.io.BufferedReader;

@@ -5,7 +5,7 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.layer.Envelope;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;

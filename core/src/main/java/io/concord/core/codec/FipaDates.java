@@ -23,7 +23,7 @@ import java.util.TimeZone;
  * before, so a date JADE writes for an instant before 1582 is read as the same instant, and the
  * other way round. Years run from 1 to 9999, the four digits the format has.
  */
-public final class FipaDates {
+final class FipaDates {
     private static final DateTimeFormatter UTC =
             DateTimeFormatter.ofPattern("uuuuMMdd'T'HHmmssSSS'Z'").withZone(ZoneOffset.UTC);
     /** 1582-10-15T00:00Z, the first instant of the Gregorian calendar (from here on java.time agrees). */

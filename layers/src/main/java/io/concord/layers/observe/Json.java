@@ -1,7 +1,7 @@
 package io.concord.layers.observe;
 
 /** Writes the few JSON strings the observation service sends (no parser: the console reads them). */
-public final class Json {
+final class Json {
     private Json() {
     }
 

@@ -7,7 +7,7 @@ import org.bouncycastle.crypto.params.HKDFParameters;
 import java.nio.charset.StandardCharsets;
 
 /** Small cryptographic helpers: HKDF-SHA256 (Bouncy Castle, since Java 17 has none). */
-public final class Crypto {
+final class Crypto {
     private Crypto() {
     }
 

@@ -3,7 +3,7 @@ package io.concord.layers.communication;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.SendRejectedException;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;

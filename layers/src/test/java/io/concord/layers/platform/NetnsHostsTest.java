@@ -1,7 +1,7 @@
 package io.concord.layers.platform;
 
 import io.concord.layers.security.PlatformKey;
-import io.concord.core.testkit.NetnsHosts;
+import io.concord.testkit.NetnsHosts;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -4,7 +4,7 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.testkit.FaultPlan;
+import io.concord.testkit.FaultPlan;
 import io.concord.layers.Profile;
 import io.concord.layers.observe.ObserverLayer;
 

@@ -6,7 +6,7 @@ import io.concord.core.layer.Envelope;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
 import io.concord.core.net.Neighbourhood;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 
 import java.util.ArrayList;

@@ -1,7 +1,7 @@
 package io.concord.layers.platform;
 
 import io.concord.layers.Platform;
-import io.concord.core.testkit.FaultPlan;
+import io.concord.testkit.FaultPlan;
 import io.concord.layers.Profile;
 import org.junit.jupiter.api.Test;
 
@@ -24,7 +24,7 @@ class PlatformBasicsTest {
 
     @Test
     void agentsOnTcpFormAPlatformToo() {
-        try (io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(3, FaultPlan.NONE)) {
+        try (io.concord.testkit.Simulation sim = new io.concord.testkit.Simulation(3, FaultPlan.NONE)) {
             var rt = sim.newRuntime("h1");
             Platform p = Platform.builder().runtime(rt).transport(io.concord.core.net.Transport.TCP)
                     .safetyStack(io.concord.layers.SafetyStack.builder().profile(Profile.CLOSED)

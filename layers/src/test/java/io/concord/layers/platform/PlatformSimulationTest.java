@@ -2,7 +2,7 @@ package io.concord.layers.platform;
 
 import io.concord.layers.Platform;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.core.testkit.FaultPlan;
+import io.concord.testkit.FaultPlan;
 import io.concord.layers.Profile;
 import org.junit.jupiter.api.Test;
 

@@ -1,7 +1,7 @@
 package io.concord.layers.platform;
 
 import io.concord.layers.Platform;
-import io.concord.core.testkit.EchoAgent;
+import io.concord.testkit.EchoAgent;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;

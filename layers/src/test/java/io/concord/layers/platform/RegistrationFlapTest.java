@@ -8,8 +8,8 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 

@@ -4,7 +4,7 @@ import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 import io.concord.core.time.TokenBucket;
 import io.concord.layers.Stacks;

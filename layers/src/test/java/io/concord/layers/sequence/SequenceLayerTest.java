@@ -3,7 +3,7 @@ package io.concord.layers.sequence;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.StackEvent;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import io.concord.layers.frame.Frames;
 import org.junit.jupiter.api.Test;
 

@@ -2,7 +2,7 @@ package io.concord.layers.temporal;
 
 import io.concord.core.layer.Envelope;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 import io.concord.layers.frame.Frames;
 import org.junit.jupiter.api.Test;
@@ -91,8 +91,8 @@ class TemporalLayerTest {
 
     @Test
     void anAgentReadsThePlatformTimeItsTemporalLayerKeeps() {
-        try (io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(12,
-                io.concord.core.testkit.FaultPlan.NONE)) {
+        try (io.concord.testkit.Simulation sim = new io.concord.testkit.Simulation(12,
+                io.concord.testkit.FaultPlan.NONE)) {
             io.concord.core.agent.AgentRuntime rt = sim.newRuntime("h", () -> java.util.List.of(
                     new io.concord.layers.parser.ParserLayer(io.concord.layers.parser.Membership.open(), null, true),
                     new TemporalLayer(TemporalLayer.Config.window(1_000), new PlatformClock()),

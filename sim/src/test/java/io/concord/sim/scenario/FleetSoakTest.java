@@ -2,7 +2,7 @@ package io.concord.sim.scenario;
 
 import io.concord.agents.control.TaskView;
 import io.concord.agents.medical.MedicalAgent;
-import io.concord.core.testkit.FaultPlan;
+import io.concord.testkit.FaultPlan;
 import io.concord.sim.render.HospitalPicture;
 import io.concord.sim.world.Collision;
 

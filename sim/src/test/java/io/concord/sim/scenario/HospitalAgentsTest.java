@@ -9,7 +9,7 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.testkit.FaultPlan;
+import io.concord.testkit.FaultPlan;
 import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.WorldDoor;
 
@@ -311,7 +311,7 @@ class HospitalAgentsTest {
 
     @Test
     void theContainersHostDiesMidTaskAndTheTaskIsStillDone() {
-        io.concord.core.testkit.Simulation sim = new io.concord.core.testkit.Simulation(13, FaultPlan.NONE);
+        io.concord.testkit.Simulation sim = new io.concord.testkit.Simulation(13, FaultPlan.NONE);
         sim.platformName("hospital");
         try (sim) {
             java.util.function.Function<io.concord.core.agent.AgentRuntime, io.concord.layers.Platform> platformOn =

@@ -9,7 +9,7 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
-import io.concord.core.testkit.FaultPlan;
+import io.concord.testkit.FaultPlan;
 
 import org.junit.jupiter.api.Test;
 

@@ -9,8 +9,8 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.TickerBehaviour;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.Point;
 

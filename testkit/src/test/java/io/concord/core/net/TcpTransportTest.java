@@ -11,8 +11,8 @@ import io.concord.core.agent.OneShotBehaviour;
 import io.concord.core.proto.AchieveREResponder;
 import io.concord.core.proto.Conversations;
 import io.concord.core.proto.FipaProtocols;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import org.junit.jupiter.api.Test;
 
 import java.io.OutputStream;

@@ -1,4 +1,4 @@
-package io.concord.core.testkit;
+package io.concord.testkit;
 
 /**
  * What the virtual network does to datagrams, as probabilities drawn from the simulation's seeded

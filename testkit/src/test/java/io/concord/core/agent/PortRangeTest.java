@@ -4,8 +4,8 @@ import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
 import io.concord.core.net.SocketNetwork;
 import io.concord.core.net.Transport;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.VirtualNetwork;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.VirtualNetwork;
 import io.concord.core.time.ManualClock;
 import org.junit.jupiter.api.Test;
 

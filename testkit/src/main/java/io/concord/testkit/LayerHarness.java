@@ -1,4 +1,4 @@
-package io.concord.core.testkit;
+package io.concord.testkit;
 
 import io.concord.core.layer.DropCounters;
 import io.concord.core.layer.Envelope;

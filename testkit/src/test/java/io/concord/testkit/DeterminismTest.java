@@ -1,4 +1,4 @@
-package io.concord.core.testkit;
+package io.concord.testkit;
 
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;

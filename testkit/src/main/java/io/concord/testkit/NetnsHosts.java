@@ -1,4 +1,4 @@
-package io.concord.core.testkit;
+package io.concord.testkit;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

@@ -5,8 +5,8 @@ import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.FaultPlan;
-import io.concord.core.testkit.Simulation;
+import io.concord.testkit.FaultPlan;
+import io.concord.testkit.Simulation;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;

@@ -4,7 +4,7 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
-import io.concord.core.testkit.LayerHarness;
+import io.concord.testkit.LayerHarness;
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;
