@@ -80,6 +80,7 @@ public final class Platform implements AutoCloseable {
     /** Settings, checked at {@link #build()}. */
     public static final class Builder {
         private String name = "concord";
+        private boolean named;
         private String host = "127.0.0.1";
         private PortRange ports = PortRange.defaults();
         private Profile profile = Profile.CLASS_7;
@@ -116,6 +117,7 @@ public final class Platform implements AutoCloseable {
         /** The platform name, the part after {@code @}; agents of one platform must agree on it. */
         public Builder name(String n) {
             this.name = Objects.requireNonNull(n, "name");
+            this.named = true;
             return this;
         }
 
@@ -200,7 +202,8 @@ public final class Platform implements AutoCloseable {
 
         /**
          * Runs the platform's agents on a runtime the caller made and drives (a simulation, or a
-         * runtime shared with other work); its platform name is used.
+         * runtime shared with other work); its platform name is used ({@link #build} refuses a
+         * different {@link #name}).
          */
         public Builder runtime(AgentRuntime rt) {
             this.runtime = Objects.requireNonNull(rt, "runtime");
@@ -215,6 +218,12 @@ public final class Platform implements AutoCloseable {
             if (console != null) {
                 consoles = ServiceLoader.load(ConsoleProvider.class).findFirst().orElseThrow(() -> new IllegalStateException(
                         "the console needs concord-console on the class path (io.concord:concord-console)"));
+            }
+            if (runtime != null && named && !name.equals(runtime.platformName())) {
+                throw new IllegalArgumentException("the platform is named '" + name + "' but runs on a runtime of platform '"
+                        + runtime.platformName() + "': a platform on a runtime of your own takes the runtime's name; name the"
+                        + " runtime (AgentRuntime.builder().platformName(\"" + name + "\"), or Simulation.platformName(\"" + name
+                        + "\") before newRuntime), or leave name(...) out");
             }
             Platform p;
             if (runtime != null) {

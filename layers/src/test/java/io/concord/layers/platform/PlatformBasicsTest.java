@@ -41,4 +41,21 @@ class PlatformBasicsTest {
             assertTrue(aids.get(0).addresses().get(0).startsWith("tcp://"), aids.get(0).toString());
         }
     }
+
+    /** A platform named otherwise than the runtime it is given would name its agents after the runtime: refused, saying what to do. */
+    @Test
+    void aPlatformNamedOtherwiseThanItsRuntimeIsRefused() {
+        try (io.concord.testkit.Simulation sim = new io.concord.testkit.Simulation(3, FaultPlan.NONE)) {
+            var rt = sim.newRuntime("h1");
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> Platform.builder().name("shop").runtime(rt).build());
+            assertTrue(e.getMessage().contains("'shop'") && e.getMessage().contains("'" + rt.platformName() + "'")
+                    && e.getMessage().contains("Simulation.platformName"), e.getMessage());
+            sim.platformName("shop");
+            var shop = sim.newRuntime("h2");
+            try (Platform p = Platform.builder().name("shop").runtime(shop).build()) {
+                assertEquals("shop", shop.platformName());
+            }
+        }
+    }
 }
