@@ -32,6 +32,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Set;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -114,7 +115,22 @@ public final class HospitalDemo {
         }
     }
 
+    static final String USAGE = "usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
+            + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]"
+            + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port]\n"
+            + "(each option with its default: README.md, \"The two commands\")";
+
+    /** True if the arguments ask for the usage ({@code --help}, {@code -h}). */
+    static boolean wantsHelp(String[] args) {
+        return Arrays.stream(args).anyMatch(a -> a.equals("--help") || a.equals("-h"));
+    }
+
     public static void main(String[] args) throws Exception {
+        if (wantsHelp(args)) {
+            System.out.println(USAGE);
+            System.exit(0);
+            return;
+        }
         String role = args.length > 0 && (args[0].equals("ward") || args[0].equals("staff")) ? args[0] : null;
         Options o;
         HospitalMap map;
@@ -124,8 +140,7 @@ public final class HospitalDemo {
             check(map, o);
         } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
-            System.err.println("usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
-                    + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S] [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port]");
+            System.err.println(USAGE);
             System.exit(2);
             return;
         }
@@ -142,6 +157,9 @@ public final class HospitalDemo {
         }
         System.exit(ok ? 0 : 1);
     }
+
+    private static final Set<String> VALUE_OPTIONS = Set.of("--seed", "--speed", "--map", "--picture", "--chairs",
+            "--max-seconds", "--serial", "--console", "--pair-key", "--tasks");
 
     static Options parse(String[] args) {
         long seed = 2010;
@@ -166,8 +184,11 @@ public final class HospitalDemo {
                 augmented = true;
                 continue;
             }
+            if (!VALUE_OPTIONS.contains(a)) {
+                throw new IllegalArgumentException(a.startsWith("-") ? "unknown option '" + a + "'" : "unknown argument '" + a + "'");
+            }
             if (i + 1 >= args.length) {
-                throw new IllegalArgumentException(a.startsWith("--") ? a + " needs a value" : "unknown argument '" + a + "'");
+                throw new IllegalArgumentException(a + " needs a value");
             }
             String v = args[++i];
             try {

@@ -55,4 +55,17 @@ class HospitalDemoTest {
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "9"}))
                 .getMessage().contains("1 to 5"));
     }
+
+    /** {@code --help} gets the usage (not "--help needs a value"), and an unknown option is called unknown, value or not. */
+    @Test
+    void helpIsAskedForAndAnUnknownOptionIsNamed() {
+        assertTrue(HospitalDemo.wantsHelp(new String[] {"--help"}));
+        assertTrue(HospitalDemo.wantsHelp(new String[] {"--chairs", "3", "-h"}));
+        assertTrue(!HospitalDemo.wantsHelp(new String[] {"--chairs", "3"}));
+        assertTrue(HospitalDemo.USAGE.contains("--chairs N") && HospitalDemo.USAGE.contains("--console"));
+        assertEquals("unknown option '--speeed'",
+                assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--speeed"})).getMessage());
+        assertEquals("unknown argument 'fast'",
+                assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"fast"})).getMessage());
+    }
 }

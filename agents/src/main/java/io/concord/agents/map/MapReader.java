@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -357,6 +358,46 @@ final class MapReader {
                     problem(what + ": runs through wall '" + w.id() + "' (" + w.from() + " to " + w.to() + ")");
                 }
             }
+        }
+        checkConnected(nodes, edges, nodeById);
+    }
+
+    /**
+     * Every node can be reached from every other along the edges: the planner routes only on the
+     * graph, so a node off it is a room no chair can ever be sent to (or a chair parked there can
+     * never leave), found only when a transport fails.
+     */
+    private void checkConnected(List<Node> nodes, List<Edge> edges, Map<Integer, Node> nodeById) {
+        if (nodes.size() < 2) {
+            return;
+        }
+        Map<Integer, List<Integer>> next = new HashMap<>();
+        for (Edge e : edges) {
+            if (nodeById.containsKey(e.a()) && nodeById.containsKey(e.b())) {
+                next.computeIfAbsent(e.a(), k -> new ArrayList<>()).add(e.b());
+                next.computeIfAbsent(e.b(), k -> new ArrayList<>()).add(e.a());
+            }
+        }
+        int first = nodes.get(0).id();
+        Set<Integer> reached = new HashSet<>(List.of(first));
+        ArrayDeque<Integer> todo = new ArrayDeque<>(List.of(first));
+        while (!todo.isEmpty()) {
+            for (int n : next.getOrDefault(todo.poll(), List.of())) {
+                if (reached.add(n)) {
+                    todo.add(n);
+                }
+            }
+        }
+        List<Integer> off = new ArrayList<>();
+        for (Node n : nodes) {
+            if (!reached.contains(n.id())) {
+                off.add(n.id());
+            }
+        }
+        if (!off.isEmpty()) {
+            problem((off.size() == 1 ? "node " + off.get(0) + " is" : "nodes " + off + " are")
+                    + " not connected to node " + first + " by any path of edges: no chair could be routed there;"
+                    + " add an edge (with its door, if it passes one) or remove the node");
         }
     }
 

@@ -250,4 +250,13 @@ class HospitalMapTest {
         HospitalMap map = HospitalMap.parse(m.group(1), "docs/hospital-map.md");
         assertFalse(map.nodes().isEmpty());
     }
+
+    /** A node no edge leads to is refused: the planner could never send a chair there. */
+    @Test
+    void aNodeOffTheGraphIsRefused() {
+        MapException e = refused(SMALL.replace("{\"id\": 3, \"at\": [8, 2]}", "{\"id\": 3, \"at\": [8, 2]},\n    {\"id\": 4, \"at\": [8, 6.5]}"));
+        assertProblem(e, "node 4 is not connected to node 1", "add an edge");
+        MapException two = refused(SMALL.replace("{\"from\": 1, \"to\": 3}", "{\"from\": 2, \"to\": 2}"));
+        assertProblem(two, "node 3 is not connected");
+    }
 }
