@@ -12,7 +12,6 @@ import io.concord.core.acl.Performative;
 import io.concord.core.proto.FipaProtocols;
 
 import java.util.Set;
-import java.util.concurrent.CompletableFuture;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
 
@@ -35,15 +34,9 @@ final class DoorClient {
     static final long OPEN_TIMEOUT_MS = 60_000;
 
     /** How a door client reaches the doors. */
-    interface Doors {
+    interface Doors extends Outbox {
         /** The agent of door {@code id}, from the yellow pages, or null if it has none. */
         AID agentOf(String id);
-
-        /** Sends a request and completes with the final answer, or null if none came within the time. */
-        CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs);
-
-        /** Sends a message that needs no answer. */
-        void send(AclMessage m);
     }
 
     private final Doors doors;

@@ -11,7 +11,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.concurrent.CompletableFuture;
 import java.util.function.BiConsumer;
 
 /**
@@ -26,15 +25,9 @@ final class TrafficClient {
     static final long WAIT_MS = 1_800_000;
 
     /** How a traffic client reaches the traffic agent. */
-    interface Port {
+    interface Port extends Outbox {
         /** The traffic agent, from the yellow pages, or null if there is none. */
         AID trafficAgent();
-
-        /** Sends a request and completes with the final answer, or null if none came within the time. */
-        CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs);
-
-        /** Sends a message that needs no answer. */
-        void send(AclMessage m);
     }
 
     private final Port port;

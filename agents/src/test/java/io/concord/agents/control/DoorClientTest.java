@@ -31,31 +31,21 @@ class DoorClientTest {
     final Edge corridor = SMALL.edge(1, 3).orElseThrow();
 
     final Map<String, AID> agents = new HashMap<>(Map.of("D1", DOOR_AGENT));
-    final List<AclMessage> sent = new ArrayList<>();
-    final List<CompletableFuture<AclMessage>> answers = new ArrayList<>();
-    final List<Long> timeouts = new ArrayList<>();
     final List<String> closed = new ArrayList<>();
+    final Doors out = new Doors();
+    final List<AclMessage> sent = out.sent;
+    final List<CompletableFuture<AclMessage>> answers = out.answers;
+    final List<Long> timeouts = out.timeouts;
 
-    final DoorClient client = new DoorClient(new DoorClient.Doors() {
+    final DoorClient client = new DoorClient(out, SMALL, "chair1", (from, why) -> closed.add(from + ": " + why), s -> { });
+
+    /** The door agents as the yellow pages give them, over a recording outbox. */
+    final class Doors extends Fakes.Recording implements DoorClient.Doors {
         @Override
         public AID agentOf(String id) {
             return agents.get(id);
         }
-
-        @Override
-        public CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs) {
-            sent.add(request);
-            timeouts.add(timeoutMs);
-            CompletableFuture<AclMessage> f = new CompletableFuture<>();
-            answers.add(f);
-            return f;
-        }
-
-        @Override
-        public void send(AclMessage m) {
-            sent.add(m);
-        }
-    }, SMALL, "chair1", (from, why) -> closed.add(from + ": " + why), s -> { });
+    }
 
     /** The chair on the line from node 1 to the door, {@code m} metres south of the door's centre. */
     static Pose south(double m) {

@@ -6,11 +6,13 @@ import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.map.HospitalMap;
+import io.concord.core.acl.AclMessage;
 
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.CompletableFuture;
 
 /** What the control agent's parts are tested on: a chair that records its commands, and a small map. */
 final class Fakes {
@@ -50,6 +52,27 @@ final class Fakes {
             """, "test");
 
     private Fakes() {
+    }
+
+    /** An outbox that records what is sent and asked, each question answered by the test through its future. */
+    static class Recording implements Outbox {
+        final List<AclMessage> sent = new ArrayList<>();
+        final List<CompletableFuture<AclMessage>> answers = new ArrayList<>();
+        final List<Long> timeouts = new ArrayList<>();
+
+        @Override
+        public void send(AclMessage m) {
+            sent.add(m);
+        }
+
+        @Override
+        public CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs) {
+            sent.add(request);
+            timeouts.add(timeoutMs);
+            CompletableFuture<AclMessage> f = new CompletableFuture<>();
+            answers.add(f);
+            return f;
+        }
     }
 
     /** A chair whose commands are recorded ("stop", or "drive L,R" in whole percent). */

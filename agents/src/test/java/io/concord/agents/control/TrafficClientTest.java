@@ -19,29 +19,20 @@ class TrafficClientTest {
     static final AID TRAFFIC = new AID("traffic@test");
 
     AID trafficAgent = TRAFFIC;
-    final List<AclMessage> sent = new ArrayList<>();
-    final List<CompletableFuture<AclMessage>> answers = new ArrayList<>();
     final List<String> refused = new ArrayList<>();
+    final Traffic out = new Traffic();
+    final List<AclMessage> sent = out.sent;
+    final List<CompletableFuture<AclMessage>> answers = out.answers;
 
-    final TrafficClient client = new TrafficClient(new TrafficClient.Port() {
+    final TrafficClient client = new TrafficClient(out, (node, why) -> refused.add(node + " " + why));
+
+    /** The traffic agent as the yellow pages give it (or none), over a recording outbox. */
+    final class Traffic extends Fakes.Recording implements TrafficClient.Port {
         @Override
         public AID trafficAgent() {
             return trafficAgent;
         }
-
-        @Override
-        public CompletableFuture<AclMessage> ask(AclMessage request, long timeoutMs) {
-            sent.add(request);
-            CompletableFuture<AclMessage> f = new CompletableFuture<>();
-            answers.add(f);
-            return f;
-        }
-
-        @Override
-        public void send(AclMessage m) {
-            sent.add(m);
-        }
-    }, (node, why) -> refused.add(node + " " + why));
+    }
 
     private String said(int i) {
         return sent.get(i).getPerformative() + " " + sent.get(i).getContent();
