@@ -32,7 +32,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Set;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -158,8 +157,13 @@ public final class HospitalDemo {
         System.exit(ok ? 0 : 1);
     }
 
-    private static final Set<String> VALUE_OPTIONS = Set.of("--seed", "--speed", "--map", "--picture", "--chairs",
-            "--max-seconds", "--serial", "--console", "--pair-key", "--tasks");
+    /** An option's value: the next argument, which must be there. */
+    private static String value(String option, String v) {
+        if (v == null) {
+            throw new IllegalArgumentException(option + " needs a value");
+        }
+        return v;
+    }
 
     static Options parse(String[] args) {
         long seed = 2010;
@@ -184,35 +188,31 @@ public final class HospitalDemo {
                 augmented = true;
                 continue;
             }
-            if (!VALUE_OPTIONS.contains(a)) {
-                throw new IllegalArgumentException(a.startsWith("-") ? "unknown option '" + a + "'" : "unknown argument '" + a + "'");
-            }
-            if (i + 1 >= args.length) {
-                throw new IllegalArgumentException(a + " needs a value");
-            }
-            String v = args[++i];
+            String v = i + 1 < args.length ? args[i + 1] : null;
             try {
                 switch (a) {
-                    case "--seed" -> seed = Long.parseLong(v);
-                    case "--speed" -> speed = Double.parseDouble(v);
-                    case "--map" -> map = Path.of(v);
-                    case "--picture" -> picture = Path.of(v);
-                    case "--chairs" -> chairs = Integer.parseInt(v);
-                    case "--max-seconds" -> max = Double.parseDouble(v);
-                    case "--serial" -> serial = v;
-                    case "--console" -> console = v;
-                    case "--pair-key" -> pairKey = Path.of(v);
+                    case "--seed" -> seed = Long.parseLong(value(a, v));
+                    case "--speed" -> speed = Double.parseDouble(value(a, v));
+                    case "--map" -> map = Path.of(value(a, v));
+                    case "--picture" -> picture = Path.of(value(a, v));
+                    case "--chairs" -> chairs = Integer.parseInt(value(a, v));
+                    case "--max-seconds" -> max = Double.parseDouble(value(a, v));
+                    case "--serial" -> serial = value(a, v);
+                    case "--console" -> console = value(a, v);
+                    case "--pair-key" -> pairKey = Path.of(value(a, v));
                     case "--tasks" -> {
                         tasks = new ArrayList<>();
-                        for (String t : v.split(",")) {
+                        for (String t : value(a, v).split(",")) {
                             tasks.add(TaskSpec.parse(t));
                         }
                     }
-                    default -> throw new IllegalArgumentException("unknown option '" + a + "'");
+                    default -> throw new IllegalArgumentException(a.startsWith("-") ? "unknown option '" + a + "'"
+                            : "unknown argument '" + a + "'");
                 }
             } catch (NumberFormatException e) {
                 throw new IllegalArgumentException(a + " needs a number, got '" + v + "'");
             }
+            i++;
         }
         if (!(speed > 0 && speed <= 1000)) {
             throw new IllegalArgumentException("--speed must be in (0, 1000], got " + speed);
