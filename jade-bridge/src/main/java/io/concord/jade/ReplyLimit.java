@@ -1,6 +1,6 @@
 package io.concord.jade;
 
-import io.concord.core.time.TokenBucket;
+import io.concord.core.time.internal.TokenBucket;
 
 import java.util.LinkedHashMap;
 import java.util.Map;

@@ -8,7 +8,7 @@ import io.concord.core.layer.StackEvent;
 import io.concord.core.layer.StackHost;
 import io.concord.core.layer.Tracer;
 import io.concord.core.time.Clock;
-import io.concord.core.time.DeadlineTimerWheel;
+import io.concord.core.time.internal.DeadlineTimerWheel;
 import io.concord.core.time.ManualClock;
 
 import java.util.ArrayDeque;

@@ -3,6 +3,7 @@ package io.concord.core.agent;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MtsFailure;
+import io.concord.core.agent.internal.CoLocated;
 import io.concord.core.layer.DropCounters;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.LayerStack;
@@ -13,11 +14,11 @@ import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
 import io.concord.core.net.Channels;
 import io.concord.core.net.Endpoint;
-import io.concord.core.net.Neighbourhood;
+import io.concord.core.net.internal.Neighbourhood;
 import io.concord.core.net.SocketNetwork;
 import io.concord.core.net.Transport;
 import io.concord.core.time.Clock;
-import io.concord.core.time.LoopLimits;
+import io.concord.core.time.internal.LoopLimits;
 
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -315,7 +316,7 @@ final class AgentNode implements StackHost {
             return type.cast(coLocated);
         }
         if (type == Channels.class) {
-            return runtime.network() instanceof Channels c ? type.cast(c) : null;
+            return runtime.network().capability(type);
         }
         return type == LoopLimits.class ? type.cast(runtime.loopLimits()) : null;
     }

@@ -33,7 +33,7 @@ public record AgentOptions(int port, Supplier<List<Layer>> stack, Transport tran
     /**
      * Port-binding discovery: the agent takes the first free port of the range; the ports it finds
      * held below it and in the probe window past it are its potential peers
-     * ({@link io.concord.core.net.Neighbourhood#neighbours()}).
+     * ({@link io.concord.core.net.internal.Neighbourhood#neighbours()}).
      */
     public AgentOptions withPortRange(PortRange range) {
         return new AgentOptions(0, stack, transport, Objects.requireNonNull(range, "range"));

@@ -1,6 +1,7 @@
 package io.concord.core.agent;
 
 import io.concord.core.acl.AID;
+import io.concord.core.agent.internal.CoLocated;
 import io.concord.core.layer.CodecLayer;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerStack;
@@ -11,7 +12,8 @@ import io.concord.core.net.Network;
 import io.concord.core.net.SocketNetwork;
 import io.concord.core.net.Transport;
 import io.concord.core.time.Clock;
-import io.concord.core.time.DeadlineTimerWheel;
+import io.concord.core.time.internal.DeadlineTimerWheel;
+import io.concord.core.time.internal.LoopLimits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -56,7 +58,7 @@ public final class AgentRuntime implements AutoCloseable {
     private final RandomGenerator random;
     /** Where secrets come from: a SecureRandom, or null when the runtime was given its random source. */
     private final SecureRandom secrets;
-    private final io.concord.core.time.LoopLimits loopLimits = new io.concord.core.time.LoopLimits();
+    private final LoopLimits loopLimits = new LoopLimits();
     private final Tracer tracer;
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
@@ -898,7 +900,7 @@ public final class AgentRuntime implements AutoCloseable {
     }
 
     /** The rate limits every agent of this loop shares. Loop thread only. */
-    io.concord.core.time.LoopLimits loopLimits() {
+    LoopLimits loopLimits() {
         return loopLimits;
     }
 

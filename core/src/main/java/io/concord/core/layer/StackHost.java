@@ -36,7 +36,7 @@ public interface StackHost {
 
     /**
      * Something more the node offers its layers, by type (for example the port neighbourhood of
-     * {@link io.concord.core.net.Neighbourhood}, which the container layer discovers with), or
+     * {@link io.concord.core.net.internal.Neighbourhood}, which the container layer discovers with), or
      * {@code null} if it offers none of that type.
      */
     default <T> T capability(Class<T> type) {

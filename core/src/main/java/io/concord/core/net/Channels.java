@@ -7,7 +7,8 @@ import java.nio.channels.SelectionKey;
 /**
  * The loop's own selector, lent to a component that serves sockets of its own (the JADE bridge's
  * HTTP MTP): its channels are then read and written by the thread that runs the agents, with no
- * hand-off to a thread of its own and back. Loop only; the handler must not block.
+ * hand-off to a thread of its own and back. Loop only; the handler must not block. A network lends
+ * it through {@link Network#capability(Class)}; a gateway (an MTP) is given it by its context.
  */
 public interface Channels {
 

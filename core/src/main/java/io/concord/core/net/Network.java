@@ -103,4 +103,12 @@ public interface Network extends AutoCloseable {
     /** Closes every endpoint and the network itself. */
     @Override
     void close();
+
+    /**
+     * A capability this network lends the nodes on it (for one of Concord's own components, such as
+     * the loop's selector for the JADE bridge's sockets), or {@code null} if it has none of that type.
+     */
+    default <T> T capability(Class<T> type) {
+        return null;
+    }
 }

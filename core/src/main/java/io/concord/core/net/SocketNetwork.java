@@ -1,5 +1,6 @@
 package io.concord.core.net;
 
+import io.concord.core.net.internal.Neighbourhood;
 import io.concord.core.time.Clock;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -24,7 +25,7 @@ import java.util.concurrent.TimeUnit;
  * Real sockets, UDP and TCP, non-blocking, all registered with one {@link Selector} so that a
  * single loop serves every agent of a JVM. TCP is described in {@link TcpEndpoint}.
  */
-public final class SocketNetwork implements Network, Channels {
+public final class SocketNetwork implements Network {
     /** Largest UDP payload over IPv4. */
     public static final int MAX_DATAGRAM = 65507;
     /**
@@ -163,7 +164,14 @@ public final class SocketNetwork implements Network, Channels {
     }
 
     @Override
-    public SelectionKey register(java.nio.channels.SelectableChannel channel, int ops, Ready ready) throws IOException {
+    public <T> T capability(Class<T> type) {
+        return type == Channels.class ? type.cast(channels) : null;
+    }
+
+    /** The loop's selector lent to the JADE bridge: {@link Channels}. */
+    private final Channels channels = this::register;
+
+    private SelectionKey register(java.nio.channels.SelectableChannel channel, int ops, Channels.Ready ready) throws IOException {
         java.util.Objects.requireNonNull(ready, "ready");
         return channel.register(selector, ops, new Handler() {
             @Override

@@ -13,6 +13,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
 import java.io.BufferedReader;
+import java.io.File;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -40,7 +41,11 @@ class TwoProcessUdpTest {
     @BeforeAll
     static void startRemoteJvm() throws Exception {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        remote = new ProcessBuilder(java, "-cp", System.getProperty("java.class.path"), RemoteResponders.class.getName())
+        // core is a named module: its tests run with core (and this test's classes) on the module
+        // path, the rest on the class path; the other JVM takes both on its class path
+        String modules = System.getProperty("jdk.module.path");
+        String cp = System.getProperty("java.class.path") + (modules == null ? "" : File.pathSeparator + modules);
+        remote = new ProcessBuilder(java, "-cp", cp, RemoteResponders.class.getName())
                 .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         BufferedReader out = new BufferedReader(new InputStreamReader(remote.getInputStream(), StandardCharsets.UTF_8));
         String line;

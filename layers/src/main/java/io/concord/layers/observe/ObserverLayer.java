@@ -6,7 +6,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
-import io.concord.core.time.TokenBucket;
+import io.concord.core.time.internal.TokenBucket;
 import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.temporal.TemporalLayer;
 

@@ -8,7 +8,7 @@ import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
-import io.concord.core.net.Neighbourhood;
+import io.concord.core.net.internal.Neighbourhood;
 import io.concord.core.acl.MtsFailure;
 import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;

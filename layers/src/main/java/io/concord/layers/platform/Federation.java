@@ -5,7 +5,7 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
-import io.concord.core.net.Neighbourhood;
+import io.concord.core.net.internal.Neighbourhood;
 
 import java.util.ArrayList;
 import java.util.Comparator;

@@ -3,7 +3,7 @@ package io.concord.layers.platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-import io.concord.core.agent.CoLocated;
+import io.concord.core.agent.internal.CoLocated;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.SendRejectedException;
@@ -11,7 +11,7 @@ import io.concord.core.layer.StackHost;
 import io.concord.core.layer.Tracer;
 import io.concord.core.net.Address;
 import io.concord.core.net.Channels;
-import io.concord.core.net.Neighbourhood;
+import io.concord.core.net.internal.Neighbourhood;
 import io.concord.layers.frame.Frames;
 
 import java.util.function.Predicate;

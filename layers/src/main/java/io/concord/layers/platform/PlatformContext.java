@@ -3,7 +3,7 @@ package io.concord.layers.platform;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
-import io.concord.core.agent.CoLocated;
+import io.concord.core.agent.internal.CoLocated;
 import io.concord.core.layer.SendRejectedException;
 import io.concord.core.net.Address;
 import io.concord.core.net.Channels;

@@ -4,7 +4,7 @@ import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 import io.concord.core.net.Address;
-import io.concord.core.net.Neighbourhood;
+import io.concord.core.net.internal.Neighbourhood;
 import io.concord.layers.frame.Frames;
 
 import java.util.ArrayList;

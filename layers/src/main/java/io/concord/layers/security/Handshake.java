@@ -3,8 +3,8 @@ package io.concord.layers.security;
 import io.concord.core.layer.Envelope;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
-import io.concord.core.time.LoopLimits;
-import io.concord.core.time.TokenBucket;
+import io.concord.core.time.internal.LoopLimits;
+import io.concord.core.time.internal.TokenBucket;
 import io.concord.layers.frame.Frames;
 
 import java.security.MessageDigest;

@@ -1,7 +1,7 @@
 package io.concord.layers.security;
 
 import io.concord.core.layer.LayerContext;
-import io.concord.core.time.TokenBucket;
+import io.concord.core.time.internal.TokenBucket;
 
 import java.util.LinkedHashMap;
 import java.util.Map;

@@ -2,10 +2,11 @@ package io.concord.layers.platform;
 
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.core.agent.internal.CoLocated;
 import io.concord.core.layer.Envelope;
 import io.concord.core.net.Address;
 import io.concord.core.net.Endpoint;
-import io.concord.core.net.Neighbourhood;
+import io.concord.core.net.internal.Neighbourhood;
 import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 
@@ -66,7 +67,7 @@ final class OneAgent {
                         return List.of();
                     }
                 })
-                .offer(io.concord.core.agent.CoLocated.class, new io.concord.core.agent.CoLocated() {
+                .offer(CoLocated.class, new CoLocated() {
                     @Override
                     public boolean here(Address address) {
                         return coLocated.contains(address);

@@ -6,7 +6,7 @@ import io.concord.core.layer.LayerContext;
 import io.concord.core.net.Address;
 import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
-import io.concord.core.time.TokenBucket;
+import io.concord.core.time.internal.TokenBucket;
 import io.concord.layers.Stacks;
 import io.concord.layers.frame.Frames;
 import io.concord.layers.security.SecurityLayer.Protection;

@@ -2,6 +2,7 @@ package io.concord.layers.security;
 
 import io.concord.core.layer.Envelope;
 import io.concord.core.net.Address;
+import io.concord.core.time.internal.LoopLimits;
 import io.concord.testkit.LayerHarness;
 import io.concord.core.time.ManualClock;
 import io.concord.layers.Stacks;
@@ -499,12 +500,12 @@ class SecurityLayerTest {
     @Test
     void theAgentsOfOneLoopTogetherAnswerNoMoreHellosThanTheLoopsBudget() {
         // Five agents on one loop (they share its limits), each able to answer more than the loop may.
-        io.concord.core.time.LoopLimits loop = new io.concord.core.time.LoopLimits();
+        LoopLimits loop = new LoopLimits();
         List<LayerHarness> victims = new ArrayList<>();
         for (int v = 0; v < 5; v++) {
             SecurityLayer sv = layer(SecurityLayer.Protection.GCM_PAIR, Stacks.KEY);
             sv.helloRate(1_000, 1_000);
-            victims.add(LayerHarness.builder().name("v" + v + "@p").clock(clock).offer(io.concord.core.time.LoopLimits.class, loop)
+            victims.add(LayerHarness.builder().name("v" + v + "@p").clock(clock).offer(LoopLimits.class, loop)
                     .build(sv));
         }
         Identity one = IdentityStore.ephemeral().identityFor("x");

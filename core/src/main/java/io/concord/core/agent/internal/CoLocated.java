@@ -1,4 +1,4 @@
-package io.concord.core.agent;
+package io.concord.core.agent.internal;
 
 import io.concord.core.net.Address;
 

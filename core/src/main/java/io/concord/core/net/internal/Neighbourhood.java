@@ -1,5 +1,7 @@
-package io.concord.core.net;
+package io.concord.core.net.internal;
 
+import io.concord.core.net.Address;
+import io.concord.core.net.Endpoint;
 import java.util.List;
 
 /**

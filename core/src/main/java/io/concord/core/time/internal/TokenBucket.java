@@ -1,4 +1,4 @@
-package io.concord.core.time;
+package io.concord.core.time.internal;
 
 /**
  * A rate limit: {@code burst} takes at once, then {@code perSecond}, by a clock the caller passes

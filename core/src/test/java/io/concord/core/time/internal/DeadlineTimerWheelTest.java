@@ -1,4 +1,4 @@
-package io.concord.core.time;
+package io.concord.core.time.internal;
 
 import org.junit.jupiter.api.Test;
 
