@@ -14,9 +14,7 @@ import java.util.List;
  * {@link #handleAllResponses} gets what came, and only responders that agreed are waited for.
  */
 public class AchieveREInitiator extends Initiator {
-    private final List<AclMessage> responses = new ArrayList<>();
     private final List<AclMessage> results = new ArrayList<>();
-    private boolean responsesReported;
 
     public AchieveREInitiator(Agent agent, AclMessage request) {
         super(agent, request);
@@ -29,9 +27,7 @@ public class AchieveREInitiator extends Initiator {
 
     /** The requests to send; a copy of the given one by default. */
     protected List<AclMessage> prepareRequests(AclMessage request) {
-        List<AclMessage> l = new ArrayList<>(1);
-        l.add(request.copy());
-        return l;
+        return copyOf(request);
     }
 
     @Override
@@ -126,8 +122,6 @@ public class AchieveREInitiator extends Initiator {
     @Override
     public void reset() {
         super.reset();
-        responses.clear();
         results.clear();
-        responsesReported = false;
     }
 }

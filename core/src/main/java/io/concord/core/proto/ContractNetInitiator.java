@@ -18,10 +18,8 @@ import java.util.List;
 public class ContractNetInitiator extends Initiator {
     private static final int PROPOSED = 3;
 
-    private final List<AclMessage> responses = new ArrayList<>();
     private final List<AclMessage> results = new ArrayList<>();
     private final List<AclMessage> earlyAcceptances = new ArrayList<>();
-    private boolean responsesReported;
 
     public ContractNetInitiator(Agent agent, AclMessage cfp) {
         super(agent, cfp);
@@ -34,9 +32,7 @@ public class ContractNetInitiator extends Initiator {
 
     /** The CFPs to send; a copy of the given one by default. */
     protected List<AclMessage> prepareCfps(AclMessage cfp) {
-        List<AclMessage> l = new ArrayList<>(1);
-        l.add(cfp.copy());
-        return l;
+        return copyOf(cfp);
     }
 
     @Override
@@ -176,9 +172,7 @@ public class ContractNetInitiator extends Initiator {
     @Override
     public void reset() {
         super.reset();
-        responses.clear();
         results.clear();
         earlyAcceptances.clear();
-        responsesReported = false;
     }
 }

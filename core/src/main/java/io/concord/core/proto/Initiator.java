@@ -36,6 +36,10 @@ abstract class Initiator extends Behaviour {
     }
 
     final Map<AID, Session> sessions = new LinkedHashMap<>();
+    /** The first answers (AGREE, REFUSE, PROPOSE, ...) as they came. */
+    final List<AclMessage> responses = new ArrayList<>();
+    /** Whether the subclass was handed every first answer. */
+    boolean responsesReported;
     private final Map<String, Session> byReplyWith = new HashMap<>();
     private final AclMessage initiation;
     private String conversationId;
@@ -58,6 +62,13 @@ abstract class Initiator extends Behaviour {
         return initiation;
     }
 
+    /** A list holding a copy of this message: what each {@code prepare...} sends by default. */
+    static List<AclMessage> copyOf(AclMessage m) {
+        List<AclMessage> l = new ArrayList<>(1);
+        l.add(m.copy());
+        return l;
+    }
+
     /** The messages to send; the initiation by default. Override to tailor per responder. */
     abstract List<AclMessage> prepareInitiations(AclMessage initiation);
 
@@ -71,6 +82,8 @@ abstract class Initiator extends Behaviour {
         template = MessageTemplate.matchConversationId(conversationId);
         sessions.clear();
         byReplyWith.clear();
+        responses.clear();
+        responsesReported = false;
         finished = false;
         deadlineNs = -1;
         for (AclMessage m : prepareInitiations(initiation)) {

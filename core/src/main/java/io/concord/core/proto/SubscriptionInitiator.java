@@ -14,8 +14,6 @@ import java.util.List;
  * ({@link #cancel}), refused or failed. {@code :reply-by} bounds the wait for the first answer.
  */
 public class SubscriptionInitiator extends Initiator {
-    private final List<AclMessage> responses = new ArrayList<>();
-    private boolean responsesReported;
 
     public SubscriptionInitiator(Agent agent, AclMessage subscribe) {
         super(agent, subscribe);
@@ -28,9 +26,7 @@ public class SubscriptionInitiator extends Initiator {
 
     /** The subscriptions to send; a copy of the given one by default. */
     protected List<AclMessage> prepareSubscriptions(AclMessage subscribe) {
-        List<AclMessage> l = new ArrayList<>(1);
-        l.add(subscribe.copy());
-        return l;
+        return copyOf(subscribe);
     }
 
     @Override
@@ -148,7 +144,5 @@ public class SubscriptionInitiator extends Initiator {
     @Override
     public void reset() {
         super.reset();
-        responses.clear();
-        responsesReported = false;
     }
 }
