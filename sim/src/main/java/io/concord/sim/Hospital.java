@@ -24,9 +24,6 @@ import java.util.function.Consumer;
  * any runtime of the same platform.
  */
 public final class Hospital {
-    /** Nodes of the default hospital where chairs start, in the order they are added: the lobby first. */
-    public static final int[] STARTS = {19, 23, 24, 22, 1, 5, 11, 13, 2, 12};
-
     private TrafficAgent traffic;
     private final Map<String, DoorAgent> doors = new LinkedHashMap<>();
     private final Map<String, PlannerAgent> planners = new LinkedHashMap<>();

@@ -54,9 +54,6 @@ import java.util.function.Consumer;
  */
 public final class HospitalDemo {
     private static final PrintStream OUT = System.out;
-    /** Where chairs wait, in the order they are added. */
-    static final int[] PARKING = Arrays.copyOf(Hospital.STARTS, 5);
-
     private HospitalDemo() {
     }
 
@@ -217,8 +214,8 @@ public final class HospitalDemo {
         if (!(speed > 0 && speed <= 1000)) {
             throw new IllegalArgumentException("--speed must be in (0, 1000], got " + speed);
         }
-        if (chairs < 1 || chairs > PARKING.length) {
-            throw new IllegalArgumentException("--chairs must be 1 to " + PARKING.length + ", got " + chairs);
+        if (chairs < 1) {
+            throw new IllegalArgumentException("--chairs must be 1 or more (up to the map's parking places), got " + chairs);
         }
         if (serial != null && virtual) {
             throw new IllegalArgumentException("--serial drives a chair in real time over its port: it cannot run with --virtual");
@@ -248,12 +245,13 @@ public final class HospitalDemo {
         return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey);
     }
 
-    private static void check(HospitalMap map, Options o) {
-        for (int i = 0; i < o.chairs(); i++) {
-            if (!map.hasNode(PARKING[i])) {
-                throw new MapException("--map", List.of("the demo parks its chairs at nodes " + Arrays.toString(PARKING)
-                        + "; node " + PARKING[i] + " is missing"));
-            }
+    /** The map has a parking place for each chair: where it starts, in the map's order. */
+    static void check(HospitalMap map, Options o) {
+        if (o.chairs() > map.parking().size()) {
+            throw new MapException(o.map() == null ? "the default hospital" : o.map().toString(), List.of(map.parking().isEmpty()
+                    ? "the map names no parking places, where the demo's chairs start: add \"parking\": [node ids] (docs/hospital-map.md)"
+                    : "--chairs " + o.chairs() + ": the map has " + map.parking().size() + " parking places " + map.parking()
+                    + ", one for each chair to start at; ask for fewer chairs or add places to its \"parking\""));
         }
     }
 
@@ -273,7 +271,8 @@ public final class HospitalDemo {
             OUT.printf(Locale.ROOT, "Task: a patient from node %d (%s) to node %d (%s), priority %.1f, %.0f s to load and unload.%n",
                     t.from(), area(map, t.from()), t.to(), area(map, t.to()), t.priority(), t.unloadS());
         }
-        OUT.println(o.chairs() + (o.chairs() == 1 ? " chair waits" : " chairs wait") + " in the lobby (node 19 first).");
+        OUT.println(o.chairs() + (o.chairs() == 1 ? " chair waits" : " chairs wait") + " at the map's parking places "
+                + map.parking().subList(0, o.chairs()) + ".");
         if (o.chairs() > 1) {
             OUT.println("The traffic agent grants each chair its whole route before it drives: they never meet.");
         }
@@ -319,7 +318,7 @@ public final class HospitalDemo {
     static HospitalWorld world(HospitalMap map, Options o) {
         HospitalWorld world = HospitalWorld.builder(map).seed(o.seed()).build();
         for (int i = o.serial() == null ? 0 : 1; i < o.chairs(); i++) {
-            world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(PARKING[i], 90));
+            world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(map.parking().get(i), 90));
         }
         return world;
     }
@@ -461,7 +460,7 @@ public final class HospitalDemo {
             // chair1 is on its serial port; the world keeps the doors (and any other chairs).
             rt.execute(() -> {
                 SerialChair c = SerialChair.open(rt,
-                        SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(PARKING[0], 90))
+                        SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(map.parking().get(0), 90))
                                 .withKey(o.pairKey() == null ? null : PairingKey.read(o.pairKey())));
                 serialChair.set(c);
                 hospital.addChair(platform, map, o.augmented() ? new AugmentedChair(c, world) : c, log);

@@ -6,6 +6,7 @@ import org.junit.jupiter.api.Test;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -52,8 +53,25 @@ class HospitalDemoTest {
                 .getMessage().contains("needs a value"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "3to9"}))
                 .getMessage().contains("from-to"));
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "9"}))
-                .getMessage().contains("1 to 5"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "0"}))
+                .getMessage().contains("1 or more"));
+    }
+
+    /** A chair starts at each of the map's parking places, in order; more chairs than places are refused, saying how many. */
+    @Test
+    void chairsStartAtTheMapsParkingPlaces() {
+        HospitalMap map = HospitalMap.defaultHospital();
+        assertEquals(List.of(19, 23, 24, 22, 1, 5, 11, 13, 2, 12), map.parking());
+        HospitalDemo.check(map, HospitalDemo.parse(new String[] {"--chairs", "10"}));
+        String why = assertThrows(IllegalArgumentException.class,
+                () -> HospitalDemo.check(map, HospitalDemo.parse(new String[] {"--chairs", "11"}))).getMessage();
+        assertTrue(why.contains("--chairs 11: the map has 10 parking places"), why);
+        HospitalMap none = HospitalMap.parse("""
+                {"format": "concord-hospital-map/1", "name": "two nodes",
+                 "nodes": [{"id": 1, "at": [0, 0]}, {"id": 2, "at": [3, 0]}], "edges": [{"from": 1, "to": 2}]}
+                """, "two.json");
+        why = assertThrows(IllegalArgumentException.class, () -> HospitalDemo.check(none, HospitalDemo.parse(new String[0]))).getMessage();
+        assertTrue(why.contains("names no parking places"), why);
     }
 
     /** {@code --help} gets the usage (not "--help needs a value"), and an unknown option is called unknown, value or not. */

@@ -38,10 +38,12 @@ public final class HospitalMap {
     private final List<Node> nodeList;
     private final List<Edge> edges;
     private final Map<Integer, List<Edge>> adjacency;
+    private final List<Integer> parking;
 
     HospitalMap(String name, double clearanceM, List<Wall> walls, List<Area> areas, List<Door> doors, List<Node> nodes,
-                List<Edge> edges) {
+                List<Edge> edges, List<Integer> parking) {
         this.name = name;
+        this.parking = List.copyOf(parking);
         this.clearanceM = clearanceM;
         this.walls = List.copyOf(walls);
         this.areas = List.copyOf(areas);
@@ -141,6 +143,14 @@ public final class HospitalMap {
             throw new IllegalArgumentException("map '" + name + "' has no door '" + id + "'");
         }
         return d;
+    }
+
+    /**
+     * The places where chairs start and stand idle (the map's {@code parking}), in the order chairs
+     * take them: the first chair at the first. Empty if the map names none.
+     */
+    public List<Integer> parking() {
+        return parking;
     }
 
     /** Every node, in map order. */

@@ -48,7 +48,7 @@ final class MapReader {
         if (root == null || !root.isObject()) {
             throw new MapException(source, List.of("the map must be one JSON object {\"format\": \"" + FORMAT + "\", ...}"));
         }
-        known(root, "the map", "format", "name", "clearance", "wallThickness", "walls", "areas", "doors", "nodes", "edges");
+        known(root, "the map", "format", "name", "clearance", "wallThickness", "walls", "areas", "doors", "nodes", "edges", "parking");
         String format = text(root, "format", "the map", true);
         if (format != null && !format.equals(FORMAT)) {
             problem("the map: format is '" + format + "', this reader knows '" + FORMAT + "'");
@@ -67,13 +67,15 @@ final class MapReader {
         List<Door> doors = doors(root.get("doors"));
         List<Node> nodes = nodes(root.get("nodes"), areas);
         List<Edge> edges = edges(root.get("edges"));
+        List<Integer> parking = parking(root.get("parking"));
         if (problems.isEmpty()) {
             check(walls, doors, nodes, edges, areas, clearance);
+            checkParking(parking, nodes, areas);
         }
         if (!problems.isEmpty()) {
             throw new MapException(source, problems);
         }
-        return new HospitalMap(name, clearance, walls, areas, doors, nodes, edges);
+        return new HospitalMap(name, clearance, walls, areas, doors, nodes, edges, parking);
     }
 
     // ---- structure ------------------------------------------------------------------------------
@@ -271,7 +273,45 @@ final class MapReader {
         return out;
     }
 
+    private List<Integer> parking(JsonNode arr) {
+        List<Integer> out = new ArrayList<>();
+        int i = 0;
+        for (JsonNode n : array(arr, "parking")) {
+            i++;
+            if (!n.isIntegralNumber() || !n.canConvertToInt()) {
+                problem("parking #" + i + ": must be a node id (a whole number), got " + n);
+                continue;
+            }
+            out.add(n.asInt());
+        }
+        return out;
+    }
+
     // ---- consistency ----------------------------------------------------------------------------
+
+    /** Parking places are known nodes, each named once, none in a room (a patient's room is no place to wait). */
+    private void checkParking(List<Integer> parking, List<Node> nodes, List<Area> areas) {
+        Map<Integer, Node> byId = new HashMap<>();
+        for (Node n : nodes) {
+            byId.put(n.id(), n);
+        }
+        Map<String, Area> areaById = new HashMap<>();
+        for (Area a : areas) {
+            areaById.put(a.id(), a);
+        }
+        Set<Integer> seen = new HashSet<>();
+        for (int id : parking) {
+            Node n = byId.get(id);
+            if (n == null) {
+                problem("parking: no node " + id + " in the map");
+            } else if (!seen.add(id)) {
+                problem("parking: node " + id + " is named twice");
+            } else if (n.area() != null && areaById.get(n.area()).kind() == Area.Kind.ROOM) {
+                problem("parking: node " + id + " is in room '" + n.area() + "'; chairs park and wait in corridors, halls or bays,"
+                        + " never in a patient's room");
+            }
+        }
+    }
 
     private void check(List<Wall> walls, List<Door> doors, List<Node> nodes, List<Edge> edges, List<Area> areas,
                        double clearance) {

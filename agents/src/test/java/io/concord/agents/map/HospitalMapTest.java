@@ -259,4 +259,23 @@ class HospitalMapTest {
         MapException two = refused(SMALL.replace("{\"from\": 1, \"to\": 3}", "{\"from\": 2, \"to\": 2}"));
         assertProblem(two, "node 3 is not connected");
     }
+
+    /** Parking places are read in order; an unknown node, one named twice, or one in a patient's room is refused. */
+    @Test
+    void parkingPlacesAreKnownNodesOutsideRooms() {
+        String withParking = SMALL.replace("""
+                  ]
+                }
+                """, """
+                  ],
+                  "parking": [3, 1]
+                }
+                """);
+        assertEquals(List.of(3, 1), HospitalMap.parse(withParking, "test").parking());
+        assertEquals(List.of(), HospitalMap.parse(SMALL, "test").parking());
+        assertProblem(refused(withParking.replace("[3, 1]", "[3, 7]")), "parking: no node 7");
+        assertProblem(refused(withParking.replace("[3, 1]", "[3, 1, 3]")), "parking: node 3 is named twice");
+        assertProblem(refused(withParking.replace("[3, 1]", "[3, 2]")), "parking: node 2 is in room 'room'", "never in a patient's room");
+        assertProblem(refused(withParking.replace("[3, 1]", "[3, \"x\"]")), "parking #2: must be a node id");
+    }
 }

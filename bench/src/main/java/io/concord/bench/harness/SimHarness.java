@@ -29,7 +29,6 @@ import java.util.SplittableRandom;
  */
 public final class SimHarness {
     /** Nodes the chairs start from, far enough apart. */
-    private static final int[] STARTS = io.concord.sim.Hospital.STARTS;
 
     public record Window(double stepsPerS, double bytesPerStep, double heapMb) {
     }
@@ -72,8 +71,9 @@ public final class SimHarness {
             List<Walker> walkers = new ArrayList<>();
             SplittableRandom random = new SplittableRandom(7);
             for (int i = 0; i < chairs; i++) {
-                SimChair c = world.addChair("chair" + (i + 1), ChairConfig.standard(), world.poseAt(STARTS[i], 90));
-                walkers.add(new Walker(c, STARTS[i], random.split()));
+                int start = map.parking().get(i);
+                SimChair c = world.addChair("chair" + (i + 1), ChairConfig.standard(), world.poseAt(start, 90));
+                walkers.add(new Walker(c, start, random.split()));
             }
             PoseController control = PoseController.standard();
             long[] doorMoves = {0};

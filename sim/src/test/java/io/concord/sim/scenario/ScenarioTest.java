@@ -53,7 +53,7 @@ class ScenarioTest {
                     .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
             world = HospitalWorld.builder(MAP).seed(seed).build();
             for (int i = 0; i < chairs; i++) {
-                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(Hospital.STARTS[i], 90));
+                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(MAP.parking().get(i), 90));
             }
             world.attach(rt);
             sim.trace().addListener((ns, node, event, detail) -> {
