@@ -4,6 +4,7 @@ import io.concord.agents.chair.Pose;
 import io.concord.agents.map.Door;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Point;
 import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
 import io.concord.core.acl.AID;
@@ -30,6 +31,8 @@ final class DoorClient {
     static final double ANNOUNCE_M = 4.0;
     /** How far from a door's centre the chair waits until the door is open for it. */
     static final double WAIT_AT_DOOR_M = 2.3;
+    /** How far clear of a moving leaf the waiting chair's centre keeps: its half diagonal and its braking distance. */
+    static final double LEAF_REACH_M = 1.2;
     /** How long a door may take to open for the chair before the route is planned around it. */
     static final long OPEN_TIMEOUT_MS = 60_000;
 
@@ -94,10 +97,11 @@ final class DoorClient {
             say.accept("asks door " + id + " to open");
             doors.ask(req, OPEN_TIMEOUT_MS).thenAccept(a -> answered(id, fromId, a));
         }
-        // Wait out of the leaf's way: beyond a revolving door's sweep by the chair's half length and
-        // its braking distance (at 2.2 m from a 3.2 m door the nose of a chair that braked there was
-        // inside the circle, and the leaf hit it).
-        double wait = d.kind() == Door.Kind.ROTATING ? Math.max(WAIT_AT_DOOR_M, d.width() / 2 + 1.2) : WAIT_AT_DOOR_M;
+        // Wait out of the leaf's way: beyond its sweep (a hinged leaf's quarter circle, on its swing
+        // side, computed from its width; a revolving leaf's circle) by the chair's half diagonal and
+        // its braking distance (at 2.2 m from a 3.2 m revolving door the nose of a chair that braked
+        // there was inside the circle; a fixed 2.3 m let a 1.6 m hinged leaf open to 0.1 m of it).
+        double wait = Math.max(WAIT_AT_DOOR_M, d.clearDistance(new Point(pose.x(), pose.y()), LEAF_REACH_M));
         return dist > wait;
     }
 

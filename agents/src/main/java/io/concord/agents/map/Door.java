@@ -52,4 +52,28 @@ public record Door(String id, Kind kind, Point from, Point to, End hinge, Side s
     public Point freePoint() {
         return hinge == End.TO ? from : to;
     }
+
+    /** True if {@code p} is on the side of the opening its hinged leaf swings to (never for the other kinds). */
+    public boolean onSwingSide(Point p) {
+        if (kind != Kind.HINGED) {
+            return false;
+        }
+        double cross = (to.x() - from.x()) * (p.y() - from.y()) - (to.y() - from.y()) * (p.x() - from.x());
+        return swing == Side.LEFT ? cross > 0 : cross < 0;
+    }
+
+    /**
+     * How far from the opening's centre, on the line across it, a body must stay on {@code p}'s side
+     * so that the moving leaf passes {@code reach} metres clear of its centre: a hinged leaf sweeps a
+     * quarter circle of the opening's width about its hinge (on its swing side only), a revolving one
+     * a circle of half the width about its pivot, a sliding one only the wall's line (0).
+     */
+    public double clearDistance(Point p, double reach) {
+        double w = width();
+        return switch (kind) {
+            case HINGED -> onSwingSide(p) ? Math.sqrt((w + reach) * (w + reach) - (w / 2) * (w / 2)) : 0;
+            case ROTATING -> w / 2 + reach;
+            case SLIDING -> 0;
+        };
+    }
 }

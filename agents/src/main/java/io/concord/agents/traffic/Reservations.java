@@ -1,5 +1,6 @@
 package io.concord.agents.traffic;
 
+import io.concord.agents.map.Area;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
 
@@ -27,7 +28,9 @@ import java.util.TreeMap;
  * chair has nothing to do (it is moved out of the way) or waits in turn, round a cycle, for the
  * first (a deadlock: one chair of the cycle is moved out of the way). Out of the way is the
  * nearest node nobody stands on, that no waiting route and no granted route's end needs, reached
- * over free nodes; a dead end (a room, a parking place) is preferred to a corridor.
+ * over free nodes, and not in a patient's room (an area of kind {@code room}); a dead end or one of
+ * the map's parking places is preferred to a corridor. Only a deadlock with no such node anywhere
+ * sends a chair into a room.
  *
  * <p>Every call returns what the chairs are to be told, in order, as {@link Outcome}s; each answer
  * to a request carries the request's ticket (the agent's message, for its reply).
@@ -66,6 +69,8 @@ final class Reservations<T> {
     }
 
     private final HospitalMap map;
+    /** The map's parking places: where an idle chair stands best. */
+    private final Set<Integer> parking;
     private final boolean enabled;
     /** node -> the chairs holding it (two only when a chair's report contradicts a grant). */
     private final Map<Integer, Set<String>> holders = new TreeMap<>();
@@ -91,6 +96,7 @@ final class Reservations<T> {
      */
     public Reservations(HospitalMap map, boolean rules) {
         this.map = map;
+        this.parking = Set.copyOf(map.parking());
         this.enabled = rules;
     }
 
@@ -310,7 +316,7 @@ final class Reservations<T> {
             boolean moved = false;
             for (String h : in) {
                 if (idle.contains(h) && !aside.containsKey(h)) {
-                    moved |= makeWay(h, "it is idle in the way of " + local(w.chair()), out);
+                    moved |= makeWay(h, "it is idle in the way of " + local(w.chair()), false, out);
                 }
             }
             if (moved) {
@@ -324,7 +330,8 @@ final class Reservations<T> {
             List<String> victims = new ArrayList<>(cycle);
             victims.sort(null);
             for (String v : victims) {
-                if (makeWay(v, "deadlock " + cycle.stream().map(Reservations::local).toList(), out)) {
+                String why = "deadlock " + cycle.stream().map(Reservations::local).toList();
+                if (makeWay(v, why, false, out) || makeWay(v, why, true, out)) {
                     break;
                 }
             }
@@ -390,10 +397,11 @@ final class Reservations<T> {
 
     /**
      * Sends a chair to the nearest node that nobody holds and nobody's route needs, over nodes
-     * nobody else holds; prefers dead ends. False if there is no such node now, or the chair is
-     * silent or was never heard (it could not be told).
+     * nobody else holds, in a room only if {@code intoRooms}; prefers dead ends and parking places.
+     * False if there is no such node now, or the chair is silent or was never heard (it could not be
+     * told).
      */
-    private boolean makeWay(String chair, String why, List<Outcome<T>> out) {
+    private boolean makeWay(String chair, String why, boolean intoRooms, List<Outcome<T>> out) {
         List<Integer> mine = held.get(chair);
         if (mine == null || mine.isEmpty() || !heard.containsKey(chair) || silent.contains(chair)) {
             return false;
@@ -426,8 +434,8 @@ final class Reservations<T> {
                 hops.put(v, hops.get(u) + 1);
                 prev.put(v, u);
                 q.add(v);
-                if (!needed.contains(v)) {
-                    int score = hops.get(v) + (map.edgesAt(v).size() == 1 ? 0 : 2);
+                if (!needed.contains(v) && (intoRooms || !inRoom(v))) {
+                    int score = hops.get(v) + (map.edgesAt(v).size() == 1 || parking.contains(v) ? 0 : 2);
                     if (score < bestScore || (score == bestScore && v < best)) {
                         best = v;
                         bestScore = score;
@@ -453,6 +461,11 @@ final class Reservations<T> {
         out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
         out.add(new Note<>(local(chair) + " makes way from node " + from + " to node " + best + " (" + why + ")"));
         return true;
+    }
+
+    private boolean inRoom(int node) {
+        String area = map.node(node).area();
+        return area != null && map.area(area).kind() == Area.Kind.ROOM;
     }
 
     private boolean freeFor(String chair, int node) {

@@ -1,7 +1,10 @@
 package io.concord.agents.control;
 
 import io.concord.agents.chair.Pose;
+import io.concord.agents.map.Door;
 import io.concord.agents.map.Edge;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Point;
 import io.concord.agents.proto.Content;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
@@ -129,5 +132,32 @@ class DoorClientTest {
         client.keepAlive(ahead);
         assertEquals(1, sent.size(), "D9 has no agent");
         assertEquals("INFORM " + Content.of("here").with("body", "chair1") + " to door-D1@test", said(sent.get(0)));
+    }
+
+    /**
+     * A wide hinged leaf swinging towards the chair: it waits beyond the leaf's quarter circle
+     * (1.6 m about the hinge, 2.68 m from the centre for a 1.2 m reach), where a fixed 2.3 m let the
+     * leaf open to 0.1 m of it; on the far side of the same door, and at a sliding door, 2.3 m.
+     */
+    @Test
+    void theChairWaitsOutsideTheLeafsSwingComputedFromTheLeaf() {
+        HospitalMap wide = HospitalMap.parse("""
+                {"format": "concord-hospital-map/1", "name": "wide door",
+                 "walls": [{"id": "outer", "path": [[0, 0], [10, 0], [10, 9], [0, 9], [0, 0]]},
+                           {"id": "w1", "from": [0, 4], "to": [4.2, 4]}, {"id": "w2", "from": [5.8, 4], "to": [10, 4]}],
+                 "doors": [{"id": "D1", "kind": "hinged", "from": [4.2, 4], "to": [5.8, 4], "hinge": "from", "swing": "right"}],
+                 "nodes": [{"id": 1, "at": [5, 0.8]}, {"id": 2, "at": [5, 7.5]}],
+                 "edges": [{"from": 1, "to": 2, "door": "D1"}]}
+                """, "test");
+        Edge through = wide.edge(1, 2).orElseThrow();
+        assertEquals(2.683, wide.door("D1").clearDistance(new Point(5, 1), DoorClient.LEAF_REACH_M), 0.001);
+        DoorClient swingSide = new DoorClient(out, wide, "chair1", (from, why) -> closed.add(from + ": " + why), s -> { });
+        assertTrue(swingSide.mayEnter(through, 1, south(2.8)), "beyond the swing");
+        assertFalse(swingSide.mayEnter(through, 1, south(2.5)), "2.5 m from a 1.6 m leaf swinging this way: it waits");
+        DoorClient farSide = new DoorClient(out, wide, "chair1", (from, why) -> closed.add(from + ": " + why), s -> { });
+        Pose north = new Pose(5, 4 + 2.5, -Math.PI / 2);
+        assertTrue(farSide.mayEnter(through, 2, north), "the leaf swings away from it: 2.3 m is enough");
+        assertEquals(0, new Door("S", Door.Kind.SLIDING, new Point(0, 0), new Point(2, 0), Door.End.FROM, null)
+                .clearDistance(new Point(1, -1), 1.2));
     }
 }

@@ -99,6 +99,22 @@ class ReservationsTest {
         assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4))), granted, "b goes once a has left 3");
     }
 
+    /** Out of the way is never a patient's room: with the room off the corridor a room, the chair goes to the corridor's end. */
+    @Test
+    void anIdleChairNeverStepsAsideIntoAPatientsRoom() {
+        Reservations<String> rooms = new Reservations<>(HospitalMap.parse(CORRIDOR.replace("""
+                    {"id": "ward", "kind": "ward", "name": "Ward", "polygon": [[0, 0], [30, 0], [30, 12], [0, 12]]}
+                """, """
+                    {"id": "ward", "kind": "ward", "name": "Ward", "polygon": [[0, 0], [30, 0], [30, 12], [0, 12]]},
+                    {"id": "r6", "kind": "room", "ward": "ward", "polygon": [[10, 7], [16, 7], [16, 12], [10, 12]]}
+                """), "test"), true);
+        rooms.heard("a", 0);
+        rooms.idle("a", List.of(3), 0);
+        rooms.heard("b", 0);
+        List<MakeWay> moved = only(rooms.reserve("b", "tb", List.of(1), List.of(1, 2, 3), false, 0), MakeWay.class);
+        assertEquals(List.of(new MakeWay<>("a", 3, 5, List.of(4, 5))), moved, "the corridor's end, not room 6 one hop away");
+    }
+
     @Test
     void aDeadlockIsFoundAndBrokenByMovingOneChairOfIt() {
         reserve("a", "ta", List.of(2), List.of(2), 0); // a stands on 2
