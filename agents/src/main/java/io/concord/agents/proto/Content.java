@@ -8,10 +8,13 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * The content of the wheelchair agents' messages: a verb, then {@code key=value} fields, each
+ * The text of the wheelchair agents' messages: a verb, then {@code key=value} fields, each
  * separated by "; " ({@code transport; task=T1; from=3; to=9; priority=3; unload=60}). Values
  * hold no ';' and no line breaks; lists are comma-separated. Written for people reading the
  * conversation as much as for the agents. See docs/wheelchair-protocol.md.
+ *
+ * <p>The low-level reader and writer of {@link WheelchairMessage}, the one codec: agents speak in
+ * its records, not in this text.
  */
 public final class Content {
     private final String verb;
@@ -37,6 +40,11 @@ public final class Content {
         }
         fields.put(key, v);
         return this;
+    }
+
+    /** Adds a field if its value is not null. */
+    public Content maybe(String key, Object value) {
+        return value == null ? this : with(key, value);
     }
 
     private static String fmt(double d) {
