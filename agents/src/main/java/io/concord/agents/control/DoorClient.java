@@ -4,8 +4,10 @@ import io.concord.agents.chair.Pose;
 import io.concord.agents.map.Door;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage.Here;
+import io.concord.agents.proto.WheelchairMessage.OpenRequest;
+import io.concord.agents.proto.WheelchairMessage.Passed;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -90,7 +92,7 @@ final class DoorClient {
             req.addReceiver(agent);
             req.setProtocol(FipaProtocols.REQUEST);
             req.setOntology(Services.ONTOLOGY);
-            req.setContent(Content.of("open").with("body", body).toString());
+            req.setContent(new OpenRequest(body).encode());
             say.accept("asks door " + id + " to open");
             doors.ask(req, OPEN_TIMEOUT_MS).thenAccept(a -> answered(id, fromId, a));
         }
@@ -123,7 +125,7 @@ final class DoorClient {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(agent);
                 m.setOntology(Services.ONTOLOGY);
-                m.setContent(Content.of("passed").with("body", body).toString());
+                m.setContent(new Passed(body).encode());
                 doors.send(m);
             }
             passing = null;
@@ -146,7 +148,7 @@ final class DoorClient {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(agent);
                 m.setOntology(Services.ONTOLOGY);
-                m.setContent(Content.of("here").with("body", body).toString());
+                m.setContent(new Here(body, null).encode());
                 doors.send(m);
             }
         }
