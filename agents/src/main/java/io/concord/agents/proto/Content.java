@@ -58,23 +58,6 @@ public final class Content {
     }
 
     /**
-     * Reads a message's content; a REQUEST whose content does not read is answered NOT_UNDERSTOOD
-     * with what is wrong, through {@code send}.
-     *
-     * @return the content, or {@code null} if it does not read
-     */
-    public static Content parseOrAnswer(io.concord.core.acl.AclMessage m, java.util.function.Consumer<io.concord.core.acl.AclMessage> send) {
-        try {
-            return parse(m.getContent());
-        } catch (IllegalArgumentException e) {
-            if (m.getPerformative() == io.concord.core.acl.Performative.REQUEST) {
-                send.accept(m.createReply().setPerformative(io.concord.core.acl.Performative.NOT_UNDERSTOOD).setContent(e.getMessage()));
-            }
-            return null;
-        }
-    }
-
-    /**
      * Reads a content.
      *
      * @throws IllegalArgumentException naming what is wrong
