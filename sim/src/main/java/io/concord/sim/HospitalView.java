@@ -12,8 +12,11 @@ import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.Node;
 import io.concord.agents.map.Point;
 import io.concord.agents.map.Wall;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Done;
+import io.concord.agents.proto.WheelchairMessage.Failed;
+import io.concord.agents.proto.WheelchairMessage.TransportRequest;
 import io.concord.console.ConsoleView;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
@@ -74,9 +77,10 @@ public final class HospitalView implements ConsoleView {
                 };
                 String detail = a.detail();
                 try {
-                    Content c = Content.parse(m.getContent());
-                    detail = c.get("chair") != null && !c.get("chair").isEmpty() ? "by " + c.get("chair")
-                            : c.get("reason") != null ? c.get("reason") : detail;
+                    WheelchairMessage w = WheelchairMessage.decode(m);
+                    String chair = w instanceof Done d ? d.chair() : w instanceof Failed f ? f.chair() : null;
+                    String reason = w instanceof WheelchairMessage.Reasoned r ? r.reason() : null;
+                    detail = chair != null && !chair.isEmpty() ? "by " + chair : reason != null ? reason : detail;
                 } catch (IllegalArgumentException e) {
                     detail = "an answer that is not content: " + m.getContent();
                 }
@@ -94,7 +98,7 @@ public final class HospitalView implements ConsoleView {
             AclMessage m = new AclMessage(Performative.REQUEST);
             m.addReceiver(medical.get(0).aid());
             m.setConversationId(id);
-            m.setContent(Content.of("transport").with("from", from).with("to", to).with("priority", priority).with("unload", unloadS).toString());
+            m.setContent(new TransportRequest(from, to, priority, unloadS).encode());
             send(m);
             asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.get(0).aid().localName()));
             if (asked.size() > 200) {

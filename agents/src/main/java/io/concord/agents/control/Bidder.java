@@ -1,11 +1,14 @@
 package io.concord.agents.control;
 
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Plan;
+import io.concord.agents.proto.WheelchairMessage.Proposal;
+import io.concord.agents.proto.WheelchairMessage.Refused;
+import io.concord.agents.proto.WheelchairMessage.TransportCall;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CompletableFuture;
@@ -67,11 +70,10 @@ final class Bidder {
     void evaluate(AclMessage cfp) {
         Task t;
         try {
-            Content c = Content.parse(cfp.getContent());
-            t = new Task(c.text("task"), c.integer("from"), c.integer("to"), c.number("priority", 0), c.number("unload", 0), cfp);
+            TransportCall c = WheelchairMessage.decode(cfp, TransportCall.class);
+            t = new Task(c.task(), c.from(), c.to(), c.priority(), c.unload(), cfp);
         } catch (IllegalArgumentException e) {
-            respond.accept(cfp, cfp.createReply().setPerformative(Performative.REFUSE)
-                    .setContent(Content.of("refuse").with("reason", e.getMessage()).toString()));
+            respond.accept(cfp, cfp.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
             return;
         }
         queue.add(t);
@@ -97,28 +99,26 @@ final class Bidder {
                     refuse(t, ControlAgent.reason(second, "no plan from node " + t.from + " to node " + t.to), false);
                     return;
                 }
-                propose(t, Content.parse(first.getContent()), Content.parse(second.getContent()));
+                propose(t, WheelchairMessage.decode(first, Plan.class), WheelchairMessage.decode(second, Plan.class));
             });
         });
     }
 
-    private void propose(Task t, Content toPickup, Content toDropoff) {
-        t.toPickup = nodes(toPickup);
-        t.toDropoff = nodes(toDropoff);
-        double approach = toPickup.number("length") / EST_SPEED_MPS + EST_DOOR_S * toPickup.list("doors").size();
-        t.pathS = toDropoff.number("length") / EST_SPEED_MPS + EST_DOOR_S * toDropoff.list("doors").size();
+    private void propose(Task t, Plan toPickup, Plan toDropoff) {
+        t.toPickup = toPickup.nodes();
+        t.toDropoff = toDropoff.nodes();
+        double approach = toPickup.length() / EST_SPEED_MPS + EST_DOOR_S * toPickup.doors().size();
+        t.pathS = toDropoff.length() / EST_SPEED_MPS + EST_DOOR_S * toDropoff.doors().size();
         t.estimateS = approach + t.unloadS + t.pathS + t.unloadS;
         t.costS = queue.seconds() + t.estimateS;
         // The proposals still open that the cost counts, each with its seconds: the Medical agent
         // takes out those another chair has won.
-        String pending = queue.pendingBesides(t);
+        List<Proposal.Pending> pending = queue.pendingBesides(t);
         t.state = TaskView.State.PROPOSED;
         say.accept(String.format(Locale.ROOT, "proposes for %s: cost %.1f s, path %.1f s, unload %.0f s", t.id, t.costS,
                 t.pathS, t.unloadS));
-        Content proposal = Content.of("proposal").with("task", t.id).with("cost", t.costS).with("path", t.pathS)
-                .with("unload", t.unloadS);
         respond.accept(t.cfp, t.cfp.createReply().setPerformative(Performative.PROPOSE).setContent(
-                (pending.isEmpty() ? proposal : proposal.with("pending", pending)).toString()));
+                new Proposal(t.id, t.costS, t.pathS, t.unloadS, pending).encode()));
     }
 
     /** Refuses a task; {@code unavailable}: the chair cannot drive now, and may later. */
@@ -127,17 +127,7 @@ final class Bidder {
         t.reason = why;
         queue.remove(t);
         say.accept("refuses " + t.id + ": " + why);
-        Content c = Content.of("refuse").with("task", t.id).with("reason", why);
         respond.accept(t.cfp, t.cfp.createReply().setPerformative(Performative.REFUSE)
-                .setContent((unavailable ? c.with("unavailable", "true") : c).toString()));
-    }
-
-    /** The node ids of a plan. */
-    static List<Integer> nodes(Content plan) {
-        List<Integer> out = new ArrayList<>();
-        for (String s : plan.list("nodes")) {
-            out.add(Integer.parseInt(s));
-        }
-        return out;
+                .setContent(new Refused(t.id, null, why, unavailable).encode()));
     }
 }

@@ -8,8 +8,12 @@ import io.concord.agents.chair.ChairSupervisor;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Asks;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.MakeWay;
+import io.concord.agents.proto.WheelchairMessage.NoRoute;
+import io.concord.agents.proto.WheelchairMessage.PlanRequest;
+import io.concord.agents.proto.WheelchairMessage.ResumeRequest;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
@@ -139,11 +143,10 @@ public class ControlAgent extends Agent implements ChairListener {
         doors = new DoorClient(ports, map, chair.name(), (from, why) -> runner.replan(from, why), this::say);
         traffic = new TrafficClient(ports, (node, why) -> runner.refusedByTraffic(node, why));
         runner = new TaskRunner(supervisor, map, tasks, follower, doors, traffic, ports);
-        Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
-                .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), m -> runner.makeWay(m));
+        MessageTemplate ours = MessageTemplate.matchOntology(Services.ONTOLOGY);
+        Inbox.each(this, ours.and(WheelchairMessage.matching(MakeWay.class)), m -> runner.makeWay(m));
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.CANCEL), m -> runner.cancelled(m));
-        Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
-                .and(m -> m.getContent() != null && m.getContent().startsWith("resume")), holds::resumeAsked);
+        Inbox.each(this, ours.and(WheelchairMessage.matching(ResumeRequest.class)), holds::resumeAsked);
         // A chair that waits (loading, queued) is not silent: it keeps its doors' sessions alive.
         addBehaviour(new TickerBehaviour(this, KEEPALIVE_MS) {
             @Override
@@ -187,12 +190,8 @@ public class ControlAgent extends Agent implements ChairListener {
         if (m == null) {
             return "the planner did not answer";
         }
-        try {
-            String r = Content.parse(m.getContent()).get("reason");
-            return r != null ? r : dflt;
-        } catch (IllegalArgumentException e) {
-            return dflt;
-        }
+        String r = WheelchairMessage.reasonOf(m);
+        return r != null ? r : dflt;
     }
 
     // ---- execution ------------------------------------------------------------------------------
@@ -310,10 +309,9 @@ public class ControlAgent extends Agent implements ChairListener {
             req.addReceiver(planner);
             req.setProtocol(FipaProtocols.REQUEST);
             req.setOntology(Services.ONTOLOGY);
-            req.setContent(Content.of("plan").with("task", task).with("from", from).with("to", to).toString());
+            req.setContent(new PlanRequest(task, from, to, null).encode());
             return asks.ask(req, 10_000, null).thenApply(a -> a != null ? a
-                    : new AclMessage(Performative.FAILURE).setContent(Content.of("no-route")
-                            .with("reason", "the planner did not answer within 10 s").toString()));
+                    : new AclMessage(Performative.FAILURE).setContent(new NoRoute(null, "the planner did not answer within 10 s").encode()));
         }
 
         @Override

@@ -5,8 +5,10 @@ import io.concord.agents.map.Door;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.Point;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage.Here;
+import io.concord.agents.proto.WheelchairMessage.OpenRequest;
+import io.concord.agents.proto.WheelchairMessage.Passed;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -93,7 +95,7 @@ final class DoorClient {
             req.addReceiver(agent);
             req.setProtocol(FipaProtocols.REQUEST);
             req.setOntology(Services.ONTOLOGY);
-            req.setContent(Content.of("open").with("body", body).toString());
+            req.setContent(new OpenRequest(body).encode());
             say.accept("asks door " + id + " to open");
             doors.ask(req, OPEN_TIMEOUT_MS).thenAccept(a -> answered(id, fromId, a));
         }
@@ -127,7 +129,7 @@ final class DoorClient {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(agent);
                 m.setOntology(Services.ONTOLOGY);
-                m.setContent(Content.of("passed").with("body", body).toString());
+                m.setContent(new Passed(body).encode());
                 doors.send(m);
             }
             passing = null;
@@ -150,7 +152,7 @@ final class DoorClient {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(agent);
                 m.setOntology(Services.ONTOLOGY);
-                m.setContent(Content.of("here").with("body", body).toString());
+                m.setContent(new Here(body, null).encode());
                 doors.send(m);
             }
         }

@@ -2,8 +2,13 @@ package io.concord.agents.control;
 
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.ChairSupervisor;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Paused;
+import io.concord.agents.proto.WheelchairMessage.Refused;
+import io.concord.agents.proto.WheelchairMessage.ResumeRequest;
+import io.concord.agents.proto.WheelchairMessage.Resumed;
+import io.concord.agents.proto.WheelchairMessage.Resuming;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 
@@ -100,7 +105,7 @@ final class Holds implements ChairSupervisor.Observer {
         if (active != null) {
             active.paused = hold + "; " + how;
             agent.say("pauses " + active.id + ": " + hold + "; " + how);
-            notice(active, "paused", active.paused);
+            notice(active, new Paused(active.id, supervisor.name(), active.paused, agentResumes()));
         } else {
             agent.say("holds " + supervisor.name() + ": " + hold);
         }
@@ -113,7 +118,7 @@ final class Holds implements ChairSupervisor.Observer {
         if (active != null && active.paused != null) {
             active.paused = null;
             agent.say("resumes " + active.id + " (decided by " + decidedBy + ")");
-            notice(active, "resumed", "decided by " + decidedBy);
+            notice(active, new Resumed(active.id, supervisor.name(), "decided by " + decidedBy, agentResumes()));
         }
     }
 
@@ -121,7 +126,7 @@ final class Holds implements ChairSupervisor.Observer {
     void keepAlive() {
         Task active = agent.active();
         if (active != null && active.paused != null) {
-            notice(active, "paused", active.paused);
+            notice(active, new Paused(active.id, supervisor.name(), active.paused, agentResumes()));
         }
     }
 
@@ -153,7 +158,7 @@ final class Holds implements ChairSupervisor.Observer {
     void resumeAsked(AclMessage m) {
         String by = m.getSender().localName();
         try {
-            String b = Content.parse(m.getContent()).get("by");
+            String b = WheelchairMessage.decode(m, ResumeRequest.class).by();
             if (b != null && !b.isBlank()) {
                 by = b + " via " + m.getSender().localName();
             }
@@ -162,12 +167,16 @@ final class Holds implements ChairSupervisor.Observer {
         }
         String why = resume(by);
         agent.send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
-                .setContent(why == null ? Content.of("resuming").with("chair", supervisor.name()).toString()
-                        : Content.of("refuse").with("reason", why).toString()));
+                .setContent(why == null ? new Resuming(supervisor.name()).encode() : Refused.because(why).encode()));
+    }
+
+    /** Whether the agent resumes by itself after the hold (else an operator does). */
+    private boolean agentResumes() {
+        return supervisor.hold().cause().agentMayResume();
     }
 
     /** Tells whoever gave the task how it stands (paused, resumed), outside the contract's conversation. */
-    private void notice(Task t, String what, String reason) {
+    private void notice(Task t, WheelchairMessage notice) {
         if (t.accept == null) {
             return;
         }
@@ -175,8 +184,7 @@ final class Holds implements ChairSupervisor.Observer {
         m.addReceiver(t.accept.getSender());
         m.setOntology(Services.ONTOLOGY);
         m.setConversationId(t.cfp.getConversationId() + "/status");
-        m.setContent(Content.of(what).with("task", t.id).with("chair", supervisor.name()).with("reason", reason)
-                .with("resume", supervisor.hold().cause().agentMayResume() ? "agent" : "operator").toString());
+        m.setContent(notice.encode());
         agent.send(m);
     }
 }

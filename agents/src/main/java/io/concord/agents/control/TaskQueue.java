@@ -1,10 +1,10 @@
 package io.concord.agents.control;
 
+import io.concord.agents.proto.WheelchairMessage.Proposal;
 import io.concord.core.acl.AclMessage;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 import java.util.function.IntSupplier;
 
 /**
@@ -116,16 +116,15 @@ final class TaskQueue {
         return s;
     }
 
-    /** The proposals still open other than {@code t}'s, as {@code id:seconds,...}, or an empty string. */
-    String pendingBesides(Task t) {
-        StringBuilder pending = new StringBuilder();
+    /** The proposals still open other than {@code t}'s, with their seconds. */
+    List<Proposal.Pending> pendingBesides(Task t) {
+        List<Proposal.Pending> pending = new ArrayList<>();
         for (Task o : tasks) {
             if (o != t && o.state == TaskView.State.PROPOSED) {
-                pending.append(pending.length() == 0 ? "" : ",").append(o.id).append(':')
-                        .append(String.format(Locale.ROOT, "%.1f", o.estimateS));
+                pending.add(new Proposal.Pending(o.id, o.estimateS));
             }
         }
-        return pending.toString();
+        return pending;
     }
 
     List<TaskView> views() {

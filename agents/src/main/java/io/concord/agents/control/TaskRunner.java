@@ -6,8 +6,13 @@ import io.concord.agents.chair.ChairSupervisor;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Blocked;
+import io.concord.agents.proto.WheelchairMessage.Done;
+import io.concord.agents.proto.WheelchairMessage.Failed;
+import io.concord.agents.proto.WheelchairMessage.MakeWay;
+import io.concord.agents.proto.WheelchairMessage.Plan;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -264,7 +269,7 @@ final class TaskRunner {
             AclMessage m = new AclMessage(Performative.INFORM);
             m.addReceiver(planner);
             m.setOntology(Services.ONTOLOGY);
-            m.setContent(Content.of("blocked").with("from", fromId).with("to", toId).toString());
+            m.setContent(new Blocked(fromId, toId).encode());
             send(m);
         }
     }
@@ -299,9 +304,9 @@ final class TaskRunner {
         int from;
         int to;
         try {
-            Content c = Content.parse(m.getContent());
-            from = c.integer("from");
-            to = c.integer("to");
+            MakeWay order = WheelchairMessage.decode(m, MakeWay.class);
+            from = order.from();
+            to = order.to();
             if (!map.hasNode(to)) {
                 throw new IllegalArgumentException("no node " + to);
             }
@@ -343,7 +348,7 @@ final class TaskRunner {
                 }
                 return;
             }
-            List<Integer> nodes = Bidder.nodes(Content.parse(a.getContent()));
+            List<Integer> nodes = WheelchairMessage.decode(a, Plan.class).nodes();
             say("makes way for another chair: to node " + to + " by " + nodes);
             follow(nodes);
         });
@@ -403,7 +408,7 @@ final class TaskRunner {
                 finish(t, ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal) + (why == null ? "" : " (" + why + ")"));
                 return;
             }
-            List<Integer> nodes = Bidder.nodes(Content.parse(a.getContent()));
+            List<Integer> nodes = WheelchairMessage.decode(a, Plan.class).nodes();
             // Back along the edge it was on to the node the new plan starts from (the last one it
             // reached), then along the new plan: never across the floor off the graph.
             follower.followBack(nodes);
@@ -453,12 +458,10 @@ final class TaskRunner {
         if (t.accept != null) {
             AclMessage reply = t.accept.createReply();
             if (failure == null) {
-                reply.setPerformative(Performative.INFORM).setContent(Content.of("done").with("task", t.id)
-                        .with("node", t.to).toString());
+                reply.setPerformative(Performative.INFORM).setContent(new Done(t.id, t.to, null, null).encode());
                 say("done: " + t.id);
             } else {
-                reply.setPerformative(Performative.FAILURE).setContent(Content.of("failed").with("task", t.id)
-                        .with("reason", failure).toString());
+                reply.setPerformative(Performative.FAILURE).setContent(new Failed(t.id, null, failure).encode());
                 say("fails " + t.id + ": " + failure);
             }
             send(reply);

@@ -1,7 +1,12 @@
 package io.concord.agents.control;
 
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Failure;
+import io.concord.agents.proto.WheelchairMessage.Here;
+import io.concord.agents.proto.WheelchairMessage.Idle;
+import io.concord.agents.proto.WheelchairMessage.Release;
+import io.concord.agents.proto.WheelchairMessage.Reserve;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -73,8 +78,7 @@ final class TrafficClient {
         req.addReceiver(traffic);
         req.setProtocol(FipaProtocols.REQUEST);
         req.setOntology(Services.ONTOLOGY);
-        Content c = Content.of("reserve").with("at", join(at)).with("path", join(route));
-        req.setContent((aside ? c.with("aside", "true") : c).toString());
+        req.setContent(new Reserve(at, route, aside).encode());
         port.ask(req, WAIT_MS).thenAccept(a -> {
             if (seq != mine) {
                 return;
@@ -88,16 +92,13 @@ final class TrafficClient {
                 held.addAll(route);
                 return;
             }
-            String why = reasonOf(a);
-            if (why.equals("make-way") || why.startsWith("superseded")) {
+            String why = WheelchairMessage.reasonOf(a);
+            if (why == null) {
+                why = "";
+            } else if (why.equals("make-way") || why.startsWith("superseded")) {
                 return;
             }
-            int node = -1;
-            try {
-                node = (int) Content.parse(a.getContent()).number("node", -1);
-            } catch (IllegalArgumentException e) {
-                // no node named
-            }
+            int node = WheelchairMessage.tryDecode(a).map(w -> w instanceof Failure f && f.node() != null ? f.node() : -1).orElse(-1);
             onRefused.accept(node, a.getPerformative() + ": " + why);
         });
         return false;
@@ -123,7 +124,7 @@ final class TrafficClient {
             if (!still.contains(n)) {
                 held.remove(n);
                 if (traffic != null) {
-                    inform(traffic, Content.of("release").with("node", n));
+                    inform(traffic, new Release(n));
                 }
             }
         }
@@ -134,7 +135,7 @@ final class TrafficClient {
         held.remove(node);
         AID traffic = traffic();
         if (traffic != null) {
-            inform(traffic, Content.of("release").with("node", node));
+            inform(traffic, new Release(node));
         }
     }
 
@@ -151,14 +152,14 @@ final class TrafficClient {
         idleAt = node;
         held.clear();
         held.add(node);
-        inform(traffic, Content.of("idle").with("at", node));
+        inform(traffic, new Idle(List.of(node)));
     }
 
     /** The chair is alive and stands on {@code at} (a silent chair keeps only where it stands). */
     void alive(List<Integer> at) {
         AID traffic = traffic();
         if (traffic != null) {
-            inform(traffic, Content.of("here").with("at", join(at)));
+            inform(traffic, new Here(null, at));
         }
     }
 
@@ -167,28 +168,11 @@ final class TrafficClient {
         return List.copyOf(held);
     }
 
-    private void inform(AID traffic, Content c) {
+    private void inform(AID traffic, WheelchairMessage w) {
         AclMessage m = new AclMessage(Performative.INFORM);
         m.addReceiver(traffic);
         m.setOntology(Services.ONTOLOGY);
-        m.setContent(c.toString());
+        m.setContent(w.encode());
         port.send(m);
-    }
-
-    private static String reasonOf(AclMessage m) {
-        try {
-            String r = Content.parse(m.getContent()).get("reason");
-            return r == null ? "" : r;
-        } catch (IllegalArgumentException e) {
-            return "";
-        }
-    }
-
-    static String join(List<Integer> nodes) {
-        StringBuilder b = new StringBuilder();
-        for (int n : nodes) {
-            b.append(b.length() == 0 ? "" : ",").append(n);
-        }
-        return b.toString();
     }
 }

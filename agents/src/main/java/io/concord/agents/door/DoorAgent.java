@@ -1,8 +1,19 @@
 package io.concord.agents.door;
 
 import io.concord.agents.map.Door;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.DoorOpen;
+import io.concord.agents.proto.WheelchairMessage.DoorState;
+import io.concord.agents.proto.WheelchairMessage.Failure;
+import io.concord.agents.proto.WheelchairMessage.OpenQueued;
+import io.concord.agents.proto.WheelchairMessage.OpenRequest;
+import io.concord.agents.proto.WheelchairMessage.PassConfirmed;
+import io.concord.agents.proto.WheelchairMessage.PassRequest;
+import io.concord.agents.proto.WheelchairMessage.Passed;
+import io.concord.agents.proto.WheelchairMessage.Here;
+import io.concord.agents.proto.WheelchairMessage.Refused;
+import io.concord.agents.proto.WheelchairMessage.StateQuery;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
@@ -30,7 +41,7 @@ import java.util.function.Consumer;
  * (a planner asked it to let the chair pass), keeps a session per chair that lapses when the
  * chair goes silent, and lets one chair through the doorway at a time.
  *
- * <p>Conversations (content: {@link Content}):
+ * <p>Conversations (content: {@link WheelchairMessage}):
  * <ul>
  *   <li>REQUEST {@code pass; chair=<control AID>} from a planner: CONFIRM, or REFUSE while offline.</li>
  *   <li>REQUEST {@code open} from a chair: AGREE, then INFORM {@code open} when the door is open and
@@ -89,7 +100,7 @@ public class DoorAgent extends Agent {
         subscriptions = new SubscriptionResponder(this, SubscriptionResponder.createMessageTemplate()) {
             @Override
             protected AclMessage handleSubscription(AclMessage subscribe) throws RefuseException {
-                return subscribe.createReply().setPerformative(Performative.AGREE).setContent(stateContent().toString());
+                return subscribe.createReply().setPerformative(Performative.AGREE).setContent(stateContent().encode());
             }
         };
         addBehaviour(subscriptions);
@@ -128,62 +139,79 @@ public class DoorAgent extends Agent {
         return queue.stream().map(Waiting::chair).toList();
     }
 
-    private Content stateContent() {
-        return Content.of("state").with("door", door.id()).with("state", state.name().toLowerCase(Locale.ROOT))
-                .with("open", fmt(door.openFraction())).with("x", fmt(door.spec().centre().x()))
-                .with("y", fmt(door.spec().centre().y()));
+    private DoorState stateContent() {
+        return new DoorState(door.id(), state.name().toLowerCase(Locale.ROOT), door.openFraction(), door.spec().centre().x(),
+                door.spec().centre().y());
     }
 
     private void handle(AclMessage m) {
-        Content c = Content.parseOrAnswer(m, this::send);
-        if (c == null) {
-            return;
-        }
-        String sender = m.getSender().name();
-        long now = currentTimeMillis();
-        if (m.getPerformative() == Performative.INFORM) {
-            if (c.is("passed") && sender.equals(passing)) {
+        WheelchairMessage.dispatch(m, handler, this::send);
+    }
+
+    private final WheelchairMessage.Handler handler = new WheelchairMessage.Handler() {
+        @Override
+        public void onPassed(Passed p, AclMessage m) {
+            String sender = m.getSender().name();
+            if (sender.equals(passing)) {
                 log.accept(door.id() + ": " + sender + " passed");
                 passing = null;
-                sessions.put(sender, now);
-            } else if (c.is("here") && sessions.containsKey(sender)) {
-                sessions.put(sender, now);
+                sessions.put(sender, currentTimeMillis());
             }
-            return;
         }
-        switch (c.verb()) {
-            case "pass" -> {
-                if (state == State.OFFLINE) {
-                    send(m.createReply().setPerformative(Performative.REFUSE).setContent(
-                            Content.of("refuse").with("door", door.id()).with("reason", "offline").toString()));
-                    return;
-                }
-                String chair = c.get("chair") != null ? c.get("chair") : sender;
-                sessions.put(chair, now);
-                log.accept(door.id() + ": confirms passage to " + chair);
-                send(m.createReply().setPerformative(Performative.CONFIRM).setContent(
-                        Content.of("pass").with("door", door.id()).with("chair", chair).toString()));
+
+        @Override
+        public void onHere(Here h, AclMessage m) {
+            String sender = m.getSender().name();
+            if (sessions.containsKey(sender)) {
+                sessions.put(sender, currentTimeMillis());
             }
-            case "open" -> {
-                if (state == State.OFFLINE) {
-                    send(m.createReply().setPerformative(Performative.FAILURE).setContent(
-                            Content.of("failure").with("door", door.id()).with("reason", "offline").toString()));
-                } else if (!sessions.containsKey(sender)) {
-                    send(m.createReply().setPerformative(Performative.REFUSE).setContent(Content.of("refuse")
-                            .with("door", door.id()).with("reason", "not confirmed, or the session lapsed: "
-                                    + "a planner must ask this door to let the chair pass").toString()));
-                } else {
-                    sessions.put(sender, now);
-                    queue.removeIf(w -> w.chair().equals(sender));
-                    queue.add(new Waiting(sender, c.get("body"), m));
-                    send(m.createReply().setPerformative(Performative.AGREE).setContent(
-                            Content.of("open").with("door", door.id()).with("queue", queue.size()).toString()));
-                }
-            }
-            case "state" -> send(m.createReply().setPerformative(Performative.INFORM).setContent(stateContent().toString()));
-            default -> send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD)
-                    .setContent("unknown request '" + c.verb() + "'; a door knows pass, open, state"));
         }
+
+        @Override
+        public void onPassRequest(PassRequest p, AclMessage m) {
+            if (state == State.OFFLINE) {
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(
+                        new Refused(null, door.id(), "offline", false).encode()));
+                return;
+            }
+            String chair = p.chair() != null ? p.chair() : m.getSender().name();
+            sessions.put(chair, currentTimeMillis());
+            log.accept(door.id() + ": confirms passage to " + chair);
+            send(m.createReply().setPerformative(Performative.CONFIRM).setContent(new PassConfirmed(door.id(), chair).encode()));
+        }
+
+        @Override
+        public void onOpenRequest(OpenRequest o, AclMessage m) {
+            String sender = m.getSender().name();
+            if (state == State.OFFLINE) {
+                send(m.createReply().setPerformative(Performative.FAILURE).setContent(offline()));
+            } else if (!sessions.containsKey(sender)) {
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(new Refused(null, door.id(),
+                        "not confirmed, or the session lapsed: a planner must ask this door to let the chair pass", false).encode()));
+            } else {
+                sessions.put(sender, currentTimeMillis());
+                queue.removeIf(w -> w.chair().equals(sender));
+                queue.add(new Waiting(sender, o.body(), m));
+                send(m.createReply().setPerformative(Performative.AGREE).setContent(new OpenQueued(door.id(), queue.size()).encode()));
+            }
+        }
+
+        @Override
+        public void onStateQuery(StateQuery q, AclMessage m) {
+            send(m.createReply().setPerformative(Performative.INFORM).setContent(stateContent().encode()));
+        }
+
+        @Override
+        public void unknown(String verb, AclMessage m) {
+            if (m.getPerformative() == Performative.REQUEST) {
+                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD)
+                        .setContent("unknown request '" + verb + "'; a door knows pass, open, state"));
+            }
+        }
+    };
+
+    private String offline() {
+        return new Failure(door.id(), null, "offline").encode();
     }
 
     private void tick() {
@@ -193,8 +221,7 @@ public class DoorAgent extends Agent {
             if (state != State.OFFLINE) {
                 state = State.OFFLINE;
                 for (Waiting w : queue) {
-                    send(w.request().createReply().setPerformative(Performative.FAILURE).setContent(
-                            Content.of("failure").with("door", door.id()).with("reason", "offline").toString()));
+                    send(w.request().createReply().setPerformative(Performative.FAILURE).setContent(offline()));
                 }
                 queue.clear();
                 passing = null;
@@ -215,7 +242,7 @@ public class DoorAgent extends Agent {
         }
         if (state != before) {
             log.accept(door.id() + ": " + before.name().toLowerCase(Locale.ROOT) + " -> " + state.name().toLowerCase(Locale.ROOT));
-            AclMessage n = new AclMessage(Performative.INFORM).setContent(stateContent().toString());
+            AclMessage n = new AclMessage(Performative.INFORM).setContent(stateContent().encode());
             for (var s : new ArrayList<>(subscriptions.getSubscriptions())) {
                 s.notify(n.copy());
             }
@@ -301,8 +328,7 @@ public class DoorAgent extends Agent {
         passing = head.chair();
         passingSinceMs = now;
         log.accept(door.id() + ": open for " + passing);
-        send(head.request().createReply().setPerformative(Performative.INFORM).setContent(
-                Content.of("open").with("door", door.id()).toString()));
+        send(head.request().createReply().setPerformative(Performative.INFORM).setContent(new DoorOpen(door.id()).encode()));
     }
 
     private void closeWhenIdle(long now) {

@@ -1,7 +1,18 @@
 package io.concord.agents.medical;
 
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Award;
+import io.concord.agents.proto.WheelchairMessage.Done;
+import io.concord.agents.proto.WheelchairMessage.Failed;
+import io.concord.agents.proto.WheelchairMessage.Paused;
+import io.concord.agents.proto.WheelchairMessage.Proposal;
+import io.concord.agents.proto.WheelchairMessage.Refused;
+import io.concord.agents.proto.WheelchairMessage.Rejection;
+import io.concord.agents.proto.WheelchairMessage.Resumed;
+import io.concord.agents.proto.WheelchairMessage.TransportCall;
+import io.concord.agents.proto.WheelchairMessage.TransportRequest;
+import io.concord.agents.proto.WheelchairMessage.Withdrawal;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
@@ -107,29 +118,27 @@ public class MedicalAgent extends Agent {
     @Override
     protected void setup() {
         Platform.of(this).register(ServiceDescription.of(Services.MEDICAL, getLocalName()));
-        Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
-                .and(m -> m.getContent() != null && (m.getContent().startsWith("paused") || m.getContent().startsWith("resumed"))),
-                this::statusNotice);
-        MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST)
-                .and(m -> m.getContent() != null && m.getContent().startsWith("transport"));
+        Inbox.each(this, MessageTemplate.matchOntology(Services.ONTOLOGY).and(WheelchairMessage.matching(Paused.class)
+                .or(WheelchairMessage.matching(Resumed.class))), this::statusNotice);
+        MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST).and(WheelchairMessage.matching(TransportRequest.class));
         Inbox.each(this, requests, m -> {
-            Content c;
             try {
-                c = Content.parse(m.getContent());
-                int from = c.integer("from");
-                int to = c.integer("to");
-                double tp = c.number("priority", 0);
-                double unload = c.number("unload", 60);
+                TransportRequest r = WheelchairMessage.decode(m, TransportRequest.class);
+                // The AGREE is the request's own text.
                 send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));
-                transportOnLoop(from, to, tp, unload).thenAccept(o -> send(m.createReply()
-                        .setPerformative(o.done() ? Performative.INFORM : Performative.FAILURE)
-                        .setContent(Content.of(o.done() ? "done" : "failed").with("task", o.task())
-                                .with("chair", o.chair()).with("reason", o.reason() == null ? "" : o.reason()).toString())));
+                transportOnLoop(r.from(), r.to(), r.priority(), r.unload()).thenAccept(o -> send(m.createReply()
+                        .setPerformative(o.done() ? Performative.INFORM : Performative.FAILURE).setContent(answer(o))));
             } catch (IllegalArgumentException e) {
-                send(m.createReply().setPerformative(Performative.REFUSE).setContent(
-                        Content.of("refuse").with("reason", e.getMessage()).toString()));
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
             }
         });
+    }
+
+    /** How a transport asked for by REQUEST ended, for whoever asked. */
+    private static String answer(Outcome o) {
+        String chair = String.valueOf(o.chair()); // "null" when no chair took it: the text it has always been
+        String reason = o.reason() == null ? "" : o.reason();
+        return o.done() ? new Done(o.task(), null, chair, reason).encode() : new Failed(o.task(), chair, reason).encode();
     }
 
     /**
@@ -175,15 +184,25 @@ public class MedicalAgent extends Agent {
 
     /** A chair's word on a task it holds: paused (it gets longer for its result) or resumed. */
     private void statusNotice(AclMessage m) {
-        Content c;
         try {
-            c = Content.parse(m.getContent());
+            WheelchairMessage.decode(m).to(new WheelchairMessage.Handler() {
+                @Override
+                public void onPaused(Paused p, AclMessage m) {
+                    statusNotice(m, p.task(), " paused on ", p.reason());
+                }
+
+                @Override
+                public void onResumed(Resumed r, AclMessage m) {
+                    statusNotice(m, r.task(), " resumed on ", r.reason());
+                }
+            }, m);
         } catch (IllegalArgumentException e) {
             log.accept(getLocalName() + ": ignores a malformed notice from " + m.getSender().name() + ": " + e.getMessage());
-            return;
         }
-        String task = c.get("task");
-        AclMessage winner = task == null ? null : awarded.get(task);
+    }
+
+    private void statusNotice(AclMessage m, String task, String what, String reason) {
+        AclMessage winner = awarded.get(task);
         if (winner == null || !winner.getSender().equals(m.getSender())) {
             return; // not a task of this agent's, or not that chair's any more
         }
@@ -191,8 +210,7 @@ public class MedicalAgent extends Agent {
         if (cn != null) {
             cn.postponeResultDeadline(settings.pausedMs());
         }
-        log.accept(getLocalName() + ": " + task + (c.is("paused") ? " paused on " : " resumed on ") + m.getSender().localName()
-                + ": " + c.get("reason"));
+        log.accept(getLocalName() + ": " + task + what + m.getSender().localName() + ": " + reason);
     }
 
     /**
@@ -231,7 +249,7 @@ public class MedicalAgent extends Agent {
         cancel.setProtocol(FipaProtocols.CONTRACT_NET);
         cancel.setOntology(Services.ONTOLOGY);
         cancel.setConversationId(winner.getConversationId());
-        cancel.setContent(Content.of("transport").with("task", task).toString());
+        cancel.setContent(new Withdrawal(task).encode());
         send(cancel);
     }
 
@@ -260,11 +278,11 @@ public class MedicalAgent extends Agent {
         cfp.setOntology(Services.ONTOLOGY);
         cfp.setConversationId(id + "-" + attempt);
         cfp.setReplyByEpochMs(currentTimeMillis() + settings.auctionMs());
-        cfp.setContent(Content.of("transport").with("task", id).with("from", from).with("to", to)
-                .with("priority", tp).with("unload", unload).toString());
+        cfp.setContent(new TransportCall(id, from, to, tp, unload).encode());
         log.accept(getLocalName() + ": CFP " + id + (attempt > 1 ? " (auction " + attempt + ")" : "") + " to " + chairs.size() + " chairs");
         ContractNetInitiator cn = new ContractNetInitiator(this, cfp) {
             private AclMessage winner;
+            private double winnerCost;
 
             @Override
             protected void handleAllResponses(List<AclMessage> responses, List<AclMessage> acceptances) {
@@ -272,14 +290,15 @@ public class MedicalAgent extends Agent {
                 for (AclMessage r : responses) {
                     if (r.getPerformative() == Performative.PROPOSE) {
                         try {
-                            Content p = Content.parse(r.getContent());
-                            double cost = p.number("cost") - lostElsewhere(p, r.getSender().localName());
-                            double u = utility(cost, p.number("path"), p.number("unload"), tp);
+                            Proposal p = WheelchairMessage.decode(r, Proposal.class);
+                            double cost = p.cost() - lostElsewhere(p, r.getSender().localName());
+                            double u = utility(cost, p.path(), p.unload(), tp);
                             log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f, path %.1f: U = %.3f",
-                                    getLocalName(), r.getSender().localName(), cost, p.number("path"), u));
+                                    getLocalName(), r.getSender().localName(), cost, p.path(), u));
                             if (u > best) {
                                 best = u;
                                 winner = r;
+                                winnerCost = p.cost();
                             }
                         } catch (IllegalArgumentException e) {
                             log.accept(getLocalName() + ": ignores a malformed proposal from " + r.getSender().name() + ": " + e.getMessage());
@@ -294,16 +313,14 @@ public class MedicalAgent extends Agent {
                     }
                     AclMessage reply = r.createReply();
                     if (r == winner) {
-                        reply.setPerformative(Performative.ACCEPT_PROPOSAL);
+                        reply.setPerformative(Performative.ACCEPT_PROPOSAL).setContent(new Award(id).encode());
                         awarded.put(id, r);
                         winners.put(id, r.getSender().localName());
-                        double cost = Content.parse(r.getContent()).number("cost");
-                        reply.setReplyByEpochMs(currentTimeMillis() + (long) (cost * 3_000) + 120_000);
+                        reply.setReplyByEpochMs(currentTimeMillis() + (long) (winnerCost * 3_000) + 120_000);
                         log.accept(getLocalName() + ": ACCEPT " + r.getSender().localName() + " for " + id);
                     } else {
-                        reply.setPerformative(Performative.REJECT_PROPOSAL);
+                        reply.setPerformative(Performative.REJECT_PROPOSAL).setContent(new Rejection(id).encode());
                     }
-                    reply.setContent(Content.of("transport").with("task", id).toString());
                     acceptances.add(reply);
                 }
                 if (winner == null) {
@@ -387,42 +404,26 @@ public class MedicalAgent extends Agent {
 
     /** A refusal from a chair that cannot drive now and may later (offline, e-stop, paused). */
     private static boolean unavailable(AclMessage refuse) {
-        try {
-            return "true".equals(Content.parse(refuse.getContent()).get("unavailable"));
-        } catch (IllegalArgumentException e) {
-            return false;
-        }
+        return WheelchairMessage.tryDecode(refuse).map(w -> w instanceof Refused r && r.unavailable()).orElse(false);
     }
 
     /**
      * Seconds of a proposal's cost that count other proposals of that chair which another chair
      * has won since (auctions run at once, and each chair counts all its open proposals).
      */
-    private double lostElsewhere(Content proposal, String chair) {
+    private double lostElsewhere(Proposal proposal, String chair) {
         double s = 0;
-        for (String item : proposal.list("pending")) {
-            int colon = item.lastIndexOf(':');
-            if (colon < 0) {
-                continue;
-            }
-            String winner = winners.get(item.substring(0, colon));
+        for (Proposal.Pending p : proposal.pending()) {
+            String winner = winners.get(p.task());
             if (winner != null && !winner.equals(chair)) {
-                try {
-                    s += Double.parseDouble(item.substring(colon + 1));
-                } catch (NumberFormatException e) {
-                    // not a number: nothing taken out
-                }
+                s += p.seconds();
             }
         }
         return s;
     }
 
     private static String reasonOf(AclMessage m) {
-        try {
-            String r = Content.parse(m.getContent()).get("reason");
-            return r == null ? m.getContent() : r;
-        } catch (IllegalArgumentException e) {
-            return String.valueOf(m.getContent());
-        }
+        String r = WheelchairMessage.reasonOf(m);
+        return r == null ? String.valueOf(m.getContent()) : r;
     }
 }

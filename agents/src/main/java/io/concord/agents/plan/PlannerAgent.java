@@ -2,8 +2,17 @@ package io.concord.agents.plan;
 
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Asks;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Blocked;
+import io.concord.agents.proto.WheelchairMessage.DoorState;
+import io.concord.agents.proto.WheelchairMessage.NoRoute;
+import io.concord.agents.proto.WheelchairMessage.PassRequest;
+import io.concord.agents.proto.WheelchairMessage.Plan;
+import io.concord.agents.proto.WheelchairMessage.PlanAgreed;
+import io.concord.agents.proto.WheelchairMessage.PlanRequest;
+import io.concord.agents.proto.WheelchairMessage.Refused;
+import io.concord.agents.proto.WheelchairMessage.StateQuery;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
@@ -81,10 +90,8 @@ public class PlannerAgent extends Agent {
             }
         });
         discoverDoors();
-        MessageTemplate mine = MessageTemplate.matchPerformative(Performative.REQUEST)
-                .or(MessageTemplate.matchPerformative(Performative.INFORM).and(m -> m.getContent() != null
-                        && m.getContent().startsWith("blocked")));
-        Inbox.each(this, mine, this::handle);
+        MessageTemplate mine = MessageTemplate.matchPerformative(Performative.REQUEST).or(WheelchairMessage.matching(Blocked.class));
+        Inbox.each(this, mine, m -> WheelchairMessage.dispatch(m, handler, this::send));
     }
 
     /** The doors it knows, with their last state. */
@@ -105,7 +112,7 @@ public class PlannerAgent extends Agent {
                 sub.addReceiver(agent);
                 sub.setProtocol("fipa-subscribe");
                 sub.setOntology(Services.ONTOLOGY);
-                sub.setContent(Content.of("state").toString());
+                sub.setContent(new StateQuery().encode());
                 var handle = Conversations.subscribe(this, sub, n -> update(id, agent, n));
                 handle.agreed().thenAccept(agree -> update(id, agent, agree));
             }
@@ -114,60 +121,41 @@ public class PlannerAgent extends Agent {
 
     private void update(String id, AID agent, AclMessage m) {
         try {
-            Content c = Content.parse(m.getContent());
-            if (c.is("state")) {
-                doors.put(id, new KnownDoor(id, agent, c.text("state")));
-            }
+            doors.put(id, new KnownDoor(id, agent, WheelchairMessage.decode(m, DoorState.class).state()));
         } catch (IllegalArgumentException e) {
             // a door that says something else keeps its last state
         }
     }
 
-    private void handle(AclMessage m) {
-        Content c;
-        try {
-            c = Content.parse(m.getContent());
-        } catch (IllegalArgumentException e) {
-            send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent(e.getMessage()));
-            return;
+    private final WheelchairMessage.Handler handler = new WheelchairMessage.Handler() {
+        @Override
+        public void onBlocked(Blocked b, AclMessage m) {
+            String key = AStar.edgeKey(b.from(), b.to());
+            blocked.put(key, currentTimeMillis() + BLOCKED_MS);
+            log.accept(getLocalName() + ": edge " + key + " blocked, planned around for " + BLOCKED_MS / 1000 + " s");
         }
-        if (m.getPerformative() == Performative.INFORM) {
-            try {
-                String key = AStar.edgeKey(c.integer("from"), c.integer("to"));
-                blocked.put(key, currentTimeMillis() + BLOCKED_MS);
-                log.accept(getLocalName() + ": edge " + key + " blocked, planned around for " + BLOCKED_MS / 1000 + " s");
-            } catch (IllegalArgumentException e) {
-                // ignore a malformed report
+
+        @Override
+        public void onPlanRequest(PlanRequest p, AclMessage m) {
+            for (int n : new int[] {p.from(), p.to()}) {
+                if (!map.hasNode(n)) {
+                    send(m.createReply().setPerformative(Performative.REFUSE).setContent(
+                            new Refused(p.task(), null, "unknown node " + n, false).encode()));
+                    return;
+                }
             }
-            return;
+            send(m.createReply().setPerformative(Performative.AGREE).setContent(new PlanAgreed(p.task()).encode()));
+            String forChair = p.chair() != null ? p.chair() : m.getSender().name();
+            plan(m, p.task(), p.from(), p.to(), forChair, new HashSet<>(), ATTEMPTS);
         }
-        if (!c.is("plan")) {
-            send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("a planner knows 'plan'"));
-            return;
-        }
-        int from;
-        int to;
-        String task;
-        try {
-            from = c.integer("from");
-            to = c.integer("to");
-            task = c.text("task");
-        } catch (IllegalArgumentException e) {
-            send(m.createReply().setPerformative(Performative.REFUSE).setContent(
-                    Content.of("refuse").with("reason", e.getMessage()).toString()));
-            return;
-        }
-        for (int n : new int[] {from, to}) {
-            if (!map.hasNode(n)) {
-                send(m.createReply().setPerformative(Performative.REFUSE).setContent(Content.of("refuse")
-                        .with("task", task).with("reason", "unknown node " + n).toString()));
-                return;
+
+        @Override
+        public void unknown(String verb, AclMessage m) {
+            if (m.getPerformative() == Performative.REQUEST) {
+                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("a planner knows 'plan'"));
             }
         }
-        send(m.createReply().setPerformative(Performative.AGREE).setContent(Content.of("plan").with("task", task).toString()));
-        String forChair = c.get("chair") != null ? c.get("chair") : m.getSender().name();
-        plan(m, task, from, to, forChair, new HashSet<>(), ATTEMPTS);
-    }
+    };
 
     private void plan(AclMessage request, String task, int from, int to, String forChair, Set<String> refused, int attempts) {
         long now = currentTimeMillis();
@@ -177,8 +165,7 @@ public class PlannerAgent extends Agent {
             String why = "no route from " + from + " to " + to + (refused.isEmpty() ? "" : " avoiding doors " + refused)
                     + (blocked.isEmpty() ? "" : " and blocked edges " + blocked.keySet());
             log.accept(getLocalName() + ": " + task + " " + why);
-            send(request.createReply().setPerformative(Performative.FAILURE).setContent(
-                    Content.of("no-route").with("task", task).with("reason", why).toString()));
+            send(request.createReply().setPerformative(Performative.FAILURE).setContent(new NoRoute(task, why).encode()));
             return;
         }
         // Every door on the plan must let the chair pass.
@@ -189,7 +176,7 @@ public class PlannerAgent extends Agent {
             ask.addReceiver(k.agent());
             ask.setProtocol("fipa-request");
             ask.setOntology(Services.ONTOLOGY);
-            ask.setContent(Content.of("pass").with("chair", forChair).with("task", task).toString());
+            ask.setContent(new PassRequest(forChair, task).encode());
             answers.add(asks.ask(ask, 2_000, null));
         }
         CompletableFuture.allOf(answers.toArray(new CompletableFuture[0])).thenRun(() -> {
@@ -203,14 +190,13 @@ public class PlannerAgent extends Agent {
             if (now2.size() == refused.size()) {
                 log.accept(getLocalName() + ": " + task + " plan " + r.nodes() + " through " + r.doors() + " confirmed");
                 AclMessage inform = request.createReply().setPerformative(Performative.INFORM_REF);
-                inform.setContent(Content.of("plan").with("task", task).with("nodes", join(r.nodes()))
-                        .with("doors", String.join(",", r.doors())).with("length", r.lengthM()).toString());
+                inform.setContent(new Plan(task, r.nodes(), r.doors(), r.lengthM()).encode());
                 send(inform);
             } else if (attempts > 1) {
                 plan(request, task, from, to, forChair, now2, attempts - 1);
             } else {
-                send(request.createReply().setPerformative(Performative.FAILURE).setContent(Content.of("no-route")
-                        .with("task", task).with("reason", "doors " + now2 + " refused the chair").toString()));
+                send(request.createReply().setPerformative(Performative.FAILURE).setContent(
+                        new NoRoute(task, "doors " + now2 + " refused the chair").encode()));
             }
         });
     }
@@ -218,16 +204,5 @@ public class PlannerAgent extends Agent {
     private boolean doorUsable(String id) {
         KnownDoor k = doors.get(id);
         return k != null && !k.state().equals("offline");
-    }
-
-    private static String join(List<Integer> nodes) {
-        StringBuilder b = new StringBuilder();
-        for (int n : nodes) {
-            if (b.length() > 0) {
-                b.append(',');
-            }
-            b.append(n);
-        }
-        return b.toString();
     }
 }

@@ -8,10 +8,13 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * The content of the wheelchair agents' messages: a verb, then {@code key=value} fields, each
+ * The text of the wheelchair agents' messages: a verb, then {@code key=value} fields, each
  * separated by "; " ({@code transport; task=T1; from=3; to=9; priority=3; unload=60}). Values
  * hold no ';' and no line breaks; lists are comma-separated. Written for people reading the
  * conversation as much as for the agents. See docs/wheelchair-protocol.md.
+ *
+ * <p>The low-level reader and writer of {@link WheelchairMessage}, the one codec: agents speak in
+ * its records, not in this text.
  */
 public final class Content {
     private final String verb;
@@ -39,6 +42,11 @@ public final class Content {
         return this;
     }
 
+    /** Adds a field if its value is not null. */
+    public Content maybe(String key, Object value) {
+        return value == null ? this : with(key, value);
+    }
+
     private static String fmt(double d) {
         return String.format(Locale.ROOT, "%.2f", d);
     }
@@ -46,23 +54,6 @@ public final class Content {
     private static void check(String s, String what) {
         if (s == null || s.isEmpty() || s.indexOf(';') >= 0 || s.indexOf('=') >= 0 || s.indexOf(' ') >= 0) {
             throw new IllegalArgumentException("a content " + what + " must be a word, got '" + s + "'");
-        }
-    }
-
-    /**
-     * Reads a message's content; a REQUEST whose content does not read is answered NOT_UNDERSTOOD
-     * with what is wrong, through {@code send}.
-     *
-     * @return the content, or {@code null} if it does not read
-     */
-    public static Content parseOrAnswer(io.concord.core.acl.AclMessage m, java.util.function.Consumer<io.concord.core.acl.AclMessage> send) {
-        try {
-            return parse(m.getContent());
-        } catch (IllegalArgumentException e) {
-            if (m.getPerformative() == io.concord.core.acl.Performative.REQUEST) {
-                send.accept(m.createReply().setPerformative(io.concord.core.acl.Performative.NOT_UNDERSTOOD).setContent(e.getMessage()));
-            }
-            return null;
         }
     }
 

@@ -1,8 +1,17 @@
 package io.concord.agents.traffic;
 
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.proto.Content;
 import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Failure;
+import io.concord.agents.proto.WheelchairMessage.Granted;
+import io.concord.agents.proto.WheelchairMessage.Here;
+import io.concord.agents.proto.WheelchairMessage.Idle;
+import io.concord.agents.proto.WheelchairMessage.MakeWay;
+import io.concord.agents.proto.WheelchairMessage.Refused;
+import io.concord.agents.proto.WheelchairMessage.Release;
+import io.concord.agents.proto.WheelchairMessage.Reserve;
+import io.concord.agents.proto.WheelchairMessage.ReserveWaits;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
@@ -13,7 +22,6 @@ import io.concord.core.agent.TickerBehaviour;
 import io.concord.layers.Platform;
 import io.concord.layers.platform.ServiceDescription;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -114,59 +122,77 @@ public class TrafficAgent extends Agent {
     // ---- messages -------------------------------------------------------------------------------
 
     private void handle(AclMessage m) {
-        Content c = Content.parseOrAnswer(m, this::send);
-        if (c == null) {
-            return;
+        try {
+            WheelchairMessage.dispatch(m, handler, this::send);
+        } catch (IllegalArgumentException e) {
+            // a route off the map
+            if (m.getPerformative() == Performative.REQUEST) {
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
+            }
         }
+    }
+
+    /** What a chair says; every word counts as a sign of life. */
+    private final WheelchairMessage.Handler handler = new WheelchairMessage.Handler() {
+        @Override
+        public void onReserve(Reserve r, AclMessage m) {
+            long now = heard(m);
+            tell(rules.reserve(m.getSender().name(), m, onMap("at", r.at()), onMap("path", r.path()), r.aside(), now));
+        }
+
+        @Override
+        public void onRelease(Release r, AclMessage m) {
+            long now = heard(m);
+            tell(rules.release(m.getSender().name(), r.node(), now));
+        }
+
+        @Override
+        public void onIdle(Idle i, AclMessage m) {
+            long now = heard(m);
+            tell(rules.idle(m.getSender().name(), onMap("at", i.at()), now));
+        }
+
+        @Override
+        public void onHere(Here h, AclMessage m) {
+            heard(m);
+            if (h.at() != null) {
+                rules.standing(m.getSender().name(), onMap("at", h.at()));
+            }
+        }
+
+        @Override
+        public void unknown(String verb, AclMessage m) {
+            heard(m);
+            if (m.getPerformative() == Performative.REQUEST) {
+                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("traffic knows reserve, release, idle, here"));
+            }
+        }
+    };
+
+    /** The chair has said something: its holds are kept. Returns the time now. */
+    private long heard(AclMessage m) {
         String chair = m.getSender().name();
         aids.put(chair, m.getSender());
         long now = currentTimeMillis();
         tell(rules.heard(chair, now));
-        try {
-            switch (c.verb()) {
-                case "reserve" -> tell(rules.reserve(chair, m, nodes(c, "at"), nodes(c, "path"), "true".equals(c.get("aside")), now));
-                case "release" -> tell(rules.release(chair, c.integer("node"), now));
-                case "idle" -> tell(rules.idle(chair, nodes(c, "at"), now));
-                case "here" -> {
-                    if (c.get("at") != null) {
-                        rules.standing(chair, nodes(c, "at"));
-                    }
-                }
-                default -> {
-                    if (m.getPerformative() == Performative.REQUEST) {
-                        send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD)
-                                .setContent("traffic knows reserve, release, idle, here"));
-                    }
-                }
-            }
-        } catch (IllegalArgumentException e) {
-            if (m.getPerformative() == Performative.REQUEST) {
-                send(m.createReply().setPerformative(Performative.REFUSE).setContent(
-                        Content.of("refuse").with("reason", e.getMessage()).toString()));
-            }
-        }
+        return now;
     }
 
     /** Tells the chairs what the rules decided, in order. */
     private void tell(List<Reservations.Outcome<AclMessage>> outcomes) {
         for (Reservations.Outcome<AclMessage> o : outcomes) {
             if (o instanceof Reservations.Granted<AclMessage> g) {
-                send(g.ticket().createReply().setPerformative(Performative.INFORM)
-                        .setContent(Content.of("granted").with("path", join(g.path())).toString()));
+                send(g.ticket().createReply().setPerformative(Performative.INFORM).setContent(new Granted(g.path()).encode()));
             } else if (o instanceof Reservations.Waiting<AclMessage> w) {
-                send(w.ticket().createReply().setPerformative(Performative.AGREE)
-                        .setContent(Content.of("reserve").with("held-by", String.join(",", w.heldBy())).toString()));
+                send(w.ticket().createReply().setPerformative(Performative.AGREE).setContent(new ReserveWaits(w.heldBy()).encode()));
             } else if (o instanceof Reservations.Failed<AclMessage> f) {
-                Content why = Content.of("failure");
-                if (f.node() != null) {
-                    why = why.with("node", f.node());
-                }
-                send(f.ticket().createReply().setPerformative(Performative.FAILURE).setContent(why.with("reason", f.reason()).toString()));
+                send(f.ticket().createReply().setPerformative(Performative.FAILURE).setContent(
+                        new Failure(null, f.node(), f.reason()).encode()));
             } else if (o instanceof Reservations.MakeWay<AclMessage> mw) {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(aids.get(mw.chair()));
                 m.setOntology(Services.ONTOLOGY);
-                m.setContent(Content.of("make-way").with("from", mw.from()).with("to", mw.to()).with("path", join(mw.path())).toString());
+                m.setContent(new MakeWay(mw.from(), mw.to(), mw.path()).encode());
                 send(m);
             } else if (o instanceof Reservations.Note<AclMessage> n) {
                 log.accept(getLocalName() + ": " + n.text());
@@ -174,28 +200,13 @@ public class TrafficAgent extends Agent {
         }
     }
 
-    private List<Integer> nodes(Content c, String key) {
-        List<Integer> out = new ArrayList<>();
-        for (String s : c.list(key)) {
-            int n;
-            try {
-                n = Integer.parseInt(s.trim());
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException(key + ": '" + s + "' is not a node id");
-            }
+    /** The nodes, each checked to be on the map. */
+    private List<Integer> onMap(String key, List<Integer> nodes) {
+        for (int n : nodes) {
             if (!map.hasNode(n)) {
                 throw new IllegalArgumentException(key + ": there is no node " + n + " on " + map.name());
             }
-            out.add(n);
         }
-        return out;
-    }
-
-    private static String join(List<Integer> nodes) {
-        StringBuilder b = new StringBuilder();
-        for (int n : nodes) {
-            b.append(b.length() == 0 ? "" : ",").append(n);
-        }
-        return b.toString();
+        return nodes;
     }
 }

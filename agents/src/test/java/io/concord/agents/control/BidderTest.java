@@ -58,7 +58,7 @@ class BidderTest {
         for (int i = 0; i < doors; i++) {
             d.add("D" + i);
         }
-        return new AclMessage(Performative.INFORM_REF).setContent(Content.of("plan").with("nodes", n).with("length", lengthM)
+        return new AclMessage(Performative.INFORM_REF).setContent(Content.of("plan").with("task", "T").with("nodes", n).with("length", lengthM)
                 .with("doors", String.join(",", d)).toString());
     }
 

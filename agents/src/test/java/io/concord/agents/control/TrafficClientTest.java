@@ -87,11 +87,11 @@ class TrafficClientTest {
     @Test
     void aRouteThatCannotBeGrantedIsToldWithTheNodeInTheWayButAMakeWayOrASupersededWaitIsNot() {
         client.mayDrive(List.of(1, 2, 3), List.of(1), false);
-        answers.get(0).complete(answer(Performative.FAILURE, Content.of("refuse").with("node", 2).with("reason", "a silent chair stands there")));
+        answers.get(0).complete(answer(Performative.FAILURE, Content.of("failure").with("node", 2).with("reason", "a silent chair stands there")));
         assertEquals(List.of("2 FAILURE: a silent chair stands there"), refused);
 
         client.mayDrive(List.of(1, 5), List.of(1), false);
-        answers.get(1).complete(answer(Performative.FAILURE, Content.of("refuse").with("reason", "make-way")));
+        answers.get(1).complete(answer(Performative.FAILURE, Content.of("failure").with("reason", "make-way")));
         client.mayDrive(List.of(1, 6), List.of(1), false);
         answers.get(2).complete(answer(Performative.REFUSE, Content.of("refuse").with("reason", "superseded by a newer request")));
         assertEquals(1, refused.size(), refused.toString());
