@@ -119,10 +119,13 @@ class TrafficTest {
             int to = order.integer("to");
             assertFalse(List.of(19, 22, 7, 6, 5, 21).contains(to), "not onto b's route: " + to);
             assertFalse(gb.isDone(), "b waits while a stands on 7");
-            // a asks for the way there (stepping aside goes first), drives it, and leaves 7.
+            // a asks for the way there (stepping aside goes first), drives it, and leaves 7 and every
+            // node before the one it was sent to.
             String path = "7," + order.get("path");
             assertEquals(Performative.INFORM, answer(r, a.reserve("7", path, true)).getPerformative());
+            List<Integer> passed = order.list("path").stream().map(Integer::valueOf).filter(n -> n != to).toList();
             a.release(7);
+            passed.forEach(a::release);
             assertEquals(Performative.INFORM, answer(r, gb).getPerformative());
             assertEquals(1, r.hospital.traffic().moves());
         }
