@@ -154,6 +154,7 @@ public class ControlAgent extends Agent implements ChairListener {
                 doors.keepAlive(runner.doorsAhead());
                 traffic.alive(follower.standsOn());
                 holds.keepAlive();
+                runner.keepAlive();
             }
         });
         supervisor.setObserver(holds);

@@ -2,7 +2,6 @@ package io.concord.agents.control;
 
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.ChairSupervisor;
-import io.concord.agents.proto.Services;
 import io.concord.agents.proto.WheelchairMessage;
 import io.concord.agents.proto.WheelchairMessage.Paused;
 import io.concord.agents.proto.WheelchairMessage.Refused;
@@ -177,14 +176,9 @@ final class Holds implements ChairSupervisor.Observer {
 
     /** Tells whoever gave the task how it stands (paused, resumed), outside the contract's conversation. */
     private void notice(Task t, WheelchairMessage notice) {
-        if (t.accept == null) {
-            return;
+        AclMessage m = t.notice(notice);
+        if (m != null) {
+            agent.send(m);
         }
-        AclMessage m = new AclMessage(Performative.INFORM);
-        m.addReceiver(t.accept.getSender());
-        m.setOntology(Services.ONTOLOGY);
-        m.setConversationId(t.cfp.getConversationId() + "/status");
-        m.setContent(notice.encode());
-        agent.send(m);
     }
 }

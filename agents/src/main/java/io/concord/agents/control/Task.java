@@ -1,6 +1,9 @@
 package io.concord.agents.control;
 
+import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage;
 import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
 
 import java.util.List;
 
@@ -31,6 +34,38 @@ final class Task {
         this.priority = priority;
         this.unloadS = unloadS;
         this.cfp = cfp;
+    }
+
+    /** The phase a progress report names, or null outside the four phases of a transport under way. */
+    String phase() {
+        return switch (state) {
+            case TO_PICKUP -> "to-pickup";
+            case LOADING -> "loading";
+            case TO_DROPOFF -> "to-dropoff";
+            case UNLOADING -> "unloading";
+            default -> null;
+        };
+    }
+
+    /** True from the moment the chair is at the patient until the patient is off: nobody else may take it. */
+    boolean patientOnBoard() {
+        return state == TaskView.State.LOADING || state == TaskView.State.TO_DROPOFF || state == TaskView.State.UNLOADING;
+    }
+
+    /**
+     * A notice to whoever gave the task (paused, resumed, progress), in its status conversation,
+     * outside the contract's; null if the task was not given (never accepted).
+     */
+    AclMessage notice(WheelchairMessage notice) {
+        if (accept == null) {
+            return null;
+        }
+        AclMessage m = new AclMessage(Performative.INFORM);
+        m.addReceiver(accept.getSender());
+        m.setOntology(Services.ONTOLOGY);
+        m.setConversationId(cfp.getConversationId() + "/status");
+        m.setContent(notice.encode());
+        return m;
     }
 
     TaskView view() {

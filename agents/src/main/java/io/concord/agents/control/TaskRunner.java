@@ -13,6 +13,7 @@ import io.concord.agents.proto.WheelchairMessage.Done;
 import io.concord.agents.proto.WheelchairMessage.Failed;
 import io.concord.agents.proto.WheelchairMessage.MakeWay;
 import io.concord.agents.proto.WheelchairMessage.Plan;
+import io.concord.agents.proto.WheelchairMessage.Progress;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -60,16 +61,24 @@ final class TaskRunner {
     private String stopReason;
     /** The node it steps aside to for another chair (the traffic agent's order), or -1. */
     private int asideTo = -1;
+    /** What the chair waits for, said in its progress reports, or null while it drives. */
+    private String waitsFor;
+
+    private static final String WAITS_FOR_ROUTE = "its route (the traffic agent)";
 
     private final RouteFollower.Way way = new RouteFollower.Way() {
         @Override
         public boolean mayDrive(List<Integer> route, List<Integer> standsOn) {
-            return traffic.mayDrive(route, standsOn, asideTo >= 0);
+            boolean may = traffic.mayDrive(route, standsOn, asideTo >= 0);
+            waitsFor = may ? null : WAITS_FOR_ROUTE;
+            return may;
         }
 
         @Override
         public boolean mayEnter(Edge edge, int fromId, Pose pose) {
-            return doors.mayEnter(edge, fromId, pose);
+            boolean may = doors.mayEnter(edge, fromId, pose);
+            waitsFor = may ? null : "door " + edge.door();
+            return may;
         }
 
         @Override
@@ -83,6 +92,7 @@ final class TaskRunner {
                 doors.reached(edge);
             }
             traffic.keepOnly(rest);
+            progress(active);
         }
     };
 
@@ -144,6 +154,26 @@ final class TaskRunner {
         return agent.plan(planner, task, from, to);
     }
 
+    /**
+     * Tells whoever gave the task where it stands (its phase, the node last reached, what the chair
+     * waits for): at each phase, at each node, and every keep-alive while it is the chair's, so that a
+     * chair held up longer than it quoted is not taken for a silent one.
+     */
+    private void progress(Task t) {
+        if (t == null || t.phase() == null) {
+            return;
+        }
+        AclMessage m = t.notice(new Progress(t.id, chair.name(), t.phase(), follower.here(), waitsFor));
+        if (m != null) {
+            send(m);
+        }
+    }
+
+    /** The keep-alive: the task under way is reported, however long the chair has waited. */
+    void keepAlive() {
+        progress(active);
+    }
+
     /** One reading ({@code pose}: where the chair is believed to be; {@code now}: the chair's clock, in ms). */
     void reading(ChairReadings r, Pose pose, long now) {
         if (active == null && asideTo < 0) {
@@ -165,6 +195,7 @@ final class TaskRunner {
                 active.state = TaskView.State.TO_DROPOFF;
                 follow(active.toDropoff);
                 say("drives " + active.id + " to node " + active.to + " by " + active.toDropoff);
+                progress(active);
             }
             case UNLOADING -> {
                 finish(active, null);
@@ -246,6 +277,8 @@ final class TaskRunner {
         }
         active = t;
         t.state = TaskView.State.TO_PICKUP;
+        waitsFor = null;
+        progress(t);
         int here = follower.here();
         if (here != t.toPickup.get(0)) {
             // It was planned from where the queue was to end; the chair stands elsewhere.
@@ -333,6 +366,7 @@ final class TaskRunner {
         traffic.reset();
         asideTo = to;
         replanning = true;
+        waitsFor = "a new plan";
         chair.stop();
         plan(planner, "make-way", from, to).thenAccept(a -> {
             replanning = false;
@@ -363,6 +397,12 @@ final class TaskRunner {
         if (!m.getSender().equals(t.accept.getSender())) {
             say("ignores a CANCEL of " + t.id + " from " + m.getSender().name() + ": only " + t.accept.getSender().name()
                     + ", who gave it, may withdraw it");
+            return;
+        }
+        if (t.patientOnBoard()) {
+            // Nobody else can take the patient: the chair that has them drives on to the drop-off.
+            say("keeps " + t.id + " although " + m.getSender().localName() + " withdrew it: the patient is on board");
+            progress(t);
             return;
         }
         say("task " + t.id + " withdrawn by " + m.getSender().localName());
@@ -398,9 +438,11 @@ final class TaskRunner {
             return;
         }
         replanning = true;
+        waitsFor = "a new plan";
         chair.stop();
         plan(planner, t.id + "/replan", fromId, goal).thenAccept(a -> {
             replanning = false;
+            waitsFor = null;
             if (active != t) {
                 return;
             }
@@ -441,10 +483,12 @@ final class TaskRunner {
             active.state = TaskView.State.LOADING;
             pauseUntilMs = now + (long) (active.unloadS * 1000);
             say("at node " + active.from + ": the patient gets on (" + (long) active.unloadS + " s)");
+            progress(active);
         } else if (active.state == TaskView.State.TO_DROPOFF) {
             active.state = TaskView.State.UNLOADING;
             pauseUntilMs = now + (long) (active.unloadS * 1000);
             say("at node " + active.to + ": the patient gets off (" + (long) active.unloadS + " s)");
+            progress(active);
         }
     }
 

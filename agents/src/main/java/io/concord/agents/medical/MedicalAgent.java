@@ -6,6 +6,7 @@ import io.concord.agents.proto.WheelchairMessage.Award;
 import io.concord.agents.proto.WheelchairMessage.Done;
 import io.concord.agents.proto.WheelchairMessage.Failed;
 import io.concord.agents.proto.WheelchairMessage.Paused;
+import io.concord.agents.proto.WheelchairMessage.Progress;
 import io.concord.agents.proto.WheelchairMessage.Proposal;
 import io.concord.agents.proto.WheelchairMessage.Refused;
 import io.concord.agents.proto.WheelchairMessage.Rejection;
@@ -48,7 +49,10 @@ import java.util.function.Consumer;
  * dropped: it is auctioned again every {@link Settings#retryMs()} until a chair takes it, and
  * fails with "no chair can do it" only after {@link Settings#waitForChairMs()}. A chair that
  * pauses a task it holds (INFORM {@code paused}) gets {@link Settings#pausedMs()} more for its
- * result, renewed with each notice it sends.
+ * result, renewed with each notice it sends; a chair at work reports its progress (INFORM
+ * {@code progress}: each phase, each node, every 20 s) and gets {@link Settings#progressMs()} more
+ * from each report. Once the chair has the patient on board the task is never withdrawn nor
+ * auctioned again: the patient is no longer at the pick-up.
  */
 public class MedicalAgent extends Agent {
     /** The priorities of the dissertation: routine, urgent, emergency. */
@@ -74,11 +78,21 @@ public class MedicalAgent extends Agent {
      * @param waitForChairMs how long a task waits for a chair while every chair is unavailable
      * @param retryMs        how often it asks again meanwhile
      * @param pausedMs       how much longer a chair that paused a task gets, from each notice
+     * @param progressMs     how much longer a chair at work on a task gets, from each progress report
+     *                       (0: its quote alone sets the deadline)
      */
-    public record Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs) {
-        /** Two seconds to propose, three auctions, two minutes' wait for a chair asked every 5 s, 2 minutes from each pause notice. */
+    public record Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs, long progressMs) {
+        /**
+         * Two seconds to propose, three auctions, two minutes' wait for a chair asked every 5 s, 2
+         * minutes from each pause notice and from each progress report.
+         */
         public static Settings standard() {
-            return new Settings(2_000, 3, 120_000, 5_000, 120_000);
+            return new Settings(2_000, 3, 120_000, 5_000, 120_000, 120_000);
+        }
+
+        /** These settings with another {@code progressMs}. */
+        public Settings withProgressMs(long ms) {
+            return new Settings(auctionMs, maxAuctions, waitForChairMs, retryMs, pausedMs, ms);
         }
     }
 
@@ -97,6 +111,10 @@ public class MedicalAgent extends Agent {
     private long next;
     /** task -> its contract net now. */
     private final Map<String, ContractNetInitiator> running = new LinkedHashMap<>();
+    /** task -> the last progress report of the chair it was given to. */
+    private final Map<String, Progress> progress = new LinkedHashMap<>();
+    /** Tasks whose chair went silent with the patient on board: its result is still awaited, from that chair alone. */
+    private final Map<String, Consumer<AclMessage>> awaitedAboard = new LinkedHashMap<>();
     /** task -> auctions held (conversation ids stay unique while a task waits for a chair). */
     private final Map<String, Integer> auctionsHeld = new LinkedHashMap<>();
 
@@ -119,7 +137,17 @@ public class MedicalAgent extends Agent {
     protected void setup() {
         Platform.of(this).register(ServiceDescription.of(Services.MEDICAL, getLocalName()));
         Inbox.each(this, MessageTemplate.matchOntology(Services.ONTOLOGY).and(WheelchairMessage.matching(Paused.class)
-                .or(WheelchairMessage.matching(Resumed.class))), this::statusNotice);
+                .or(WheelchairMessage.matching(Resumed.class)).or(WheelchairMessage.matching(Progress.class))), this::statusNotice);
+        // The result of a task whose chair went silent with the patient on board (its contract ended).
+        Inbox.each(this, WheelchairMessage.matching(Done.class).or(WheelchairMessage.matching(Failed.class))
+                .and(m -> WheelchairMessage.tryDecode(m).map(w -> awaitedAboard.containsKey(taskOf(w))).orElse(false)),
+                m -> {
+                    WheelchairMessage w = WheelchairMessage.decode(m);
+                    AclMessage winner = awarded.get(taskOf(w));
+                    if (winner != null && winner.getSender().equals(m.getSender())) {
+                        resultAfterSilence(m, w);
+                    }
+                });
         MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST).and(WheelchairMessage.matching(TransportRequest.class));
         Inbox.each(this, requests, m -> {
             try {
@@ -174,6 +202,8 @@ public class MedicalAgent extends Agent {
             open.remove(id);
             awarded.remove(id);
             running.remove(id);
+            progress.remove(id);
+            awaitedAboard.remove(id);
             auctionsHeld.remove(id);
         });
         log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
@@ -195,6 +225,11 @@ public class MedicalAgent extends Agent {
                 public void onResumed(Resumed r, AclMessage m) {
                     statusNotice(m, r.task(), " resumed on ", r.reason());
                 }
+
+                @Override
+                public void onProgress(Progress p, AclMessage m) {
+                    progressReport(m, p);
+                }
             }, m);
         } catch (IllegalArgumentException e) {
             log.accept(getLocalName() + ": ignores a malformed notice from " + m.getSender().name() + ": " + e.getMessage());
@@ -214,6 +249,47 @@ public class MedicalAgent extends Agent {
     }
 
     /**
+     * A chair at work on a task it holds: it gets {@link Settings#progressMs()} more for its result
+     * from each report, however long it is held up; once it has the patient on board, the task is
+     * never withdrawn from it nor auctioned again.
+     */
+    private void progressReport(AclMessage m, Progress p) {
+        AclMessage winner = awarded.get(p.task());
+        if (winner == null || !winner.getSender().equals(m.getSender())) {
+            return; // not a task of this agent's, or not that chair's any more
+        }
+        Progress before = progress.put(p.task(), p);
+        ContractNetInitiator cn = running.get(p.task());
+        if (cn != null && settings.progressMs() > 0) {
+            cn.postponeResultDeadline(settings.progressMs());
+        }
+        if (before == null || !before.phase().equals(p.phase())) {
+            log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
+                    + (p.patientOnBoard() ? " (the patient is on board)" : ""));
+        }
+        if (awaitedAboard.containsKey(p.task())) {
+            log.accept(getLocalName() + ": " + m.getSender().localName() + " is heard again with " + p.task() + "'s patient at node " + p.node());
+        }
+    }
+
+    /** True if the chair given this task has said it has the patient on board. */
+    private boolean patientOnBoard(String task) {
+        Progress p = progress.get(task);
+        return p != null && p.patientOnBoard();
+    }
+
+    private static String taskOf(WheelchairMessage w) {
+        return w instanceof Done d ? d.task() : w instanceof Failed f ? f.task() : null;
+    }
+
+    /** The result, at last, of a task whose chair went silent with the patient on board. */
+    private void resultAfterSilence(AclMessage m, WheelchairMessage w) {
+        log.accept(getLocalName() + ": " + m.getSender().localName() + (w instanceof Done ? " reports " : " failed ") + taskOf(w)
+                + " after its silence" + (w instanceof Failed f ? ": " + f.reason() : ""));
+        awaitedAboard.remove(taskOf(w)).accept(m);
+    }
+
+    /**
      * Withdraws a transport (the staff changed their mind): the chair it was given to gets a
      * CANCEL and stops driving it; the transport ends, not done, with the reason. False if it has
      * ended already. Thread-safe.
@@ -227,6 +303,12 @@ public class MedicalAgent extends Agent {
                 return;
             }
             AclMessage winner = awarded.get(task);
+            if (patientOnBoard(task)) {
+                log.accept(getLocalName() + ": " + task + " is not withdrawn (" + why + "): its patient is on board "
+                        + winner.getSender().localName() + ", which drives on to the drop-off");
+                r.complete(false);
+                return;
+            }
             if (winner != null) {
                 withdraw(task, winner);
             }
@@ -373,6 +455,11 @@ public class MedicalAgent extends Agent {
                 if (winner != null && failure.getSender().equals(winner.getSender())) {
                     String why = reasonOf(failure);
                     log.accept(getLocalName() + ": " + failure.getSender().localName() + " failed " + id + ": " + why);
+                    if (patientOnBoard(id)) {
+                        // The patient is not at the pick-up any more: nobody else is sent there.
+                        f.complete(new Outcome(id, false, winner.getSender().localName(), aboard(why), round));
+                        return;
+                    }
                     again(failure.getSender().localName() + " failed: " + why);
                 }
             }
@@ -380,11 +467,26 @@ public class MedicalAgent extends Agent {
             @Override
             protected void handleAllResultNotifications(List<AclMessage> results) {
                 if (winner != null && !f.isDone() && results.stream().noneMatch(r -> r.getPerformative() == Performative.FAILURE)) {
-                    log.accept(getLocalName() + ": " + winner.getSender().localName() + " went silent on " + id);
+                    String chair = winner.getSender().localName();
+                    log.accept(getLocalName() + ": " + chair + " went silent on " + id);
+                    if (patientOnBoard(id)) {
+                        // Never withdrawn, never auctioned again: its result is awaited from that chair.
+                        log.accept(getLocalName() + ": " + id + "'s patient is on board " + chair + " (last at node "
+                                + progress.get(id).node() + "): nobody else is sent; an operator must find the chair");
+                        awaitedAboard.put(id, r -> f.complete(r.getPerformative() == Performative.INFORM
+                                ? new Outcome(id, true, chair, null, round) : new Outcome(id, false, chair, aboard(reasonOf(r)), round)));
+                        return;
+                    }
                     // Withdrawn from that chair, in case it still drives it: nobody carries the patient twice.
                     withdraw(id, winner);
-                    again(winner.getSender().localName() + " went silent");
+                    again(chair + " went silent");
                 }
+            }
+
+            private String aboard(String why) {
+                Progress p = progress.get(id);
+                return winner.getSender().localName() + " failed with the patient on board at node " + p.node() + ": " + why
+                        + "; nobody else was sent (the patient is not at node " + from + ")";
             }
 
             private void again(String why) {

@@ -36,6 +36,7 @@ final class Codec {
         word(Failed.class, "failed", Failed::read, FAILURE);
         word(Paused.class, "paused", Paused::read, INFORM);
         word(Resumed.class, "resumed", Resumed::read, INFORM);
+        word(Progress.class, "progress", Progress::read, INFORM);
         word(ResumeRequest.class, "resume", ResumeRequest::read, REQUEST);
         word(Resuming.class, "resuming", Resuming::read, INFORM);
         word(PlanRequest.class, "plan", PlanRequest::read, REQUEST);

@@ -6,6 +6,7 @@ import io.concord.core.acl.Performative;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 import java.util.function.Consumer;
 
 /**
@@ -48,6 +49,7 @@ public sealed interface WheelchairMessage {
         default void onFailed(Failed w, AclMessage m) { unknown(w.verb(), m); }
         default void onPaused(Paused w, AclMessage m) { unknown(w.verb(), m); }
         default void onResumed(Resumed w, AclMessage m) { unknown(w.verb(), m); }
+        default void onProgress(Progress w, AclMessage m) { unknown(w.verb(), m); }
         default void onResumeRequest(ResumeRequest w, AclMessage m) { unknown(w.verb(), m); }
         default void onResuming(Resuming w, AclMessage m) { unknown(w.verb(), m); }
         default void onPlanRequest(PlanRequest w, AclMessage m) { unknown(w.verb(), m); }
@@ -242,6 +244,42 @@ public sealed interface WheelchairMessage {
 
         public void to(Handler h, AclMessage m) {
             h.onFailed(this, m);
+        }
+    }
+
+    /**
+     * INFORM {@code progress}, chair -> Medical, in the task's status conversation: where the task
+     * stands ({@code phase}: {@code to-pickup}, {@code loading}, {@code to-dropoff}, {@code unloading}),
+     * the node the chair last reached, and what it waits for if it waits. Sent as the phase changes, at
+     * each node, and every 20 s while the task is the chair's: each one tells the Medical agent the
+     * chair is at work, however long it is held up.
+     */
+    record Progress(String task, String chair, String phase, int node, String waits) implements WheelchairMessage {
+        /** The phases in which the patient is on board: from the moment the chair is at the pick-up. */
+        public static final Set<String> ON_BOARD = Set.of("loading", "to-dropoff", "unloading");
+
+        public Progress {
+            if (!ON_BOARD.contains(phase) && !phase.equals("to-pickup")) {
+                throw new IllegalArgumentException("field 'phase' must be to-pickup, loading, to-dropoff or unloading, got '" + phase + "'");
+            }
+        }
+
+        /** True once the chair is at the patient: nobody else may be sent for the patient. */
+        public boolean patientOnBoard() {
+            return ON_BOARD.contains(phase);
+        }
+
+        public String encode() {
+            return Content.of("progress").with("task", task).with("chair", chair).with("phase", phase).with("node", node)
+                    .maybe("waits", waits).toString();
+        }
+
+        static Progress read(Content c) {
+            return new Progress(c.text("task"), c.text("chair"), c.text("phase"), c.integer("node"), c.get("waits"));
+        }
+
+        public void to(Handler h, AclMessage m) {
+            h.onProgress(this, m);
         }
     }
 

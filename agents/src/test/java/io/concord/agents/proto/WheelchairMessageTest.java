@@ -52,6 +52,9 @@ class WheelchairMessageTest {
                     "paused; task=T1; chair=chair1; reason=the e-stop is pressed; resume=operator"),
             new Case(new Resumed("T1", "chair1", "decided by nurse Ada", true), INFORM,
                     "resumed; task=T1; chair=chair1; reason=decided by nurse Ada; resume=agent"),
+            new Case(new Progress("T1", "chair1", "to-pickup", 22, null), INFORM, "progress; task=T1; chair=chair1; phase=to-pickup; node=22"),
+            new Case(new Progress("T1", "chair1", "to-dropoff", 7, "its route (held by chair2)"), INFORM,
+                    "progress; task=T1; chair=chair1; phase=to-dropoff; node=7; waits=its route (held by chair2)"),
             new Case(new ResumeRequest("nurse Ada"), REQUEST, "resume; by=nurse Ada"),
             new Case(new ResumeRequest(null), REQUEST, "resume"),
             new Case(new Resuming("chair1"), INFORM, "resuming; chair=chair1"),
@@ -262,5 +265,17 @@ class WheelchairMessageTest {
         assertTrue(state.match(new AclMessage(REQUEST).setContent("state")));
         assertFalse(state.match(new AclMessage(INFORM).setContent("state")));
         assertInstanceOf(DoorState.class, WheelchairMessage.decode("state; door=A; state=open; open=1; x=0; y=0", INFORM));
+    }
+
+    /** The patient is on board from the moment the chair is at the pick-up; a phase not in the protocol is refused. */
+    @Test
+    void aProgressReportSaysWhetherThePatientIsOnBoard() {
+        assertFalse(new Progress("T1", "chair1", "to-pickup", 22, null).patientOnBoard());
+        for (String phase : List.of("loading", "to-dropoff", "unloading")) {
+            assertTrue(new Progress("T1", "chair1", phase, 3, null).patientOnBoard(), phase);
+        }
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> WheelchairMessage.decode("progress; task=T1; chair=chair1; phase=flying; node=3", INFORM));
+        assertTrue(e.getMessage().contains("phase"), e.getMessage());
     }
 }

@@ -305,7 +305,7 @@ class ChairSafetyTest {
 
     @Test
     void withoutTheGraceAndTheWaitAShortOutageDropsTheTransport(@TempDir Path dir) throws Exception {
-        MedicalAgent.Settings noWait = new MedicalAgent.Settings(2_000, 3, 0, 5_000, 120_000);
+        MedicalAgent.Settings noWait = new MedicalAgent.Settings(2_000, 3, 0, 5_000, 120_000, 120_000);
         try (Ward w = new Ward(dir, ALL, noWait)) {
             w.call(() -> {
                 w.control.setLinkGraceMs(0);

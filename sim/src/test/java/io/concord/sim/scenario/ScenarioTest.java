@@ -46,6 +46,10 @@ class ScenarioTest {
         }
 
         Run(long seed, FaultPlan plan, int chairs, boolean traffic) {
+            this(seed, plan, chairs, traffic, MedicalAgent.Settings.standard());
+        }
+
+        Run(long seed, FaultPlan plan, int chairs, boolean traffic, MedicalAgent.Settings medicalSettings) {
             sim = new Simulation(seed, plan);
             sim.platformName("hospital");
             rt = sim.newRuntime("h1");
@@ -62,7 +66,7 @@ class ScenarioTest {
                 }
             });
             hospital = Hospital.start(platform, world, log::add, traffic);
-            medical = new MedicalAgent(log::add);
+            medical = new MedicalAgent(medicalSettings, log::add);
             platform.startAgent("medical", medical);
             assertTrue(sim.runUntil(hospital::ready, 60_000), "every planner knows every door");
         }

@@ -1,0 +1,137 @@
+package io.concord.sim.scenario;
+
+import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.proto.Services;
+import io.concord.agents.proto.WheelchairMessage.Here;
+import io.concord.agents.proto.WheelchairMessage.Release;
+import io.concord.agents.proto.WheelchairMessage.Reserve;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.TickerBehaviour;
+import io.concord.testkit.FaultPlan;
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * A transport is never abandoned with a patient on board, and a chair held up longer than it quoted
+ * is not taken for a silent one: the chair reports its progress (each phase, each node, and every
+ * 20 s while the task is its own), each report gives it more time, and once it is at the patient the
+ * task is never withdrawn nor auctioned again. Two chairs; another body holds a node of the winner's
+ * route through the traffic agent (it stands there, busy, and stays alive) for longer than the
+ * Medical agent's deadline for the result (three times the quoted cost and two minutes).
+ */
+class PatientOnBoardTest {
+
+    /** Stands on a node, as far as the traffic agent knows: holds it, says it is alive, gives it back when told. */
+    static final class Blocker extends Agent {
+        private final int node;
+
+        Blocker(int node) {
+            this.node = node;
+        }
+
+        @Override
+        protected void setup() {
+            tell(Performative.REQUEST, new Reserve(List.of(node), List.of(node), false).encode());
+            addBehaviour(new TickerBehaviour(this, 20_000) {
+                @Override
+                protected void onTick() {
+                    tell(Performative.INFORM, new Here(null, List.of(node)).encode());
+                }
+            });
+        }
+
+        void leave() {
+            runtime().execute(() -> tell(Performative.INFORM, new Release(node).encode()));
+        }
+
+        private void tell(Performative p, String content) {
+            AclMessage m = new AclMessage(p);
+            m.addReceiver(AID.local("traffic", "hospital"));
+            m.setOntology(Services.ONTOLOGY);
+            m.setContent(content);
+            send(m);
+        }
+    }
+
+    private static boolean logged(ScenarioTest.Run r, String text) {
+        return r.log.stream().anyMatch(l -> l.contains(text));
+    }
+
+    private static String tail(ScenarioTest.Run r) {
+        return String.join("\n", ScenarioTest.tail(r.log, 40));
+    }
+
+    /**
+     * Held up on its way to the patient (node 4 of its route is held) for 15 minutes, longer than
+     * its quote allows: its progress reports keep the task its own; no second auction, and it
+     * fetches the patient once the way is free.
+     */
+    @Test
+    void aChairHeldUpLongerThanItsQuoteKeepsItsTask() {
+        heldUpOnTheWayToThePatient(MedicalAgent.Settings.standard(), true);
+    }
+
+    /** The same run with progress reports not counted (the defence off): the task is auctioned again. */
+    @Test
+    void withoutProgressReportsTheTaskIsAuctionedAgain() {
+        heldUpOnTheWayToThePatient(MedicalAgent.Settings.standard().withProgressMs(0), false);
+    }
+
+    private static void heldUpOnTheWayToThePatient(MedicalAgent.Settings settings, boolean kept) {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(2010, FaultPlan.NONE, 2, true, settings)) {
+            Blocker blocker = new Blocker(4);
+            r.platform.startAgent("blocker", blocker);
+            r.sim.runFor(1_000);
+            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 60);
+            assertTrue(r.sim.runUntil(() -> logged(r, "to-pickup at node"), 60_000), "the chair set off; log:\n" + tail(r));
+            r.sim.runFor(900_000);
+            assertEquals(kept, !logged(r, "(auction 2)"), "a second auction while the chair was held up; log:\n" + tail(r));
+            if (!kept) {
+                return;
+            }
+            assertFalse(f.isDone());
+            blocker.leave();
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), "the transport ended; log:\n" + tail(r));
+            MedicalAgent.Outcome o = f.join();
+            assertTrue(o.done(), o.toString());
+            assertEquals(1, o.auctions(), o.toString());
+        }
+    }
+
+    /**
+     * Held up after loading (node 10 of its way to the drop-off is held) past the Medical agent's
+     * deadline, with progress reports not counted so that the deadline passes: the task is neither
+     * withdrawn nor auctioned again (the patient is not at node 3 any more); the chair that has the
+     * patient delivers them once the way is free, and the Medical agent takes its late result.
+     */
+    @Test
+    void aPatientOnBoardIsNeverFetchedAgain() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(2010, FaultPlan.NONE, 2, true, MedicalAgent.Settings.standard().withProgressMs(0))) {
+            Blocker blocker = new Blocker(10);
+            r.platform.startAgent("blocker", blocker);
+            r.sim.runFor(1_000);
+            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 60);
+            assertTrue(r.sim.runUntil(() -> logged(r, "(the patient is on board)"), 600_000), "the patient got on; log:\n" + tail(r));
+            assertTrue(r.sim.runUntil(() -> logged(r, "went silent on T1"), 1_800_000), "the deadline passed; log:\n" + tail(r));
+            r.sim.runFor(300_000);
+            assertTrue(logged(r, "nobody else is sent"), tail(r));
+            assertFalse(logged(r, "(auction 2)"), "a second auction for a patient on board; log:\n" + tail(r));
+            assertFalse(logged(r, "withdrawn"), "the task was withdrawn from the chair that has the patient; log:\n" + tail(r));
+            assertFalse(f.isDone());
+            blocker.leave();
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), "the transport ended; log:\n" + tail(r));
+            MedicalAgent.Outcome o = f.join();
+            assertTrue(o.done(), o.toString());
+            assertEquals(1, o.auctions(), o.toString());
+        }
+    }
+}
