@@ -107,4 +107,11 @@ class DrivabilityCheckTest {
         assertEquals(List.of("node 10 is 1 m from the opening of door 'B5' (edge 10-26); a chair waiting there for the door needs 1.5 m"),
                 DrivabilityCheck.problems(HospitalMap.defaultHospital()));
     }
+
+    @Test
+    void generatedMapsKeepEveryRule() {
+        for (Shape s : List.of(Shape.small(), Shape.medium(), Shape.large())) {
+            assertEquals(List.of(), DrivabilityCheck.problems(MapGenerator.map(42, s)), s.name());
+        }
+    }
 }
