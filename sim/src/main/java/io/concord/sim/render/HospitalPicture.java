@@ -162,17 +162,23 @@ public final class HospitalPicture {
             double cx = 0;
             double top = -Double.MAX_VALUE;
             double bottom = Double.MAX_VALUE;
+            double left = Double.MAX_VALUE;
+            double right = -Double.MAX_VALUE;
             for (Point p : a.polygon()) {
                 cx += p.x();
                 top = Math.max(top, p.y());
                 bottom = Math.min(bottom, p.y());
+                left = Math.min(left, p.x());
+                right = Math.max(right, p.x());
             }
             cx /= a.polygon().size();
             g.setColor(new Color(0x6b6b6b));
             String label = a.name();
             int w = g.getFontMetrics().stringWidth(label);
-            // Rooms are labelled along their outer wall, corridors along their middle line.
-            double y = a.kind() == Area.Kind.ROOM ? (top > 12 ? top - 0.6 : bottom + 0.4)
+            // Rooms are labelled along the wall across from their door (their outer wall), corridors
+            // along their middle line.
+            int door = doorWall(map, left, right, bottom, top);
+            double y = a.kind() == Area.Kind.ROOM ? (door < 0 || door == 0 && top > 12 ? top - 0.6 : bottom + 0.4)
                     : a.kind() == Area.Kind.CORRIDOR ? top - 0.5 : bottom + 0.5;
             g.drawString(label, (float) (px(cx) - w / 2.0), (float) py(y));
         }
@@ -252,9 +258,31 @@ public final class HospitalPicture {
             Point m = d.centre();
             boolean vertical = Math.abs(d.to().x() - d.from().x()) < Math.abs(d.to().y() - d.from().y());
             float lx = (float) (px(m.x()) + (vertical ? 5 : -6));
-            float ly = (float) (py(m.y()) + (vertical ? -w / 2 * scale - 4 : (m.y() > 11 ? -6 : 15)));
+            // A door's name goes into the room it opens, above or below the wall.
+            boolean above = inRoom(map, m.x(), m.y() + 0.3) || !inRoom(map, m.x(), m.y() - 0.3) && m.y() > 11;
+            float ly = (float) (py(m.y()) + (vertical ? -w / 2 * scale - 4 : (above ? -6 : 15)));
             g.drawString(d.id(), lx, ly);
         }
+    }
+
+    /** -1 if a door of the map is in the bottom wall of this box, 1 if in its top wall, else 0. */
+    private static int doorWall(HospitalMap map, double left, double right, double bottom, double top) {
+        for (Door d : map.doors()) {
+            Point m = d.centre();
+            if (m.x() > left && m.x() < right && Math.abs(d.from().y() - d.to().y()) < 1e-6) {
+                if (Math.abs(m.y() - bottom) < 0.05) {
+                    return -1;
+                }
+                if (Math.abs(m.y() - top) < 0.05) {
+                    return 1;
+                }
+            }
+        }
+        return 0;
+    }
+
+    private static boolean inRoom(HospitalMap map, double x, double y) {
+        return map.areaAt(new Point(x, y)).map(a -> a.kind() == Area.Kind.ROOM).orElse(false);
     }
 
     private void nodes(Graphics2D g, HospitalMap map) {

@@ -1,0 +1,70 @@
+package io.concord.sim.maps;
+
+/**
+ * What a generated hospital is to contain ({@link MapGenerator#generate(long, Shape)}).
+ *
+ * @param name       what the shape is called, in the map's name and in messages ("medium")
+ * @param nodes      how many route nodes the map has: the generator sizes its wards to this
+ *                   count (within {@link MapGenerator#NODE_TOLERANCE} of it)
+ * @param wards      how many wards lie along the main corridor, the ring ward among them
+ * @param ring       whether one of those wards is a ring: a loop of corridors round a block of
+ *                   rooms, so that there are two ways round
+ * @param wings      how many dead-end wings (a ward on a corridor that leads nowhere else) branch
+ *                   off the main corridor
+ * @param bottleneck whether two parts of the hospital are joined only by a narrow corridor
+ *                   (2 m wide, one chair's lane)
+ * @param parking    how many parking places (corridor and hall nodes where chairs start and
+ *                   stand idle) the map names
+ */
+public record Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking) {
+
+    /** Checks the numbers, naming the wrong one. */
+    public Shape {
+        if (name == null || name.isBlank()) {
+            throw new IllegalArgumentException("a shape needs a name");
+        }
+        if (nodes < 20 || nodes > 400) {
+            throw new IllegalArgumentException("shape " + name + ": nodes must be 20 to 400, got " + nodes);
+        }
+        if (wards < 1 || wards > 12) {
+            throw new IllegalArgumentException("shape " + name + ": wards must be 1 to 12, got " + wards);
+        }
+        if (wings < 0 || wings > wards + 1) {
+            throw new IllegalArgumentException("shape " + name + ": wings must be 0 to wards + 1 (" + (wards + 1) + "), got " + wings);
+        }
+        if (parking < 1 || parking > nodes / 3) {
+            throw new IllegalArgumentException("shape " + name + ": parking must be 1 to a third of the nodes (" + nodes / 3
+                    + "), got " + parking);
+        }
+    }
+
+    /** About 30 nodes: two wards joined by a narrow corridor, a lobby, 10 parking places; no ring, no wing. */
+    public static Shape small() {
+        return new Shape("small", 30, 2, false, 0, true, 10);
+    }
+
+    /** About 60 nodes: a ring ward and a plain ward joined by a narrow corridor, a lobby, a wing, 20 parking places. */
+    public static Shape medium() {
+        return new Shape("medium", 60, 2, true, 1, true, 20);
+    }
+
+    /** About 120 nodes: a ring ward and two plain wards, a narrow corridor, a lobby, two wings, 30 parking places. */
+    public static Shape large() {
+        return new Shape("large", 120, 3, true, 2, true, 30);
+    }
+
+    /** The same shape with or without a ring ward. */
+    public Shape withRing(boolean ring) {
+        return new Shape(name + (ring ? "+ring" : "-ring"), nodes, wards, ring, wings, bottleneck, parking);
+    }
+
+    /** The same shape with another node count (and as many parking places, if they still fit). */
+    public Shape withNodes(int nodes) {
+        return new Shape(name + "@" + nodes, nodes, wards, ring, wings, bottleneck, Math.min(parking, nodes / 3));
+    }
+
+    /** The same shape with another number of parking places. */
+    public Shape withParking(int parking) {
+        return new Shape(name, nodes, wards, ring, wings, bottleneck, parking);
+    }
+}

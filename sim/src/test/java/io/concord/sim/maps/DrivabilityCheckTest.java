@@ -1,0 +1,117 @@
+package io.concord.sim.maps;
+
+import io.concord.agents.map.HospitalMap;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The drivability rules flag what a chair could not drive, naming the element, on maps the reader accepts. */
+class DrivabilityCheckTest {
+
+    /**
+     * A corridor along the south, three rooms north of it. Everything here is legal for the
+     * reader, and each thing is wrong for a chair: a 9.8 m edge, a node inside a hinged leaf's
+     * swing (0.8 m from its opening, and the edge to it through the swing), a node 0.53 m from a
+     * wall, two nodes 1.08 m apart, a
+     * sliding door with 0.5 m of wall to slide into, a route straight through a revolving door's
+     * pivot from a node 2 m from it.
+     */
+    static final String BAD = """
+            {
+              "format": "concord-hospital-map/1",
+              "name": "undrivable",
+              "walls": [
+                {"id": "outer", "path": [[0, 0], [20, 0], [20, 10], [0, 10], [0, 0]], "thickness": 0.25},
+                {"id": "c1", "from": [0, 4], "to": [3, 4]},
+                {"id": "c2", "from": [4.2, 4], "to": [7, 4]},
+                {"id": "c3", "from": [8.2, 4], "to": [8.7, 4]},
+                {"id": "c4", "from": [10, 4], "to": [13, 4]},
+                {"id": "c5", "from": [16.2, 4], "to": [20, 4]},
+                {"id": "p1", "from": [6, 4], "to": [6, 10]},
+                {"id": "p2", "from": [8.7, 4], "to": [8.7, 10]}
+              ],
+              "doors": [
+                {"id": "H1", "kind": "hinged", "from": [3, 4], "to": [4.2, 4], "hinge": "from", "swing": "right"},
+                {"id": "S1", "kind": "sliding", "from": [7, 4], "to": [8.2, 4], "hinge": "to"},
+                {"id": "R1", "kind": "rotating", "from": [13, 4], "to": [16.2, 4]}
+              ],
+              "nodes": [
+                {"id": 1, "at": [2, 2]},
+                {"id": 2, "at": [11.8, 2]},
+                {"id": 3, "at": [3.6, 3.2]},
+                {"id": 4, "at": [3.6, 7]},
+                {"id": 5, "at": [7.6, 7]},
+                {"id": 6, "at": [7.6, 1.6]},
+                {"id": 7, "at": [12.8, 1.6]},
+                {"id": 8, "at": [14.6, 2]},
+                {"id": 9, "at": [14.6, 7]},
+                {"id": 10, "at": [11, 3.4]}
+              ],
+              "edges": [
+                {"from": 1, "to": 2},
+                {"from": 1, "to": 3},
+                {"from": 3, "to": 4, "door": "H1"},
+                {"from": 1, "to": 6},
+                {"from": 6, "to": 5, "door": "S1"},
+                {"from": 2, "to": 7},
+                {"from": 7, "to": 8},
+                {"from": 8, "to": 9, "door": "R1"},
+                {"from": 2, "to": 10}
+              ]
+            }
+            """;
+
+    @Test
+    void eachRuleFlagsWhatBreaksItNamingTheElement() {
+        List<String> problems = DrivabilityCheck.problems(HospitalMap.parse(BAD, "undrivable"));
+        List<String> expected = List.of(
+                "edge 1-2 is 9.8 m long",
+                "node 3 at (3.6, 3.2) is in the swing of door 'H1'",
+                "edge 1-3 passes 0 m from the swing of door 'H1'",
+                "node 3 is 0.8 m from the opening of door 'H1' (edge 3-4)",
+                "node 10 at (11, 3.4) is 0.53 m from the face of wall 'c4'",
+                "nodes 2 and 7 are 1.08 m apart",
+                "sliding door 'S1' runs past its jamb at (8.2, 4) into 0.5 m of wall",
+                "edge 8-9 passes 0 m from the open leaf of revolving door 'R1'",
+                "node 8 at (14.6, 2) is 2 m from the pivot of revolving door 'R1'");
+        for (String e : expected) {
+            assertTrue(problems.stream().anyMatch(p -> p.startsWith(e)), "expected \"" + e + "...\" among " + problems);
+        }
+        assertEquals(expected.size(), problems.size(), String.join("\n", problems));
+    }
+
+    @Test
+    void aHingedLeafSweepingIntoTheCorridorFlagsTheCorridorEdgesAndNodesInItsWay() {
+        // H1 turned to swing into the room instead: the corridor is clear of it, and node 3 is out of its swing.
+        String into = BAD.replace("\"hinge\": \"from\", \"swing\": \"right\"", "\"hinge\": \"from\", \"swing\": \"left\"");
+        List<String> problems = DrivabilityCheck.problems(HospitalMap.parse(into, "swinging in"));
+        assertTrue(problems.stream().noneMatch(p -> p.contains("swing of door 'H1'")), String.join("\n", problems));
+        // Node 4 in the room is 3.05 m from the hinge: clear. A node put 1.5 m from the opening is not.
+        String near = into.replace("{\"id\": 4, \"at\": [3.6, 7]}", "{\"id\": 4, \"at\": [3.6, 5.5]}");
+        problems = DrivabilityCheck.problems(HospitalMap.parse(near, "node near the leaf"));
+        assertTrue(problems.stream().anyMatch(p -> p.startsWith("node 4 at (3.6, 5.5) is 0.42 m from the swing of door 'H1'")),
+                String.join("\n", problems));
+    }
+
+    /**
+     * The default hospital keeps every rule but one: node 10, the node in revolving door WB's lane
+     * on Ward B's side, is the corridor node for rooms B1 and B5 too, and stands 1 m from B5's
+     * opening (the generator puts a lane's node in a vestibule, away from the rooms' doors).
+     */
+    @Test
+    void theDefaultHospitalKeepsTheRulesButForOneNodeTooNearADoor() {
+        assertEquals(List.of("node 10 is 1 m from the opening of door 'B5' (edge 10-26); a chair waiting there for the door needs 1.5 m"),
+                DrivabilityCheck.problems(HospitalMap.defaultHospital()));
+    }
+
+    @Test
+    void generatedMapsKeepEveryRule() {
+        for (Shape s : List.of(Shape.small(), Shape.medium(), Shape.large())) {
+            assertEquals(List.of(), DrivabilityCheck.problems(MapGenerator.map(42, s)), s.name());
+        }
+    }
+}
