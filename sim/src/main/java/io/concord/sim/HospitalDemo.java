@@ -267,6 +267,11 @@ public final class HospitalDemo {
 
     private static void intro(HospitalMap map, Options o) {
         OUT.println("Concord hospital demo: " + map);
+        if (!map.warnings().isEmpty()) {
+            OUT.println("Warning: on this map a chair may touch walls or doors (docs/hospital-map.md, \"What a chair needs\"), "
+                    + map.warnings().size() + (map.warnings().size() == 1 ? " place:" : " places:"));
+            map.warnings().forEach(w -> OUT.println("  - " + w));
+        }
         for (TaskSpec t : o.tasks()) {
             OUT.printf(Locale.ROOT, "Task: a patient from node %d (%s) to node %d (%s), priority %.1f, %.0f s to load and unload.%n",
                     t.from(), area(map, t.from()), t.to(), area(map, t.to()), t.priority(), t.unloadS());

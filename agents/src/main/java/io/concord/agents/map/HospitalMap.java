@@ -39,6 +39,7 @@ public final class HospitalMap {
     private final List<Edge> edges;
     private final Map<Integer, List<Edge>> adjacency;
     private final List<Integer> parking;
+    private List<String> warnings;
 
     HospitalMap(String name, double clearanceM, List<Wall> walls, List<Area> areas, List<Door> doors, List<Node> nodes,
                 List<Edge> edges, List<Integer> parking) {
@@ -143,6 +144,19 @@ public final class HospitalMap {
             throw new IllegalArgumentException("map '" + name + "' has no door '" + id + "'");
         }
         return d;
+    }
+
+    /**
+     * What a chair could not drive on this map, though the reader accepts it: an edge too long for
+     * the odometry's drift, a node where a chair turning on the spot would reach a wall, a node in a
+     * door leaf's swing or too near a door to wait, and the like (docs/hospital-map.md, "What a chair
+     * needs"). Each names its element and what to do; empty for a map chairs can drive.
+     */
+    public synchronized List<String> warnings() {
+        if (warnings == null) {
+            warnings = List.copyOf(Drivability.problems(this));
+        }
+        return warnings;
     }
 
     /**

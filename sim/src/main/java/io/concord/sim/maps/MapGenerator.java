@@ -41,7 +41,7 @@ import java.util.TreeSet;
  * "Lobby, row 2, place 3"); parking places are the lobby's nodes, then the dead ends, then corridor
  * nodes taken from each part in turn, never where chairs wait for a ward door or in the bottleneck.
  *
- * <p>The geometry is made to be driven, not only to be legal ({@link DrivabilityCheck} checks it):
+ * <p>The geometry is made to be driven, not only to be legal ({@code HospitalMap.warnings()} checks it):
  * no edge longer than 6 m, every node at least 0.8 m from a wall's face, nodes out of the hinged
  * leaves' swing and away from the revolving doors' sweep, a node on each side of every door at
  * least 1.5 m from the opening where a chair can wait for it.

@@ -35,7 +35,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * Generated hospitals, seed after seed: each is read by the map reader without a problem, has the
  * shape it was asked for (node count, wards, ring or not, wings, bottleneck, parking places,
- * every kind of door), can be driven ({@link DrivabilityCheck}), and is the same for the same
+ * every kind of door), can be driven (no {@link io.concord.agents.map.HospitalMap#warnings() warnings}), and is the same for the same
  * seed. {@code -Dconcord.maps.seeds=N} checks N seeds a preset (200 by default),
  * {@code -Dconcord.maps.first=S} starts at seed S.
  */
@@ -144,7 +144,7 @@ class MapGeneratorTest {
             for (String p : shapeProblems(map, shape)) {
                 failures.add(shape.name() + " seed " + seed + ": " + p);
             }
-            for (String p : DrivabilityCheck.problems(map)) {
+            for (String p : map.warnings()) {
                 failures.add(shape.name() + " seed " + seed + ": " + p);
             }
         }

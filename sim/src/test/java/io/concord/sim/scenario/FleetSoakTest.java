@@ -1,6 +1,7 @@
 package io.concord.sim.scenario;
 
 import io.concord.agents.control.TaskView;
+import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.testkit.FaultPlan;
 import io.concord.sim.render.HospitalPicture;
@@ -37,15 +38,19 @@ class FleetSoakTest {
     }
 
     static Result run(long seed, boolean traffic) {
-        int chairs = 3 + (int) (seed % 3);
-        try (ScenarioTest.Run r = new ScenarioTest.Run(seed, FaultPlan.NONE, chairs, traffic)) {
+        return run(ScenarioTest.MAP, ROOMS, seed, 3 + (int) (seed % 3), traffic);
+    }
+
+    /** A seed on {@code map}: {@code chairs} chairs, 10 transports between random nodes of {@code rooms}. */
+    static Result run(HospitalMap map, int[] rooms, long seed, int chairs, boolean traffic) {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(map, seed, FaultPlan.NONE, chairs, traffic, MedicalAgent.Settings.standard())) {
             SplittableRandom rnd = new SplittableRandom(seed);
             List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
             for (int t = 0; t < 10; t++) {
-                int from = ROOMS[rnd.nextInt(ROOMS.length)];
-                int to = ROOMS[rnd.nextInt(ROOMS.length)];
+                int from = rooms[rnd.nextInt(rooms.length)];
+                int to = rooms[rnd.nextInt(rooms.length)];
                 while (to == from) {
-                    to = ROOMS[rnd.nextInt(ROOMS.length)];
+                    to = rooms[rnd.nextInt(rooms.length)];
                 }
                 fs.add(r.medical.transport(from, to, MedicalAgent.PRIORITIES[rnd.nextInt(3)], 20));
                 r.sim.runFor(15_000);
@@ -64,8 +69,9 @@ class FleetSoakTest {
             List<String> waits = r.hospital.traffic() == null ? List.of() : r.hospital.traffic().waits();
             boolean clean = out.stream().allMatch(o -> o != null && o.done()) && r.world.collisions().isEmpty();
             if (!clean) {
-                HospitalPicture.write(r.world, Path.of("target", "fleet", "seed-" + seed + ".png"));
-                r.writeLogs("fleet-" + seed);
+                String stem = (map == ScenarioTest.MAP ? "" : map.name().replaceAll("[^A-Za-z0-9]+", "-") + "-") + "seed-" + seed;
+                HospitalPicture.write(r.world, Path.of("target", "fleet", stem + ".png"));
+                r.writeLogs("fleet-" + stem);
             }
             return new Result(seed, chairs, out, r.world.collisions(), busy, waits, r.sim.trace().hash(),
                     r.world.worldTimeNs() / 1_000_000, r.hospital.traffic() == null ? 0 : r.hospital.traffic().moves());

@@ -50,14 +50,19 @@ class ScenarioTest {
         }
 
         Run(long seed, FaultPlan plan, int chairs, boolean traffic, MedicalAgent.Settings medicalSettings) {
+            this(MAP, seed, plan, chairs, traffic, medicalSettings);
+        }
+
+        /** A run on {@code map}: its chairs start at the map's first parking places. */
+        Run(HospitalMap map, long seed, FaultPlan plan, int chairs, boolean traffic, MedicalAgent.Settings medicalSettings) {
             sim = new Simulation(seed, plan);
             sim.platformName("hospital");
             rt = sim.newRuntime("h1");
             platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 200, 10))
                     .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
-            world = HospitalWorld.builder(MAP).seed(seed).build();
+            world = HospitalWorld.builder(map).seed(seed).build();
             for (int i = 0; i < chairs; i++) {
-                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(MAP.parking().get(i), 90));
+                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(map.parking().get(i), 90));
             }
             world.attach(rt);
             sim.trace().addListener((ns, node, event, detail) -> {

@@ -1,11 +1,5 @@
-package io.concord.sim.maps;
+package io.concord.agents.map;
 
-import io.concord.agents.map.Door;
-import io.concord.agents.map.Edge;
-import io.concord.agents.map.HospitalMap;
-import io.concord.agents.map.Node;
-import io.concord.agents.map.Point;
-import io.concord.agents.map.Wall;
 
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -29,7 +23,8 @@ import java.util.function.ToDoubleFunction;
  *   <li>Two nodes are at least {@value #NODE_SPACING_M} m apart: two chairs turning on them keep
  *       clear of each other.</li>
  *   <li>The two nodes of an edge through a door are at least {@value #DOOR_WAIT_M} m from its
- *       opening: a chair waits there while the door opens.</li>
+ *       opening ({@value #SLIDING_WAIT_M} m for a sliding door, whose leaf keeps to the wall's line):
+ *       a chair waits there while the door opens.</li>
  *   <li>A hinged door: no node within {@value #TURN_REACH_M} m of the quarter circle its leaf sweeps
  *       (radius the door's width, from the hinge jamb, on its swing side); no other edge within
  *       {@value #HALF_WIDTH_M} m of it; its own edge {@value #LEAF_CLEARANCE_M} m from the open
@@ -41,34 +36,39 @@ import java.util.function.ToDoubleFunction;
  *       the pocket its leaf slides into.</li>
  * </ul>
  *
- * <p>Each problem is a sentence naming the element, as the reader's are. The default hospital
- * passes; so does every generated map.
+ * <p>Each problem is a sentence naming the element, as the reader's are; {@link HospitalMap#warnings()}
+ * gives them. The default hospital passes; so does every generated map.
  */
-public final class DrivabilityCheck {
+final class Drivability {
     /** The longest edge, metres. */
-    public static final double MAX_EDGE_M = 6.0;
+    static final double MAX_EDGE_M = 6.0;
     /** The least distance from a node to a wall's face, metres. */
-    public static final double NODE_WALL_M = 0.8;
+    static final double NODE_WALL_M = 0.8;
     /** The least distance from an edge to a wall's face, metres. */
-    public static final double EDGE_WALL_M = 0.45;
+    static final double EDGE_WALL_M = 0.45;
     /** The least distance between two nodes, metres. */
-    public static final double NODE_SPACING_M = 1.5;
-    /** The least distance from a door's opening to the nodes of an edge through it, metres. */
-    public static final double DOOR_WAIT_M = 1.5;
+    static final double NODE_SPACING_M = 1.5;
+    /** The least distance from a hinged or revolving door's opening to the nodes of an edge through it, metres. */
+    static final double DOOR_WAIT_M = 1.5;
+    /**
+     * The same for a sliding door, whose leaf keeps to the wall's line: the chair's half length and
+     * 0.4 m, so that its nose stays clear of the opening while it waits.
+     */
+    static final double SLIDING_WAIT_M = 1.0;
     /** How far a chair turning on the spot reaches from its node: half its diagonal, rounded up. */
-    public static final double TURN_REACH_M = 0.7;
+    static final double TURN_REACH_M = 0.7;
     /** Half a chair's width. */
-    public static final double HALF_WIDTH_M = 0.35;
+    static final double HALF_WIDTH_M = 0.35;
     /** The least distance from an edge through a hinged or revolving door to where its open leaf stands. */
-    public static final double LEAF_CLEARANCE_M = 0.45;
+    static final double LEAF_CLEARANCE_M = 0.45;
     /** How far off a door's line a wall may be and still be in line with it. */
     private static final double IN_LINE_M = 0.02;
 
-    private DrivabilityCheck() {
+    private Drivability() {
     }
 
     /** Every problem found, each naming its element; empty if the map can be driven. */
-    public static List<String> problems(HospitalMap map) {
+    static List<String> problems(HospitalMap map) {
         List<String> out = new ArrayList<>();
         for (Edge e : map.edges()) {
             double len = e.length(map);
@@ -109,11 +109,12 @@ public final class DrivabilityCheck {
                 continue;
             }
             Door d = map.door(e.door());
+            double wait = d.kind() == Door.Kind.SLIDING ? SLIDING_WAIT_M : DOOR_WAIT_M;
             for (int id : new int[] {e.a(), e.b()}) {
                 double dist = pointToSegment(map.node(id).at(), d.from(), d.to());
-                if (dist < DOOR_WAIT_M) {
+                if (dist < wait) {
                     out.add("node " + id + " is " + m(dist) + " m from the opening of door '" + d.id() + "' (edge " + e.a() + "-"
-                            + e.b() + "); a chair waiting there for the door needs " + m(DOOR_WAIT_M) + " m");
+                            + e.b() + "); a chair waiting there for the door needs " + m(wait) + " m");
                 }
             }
         }

@@ -1,0 +1,81 @@
+package io.concord.sim.scenario;
+
+import io.concord.agents.map.Area;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.medical.MedicalAgent;
+import io.concord.sim.maps.MapGenerator;
+import io.concord.sim.maps.Shape;
+
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The fleet on maps nobody drew by hand: generated hospitals of each kind (30 nodes, no ring; 60
+ * with a ring ward and a wing; 120 with three wards and two wings; each with a bottleneck corridor,
+ * dead ends and doors of every kind), seed after seed, with 3 to 20 chairs (as many as the map
+ * parks) and 10 transports between random rooms. Every task ends done or failed with a reason,
+ * nothing touches anything, nobody is left holding a task or waiting for a route. The map, the
+ * chairs and the tasks all come from the seed, so a seed replays. {@code -Dconcord.genmaps.seeds=200}
+ * runs 200 seeds (3 by default, one of each kind, for CI); seed {@code s} uses kind {@code s mod 3}.
+ */
+class GeneratedMapSoakTest {
+
+    private static final List<Shape> KINDS = List.of(Shape.small(), Shape.medium(), Shape.large());
+
+    /** The nodes of a map's rooms: where patients are fetched and taken. */
+    static int[] rooms(HospitalMap map) {
+        List<Integer> out = new ArrayList<>();
+        for (Node n : map.nodes()) {
+            if (n.area() != null && map.area(n.area()).kind() == Area.Kind.ROOM) {
+                out.add(n.id());
+            }
+        }
+        return out.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** Seed {@code s}: its kind, and from 3 to 20 chairs as the map parks them. */
+    static FleetSoakTest.Result run(long seed) {
+        Shape kind = KINDS.get((int) (seed % KINDS.size()));
+        HospitalMap map = MapGenerator.map(seed, kind);
+        int chairs = Math.min(map.parking().size(), 3 + (int) ((seed * 7) % 18));
+        return FleetSoakTest.run(map, rooms(map), seed, chairs, true);
+    }
+
+    @Test
+    void chairsDoTheirTasksWithoutTouchingAnythingOnGeneratedMaps() {
+        long first = Long.getLong("concord.genmaps.first", 1);
+        int seeds = Integer.getInteger("concord.genmaps.seeds", 3);
+        List<String> report = new ArrayList<>();
+        for (long seed = first; seed < first + seeds; seed++) {
+            FleetSoakTest.Result r = run(seed);
+            String where = "seed " + seed + " (" + KINDS.get((int) (seed % KINDS.size())).name() + ", " + r.chairs()
+                    + " chairs; log and picture in target/scenario, target/fleet)";
+            for (MedicalAgent.Outcome o : r.outcomes()) {
+                assertNotNull(o, where + ": a task did not end: " + r.outcomes());
+                assertTrue(o.done() || (o.reason() != null && !o.reason().isBlank()), where + ": failed without a reason: " + o);
+            }
+            assertEquals(List.of(), r.collisions(), where + ": contacts");
+            assertEquals(List.of(), r.busy(), where + ": a chair still holds a task");
+            assertEquals(List.of(), r.waits(), where + ": a chair still waits for a route");
+            report.add(String.format(Locale.ROOT, "seed %d: %s, %d chairs, %d/10 done, %.0f s, %d moved aside, trace %016x", seed,
+                    KINDS.get((int) (seed % KINDS.size())).name(), r.chairs(),
+                    r.outcomes().stream().filter(MedicalAgent.Outcome::done).count(), r.worldMs() / 1e3, r.moves(), r.traceHash()));
+        }
+        System.out.println(String.join("\n", report));
+    }
+
+    @Test
+    void aSeedOnAGeneratedMapReplaysBitForBit() {
+        FleetSoakTest.Result a = run(4);
+        FleetSoakTest.Result b = run(4);
+        assertEquals(a.traceHash(), b.traceHash(), "the same seed, the same map and the same trace");
+    }
+}
