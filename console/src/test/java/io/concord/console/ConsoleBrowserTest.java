@@ -97,7 +97,20 @@ class ConsoleBrowserTest {
     @Test
     void theSnifferDrawsARequestAndItsReplyInOrder() {
         browser.driver.get(console.uri());
-        tab("sniffer");
+        browser.until(d -> {
+            tab("sniffer");
+            return d.findElement(By.id("sniffer")).isDisplayed();
+        });
+        // The picker lists the agents once the page has the platform's list from its event stream.
+        // In about one CI run in six it had none after 30 s: say what the page showed then.
+        try {
+            browser.until(d -> !d.findElements(By.cssSelector("#sniff-agents input[value='buyer@console-ui']")).isEmpty());
+        } catch (org.openqa.selenium.TimeoutException e) {
+            throw new AssertionError("the sniffer's picker never listed the buyer; status '"
+                    + browser.driver.findElement(By.id("status")).getText() + "', sniffer tab shown: "
+                    + browser.driver.findElement(By.id("sniffer")).isDisplayed() + ", picker: "
+                    + browser.driver.findElement(By.id("sniff-agents")).getAttribute("innerHTML"), e);
+        }
         // Clicked once it can be: the list is drawn again as the agents' list arrives, and a click on
         // a checkbox being replaced failed now and then (ElementNotInteractable).
         browser.until(d -> {
@@ -112,6 +125,7 @@ class ConsoleBrowserTest {
                 return false;
             }
         });
+        assertTrue(browser.driver.findElement(By.id("sniffer")).isDisplayed(), "the sniffer tab is shown");
         // Once the buyer is sniffed (the subscription is agreed), its request and the reply are drawn.
         Agent buyer = platform.runtime().agent(new AID("buyer@console-ui"));
         browser.until(d -> {
