@@ -2,7 +2,6 @@ package io.concord.sim;
 
 import io.concord.agents.map.Area;
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.map.MapException;
 import io.concord.agents.map.Node;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.agents.proto.Services;
@@ -247,11 +246,15 @@ public final class HospitalDemo {
 
     /** The map has a parking place for each chair: where it starts, in the map's order. */
     static void check(HospitalMap map, Options o) {
+        String which = o.map() == null ? "the default hospital" : o.map().toString();
+        if (map.parking().isEmpty()) {
+            throw new IllegalArgumentException(which + " names no parking places, where the demo's chairs start: add"
+                    + " \"parking\": [node ids] to it (docs/hospital-map.md)");
+        }
         if (o.chairs() > map.parking().size()) {
-            throw new MapException(o.map() == null ? "the default hospital" : o.map().toString(), List.of(map.parking().isEmpty()
-                    ? "the map names no parking places, where the demo's chairs start: add \"parking\": [node ids] (docs/hospital-map.md)"
-                    : "--chairs " + o.chairs() + ": the map has " + map.parking().size() + " parking places " + map.parking()
-                    + ", one for each chair to start at; ask for fewer chairs or add places to its \"parking\""));
+            throw new IllegalArgumentException("--chairs " + o.chairs() + ": " + which + " has " + map.parking().size()
+                    + " parking places " + map.parking() + ", one for each chair to start at; ask for fewer chairs or add places"
+                    + " to its \"parking\"");
         }
     }
 

@@ -307,7 +307,7 @@ final class MapReader {
             } else if (!seen.add(id)) {
                 problem("parking: node " + id + " is named twice");
             } else if (n.area() != null && areaById.get(n.area()).kind() == Area.Kind.ROOM) {
-                problem("parking: node " + id + " is in room '" + n.area() + "'; chairs park and wait in corridors, halls or bays,"
+                problem("parking: node " + id + " is in room '" + n.area() + "'; chairs park and wait in corridors or halls,"
                         + " never in a patient's room");
             }
         }
