@@ -9,6 +9,8 @@ import com.tngtech.archunit.core.importer.ClassFileImporter;
 import com.tngtech.archunit.library.dependencies.SliceAssignment;
 import com.tngtech.archunit.library.dependencies.SliceIdentifier;
 
+import org.junit.jupiter.api.Test;
+
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -20,8 +22,9 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The architecture every module's main code keeps, checked by each module's
- * {@code PackageCyclesTest} (this class is in core's test jar, so the rules are written once).
+ * The architecture every module's main code keeps. Each module's {@code ArchitectureTest} extends
+ * this class (in core's test jar, so the rules and their tests are written once) and so runs the
+ * first two rules on its own {@code target/classes}.
  *
  * <ul>
  * <li>No cycle between packages: each depends only on those below it, so each can be read, tested
@@ -34,9 +37,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * <li>A user's code ({@code examples}) uses no internal type.</li>
  * </ul>
  */
-public final class ArchitectureRules {
+public class ArchitectureRules {
 
-    private ArchitectureRules() {
+    /** This module's main classes, read once for its tests. */
+    protected final JavaClasses main = mainClasses();
+
+    @Test
+    void mainCodeHasNoPackageCycle() {
+        noPackageCycles(main);
+    }
+
+    @Test
+    void theApiNamesNoInternalType() {
+        internalsStayInside(main);
     }
 
     /** The main classes of the module whose tests run: its {@code target/classes}. */

@@ -1,6 +1,5 @@
 package io.concord.core;
 
-import com.tngtech.archunit.core.domain.JavaClasses;
 import org.junit.jupiter.api.Test;
 
 import java.io.IOException;
@@ -17,22 +16,10 @@ import java.util.stream.Collectors;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 /**
- * This module's main code keeps the architecture (io.concord.core.ArchitectureRules): no cycle
- * between its packages, and no type of an internal package in its API. Every module has this test.
+ * This module's main code keeps the architecture ({@link ArchitectureRules}); and core's module
+ * descriptor keeps its internal packages to Concord's modules.
  */
-class ArchitectureTest {
-
-    private final JavaClasses main = ArchitectureRules.mainClasses();
-
-    @Test
-    void mainCodeHasNoPackageCycle() {
-        ArchitectureRules.noPackageCycles(main);
-    }
-
-    @Test
-    void theApiNamesNoInternalType() {
-        ArchitectureRules.internalsStayInside(main);
-    }
+class ArchitectureTest extends ArchitectureRules {
 
     /**
      * Core's module descriptor exports every API package to everyone and each internal package only

@@ -1,30 +1,16 @@
 package io.concord.examples;
 
-import com.tngtech.archunit.core.domain.JavaClasses;
 import io.concord.core.ArchitectureRules;
 import org.junit.jupiter.api.Test;
 
 /**
- * This module's main code keeps the architecture (io.concord.core.ArchitectureRules): no cycle
- * between its packages, and no type of an internal package in its API. Every module has this test.
+ * This module's main code keeps the architecture ({@link ArchitectureRules}); and since the
+ * examples are a user's code, they reach no internal package of Concord's.
  */
-class ArchitectureTest {
+class ArchitectureTest extends ArchitectureRules {
 
-    private final JavaClasses main = ArchitectureRules.mainClasses();
-
-    @Test
-    void mainCodeHasNoPackageCycle() {
-        ArchitectureRules.noPackageCycles(main);
-    }
-
-    @Test
-    void theApiNamesNoInternalType() {
-        ArchitectureRules.internalsStayInside(main);
-    }
-
-    /** The examples are a user's code: they reach no internal package of Concord's. */
     @Test
     void aUsersCodeUsesNoInternalType() {
-        ArchitectureRules.usesNoInternals(main);
+        usesNoInternals(main);
     }
 }
