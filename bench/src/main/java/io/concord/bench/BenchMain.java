@@ -6,6 +6,7 @@ import io.concord.bench.child.IdlePlatform;
 import io.concord.bench.child.LoadChild;
 import io.concord.bench.harness.AttackHarness;
 import io.concord.bench.harness.ConsoleCost;
+import io.concord.bench.harness.FleetHarness;
 import io.concord.bench.harness.HeartbeatBench;
 import io.concord.bench.harness.HospitalBench;
 import io.concord.bench.harness.NetworkHarness;
@@ -64,7 +65,7 @@ import java.util.function.ToDoubleFunction;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
-            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load");
+            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load", "fleet");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -147,6 +148,7 @@ public final class BenchMain {
                     case "throughput" -> b.throughput();
                     case "scale" -> b.scale();
                     case "load" -> b.load();
+                    case "fleet" -> b.fleet();
                     default -> throw new IllegalStateException(name);
                 }
             }
@@ -970,6 +972,51 @@ public final class BenchMain {
         }
         md.append("\n## Windows\n").append(windows);
         Files.writeString(reportDir.resolve("sim.md"), md.toString());
+    }
+
+    private void fleet() throws IOException {
+        double seconds = Double.parseDouble(System.getProperty("concord.fleet.seconds", full ? "7200" : "1800"));
+        StringBuilder md = new StringBuilder(header("The fleet's scale curve", "Generated hospitals (`MapGenerator`, seed 37: "
+                + "small, medium and large, about 30, 60 and 120 nodes, 10, 20 and 30 parking places) with 1, 5, 10 and 20 chairs "
+                + "(as many as the map parks), a stream of transports between random rooms keeping one and a half per chair "
+                + "outstanding (a new one as each ends; priorities 0-5, 20 s to get on and off), " + (long) seconds
+                + " s of hospital time a point (`-Dconcord.fleet.seconds=N`), on the test kit's virtual clock: one thread runs "
+                + "the world, every agent and the network. Each point twice, with the traffic agent's rules in order (the "
+                + "default) and with whole routes (the rules before). Patients' wait: from the request to the chair at their "
+                + "door. Decision: one call of the traffic agent's rules (a request, a release, a review), wall time. Chair-hours "
+                + "waiting: a chair with a task under way standing still (for a route, its turn, a door), sampled each second.",
+                "Simulated time, wall-clock CPU"));
+        md.append("| map | nodes | chairs | rules | done / sim h | failed | wait mean s | wait p95 s | decision p99 µs | decisions | "
+                + "chair-h waiting | contacts | CPU s / sim h | moved aside | deadlocks |\n");
+        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        List<FleetHarness.Outcome> all = new ArrayList<>();
+        for (io.concord.sim.maps.Shape shape : List.of(io.concord.sim.maps.Shape.small(), io.concord.sim.maps.Shape.medium(),
+                io.concord.sim.maps.Shape.large())) {
+            HospitalMap map = FleetHarness.map(shape);
+            for (int chairs : List.of(1, 5, 10, 20)) {
+                if (chairs > map.parking().size()) {
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | |%n", shape.name(),
+                            map.nodes().size(), chairs, map.parking().size()));
+                    continue;
+                }
+                for (io.concord.agents.traffic.TrafficRules rules : List.of(io.concord.agents.traffic.TrafficRules.IN_ORDER,
+                        io.concord.agents.traffic.TrafficRules.WHOLE_ROUTES)) {
+                    FleetHarness.Outcome o = FleetHarness.run(map, chairs, rules, seconds, 37);
+                    System.out.println(FleetHarness.describe(o));
+                    all.add(o);
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %d | %.1f | %d | %d |%n",
+                            shape.name(), o.nodes(), chairs, rules == io.concord.agents.traffic.TrafficRules.IN_ORDER ? "in order" : "whole routes",
+                            o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(), o.decisionP99Us(), o.decisions(),
+                            o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside(), o.deadlocks()));
+                }
+            }
+        }
+        Charts.line(reportDir.resolve("fleet.png"), "Fleet: transports done per simulated hour", "chairs", "transports / hour",
+                FleetHarness.series(all, FleetHarness.Outcome::donePerHour));
+        Charts.line(reportDir.resolve("fleet-wait.png"), "Fleet: patients' wait, p95", "chairs", "seconds",
+                FleetHarness.series(all, FleetHarness.Outcome::waitP95S));
+        md.append("\n![transports per hour](fleet.png)\n\n![patients' wait p95](fleet-wait.png)\n");
+        Files.writeString(reportDir.resolve("fleet.md"), md.toString());
     }
 
     private void console() throws IOException {

@@ -6,6 +6,7 @@ import io.concord.agents.door.DoorAgent;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.plan.PlannerAgent;
 import io.concord.agents.traffic.TrafficAgent;
+import io.concord.agents.traffic.TrafficRules;
 import io.concord.layers.Platform;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
@@ -43,9 +44,17 @@ public final class Hospital {
      * what the traffic agent does).
      */
     public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log, boolean traffic) {
+        return start(platform, world, log, traffic ? TrafficRules.IN_ORDER : null);
+    }
+
+    /**
+     * As {@link #start(Platform, HospitalWorld, Consumer)}, with a traffic agent keeping these rules
+     * ({@link TrafficRules#WHOLE_ROUTES} to compare with in the benchmark), or none if null.
+     */
+    public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log, TrafficRules rules) {
         Hospital h = new Hospital();
-        if (traffic) {
-            h.traffic = new TrafficAgent(world.map(), log);
+        if (rules != null) {
+            h.traffic = new TrafficAgent(world.map(), log, rules);
             platform.startAgent("traffic", h.traffic);
         }
         for (WorldDoor d : world.doors()) {

@@ -178,6 +178,37 @@ public final class HospitalView implements ConsoleView {
         return chair + " resumes: it re-arms, then drives on";
     }
 
+    /**
+     * The traffic agent's reservations: a ring round each node someone holds (solid: the chair
+     * whose turn it is there; dashed, smaller: each chair queued after it), titled with the queue.
+     */
+    private void reservations(ArrayNode shapes) {
+        if (hospital.traffic() == null) {
+            return;
+        }
+        HospitalMap map = world.map();
+        hospital.traffic().holders().forEach((node, queue) -> {
+            if (!map.hasNode(node) || queue.isEmpty()) {
+                return;
+            }
+            List<String> names = queue.stream().map(a -> a.replaceFirst("@.*", "").replaceFirst("^control-", "")).toList();
+            Point at = map.node(node).at();
+            String title = "node " + node + ": " + names.get(0) + "'s turn" + (names.size() > 1 ? "; queued: "
+                    + String.join(", ", names.subList(1, names.size())) : "");
+            for (int k = 0; k < names.size(); k++) {
+                ObjectNode ring = shapes.addObject().put("type", "circle").put("x", at.x()).put("y", at.y())
+                        .put("r", k == 0 ? 0.7 : Math.max(0.3, 0.55 - 0.1 * k)).put("color", "none").put("stroke", "#2d6cb5")
+                        .put("strokeWidth", k == 0 ? 0.14 : 0.07).put("title", title);
+                if (k > 0) {
+                    ring.put("dash", "0.15 0.12");
+                } else {
+                    ring.put("id", "reserved-" + node);
+                    ring.putObject("data").put("queue", String.join(",", names));
+                }
+            }
+        });
+    }
+
     private static int integer(Map<String, String> p, String k) {
         try {
             return Integer.parseInt(p.getOrDefault(k, "").trim());
@@ -228,6 +259,7 @@ public final class HospitalView implements ConsoleView {
             s.put("id", "door-" + wd.id()).put("title", "door " + wd.id() + ": " + state);
             s.putObject("data").put("state", state).put("open", String.format(Locale.ROOT, "%.2f", wd.openFraction()));
         }
+        reservations(shapes);
         ArrayNode chairs = json.createArrayNode();
         ArrayNode tasks = json.createArrayNode();
         for (SimChair c : world.chairs()) {

@@ -18,7 +18,10 @@ import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** The hospital view in a real headless Chromium: a transport asked for on the page moves a chair and opens a door. */
+/**
+ * The hospital view in a real headless Chromium: a transport asked for on the page moves a chair,
+ * shows the traffic agent's reservations of its route, and opens a door.
+ */
 class HospitalConsoleTest {
 
     @Test
@@ -57,6 +60,8 @@ class HospitalConsoleTest {
                     WebElement c = d.findElement(By.id("chair-chair1"));
                     return !c.getAttribute("data-x").equals(startX) || !c.getAttribute("data-y").equals(startY);
                 });
+                // The traffic agent's reservations on the map: a ring round a node of chair1's route, chair1's turn.
+                browser.until(d -> d.findElements(By.cssSelector("circle[id^='reserved-'][data-queue='chair1']")).size() > 0);
                 browser.until(d -> d.findElements(By.cssSelector("polyline[id^='door-'][data-state='open']")).size() > 0);
                 browser.until(d -> d.findElement(By.id("transports")).getText().contains("agreed"));
                 browser.screenshot("hospital-console");

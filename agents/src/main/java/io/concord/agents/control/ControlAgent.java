@@ -10,6 +10,7 @@ import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Asks;
 import io.concord.agents.proto.Services;
 import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Clear;
 import io.concord.agents.proto.WheelchairMessage.MakeWay;
 import io.concord.agents.proto.WheelchairMessage.NoRoute;
 import io.concord.agents.proto.WheelchairMessage.PlanRequest;
@@ -145,6 +146,8 @@ public class ControlAgent extends Agent implements ChairListener {
         runner = new TaskRunner(supervisor, map, tasks, follower, doors, traffic, ports);
         MessageTemplate ours = MessageTemplate.matchOntology(Services.ONTOLOGY);
         Inbox.each(this, ours.and(WheelchairMessage.matching(MakeWay.class)), m -> runner.makeWay(m));
+        // Every clear (a stale one too, which it ignores: none stays in the mailbox) and a FAILURE of the granted route.
+        Inbox.each(this, ours.and(WheelchairMessage.matching(Clear.class).or(traffic::isAboutGrant)), traffic::aboutGrant);
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.CANCEL), m -> runner.cancelled(m));
         Inbox.each(this, ours.and(WheelchairMessage.matching(ResumeRequest.class)), holds::resumeAsked);
         // A chair that waits (loading, queued) is not silent: it keeps its doors' sessions alive.

@@ -42,6 +42,9 @@ final class RouteFollower {
         /** Whether the chair may drive this very {@code route} now, standing on {@code standsOn}. */
         boolean mayDrive(List<Integer> route, List<Integer> standsOn);
 
+        /** Whether the chair, at a node, may set off to node {@code index} of {@code route} (its turn there). */
+        boolean mayGoOn(List<Integer> route, int index);
+
         /** Whether the chair at {@code pose} may drive on along {@code edge} (which has a door) from {@code fromId}. */
         boolean mayEnter(Edge edge, int fromId, Pose pose);
 
@@ -229,6 +232,10 @@ final class RouteFollower {
             if (index >= route.size()) {
                 events.arrived(now);
             }
+            return;
+        }
+        if (edgeTo != toId && !way.mayGoOn(route, index)) {
+            chair.stop(); // at the node it last reached: the next is not its turn yet
             return;
         }
         if (edge.door() != null && !way.mayEnter(edge, fromId, pose)) {

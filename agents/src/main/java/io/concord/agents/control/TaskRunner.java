@@ -75,6 +75,13 @@ final class TaskRunner {
         }
 
         @Override
+        public boolean mayGoOn(List<Integer> route, int index) {
+            boolean may = traffic.mayGoOn(route, index);
+            waitsFor = may ? null : "its turn at node " + route.get(index) + " (the traffic agent: a chair ahead)";
+            return may;
+        }
+
+        @Override
         public boolean mayEnter(Edge edge, int fromId, Pose pose) {
             boolean may = doors.mayEnter(edge, fromId, pose);
             waitsFor = may ? null : "door " + edge.door();

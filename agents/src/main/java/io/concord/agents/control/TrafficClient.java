@@ -2,7 +2,9 @@ package io.concord.agents.control;
 
 import io.concord.agents.proto.Services;
 import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Clear;
 import io.concord.agents.proto.WheelchairMessage.Failure;
+import io.concord.agents.proto.WheelchairMessage.Granted;
 import io.concord.agents.proto.WheelchairMessage.Here;
 import io.concord.agents.proto.WheelchairMessage.Idle;
 import io.concord.agents.proto.WheelchairMessage.Release;
@@ -20,7 +22,8 @@ import java.util.function.BiConsumer;
 
 /**
  * A control agent's side of the traffic agent (see {@code TrafficAgent}): before it drives a
- * route it asks for all of it, and drives once granted; it gives back each node it leaves, says
+ * route it asks for all of it, and drives once granted, into each node only as far as it is told
+ * it may ({@code upto}, moved on by {@code clear}); it gives back each node it leaves, says
  * when it is idle and where, and that it is alive. With no traffic agent in the yellow pages
  * every route may be driven at once (one chair alone needs none). No transport of its own: it
  * speaks through a {@link Port}, which the agent implements over its yellow pages and its asks.
@@ -40,6 +43,10 @@ final class TrafficClient {
     private final BiConsumer<Integer, String> onRefused;
     private final Set<Integer> held = new LinkedHashSet<>();
     private List<Integer> granted;
+    /** How far along {@link #granted} it may drive (an index into it). */
+    private int clearTo;
+    /** The conversation of the granted reservation (a {@code clear} or a late FAILURE comes in it). */
+    private String grantedIn;
     private List<Integer> asked;
     private long seq;
     private int idleAt = -1;
@@ -89,6 +96,9 @@ final class TrafficClient {
             }
             if (a.getPerformative() == Performative.INFORM) {
                 granted = route;
+                grantedIn = a.getConversationId();
+                Integer upto = WheelchairMessage.tryDecode(a).map(w -> w instanceof Granted g ? g.upto() : null).orElse(null);
+                clearTo = upto == null ? route.size() - 1 : Math.max(0, route.indexOf(upto));
                 held.addAll(route);
                 return;
             }
@@ -104,6 +114,52 @@ final class TrafficClient {
         return false;
     }
 
+    /**
+     * True if the chair may drive on to node {@code index} of {@code route} (this very list): it is
+     * granted that far, or needs no grant.
+     */
+    boolean mayGoOn(List<Integer> route, int index) {
+        return traffic() == null || route != granted || index <= clearTo;
+    }
+
+    /** The node of the granted route it may not drive into yet, or -1. */
+    int waitsAt() {
+        return granted != null && clearTo + 1 < granted.size() ? granted.get(clearTo + 1) : -1;
+    }
+
+    /** Whether {@code m} belongs to the granted reservation's conversation (a {@code clear}, or a FAILURE after the grant). */
+    boolean isAboutGrant(AclMessage m) {
+        return grantedIn != null && grantedIn.equals(m.getConversationId());
+    }
+
+    /**
+     * A message in the granted reservation's conversation: {@code clear} lets the chair drive
+     * farther; a FAILURE (the chair ahead fell silent, or a deadlock took the grant back) ends the
+     * grant, and the chair plans again.
+     */
+    void aboutGrant(AclMessage m) {
+        if (!isAboutGrant(m)) {
+            return;
+        }
+        if (m.getPerformative() == Performative.INFORM) {
+            WheelchairMessage.tryDecode(m).ifPresent(w -> {
+                if (w instanceof Clear c && granted != null) {
+                    int i = granted.indexOf(c.upto());
+                    if (i > clearTo) {
+                        clearTo = i;
+                    }
+                }
+            });
+            return;
+        }
+        if (m.getPerformative() == Performative.FAILURE) {
+            String why = WheelchairMessage.reasonOf(m);
+            int node = WheelchairMessage.tryDecode(m).map(w -> w instanceof Failure f && f.node() != null ? f.node() : -1).orElse(-1);
+            reset();
+            onRefused.accept(node, "FAILURE: " + (why == null ? "" : why));
+        }
+    }
+
     /** True if {@code route} (this very list) is granted or needs no grant. */
     boolean mayDriveNow(List<Integer> route) {
         return route == granted || traffic() == null;
@@ -113,6 +169,7 @@ final class TrafficClient {
     void reset() {
         seq++;
         granted = null;
+        grantedIn = null;
         asked = null;
         idleAt = -1;
     }

@@ -56,6 +56,7 @@ final class Codec {
         word(Here.class, "here", Here::read, INFORM);
         word(Reserve.class, "reserve", Reserve::read, REQUEST);
         word(Granted.class, "granted", Granted::read, INFORM);
+        word(Clear.class, "clear", Clear::read, INFORM);
         word(ReserveWaits.class, "reserve", ReserveWaits::read, AGREE);
         word(Release.class, "release", Release::read, INFORM);
         word(Idle.class, "idle", Idle::read, INFORM);

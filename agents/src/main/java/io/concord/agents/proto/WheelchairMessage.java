@@ -69,6 +69,8 @@ public sealed interface WheelchairMessage {
         default void onHere(Here w, AclMessage m) { unknown(w.verb(), m); }
         default void onReserve(Reserve w, AclMessage m) { unknown(w.verb(), m); }
         default void onGranted(Granted w, AclMessage m) { unknown(w.verb(), m); }
+
+        default void onClear(Clear w, AclMessage m) { unknown(w.verb(), m); }
         default void onReserveWaits(ReserveWaits w, AclMessage m) { unknown(w.verb(), m); }
         default void onRelease(Release w, AclMessage m) { unknown(w.verb(), m); }
         default void onIdle(Idle w, AclMessage m) { unknown(w.verb(), m); }
@@ -615,22 +617,52 @@ public sealed interface WheelchairMessage {
         }
     }
 
-    /** INFORM {@code granted}, traffic -> control: the route is the chair's. */
-    record Granted(List<Integer> path) implements WheelchairMessage {
+    /**
+     * INFORM {@code granted}, traffic -> control: the route is the chair's, to drive up to node
+     * {@code upto} now (null: all of it; the traffic agent's in-order rules name it, and say
+     * {@link Clear} as the chairs ahead leave).
+     */
+    record Granted(List<Integer> path, Integer upto) implements WheelchairMessage {
         public Granted {
             path = List.copyOf(path);
+            if (upto != null && !path.contains(upto)) {
+                throw new IllegalArgumentException("upto: node " + upto + " is not on the path " + path);
+            }
+        }
+
+        /** The whole route, at once. */
+        public Granted(List<Integer> path) {
+            this(path, null);
         }
 
         public String encode() {
-            return Content.of("granted").with("path", Codec.join(path)).toString();
+            return Content.of("granted").with("path", Codec.join(path)).maybe("upto", upto).toString();
         }
 
         static Granted read(Content c) {
-            return new Granted(Codec.nodes(c, "path"));
+            return new Granted(Codec.nodes(c, "path"), Codec.optionalInt(c, "upto"));
         }
 
         public void to(Handler h, AclMessage m) {
             h.onGranted(this, m);
+        }
+    }
+
+    /**
+     * INFORM {@code clear}, traffic -> control, in the conversation of a granted reservation: the
+     * chair may drive on up to node {@code upto} of that route (the chairs ahead have left).
+     */
+    record Clear(int upto) implements WheelchairMessage {
+        public String encode() {
+            return Content.of("clear").with("upto", upto).toString();
+        }
+
+        static Clear read(Content c) {
+            return new Clear(c.integer("upto"));
+        }
+
+        public void to(Handler h, AclMessage m) {
+            h.onClear(this, m);
         }
     }
 

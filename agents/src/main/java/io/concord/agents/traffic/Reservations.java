@@ -21,16 +21,25 @@ import java.util.TreeMap;
  * route graph, who waits for which route, who is moved out of the way, what a silent chair keeps.
  * {@link TrafficAgent} speaks for it; the rules are tested alone ({@code ReservationsTest}).
  *
- * <p>Why whole routes: a chair that stands still holds one node (where it stands), a chair that
- * drives holds the rest of its route, and nobody else holds any of those. Two chairs can then
- * never meet on a node or an edge, and a chair waits only for chairs that stand still where it
- * must go. Such a wait ends by itself when the chair it waits for drives on; it does not when that
- * chair has nothing to do (it is moved out of the way) or waits in turn, round a cycle, for the
- * first (a deadlock: one chair of the cycle is moved out of the way). Out of the way is the
+ * <p>Each node has a queue of the chairs that hold it, in the order they were granted it; only the
+ * first of a queue may be on the node or on an edge to it. A chair that stands still holds the node
+ * it stands on; a chair granted a route joins the queue of every node of it, and drives into a node
+ * only when it is first there (it is granted the route with how far it may drive now, {@link
+ * Granted#upto()}, and told again, {@link Clear}, as the chairs ahead leave). A route is granted at
+ * once unless a node of it is held by a chair that will not leave it (one that stands still there,
+ * or ends its route there) or by a chair that is itself behind the asking one somewhere: then it
+ * waits. So the queues' order is the order of grants, a chair waits only for chairs granted before
+ * it, and a cycle of waits needs a chair that stands still (the proof is in docs/design.md). Such a
+ * wait ends by itself when the chair it waits for drives on; it does not when that chair has
+ * nothing to do (it is moved out of the way) or waits in turn, round a cycle, for the first (a
+ * deadlock: one chair of the cycle that stands still is moved out of the way; if none can be, a
+ * chair of it gives its grant back and asks again). With {@link TrafficRules#WHOLE_ROUTES} a route
+ * is granted only when nobody else holds any node of it, and is driven whole. Out of the way is the
  * nearest node nobody stands on, that no waiting route and no granted route's end needs, reached
  * over free nodes, and not in a patient's room (an area of kind {@code room}); a dead end or one of
- * the map's parking places is preferred to a corridor. Only a deadlock with no such node anywhere
- * sends a chair into a room.
+ * the map's parking places is preferred to a corridor. Only when no such node is free (a deadlock,
+ * or an idle chair standing where another must go, with every other way held) is a chair sent into
+ * a room.
  *
  * <p>Every call returns what the chairs are to be told, in order, as {@link Outcome}s; each answer
  * to a request carries the request's ticket (the agent's message, for its reply).
@@ -45,8 +54,12 @@ final class Reservations<T> {
     public sealed interface Outcome<T> {
     }
 
-    /** The route is the chair's: drive it. */
-    public record Granted<T>(String chair, T ticket, List<Integer> path) implements Outcome<T> {
+    /** The route is the chair's: drive it up to node {@code upto} (null: all of it), and wait there to be told {@link Clear}. */
+    public record Granted<T>(String chair, T ticket, List<Integer> path, Integer upto) implements Outcome<T> {
+    }
+
+    /** The chair granted the route of {@code ticket} may drive on up to node {@code upto}: the chairs ahead have left. */
+    public record Clear<T>(String chair, T ticket, int upto) implements Outcome<T> {
     }
 
     /** The route waits for the chairs in the way. */
@@ -68,10 +81,27 @@ final class Reservations<T> {
     private record Wait<T>(String chair, List<Integer> path, T ticket, long since, boolean aside) {
     }
 
+    /** A route granted in order: the chair may drive up to {@code path[upto]}; {@code told}: it was told the silent chair ahead. */
+    private static final class Route<T> {
+        final List<Integer> path;
+        final T ticket;
+        int upto;
+        boolean told;
+
+        Route(List<Integer> path, T ticket) {
+            this.path = path;
+            this.ticket = ticket;
+        }
+
+        int next() {
+            return upto + 1 < path.size() ? path.get(upto + 1) : -1;
+        }
+    }
+
     private final HospitalMap map;
     /** The map's parking places: where an idle chair stands best. */
     private final Set<Integer> parking;
-    private final boolean enabled;
+    private final TrafficRules rules;
     /** node -> the chairs holding it (two only when a chair's report contradicts a grant). */
     private final Map<Integer, Set<String>> holders = new TreeMap<>();
     /** chair -> the nodes it holds, where it stands first. */
@@ -86,30 +116,39 @@ final class Reservations<T> {
     private final Map<String, Long> heard = new HashMap<>();
     /** chair -> the nodes it last said it stands on, less those it has given back since. */
     private final Map<String, List<Integer>> standing = new HashMap<>();
+    /** chair -> its route granted in order, with its ticket and how far it may drive (index into the path). */
+    private final Map<String, Route<T>> routes = new TreeMap<>();
     private long grants;
     private long moves;
     private long deadlocks;
 
     /**
      * @param map   the route graph it reserves
-     * @param rules false only in tests: every route is granted at once, whoever holds its nodes
+     * @param rules how; {@link TrafficRules#NONE} only in tests
      */
-    public Reservations(HospitalMap map, boolean rules) {
+    public Reservations(HospitalMap map, TrafficRules rules) {
         this.map = map;
         this.parking = Set.copyOf(map.parking());
-        this.enabled = rules;
+        this.rules = rules;
     }
 
     // ---- what it can tell -----------------------------------------------------------------------
 
-    /** Who holds which node. */
-    public Map<Integer, Set<String>> holders() {
-        Map<Integer, Set<String>> out = new TreeMap<>();
+    /** Who holds which node, in the node's queue order (the first may be on it). */
+    public Map<Integer, List<String>> holders() {
+        Map<Integer, List<String>> out = new TreeMap<>();
         holders.forEach((k, v) -> {
             if (!v.isEmpty()) {
-                out.put(k, Set.copyOf(v));
+                out.put(k, List.copyOf(v));
             }
         });
+        return out;
+    }
+
+    /** Each chair's granted route still ahead of it, and how far it may drive now: {@code chair -> [path, upto]}. */
+    public Map<String, List<Integer>> cleared() {
+        Map<String, List<Integer>> out = new TreeMap<>();
+        routes.forEach((c, r) -> out.put(c, List.copyOf(r.path.subList(0, r.upto + 1))));
         return out;
     }
 
@@ -119,6 +158,13 @@ final class Reservations<T> {
         for (Wait<T> w : waiting.values()) {
             out.add(local(w.chair()) + " -> " + w.path() + " (in the way: " + blockers(w).stream().map(Reservations::local).toList() + ")");
         }
+        routes.forEach((c, r) -> {
+            List<String> ahead = waitsFor(c);
+            if (!ahead.isEmpty()) {
+                out.add(local(c) + " -> " + r.path + " at node " + r.path.get(r.upto) + " (ahead at node " + r.next() + ": "
+                        + ahead.stream().map(Reservations::local).toList() + ")");
+            }
+        });
         return out;
     }
 
@@ -166,18 +212,21 @@ final class Reservations<T> {
         }
         List<Outcome<T>> out = new ArrayList<>();
         Integer target = aside.get(chair);
-        drop(chair, "a new route", out);
         List<Integer> keep = new ArrayList<>(at);
-        if (asked && target != null && path.contains(target)) {
+        boolean stepping = asked && target != null && path.contains(target);
+        if (stepping) {
+            keep.add(target);
+        }
+        drop(chair, "a new route", out, keep);
+        if (stepping) {
             // Stepping aside: the node it was sent to stays its own while it waits.
             aside.put(chair, target);
-            keep.add(target);
         }
         hold(chair, keep);
         standing.put(chair, new ArrayList<>(at));
         idle.remove(chair);
         Wait<T> w = new Wait<>(chair, List.copyOf(path), ticket, nowMs, asked);
-        if (!enabled || blockers(w).isEmpty()) {
+        if (rules == TrafficRules.NONE || blockers(w).isEmpty()) {
             grant(w, out);
         } else {
             waiting.put(chair, w);
@@ -198,7 +247,7 @@ final class Reservations<T> {
     /** A chair has nothing to do, standing on {@code at}. */
     public List<Outcome<T>> idle(String chair, List<Integer> at, long nowMs) {
         List<Outcome<T>> out = new ArrayList<>();
-        drop(chair, "idle", out);
+        drop(chair, "idle", out, at);
         hold(chair, at);
         standing.put(chair, new ArrayList<>(at));
         idle.add(chair);
@@ -221,22 +270,35 @@ final class Reservations<T> {
 
     // ---- the rules ------------------------------------------------------------------------------
 
-    /** Forgets a chair's wait (answering it FAILURE) and every node it holds. */
-    private void drop(String chair, String why, List<Outcome<T>> out) {
+    /**
+     * Forgets a chair's wait (answering it FAILURE) and every node it holds but {@code keep} (where
+     * it stands: it keeps its place in those nodes' queues).
+     */
+    private void drop(String chair, String why, List<Outcome<T>> out, List<Integer> keep) {
         Wait<T> old = waiting.remove(chair);
         if (old != null) {
             out.add(new Failed<>(chair, old.ticket(), "superseded by " + why, null));
         }
         List<Integer> mine = held.remove(chair);
         if (mine != null) {
+            List<Integer> kept = new ArrayList<>();
+            for (int n : keep) {
+                if (mine.contains(n) && !kept.contains(n)) {
+                    kept.add(n);
+                }
+            }
             for (int n : mine) {
                 Set<String> h = holders.get(n);
-                if (h != null) {
+                if (h != null && !keep.contains(n)) {
                     h.remove(chair);
                 }
             }
+            if (!kept.isEmpty()) {
+                held.put(chair, kept);
+            }
         }
         aside.remove(chair);
+        routes.remove(chair);
     }
 
     private void hold(String chair, List<Integer> nodes) {
@@ -272,16 +334,90 @@ final class Reservations<T> {
         hold(w.chair(), w.path());
         goals.put(w.chair(), w.path().get(w.path().size() - 1));
         grants++;
-        out.add(new Granted<>(w.chair(), w.ticket(), w.path()));
+        if (rules != TrafficRules.IN_ORDER) {
+            out.add(new Granted<>(w.chair(), w.ticket(), w.path(), null));
+            return;
+        }
+        Route<T> r = new Route<>(w.path(), w.ticket());
+        routes.put(w.chair(), r);
+        advance(w.chair(), r);
+        out.add(new Granted<>(w.chair(), w.ticket(), w.path(), r.path.get(r.upto)));
     }
 
-    /** The chairs holding any node of a waiting route. */
+    /** Moves a route's {@code upto} on over every node whose queue the chair now heads; true if it moved. */
+    private boolean advance(String chair, Route<T> r) {
+        int before = r.upto;
+        while (r.upto + 1 < r.path.size() && chair.equals(head(r.path.get(r.upto + 1)))) {
+            r.upto++;
+        }
+        return r.upto != before;
+    }
+
+    /** The chair first in a node's queue, or null. */
+    private String head(int node) {
+        Set<String> h = holders.get(node);
+        return h == null || h.isEmpty() ? null : h.iterator().next();
+    }
+
+    /**
+     * The chairs a waiting route waits for. Whole routes: whoever holds a node of it. In order:
+     * whoever holds a node of it and will not drive through it (it stands or ends there, or is
+     * silent), or is behind the asking chair in some queue (the asking chair would then wait for a
+     * chair that waits for it).
+     */
     private List<String> blockers(Wait<T> w) {
         List<String> out = new ArrayList<>();
+        Set<String> behind = rules == TrafficRules.IN_ORDER ? behind(w.chair()) : Set.of();
         for (int n : w.path()) {
             for (String h : holders.getOrDefault(n, Set.of())) {
-                if (!h.equals(w.chair()) && !out.contains(h)) {
+                if (!h.equals(w.chair()) && !out.contains(h)
+                        && (rules != TrafficRules.IN_ORDER || !passes(h, n) || behind.contains(h))) {
                     out.add(h);
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The chairs a chair waits for: those its waiting route waits for, or the one ahead of it where its granted route stops. */
+    private List<String> waitsFor(String chair) {
+        Wait<T> w = waiting.get(chair);
+        if (w != null) {
+            return blockers(w);
+        }
+        Route<T> r = routes.get(chair);
+        if (r != null && r.next() >= 0) {
+            String h = head(r.next());
+            if (h != null && !h.equals(chair)) {
+                return List.of(h);
+            }
+        }
+        return List.of();
+    }
+
+    /** Whether {@code chair} will drive on through {@code node}: it is on its granted route, not its end, and the chair is heard. */
+    private boolean passes(String chair, int node) {
+        Route<T> r = routes.get(chair);
+        if (r == null || silent.contains(chair) || idle.contains(chair) || aside.containsKey(chair)) {
+            return false;
+        }
+        int i = r.path.indexOf(node);
+        return i >= 0 && i < r.path.size() - 1;
+    }
+
+    /** Every chair behind {@code chair} in some node's queue, and behind those, and so on. */
+    private Set<String> behind(String chair) {
+        Set<String> out = new HashSet<>();
+        ArrayDeque<String> todo = new ArrayDeque<>(List.of(chair));
+        while (!todo.isEmpty()) {
+            String c = todo.poll();
+            for (int n : held.getOrDefault(c, List.of())) {
+                boolean after = false;
+                for (String h : holders.getOrDefault(n, Set.of())) {
+                    if (after && out.add(h)) {
+                        todo.add(h);
+                    }
+                    after |= h.equals(c);
                 }
             }
         }
@@ -302,40 +438,100 @@ final class Reservations<T> {
                 grant(w, out);
             }
         }
-        for (Wait<T> w : new ArrayList<>(waiting.values())) {
-            if (waiting.get(w.chair()) != w) {
+        for (Map.Entry<String, Route<T>> e : routes.entrySet()) {
+            Route<T> r = e.getValue();
+            if (advance(e.getKey(), r)) {
+                out.add(new Clear<>(e.getKey(), r.ticket, r.path.get(r.upto)));
+            }
+        }
+        List<String> stuck = new ArrayList<>(waiting.keySet());
+        routes.forEach((c, r) -> {
+            if (!waitsFor(c).isEmpty()) {
+                stuck.add(c);
+            }
+        });
+        for (String chair : stuck) {
+            Wait<T> w = waiting.get(chair);
+            Route<T> granted = w == null ? routes.get(chair) : null;
+            if (w == null && granted == null) {
                 continue;
             }
-            List<String> in = blockers(w);
+            List<String> in = waitsFor(chair);
+            if (in.isEmpty()) {
+                continue;
+            }
             String gone = in.stream().filter(silent::contains).findFirst().orElse(null);
             if (gone != null) {
-                waiting.remove(w.chair());
-                out.add(new Failed<>(w.chair(), w.ticket(), local(gone) + " is silent and stands on the route", firstHeldBy(w.path(), gone)));
+                String why = local(gone) + " is silent and stands on the route";
+                if (w != null) {
+                    waiting.remove(chair);
+                    out.add(new Failed<>(chair, w.ticket(), why, firstHeldBy(w.path(), gone)));
+                } else if (!granted.told) {
+                    granted.told = true;
+                    out.add(new Failed<>(chair, granted.ticket, why, granted.next()));
+                }
                 continue;
             }
             boolean moved = false;
             for (String h : in) {
                 if (idle.contains(h) && !aside.containsKey(h)) {
-                    moved |= makeWay(h, "it is idle in the way of " + local(w.chair()), false, out);
+                    String why = "it is idle in the way of " + local(chair);
+                    // A room only if nothing else is free: it stands where the other must go (its destination, say).
+                    moved |= makeWay(h, why, false, out) || makeWay(h, why, true, out);
                 }
             }
             if (moved) {
                 continue;
             }
-            List<String> cycle = cycle(w.chair());
+            List<String> cycle = cycle(chair);
             if (cycle.isEmpty() || cycle.stream().anyMatch(aside::containsKey)) {
                 continue;
             }
             deadlocks++;
+            String why = "deadlock " + cycle.stream().map(Reservations::local).toList();
+            // A chair that stands still steps aside; one granted a route ahead of others cannot (it is under way).
             List<String> victims = new ArrayList<>(cycle);
+            victims.removeIf(routes::containsKey);
             victims.sort(null);
+            boolean broken = false;
             for (String v : victims) {
-                String why = "deadlock " + cycle.stream().map(Reservations::local).toList();
                 if (makeWay(v, why, false, out) || makeWay(v, why, true, out)) {
+                    broken = true;
                     break;
                 }
             }
+            if (!broken) {
+                // Nobody can step aside: a granted chair of the cycle gives back all but where it stands and asks again.
+                List<String> granteds = new ArrayList<>(cycle);
+                granteds.retainAll(routes.keySet());
+                granteds.sort(null);
+                if (!granteds.isEmpty()) {
+                    withdraw(granteds.get(0), why, out);
+                }
+            }
         }
+    }
+
+    /**
+     * Takes a granted route back (a deadlock nobody could step aside from): the chair keeps what it
+     * stands on, and is told FAILURE with no node, so that it plans again from where it is.
+     */
+    private void withdraw(String chair, String why, List<Outcome<T>> out) {
+        Route<T> r = routes.remove(chair);
+        List<Integer> body = new ArrayList<>(standing.getOrDefault(chair, List.of()));
+        body.retainAll(held.getOrDefault(chair, List.of()));
+        if (body.isEmpty()) {
+            body.add(r.path.get(r.upto));
+        }
+        for (int n : new ArrayList<>(held.getOrDefault(chair, List.of()))) {
+            if (!body.contains(n)) {
+                giveBack(chair, n);
+            }
+        }
+        goals.remove(chair);
+        moves++;
+        out.add(new Failed<>(chair, r.ticket, why + ": the route is given back, ask again", null));
+        out.add(new Note<>(local(chair) + " gives its route back, keeping " + body + " (" + why + ")"));
     }
 
     private int firstHeldBy(List<Integer> path, String chair) {
@@ -380,15 +576,12 @@ final class Reservations<T> {
 
     private boolean dfs(String start, String c, List<String> path, Set<String> seen) {
         path.add(c);
-        Wait<T> w = waiting.get(c);
-        if (w != null) {
-            for (String h : blockers(w)) {
-                if (h.equals(start)) {
-                    return true;
-                }
-                if (seen.add(h) && dfs(start, h, path, seen)) {
-                    return true;
-                }
+        for (String h : waitsFor(c)) {
+            if (h.equals(start)) {
+                return true;
+            }
+            if (seen.add(h) && dfs(start, h, path, seen)) {
+                return true;
             }
         }
         path.remove(path.size() - 1);

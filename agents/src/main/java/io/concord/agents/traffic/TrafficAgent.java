@@ -3,6 +3,7 @@ package io.concord.agents.traffic;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.proto.Services;
 import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.Clear;
 import io.concord.agents.proto.WheelchairMessage.Failure;
 import io.concord.agents.proto.WheelchairMessage.Granted;
 import io.concord.agents.proto.WheelchairMessage.Here;
@@ -25,21 +26,22 @@ import io.concord.layers.platform.ServiceDescription;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.function.Consumer;
 
 /**
- * Keeps chairs apart on the map's route graph: a chair drives a route only once it holds every
- * node of it, and gives back each node as it leaves it. The rules are {@link Reservations}'s (why
- * whole routes, who is moved out of the way, what a silent chair keeps); this agent speaks them.
+ * Keeps chairs apart on the map's route graph: a chair reserves its route, drives into a node only
+ * when it is first in that node's queue, and gives back each node as it leaves it. The rules are
+ * {@link Reservations}'s (the queues, who is moved out of the way, what a silent chair keeps); this
+ * agent speaks them.
  *
  * <p>Messages (ontology {@code concord-wheelchair}), from a chair's control agent:
  * <ul>
  *   <li>REQUEST {@code reserve; at=<nodes it stands on>; path=<route>[; aside=true]}: it gives
- *       back everything but {@code at}, and is granted the route (INFORM {@code granted; path})
- *       at once or later, with an AGREE naming who is in the way meanwhile; a route that is not
- *       on the map is REFUSEd. A wait that cannot end (a silent chair stands on the route) gets a
- *       FAILURE with the reason.</li>
+ *       back everything but {@code at}, and is granted the route (INFORM {@code granted; path;
+ *       upto}: how far it may drive now) at once or later, with an AGREE naming who is in the way
+ *       meanwhile; then INFORM {@code clear; upto} in the same conversation each time the chairs
+ *       ahead let it drive farther. A route that is not on the map is REFUSEd. A wait that cannot
+ *       end (a silent chair stands on the route, or ahead of it) gets a FAILURE with the reason.</li>
  *   <li>INFORM {@code release; node}: it has left the node.</li>
  *   <li>INFORM {@code idle; at}: it has nothing to do, standing at {@code at}.</li>
  *   <li>INFORM {@code here[; at=<nodes>]}: it is alive (its holds are kept), standing on those
@@ -58,21 +60,25 @@ public class TrafficAgent extends Agent {
     private final Consumer<String> log;
     private final Reservations<AclMessage> rules;
     private final Map<String, AID> aids = new HashMap<>();
+    /** Wall time of the last decisions (each call of the rules), for the operator and the benchmark; no rule reads it. */
+    private final long[] decisionNs = new long[1 << 12];
+    private long decisions;
 
     /**
      * @param map the route graph it reserves
      * @param log told of every chair moved out of the way and every silent chair
      */
     public TrafficAgent(HospitalMap map, Consumer<String> log) {
-        this(map, log, true);
+        this(map, log, TrafficRules.IN_ORDER);
     }
 
     /**
-     * For tests only: with {@code rules} false every route is granted at once, whoever holds its
-     * nodes (the chairs then keep apart by their range sensors alone), to show what the
-     * reservations do. Fixed at construction: nothing can switch a running traffic agent's rules off.
+     * With other rules: {@link TrafficRules#WHOLE_ROUTES} to compare with, {@link TrafficRules#NONE}
+     * only in tests (every route granted at once; the chairs keep apart by their range sensors
+     * alone), to show what the reservations do. Fixed at construction: nothing can switch a running
+     * traffic agent's rules.
      */
-    public TrafficAgent(HospitalMap map, Consumer<String> log, boolean rules) {
+    public TrafficAgent(HospitalMap map, Consumer<String> log, TrafficRules rules) {
         this.map = map;
         this.log = log;
         this.rules = new Reservations<>(map, rules);
@@ -87,16 +93,22 @@ public class TrafficAgent extends Agent {
         addBehaviour(new TickerBehaviour(this, REVIEW_MS) {
             @Override
             protected void onTick() {
-                tell(rules.review(currentTimeMillis()));
+                long now = currentTimeMillis();
+                tell(timed(() -> rules.review(now)));
             }
         });
     }
 
     // ---- what it can tell (tests, console) ------------------------------------------------------
 
-    /** Who holds which node. */
-    public Map<Integer, Set<String>> holders() {
+    /** Who holds which node, in each node's queue order (the first may be on it). */
+    public Map<Integer, List<String>> holders() {
         return rules.holders();
+    }
+
+    /** Each chair's granted route, up to where it may drive now. */
+    public Map<String, List<Integer>> cleared() {
+        return rules.cleared();
     }
 
     /** Who waits for which route, and who is in the way. */
@@ -137,19 +149,22 @@ public class TrafficAgent extends Agent {
         @Override
         public void onReserve(Reserve r, AclMessage m) {
             long now = heard(m);
-            tell(rules.reserve(m.getSender().name(), m, onMap("at", r.at()), onMap("path", r.path()), r.aside(), now));
+            List<Integer> at = onMap("at", r.at());
+            List<Integer> path = onMap("path", r.path());
+            tell(timed(() -> rules.reserve(m.getSender().name(), m, at, path, r.aside(), now)));
         }
 
         @Override
         public void onRelease(Release r, AclMessage m) {
             long now = heard(m);
-            tell(rules.release(m.getSender().name(), r.node(), now));
+            tell(timed(() -> rules.release(m.getSender().name(), r.node(), now)));
         }
 
         @Override
         public void onIdle(Idle i, AclMessage m) {
             long now = heard(m);
-            tell(rules.idle(m.getSender().name(), onMap("at", i.at()), now));
+            List<Integer> at = onMap("at", i.at());
+            tell(timed(() -> rules.idle(m.getSender().name(), at, now)));
         }
 
         @Override
@@ -178,11 +193,31 @@ public class TrafficAgent extends Agent {
         return now;
     }
 
+    /** Up to the last 4,096 decisions' wall times (one call of the rules each: a request, a release, a review), in ns. */
+    public long[] decisionTimesNs() {
+        int n = (int) Math.min(decisions, decisionNs.length);
+        return java.util.Arrays.copyOf(decisionNs, n);
+    }
+
+    /** Decisions taken so far. */
+    public long decisions() {
+        return decisions;
+    }
+
+    private List<Reservations.Outcome<AclMessage>> timed(java.util.function.Supplier<List<Reservations.Outcome<AclMessage>>> call) {
+        long t0 = System.nanoTime();
+        List<Reservations.Outcome<AclMessage>> out = call.get();
+        decisionNs[(int) (decisions++ & (decisionNs.length - 1))] = System.nanoTime() - t0;
+        return out;
+    }
+
     /** Tells the chairs what the rules decided, in order. */
     private void tell(List<Reservations.Outcome<AclMessage>> outcomes) {
         for (Reservations.Outcome<AclMessage> o : outcomes) {
             if (o instanceof Reservations.Granted<AclMessage> g) {
-                send(g.ticket().createReply().setPerformative(Performative.INFORM).setContent(new Granted(g.path()).encode()));
+                send(g.ticket().createReply().setPerformative(Performative.INFORM).setContent(new Granted(g.path(), g.upto()).encode()));
+            } else if (o instanceof Reservations.Clear<AclMessage> c) {
+                send(c.ticket().createReply().setPerformative(Performative.INFORM).setContent(new Clear(c.upto()).encode()));
             } else if (o instanceof Reservations.Waiting<AclMessage> w) {
                 send(w.ticket().createReply().setPerformative(Performative.AGREE).setContent(new ReserveWaits(w.heldBy()).encode()));
             } else if (o instanceof Reservations.Failed<AclMessage> f) {

@@ -27,12 +27,22 @@ class RouteFollowerTest {
     final List<String> told = new ArrayList<>();
     boolean trafficGrants = true;
     boolean doorOpen = true;
+    /** The last index of the route it may drive to (the traffic agent's upto). */
+    int clearTo = Integer.MAX_VALUE;
 
     final RouteFollower.Way way = new RouteFollower.Way() {
         @Override
         public boolean mayDrive(List<Integer> route, List<Integer> standsOn) {
             told.add("may I drive " + route + " from " + standsOn);
             return trafficGrants;
+        }
+
+        @Override
+        public boolean mayGoOn(List<Integer> route, int index) {
+            if (index > clearTo) {
+                told.add("not my turn at " + route.get(index));
+            }
+            return index <= clearTo;
         }
 
         @Override
@@ -97,6 +107,22 @@ class RouteFollowerTest {
         step(100, AT_3_FACING_WEST, 3.0);
         assertEquals(List.of("stop", "stop"), chair.commands);
         assertTrue(told.stream().noneMatch(s -> s.startsWith("sets off")), "it never set off: " + told);
+    }
+
+    /** Granted only up to the node it stands on (another chair is ahead): it stands there, not on the edge, until told to go on. */
+    @Test
+    void standsAtItsNodeUntilTheNextIsItsTurn() {
+        clearTo = 0;
+        follower.follow(List.of(3, 1));
+        step(0, AT_3_FACING_WEST, 3.0);
+        step(100, AT_3_FACING_WEST, 3.0);
+        assertEquals(List.of("stop", "stop"), chair.commands);
+        assertTrue(told.stream().noneMatch(s -> s.startsWith("sets off")), "it never set off: " + told);
+        assertEquals(List.of(3), follower.standsOn(), "its body takes only node 3");
+        clearTo = 1;
+        step(200, AT_3_FACING_WEST, 3.0);
+        assertTrue(told.contains("sets off on [3, 1]"), told.toString());
+        assertTrue(chair.lastPowers()[0] > 0, chair.last());
     }
 
     @Test

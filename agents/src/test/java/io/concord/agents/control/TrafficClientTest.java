@@ -66,6 +66,34 @@ class TrafficClientTest {
         assertEquals(List.of(1, 2, 3), client.held());
     }
 
+    /**
+     * Granted behind another chair: it may drive only as far as {@code upto}; a {@code clear} in the
+     * grant's conversation lets it on, one of another conversation (an old grant) does not, and a
+     * FAILURE after the grant (the chair ahead fell silent) ends the grant and is told.
+     */
+    @Test
+    void aGrantInOrderIsDrivenUpToWhereItIsClear() {
+        List<Integer> route = new ArrayList<>(List.of(1, 2, 3));
+        client.mayDrive(route, List.of(1), false);
+        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted").with("path", "1,2,3").with("upto", 2))
+                .setConversationId("c1"));
+        assertTrue(client.mayDrive(route, List.of(1), false));
+        assertTrue(client.mayGoOn(route, 1));
+        assertFalse(client.mayGoOn(route, 2), "node 3 is not its turn yet");
+        assertEquals(3, client.waitsAt());
+        AclMessage old = answer(Performative.INFORM, Content.of("clear").with("upto", 3)).setConversationId("c0");
+        assertFalse(client.isAboutGrant(old));
+        client.aboutGrant(old);
+        assertFalse(client.mayGoOn(route, 2), "a clear of another reservation changes nothing");
+        client.aboutGrant(answer(Performative.INFORM, Content.of("clear").with("upto", 3)).setConversationId("c1"));
+        assertTrue(client.mayGoOn(route, 2));
+        assertEquals(-1, client.waitsAt());
+        client.aboutGrant(answer(Performative.FAILURE, Content.of("failure").with("node", 3).with("reason", "x is silent"))
+                .setConversationId("c1"));
+        assertEquals(List.of("3 FAILURE: x is silent"), refused);
+        assertFalse(client.mayDriveNow(route), "the grant is over");
+    }
+
     @Test
     void aStepAsideIsAskedWithPriority() {
         client.mayDrive(List.of(4, 5), List.of(4), true);

@@ -90,6 +90,8 @@ class WheelchairMessageTest {
             new Case(new Reserve(List.of(7), List.of(7, 8, 10, 26), false), REQUEST, "reserve; at=7; path=7,8,10,26"),
             new Case(new Reserve(List.of(26), List.of(26, 10, 25), true), REQUEST, "reserve; at=26; path=26,10,25; aside=true"),
             new Case(new Granted(List.of(7, 8, 10, 26)), INFORM, "granted; path=7,8,10,26"),
+            new Case(new Granted(List.of(7, 8, 10, 26), 8), INFORM, "granted; path=7,8,10,26; upto=8"),
+            new Case(new Clear(26), INFORM, "clear; upto=26"),
             new Case(new ReserveWaits(List.of("control-chair2")), AGREE, "reserve; held-by=control-chair2"),
             new Case(new Release(7), INFORM, "release; node=7"),
             new Case(new Idle(List.of(26)), INFORM, "idle; at=26"),

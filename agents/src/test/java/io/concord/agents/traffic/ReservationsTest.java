@@ -1,6 +1,7 @@
 package io.concord.agents.traffic;
 
 import io.concord.agents.map.HospitalMap;
+import io.concord.agents.traffic.Reservations.Clear;
 import io.concord.agents.traffic.Reservations.Failed;
 import io.concord.agents.traffic.Reservations.Granted;
 import io.concord.agents.traffic.Reservations.MakeWay;
@@ -18,7 +19,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The traffic rules alone, with no agent and no clock: a corridor of five nodes (1-2-3-4-5) with a
- * room off its middle (6, a dead end), and chairs a, b, c. Time is whatever the test says.
+ * room off its middle (6, a dead end), and chairs a, b, c, d. Time is whatever the test says. The
+ * rules in order (the default) unless a test says whole routes.
  */
 class ReservationsTest {
     static final String CORRIDOR = """
@@ -46,43 +48,113 @@ class ReservationsTest {
             """;
     static final HospitalMap MAP = HospitalMap.parse(CORRIDOR, "test");
 
-    private final Reservations<String> r = new Reservations<>(MAP, true);
+    private final Reservations<String> r = new Reservations<>(MAP, TrafficRules.IN_ORDER);
+    private final Reservations<String> whole = new Reservations<>(MAP, TrafficRules.WHOLE_ROUTES);
 
     private static <T extends Outcome<String>> List<T> only(List<Outcome<String>> out, Class<T> kind) {
         return out.stream().filter(kind::isInstance).map(kind::cast).toList();
     }
 
     private List<Outcome<String>> reserve(String chair, String ticket, List<Integer> at, List<Integer> path, long now) {
-        r.heard(chair, now);
-        return r.reserve(chair, ticket, at, path, false, now);
+        return reserve(r, chair, ticket, at, path, now);
+    }
+
+    private static List<Outcome<String>> reserve(Reservations<String> rules, String chair, String ticket, List<Integer> at,
+                                                 List<Integer> path, long now) {
+        rules.heard(chair, now);
+        return rules.reserve(chair, ticket, at, path, false, now);
     }
 
     @Test
     void aFreeRouteIsGrantedAtOnceAndHeldUntilGivenBack() {
         List<Outcome<String>> out = reserve("a", "t1", List.of(1), List.of(1, 2, 3), 0);
-        assertEquals(List.of(new Granted<>("a", "t1", List.of(1, 2, 3))), out);
-        assertEquals(Map.of(1, Set.of("a"), 2, Set.of("a"), 3, Set.of("a")), r.holders());
+        assertEquals(List.of(new Granted<>("a", "t1", List.of(1, 2, 3), 3)), out, "all of it, up to its end");
+        assertEquals(Map.of(1, List.of("a"), 2, List.of("a"), 3, List.of("a")), r.holders());
         r.release("a", 1, 10);
         assertEquals(Set.of(2, 3), r.holders().keySet());
         assertEquals(1, r.grants());
     }
 
+    /**
+     * In order, a chair follows another down the corridor: granted at once behind it, up to the
+     * node before the one the first still holds, and told to go on as the first leaves each node.
+     */
     @Test
-    void aRouteThroughAnotherChairsNodesWaitsAndIsGrantedWhenTheyAreGivenBack() {
-        reserve("a", "ta", List.of(3), List.of(3, 4), 0);
-        List<Outcome<String>> out = reserve("b", "tb", List.of(1), List.of(1, 2, 3), 0);
-        assertEquals(List.of(new Waiting<>("b", "tb", List.of("a"))), out, "b waits, told who is in the way");
-        assertEquals(List.of("b -> [1, 2, 3] (in the way: [a])"), r.waits());
-        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3))), r.release("a", 3, 100), "granted once a has left 3");
+    void aChairFollowsAnotherDownTheCorridorInTheSameDirection() {
+        reserve("a", "ta", List.of(2), List.of(2, 3, 4, 5), 0);
+        List<Outcome<String>> out = reserve("b", "tb", List.of(1), List.of(1, 2, 3, 4), 0);
+        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4), 1)), out, "granted behind a: up to node 1, where it stands");
+        assertEquals(List.of("a", "b"), r.holders().get(3), "node 3's queue: a, then b");
+        assertEquals(List.of("b -> [1, 2, 3, 4] at node 1 (ahead at node 2: [a])"), r.waits());
+        assertEquals(List.of(new Clear<>("b", "tb", 2)), r.release("a", 2, 60), "a reached 3 and left 2: b may drive to 2, not 3");
+        assertEquals(List.of(new Clear<>("b", "tb", 3)), r.release("a", 3, 70), "a reached 4: b may drive to 3");
+        assertEquals(List.of(new Clear<>("b", "tb", 4)), r.release("a", 4, 80), "a reached 5: b may drive to its end");
+        assertEquals(2, r.grants());
     }
 
+    /** Whole routes, as before issue 37: the follower waits until the chair ahead has given back every node of its route. */
     @Test
-    void theWaitEndsWhenTheLastNodeInTheWayIsGivenBack() {
+    void withWholeRoutesARouteThroughAnotherChairsNodesWaitsUntilTheyAreGivenBack() {
+        reserve(whole, "a", "ta", List.of(3), List.of(3, 4), 0);
+        List<Outcome<String>> out = reserve(whole, "b", "tb", List.of(1), List.of(1, 2, 3), 0);
+        assertEquals(List.of(new Waiting<>("b", "tb", List.of("a"))), out, "b waits, told who is in the way");
+        assertEquals(List.of("b -> [1, 2, 3] (in the way: [a])"), whole.waits());
+        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3), null)), whole.release("a", 3, 100), "granted once a has left 3");
+    }
+
+    /** A chair never drives through a node where another ends its route (it would stop there): the route waits. */
+    @Test
+    void aRouteThroughAnotherChairsDestinationWaitsForIt() {
+        reserve("a", "ta", List.of(2), List.of(2, 3), 0);
+        List<Outcome<String>> out = reserve("b", "tb", List.of(1), List.of(1, 2, 3, 4), 0);
+        assertEquals(List.of(new Waiting<>("b", "tb", List.of("a"))), out);
+        r.release("a", 2, 10);
+        r.heard("a", 20);
+        List<Outcome<String>> after = r.idle("a", List.of(3), 20);
+        List<MakeWay> moved = only(after, MakeWay.class);
+        assertEquals(List.of("a"), moved.stream().map(MakeWay::chair).toList(), "a, idle on b's route, makes way: " + after);
+    }
+
+    /**
+     * Two chairs on one lane, the second following the first, and the first turns back (a new
+     * plan): each waits for the other, a deadlock; the one that stands still steps aside into the
+     * dead end, and the one under way drives on.
+     */
+    @Test
+    void aChairTurningBackBeforeOneFollowingItStepsAsideIntoTheDeadEnd() {
         reserve("a", "ta", List.of(2), List.of(2, 3, 4), 0);
-        reserve("b", "tb", List.of(1), List.of(1, 2), 0);
-        assertEquals(List.of(), only(r.release("a", 3, 50), Granted.class), "2 is still a's");
-        List<Granted> granted = only(r.release("a", 2, 60), Granted.class);
-        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2))), granted);
+        reserve("b", "tb", List.of(1), List.of(1, 2, 3), 0);
+        r.release("a", 2, 10); // a reached 3
+        r.release("b", 1, 20); // b reached 2
+        List<Outcome<String>> out = reserve("a", "ta2", List.of(3), List.of(3, 2, 1), 30);
+        assertEquals(1, r.deadlocks(), out.toString());
+        assertEquals(List.of(new MakeWay<>("a", 3, 6, List.of(6))), only(out, MakeWay.class));
+        r.heard("a", 40);
+        r.reserve("a", "ta3", List.of(3), List.of(3, 6), true, 40);
+        assertEquals(List.of(new Clear<>("b", "tb", 3)), only(r.release("a", 3, 50), Clear.class), "a left 3 for the dead end: b drives on");
+    }
+
+    /**
+     * The same, with every node a could step aside to taken: nobody can step aside, so b, under
+     * way, gives its route back (keeping node 2, where it stands) and is told to ask again.
+     */
+    @Test
+    void aDeadlockNobodyCanStepAsideFromTakesAGrantBack() {
+        reserve("a", "ta", List.of(2), List.of(2, 3, 4, 5), 0);
+        reserve("b", "tb", List.of(1), List.of(1, 2, 3), 0);
+        r.release("a", 2, 10);
+        r.release("b", 1, 20);
+        r.heard("c", 20);
+        r.idle("c", List.of(6), 20);
+        r.heard("d", 20);
+        r.idle("d", List.of(4), 20); // after a in 4's queue: it takes 4 once a gives it back
+        List<Outcome<String>> out = reserve("a", "ta3", List.of(3), List.of(3, 2, 1), 30);
+        List<MakeWay> moved = only(out, MakeWay.class);
+        assertEquals(List.of(), moved, "nowhere to step aside to");
+        List<Failed> failed = only(out, Failed.class);
+        assertEquals(List.of(new Failed<>("b", "tb", "deadlock [a, b]: the route is given back, ask again", null)), failed, out.toString());
+        assertEquals(List.of("b"), r.holders().get(2), "b keeps where it stands");
+        assertEquals(List.of("a"), r.holders().get(3));
     }
 
     @Test
@@ -96,7 +168,7 @@ class ReservationsTest {
         r.heard("a", 10);
         r.reserve("a", "ta", List.of(3), List.of(3, 6), true, 10);
         List<Granted> granted = only(r.release("a", 3, 20), Granted.class);
-        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4))), granted, "b goes once a has left 3");
+        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4), 4)), granted, "b goes once a has left 3");
     }
 
     /** Out of the way is never a patient's room: with the room off the corridor a room, the chair goes to the corridor's end. */
@@ -107,7 +179,7 @@ class ReservationsTest {
                 """, """
                     {"id": "ward", "kind": "ward", "name": "Ward", "polygon": [[0, 0], [30, 0], [30, 12], [0, 12]]},
                     {"id": "r6", "kind": "room", "ward": "ward", "polygon": [[10, 7], [16, 7], [16, 12], [10, 12]]}
-                """), "test"), true);
+                """), "test"), TrafficRules.IN_ORDER);
         rooms.heard("a", 0);
         rooms.idle("a", List.of(3), 0);
         rooms.heard("b", 0);
@@ -149,13 +221,13 @@ class ReservationsTest {
         reserve("a", "ta", List.of(3), List.of(3), 0);
         reserve("b", "tb", List.of(1), List.of(1, 2, 3), 0);
         List<Outcome<String>> out = reserve("b", "tb2", List.of(1), List.of(1, 2), 5);
-        assertEquals(List.of(new Failed<>("b", "tb", "superseded by a new route", null), new Granted<>("b", "tb2", List.of(1, 2))), out);
+        assertEquals(List.of(new Failed<>("b", "tb", "superseded by a new route", null), new Granted<>("b", "tb2", List.of(1, 2), 2)), out);
     }
 
     @Test
     void aRouteOffTheMapIsRefusedAndChangesNothing() {
         reserve("a", "ta", List.of(1), List.of(1, 2), 0);
-        Map<Integer, Set<String>> before = r.holders();
+        Map<Integer, List<String>> before = r.holders();
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> r.reserve("a", "tx", List.of(1), List.of(1, 5), false, 1));
         assertTrue(e.getMessage().contains("no edge 1-5"), e.getMessage());
@@ -164,12 +236,12 @@ class ReservationsTest {
 
     @Test
     void withoutTheRulesEveryRouteIsGrantedWhoeverHoldsIt() {
-        Reservations<String> off = new Reservations<>(MAP, false);
+        Reservations<String> off = new Reservations<>(MAP, TrafficRules.NONE);
         off.heard("a", 0);
         off.reserve("a", "ta", List.of(3), List.of(3, 4), false, 0);
         off.heard("b", 0);
         List<Outcome<String>> out = off.reserve("b", "tb", List.of(2), List.of(2, 3, 4), false, 0);
-        assertEquals(List.of(new Granted<>("b", "tb", List.of(2, 3, 4))), out);
-        assertEquals(Set.of("a", "b"), off.holders().get(3));
+        assertEquals(List.of(new Granted<>("b", "tb", List.of(2, 3, 4), null)), out);
+        assertEquals(List.of("a", "b"), off.holders().get(3));
     }
 }

@@ -302,7 +302,7 @@
           'stroke-width': sh.width || 0.1, 'stroke-linecap': 'round', 'stroke-dasharray': sh.dash || '' }, id));
       } else if (sh.type === 'circle') {
         e = svg('circle', Object.assign({ cx: sh.x, cy: -sh.y, r: sh.r, fill: sh.color || '#333',
-          stroke: sh.stroke || 'none', 'stroke-width': 0.05 }, id));
+          stroke: sh.stroke || 'none', 'stroke-width': sh.strokeWidth || 0.05, 'stroke-dasharray': sh.dash || '' }, id));
       } else if (sh.type === 'text') {
         e = svg('text', Object.assign({ x: sh.x, y: -sh.y, 'font-size': sh.size || 0.6, fill: sh.color || '#333',
           'text-anchor': 'middle' }, id), sh.text);

@@ -34,6 +34,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.Locale;
 
 /**
@@ -43,9 +44,10 @@ import java.util.Locale;
  * thought it went) and its collisions (red crosses). Java2D, headless.
  */
 public final class HospitalPicture {
+    /** Chairs' colours: none of them a door's (red, green, orange, grey). */
     private static final Color[] CHAIR_COLOURS = {
-        new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c), new Color(0x9467bd), new Color(0xff7f0e),
-        new Color(0x17becf), new Color(0x8c564b), new Color(0xe377c2), new Color(0x7f7f7f), new Color(0xbcbd22)
+        new Color(0x1f77b4), new Color(0x9467bd), new Color(0xe6ab02), new Color(0x17becf), new Color(0xe377c2),
+        new Color(0x8c564b), new Color(0x393b79), new Color(0xbcbd22), new Color(0x7b4173), new Color(0x000000)
     };
     private static final Color WALL = new Color(0x3a3a3a);
     private static final Color EDGE = new Color(0xb8c4d0);
@@ -89,6 +91,23 @@ public final class HospitalPicture {
         String title = caption != null ? caption : String.format(Locale.ROOT, "%s, t = %.1f s", world.map().name(),
                 world.worldTimeNs() / 1e9);
         p.save(p.draw(world.map(), world, title), png);
+    }
+
+    /**
+     * Writes the world as it is now with the traffic agent's reservations ({@code TrafficAgent.holders()}:
+     * node to the queue of chairs' agents, first the one whose turn it is): a ring round each node
+     * in the colour of its first chair, and a smaller ring for each chair queued after it.
+     */
+    public static void write(HospitalWorld world, Path png, String caption, Map<Integer, List<String>> reservations) {
+        HospitalPicture p = new HospitalPicture(world.map(), 24);
+        String title = caption != null ? caption : String.format(Locale.ROOT, "%s, t = %.1f s", world.map().name(),
+                world.worldTimeNs() / 1e9);
+        BufferedImage img = p.draw(world.map(), world, title);
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        p.reservations(g, world, reservations);
+        g.dispose();
+        p.save(img, png);
     }
 
     /** The world drawn as an image. */
@@ -360,6 +379,44 @@ public final class HospitalPicture {
             g.draw(new Line2D.Double(cx - 5, cy - 5, cx + 5, cy + 5));
             g.draw(new Line2D.Double(cx - 5, cy + 5, cx + 5, cy - 5));
         }
+    }
+
+    private void reservations(Graphics2D g, HospitalWorld world, Map<Integer, List<String>> reservations) {
+        List<SimChair> chairs = world.chairs();
+        Map<String, Color> colours = new java.util.HashMap<>();
+        for (int i = 0; i < chairs.size(); i++) {
+            colours.put(chairs.get(i).name(), CHAIR_COLOURS[i % CHAIR_COLOURS.length]);
+        }
+        reservations.forEach((node, queue) -> {
+            if (!world.map().hasNode(node)) {
+                return;
+            }
+            Point at = world.map().node(node).at();
+            for (int k = 0; k < queue.size(); k++) {
+                String agent = queue.get(k);
+                String chair = agent.replaceFirst("@.*", "").replaceFirst("^control-", "");
+                Color col = colours.getOrDefault(chair, Color.DARK_GRAY);
+                double r = (k == 0 ? 0.75 : Math.max(0.25, 0.6 - 0.12 * k)) * scale;
+                g.setColor(col);
+                g.setStroke(k == 0 ? new BasicStroke(3.5f) : new BasicStroke(1.6f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10,
+                        new float[] {3, 3}, 0));
+                g.draw(new Ellipse2D.Double(px(at.x()) - r, py(at.y()) - r, 2 * r, 2 * r));
+            }
+        });
+        int y = height - legendHeight + 28;
+        int x = width - margin - 330;
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        g.setColor(CHAIR_COLOURS[0]);
+        g.setStroke(new BasicStroke(3.5f));
+        g.draw(new Ellipse2D.Double(x, y - 10, 12, 12));
+        g.setColor(Color.DARK_GRAY);
+        g.drawString("reserved: its turn", x + 16, y);
+        x += 120;
+        g.setColor(CHAIR_COLOURS[1]);
+        g.setStroke(new BasicStroke(1.6f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10, new float[] {3, 3}, 0));
+        g.draw(new Ellipse2D.Double(x + 2, y - 8, 8, 8));
+        g.setColor(Color.DARK_GRAY);
+        g.drawString("queued after it (chair's colour)", x + 16, y);
     }
 
     private void path(Graphics2D g, Track track, Color col, Stroke stroke) {

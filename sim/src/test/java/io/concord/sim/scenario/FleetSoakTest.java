@@ -71,6 +71,10 @@ class FleetSoakTest {
             if (!clean) {
                 String stem = (map == ScenarioTest.MAP ? "" : map.name().replaceAll("[^A-Za-z0-9]+", "-") + "-") + "seed-" + seed;
                 HospitalPicture.write(r.world, Path.of("target", "fleet", stem + ".png"));
+                if (r.hospital.traffic() != null) {
+                    r.log.add("(at the end) traffic holds " + r.hospital.traffic().holders() + ", waits " + waits
+                            + ", may drive " + r.hospital.traffic().cleared());
+                }
                 r.writeLogs("fleet-" + stem);
             }
             return new Result(seed, chairs, out, r.world.collisions(), busy, waits, r.sim.trace().hash(),
@@ -89,7 +93,8 @@ class FleetSoakTest {
             Result r = run(seed, true);
             String where = "seed " + seed + " (" + r.chairs() + " chairs; log and picture in target/scenario, target/fleet)";
             for (MedicalAgent.Outcome o : r.outcomes()) {
-                assertNotNull(o, where + ": a task did not end within " + LIMIT_MS / 3_600_000 + " h: " + r.outcomes());
+                assertNotNull(o, where + ": a task did not end within " + LIMIT_MS / 3_600_000 + " h: " + r.outcomes()
+                        + "; waits for a route: " + r.waits());
                 assertTrue(o.done() || (o.reason() != null && !o.reason().isBlank()), where + ": failed without a reason: " + o);
                 done += o.done() ? 1 : 0;
             }

@@ -3,16 +3,14 @@ package io.concord.sim.scenario;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.traffic.TrafficRules;
 import io.concord.core.agent.AgentRuntime;
-import io.concord.core.agent.PortRange;
 import io.concord.testkit.FaultPlan;
 import io.concord.testkit.Simulation;
-import io.concord.layers.Profile;
-import io.concord.layers.SafetyStack;
 import io.concord.layers.Platform;
 import io.concord.sim.Hospital;
+import io.concord.sim.VirtualHospital;
 import io.concord.sim.render.HospitalPicture;
-import io.concord.sim.world.ChairConfig;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
 
@@ -55,25 +53,24 @@ class ScenarioTest {
 
         /** A run on {@code map}: its chairs start at the map's first parking places. */
         Run(HospitalMap map, long seed, FaultPlan plan, int chairs, boolean traffic, MedicalAgent.Settings medicalSettings) {
-            sim = new Simulation(seed, plan);
-            sim.platformName("hospital");
-            rt = sim.newRuntime("h1");
-            platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 200, 10))
-                    .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
-            world = HospitalWorld.builder(map).seed(seed).build();
-            for (int i = 0; i < chairs; i++) {
-                world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(map.parking().get(i), 90));
-            }
-            world.attach(rt);
+            this(map, seed, plan, chairs, traffic ? TrafficRules.IN_ORDER : null, medicalSettings);
+        }
+
+        /** A run on {@code map} whose traffic agent keeps {@code rules} (none if null). */
+        Run(HospitalMap map, long seed, FaultPlan plan, int chairs, TrafficRules traffic, MedicalAgent.Settings medicalSettings) {
+            VirtualHospital v = new VirtualHospital(map, seed, plan, chairs, traffic, medicalSettings, log::add);
+            sim = v.sim;
+            rt = v.runtime;
+            platform = v.platform;
+            world = v.world;
+            hospital = v.hospital;
+            medical = v.medical;
             sim.trace().addListener((ns, node, event, detail) -> {
                 if (event.equals("deliver") && !detail.contains("from ams@") && !node.startsWith("ams")) {
                     delivered.add(node.substring(0, node.indexOf('@')) + " <- " + detail.substring(0, detail.indexOf(" conv=")));
                 }
             });
-            hospital = Hospital.start(platform, world, log::add, traffic);
-            medical = new MedicalAgent(medicalSettings, log::add);
-            platform.startAgent("medical", medical);
-            assertTrue(sim.runUntil(hospital::ready, 60_000), "every planner knows every door");
+            assertTrue(v.ready(), "every planner knows every door");
         }
 
         void writeLogs(String name) {

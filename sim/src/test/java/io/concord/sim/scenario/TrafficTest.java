@@ -23,9 +23,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The traffic agent's rules one by one, with probes in place of the chairs' control agents, on
- * the virtual clock. A traffic agent built without its rules
- * ({@link TrafficAgent#TrafficAgent(io.concord.agents.map.HospitalMap, java.util.function.Consumer, boolean)}
- * with false) grants every route at once.
+ * the virtual clock, under its default rules (in order). A traffic agent built without rules
+ * ({@link io.concord.agents.traffic.TrafficRules#NONE}) grants every route at once.
  */
 class TrafficTest {
 
@@ -34,13 +33,17 @@ class TrafficTest {
         Asks asks;
         final List<AclMessage> agrees = new ArrayList<>();
         final List<Content> orders = new ArrayList<>();
+        /** FAILUREs that come after the answer (in a granted reservation's conversation). */
+        final List<AclMessage> failures = new ArrayList<>();
 
         @Override
         protected void setup() {
             asks = new Asks(this);
             addBehaviour(asks);
             io.concord.core.agent.Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM)
-                    .and(m -> m.getContent() != null && m.getContent().startsWith("make-way")), m -> orders.add(Content.parse(m.getContent())));
+                    .and(m -> m.getContent() != null && (m.getContent().startsWith("make-way") || m.getContent().startsWith("clear"))),
+                    m -> orders.add(Content.parse(m.getContent())));
+            io.concord.core.agent.Inbox.each(this, MessageTemplate.matchPerformative(Performative.FAILURE), failures::add);
         }
 
         CompletableFuture<AclMessage> reserve(String at, String path, boolean aside) {
@@ -83,25 +86,30 @@ class TrafficTest {
         return Content.parse(m.getContent()).get("reason");
     }
 
+    /**
+     * a drives 19, 22, 7, 8; b's route crosses it the other way (7, then 22): b is granted at once,
+     * but only up to node 6, where it stands, and told to go on once a has left 7 (and 22 before it).
+     */
     @Test
-    void aRouteIsGrantedWholeAndACrossingRouteWaitsUntilEveryNodeOfItIsGivenBack() {
+    void aCrossingRouteIsGrantedBehindAndClearedOnlyOnceTheChairAheadHasLeftItsNodes() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
             Chair a = chair(r, "a");
             Chair b = chair(r, "b");
             AclMessage ga = answer(r, a.reserve("19", "19,22,7,8", false));
             assertEquals(Performative.INFORM, ga.getPerformative());
             assertEquals("19,22,7,8", Content.parse(ga.getContent()).get("path"));
-            CompletableFuture<AclMessage> gb = b.reserve("6", "6,7,22,23", false);
-            r.sim.runFor(5_000);
-            assertFalse(gb.isDone(), "b's route crosses a's at 7 and 22: it waits");
-            assertEquals(1, b.agrees.size());
-            assertEquals("a", Content.parse(b.agrees.get(0).getContent()).get("held-by"));
+            assertEquals("8", Content.parse(ga.getContent()).get("upto"), "a may drive all of it");
+            AclMessage gb = answer(r, b.reserve("6", "6,7,22,23", false));
+            assertEquals(Performative.INFORM, gb.getPerformative());
+            assertEquals("6", Content.parse(gb.getContent()).get("upto"), "b waits where it stands: 7 is a's turn");
+            assertEquals(List.of("a@hospital", "b@hospital"), r.hospital.traffic().holders().get(7), "7's queue");
             a.release(19, 22);
             r.sim.runFor(5_000);
-            assertFalse(gb.isDone(), "7 is still a's");
+            assertTrue(b.orders.isEmpty(), "7 is still a's: " + b.orders);
             a.release(7);
-            assertEquals(Performative.INFORM, answer(r, gb).getPerformative(), "granted once 7 is given back");
-            assertEquals(java.util.Set.of("b@hospital"), r.hospital.traffic().holders().get(22));
+            assertTrue(r.sim.runUntil(() -> !b.orders.isEmpty(), 5_000), "b is told to go on");
+            assertEquals("clear; upto=23", b.orders.get(0).toString());
+            assertEquals(List.of("b@hospital"), r.hospital.traffic().holders().get(22));
         }
     }
 
@@ -168,18 +176,20 @@ class TrafficTest {
             assertEquals(Performative.INFORM, answer(r, a.reserve("19", "19,22,7,6", false)).getPerformative());
             // a sets off along 19-22 and says so; then nothing more is heard of it.
             a.tell(Content.of("here").with("at", "19,22"));
-            CompletableFuture<AclMessage> gb = b.reserve("23", "23,22,7,8", false);
+            AclMessage gb = answer(r, b.reserve("23", "23,22,7,8", false));
+            assertEquals("granted; path=23,22,7,8; upto=23", gb.getContent(), "granted behind a, which holds 22");
             for (int i = 0; i < 4; i++) {
                 r.sim.runFor(TrafficAgent.SILENT_MS / 4);
                 b.tell(Content.of("here"));
             }
-            AclMessage m = answer(r, gb);
-            assertEquals(Performative.FAILURE, m.getPerformative());
+            assertTrue(r.sim.runUntil(() -> !b.failures.isEmpty(), 5_000), "b is told, in its reservation's conversation");
+            AclMessage m = b.failures.get(0);
+            assertEquals(gb.getConversationId(), m.getConversationId());
             assertEquals("a is silent and stands on the route", reason(m));
             assertEquals(22, Content.parse(m.getContent()).integer("node"));
             var held = r.hospital.traffic().holders();
             assertTrue(held.get(19).contains("a@hospital") && held.get(22).contains("a@hospital"), "its body: " + held);
-            assertFalse(held.containsKey(7) || held.containsKey(6), "the rest of its route is given back: " + held);
+            assertFalse(held.get(7).contains("a@hospital"), "the rest of its route is given back: " + held);
             assertTrue(r.log.contains("traffic: a is silent; it keeps [19, 22] where it stands"), String.join("\n", r.log));
         }
     }
@@ -196,7 +206,7 @@ class TrafficTest {
                 b.tell(Content.of("here"));
             }
             assertEquals(Performative.INFORM, answer(r, gb).getPerformative(), "22 is free: a never left 19");
-            assertEquals(java.util.Set.of("a@hospital"), r.hospital.traffic().holders().get(19));
+            assertEquals(List.of("a@hospital"), r.hospital.traffic().holders().get(19));
         }
     }
 

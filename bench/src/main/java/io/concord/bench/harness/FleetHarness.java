@@ -1,0 +1,165 @@
+package io.concord.bench.harness;
+
+import io.concord.agents.control.ControlAgent;
+import io.concord.agents.control.TaskView;
+import io.concord.agents.map.Area;
+import io.concord.agents.map.HospitalMap;
+import io.concord.agents.map.Node;
+import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.traffic.TrafficRules;
+import io.concord.sim.VirtualHospital;
+import io.concord.sim.maps.MapGenerator;
+import io.concord.sim.maps.Shape;
+import io.concord.sim.world.SimChair;
+import io.concord.testkit.FaultPlan;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.SplittableRandom;
+import java.util.TreeMap;
+import java.util.concurrent.CompletableFuture;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * The fleet's scale curve: a generated hospital (30, 60 or 120 nodes), N chairs, and a stream of
+ * transports between random rooms that keeps one and a half per chair outstanding (a new one as
+ * each ends), for a stretch of simulated time, on the test kit's virtual clock. Measured: transports
+ * done per simulated hour, the patients' wait (from the request to the chair at their door: mean and
+ * p95), the traffic agent's decisions (wall time a call of its rules, p99), chair-hours spent
+ * standing still with a task under way (waiting for a route, a turn, a door), contacts, and CPU
+ * per simulated hour. Every run is deterministic from its seed.
+ */
+public final class FleetHarness {
+    private static final Pattern REQUESTED = Pattern.compile("^medical: transport (T\\d+) from node");
+    private static final Pattern LOADING = Pattern.compile("^medical: (T\\d+) on control-chair\\d+: loading at node");
+
+    public record Outcome(String map, int nodes, int chairs, TrafficRules rules, double simHours, int done, int failed,
+                          double waitMeanS, double waitP95S, double decisionP99Us, long decisions, double chairHoursWaiting,
+                          long contacts, double cpuSPerSimHour, long movedAside, long deadlocks) {
+        public double donePerHour() {
+            return done / simHours;
+        }
+    }
+
+    private FleetHarness() {
+    }
+
+    /** The rooms of a map: where patients are fetched and taken. */
+    static int[] rooms(HospitalMap map) {
+        List<Integer> out = new ArrayList<>();
+        for (Node n : map.nodes()) {
+            if (n.area() != null && map.area(n.area()).kind() == Area.Kind.ROOM) {
+                out.add(n.id());
+            }
+        }
+        return out.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    /** The generated map of a shape the curve uses (the same seed each time). */
+    public static HospitalMap map(Shape shape) {
+        return MapGenerator.map(37, shape);
+    }
+
+    /** One point of the curve: {@code chairs} chairs on {@code map} for {@code simSeconds} of hospital time. */
+    public static Outcome run(HospitalMap map, int chairs, TrafficRules rules, double simSeconds, long seed) {
+        int[] rooms = rooms(map);
+        Map<String, Long> requestedMs = new HashMap<>();
+        List<Double> waitsS = new ArrayList<>();
+        long[] now = {0};
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        try (VirtualHospital h = new VirtualHospital(map, seed, FaultPlan.NONE, chairs, rules, MedicalAgent.Settings.standard(),
+                line -> {
+                    Matcher m = REQUESTED.matcher(line);
+                    if (m.find()) {
+                        requestedMs.put(m.group(1), now[0]);
+                        return;
+                    }
+                    m = LOADING.matcher(line);
+                    if (m.find()) {
+                        Long t0 = requestedMs.remove(m.group(1));
+                        if (t0 != null) {
+                            waitsS.add((now[0] - t0) / 1000.0);
+                        }
+                    }
+                })) {
+            if (!h.ready()) {
+                throw new IllegalStateException("the planners of " + map.name() + " did not learn its doors");
+            }
+            SplittableRandom random = new SplittableRandom(seed);
+            int outstanding = (chairs * 3 + 1) / 2;
+            List<CompletableFuture<MedicalAgent.Outcome>> open = new ArrayList<>();
+            int[] counts = new int[2];
+            long cpu0 = cpu.getCurrentThreadCpuTime();
+            long start = h.world.worldTimeNs() / 1_000_000;
+            long end = start + (long) (simSeconds * 1000);
+            double waitingChairS = 0;
+            while (true) {
+                now[0] = h.world.worldTimeNs() / 1_000_000;
+                if (now[0] >= end) {
+                    break;
+                }
+                open.removeIf(f -> {
+                    if (!f.isDone()) {
+                        return false;
+                    }
+                    counts[f.join().done() ? 0 : 1]++;
+                    return true;
+                });
+                while (open.size() < outstanding) {
+                    int from = rooms[random.nextInt(rooms.length)];
+                    int to = rooms[random.nextInt(rooms.length)];
+                    if (from != to) {
+                        open.add(h.medical.transport(from, to, random.nextInt(6), 20));
+                    }
+                }
+                h.sim.runFor(1_000);
+                for (ControlAgent c : h.hospital.controls()) {
+                    SimChair chair = h.world.chair(c.getLocalName().substring("control-".length()));
+                    double[] p = chair.powers();
+                    boolean driving = c.tasks().stream().anyMatch(t -> t.state() == TaskView.State.TO_PICKUP
+                            || t.state() == TaskView.State.TO_DROPOFF);
+                    if (driving && p[0] == 0 && p[1] == 0) {
+                        waitingChairS += 1;
+                    }
+                }
+            }
+            double cpuS = (cpu.getCurrentThreadCpuTime() - cpu0) / 1e9;
+            double hours = (now[0] - start) / 3.6e6;
+            long[] decisions = h.hospital.traffic() == null ? new long[0] : h.hospital.traffic().decisionTimesNs();
+            double[] us = new double[decisions.length];
+            for (int i = 0; i < us.length; i++) {
+                us[i] = decisions[i] / 1000.0;
+            }
+            double[] w = waitsS.stream().mapToDouble(Double::doubleValue).toArray();
+            return new Outcome(map.name(), map.nodes().size(), chairs, rules, hours, counts[0], counts[1],
+                    w.length == 0 ? Double.NaN : java.util.Arrays.stream(w).average().orElse(0), SerialBench.percentile(w, 95),
+                    SerialBench.percentile(us, 99), h.hospital.traffic() == null ? 0 : h.hospital.traffic().decisions(),
+                    waitingChairS / 3600, h.world.collisionCount(), cpuS / hours,
+                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().moves(),
+                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks());
+        }
+    }
+
+    public static String describe(Outcome o) {
+        return String.format(Locale.ROOT, "RESULT fleet map=%s nodes=%d chairs=%d rules=%s done_per_hour=%.1f failed=%d wait_mean_s=%.0f "
+                        + "wait_p95_s=%.0f decision_p99_us=%.1f chair_hours_waiting=%.2f contacts=%d cpu_s_per_sim_hour=%.1f moved_aside=%d",
+                o.map(), o.nodes(), o.chairs(), o.rules(), o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(),
+                o.decisionP99Us(), o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside());
+    }
+
+    /** The series of a chart: one per map and rules, chairs to {@code value}. */
+    public static Map<String, TreeMap<Integer, Double>> series(List<Outcome> outcomes, java.util.function.ToDoubleFunction<Outcome> value) {
+        Map<String, TreeMap<Integer, Double>> out = new java.util.LinkedHashMap<>();
+        for (Outcome o : outcomes) {
+            String name = o.nodes() + " nodes, " + (o.rules() == TrafficRules.IN_ORDER ? "in order" : "whole routes");
+            out.computeIfAbsent(name, k -> new TreeMap<>()).put(o.chairs(), value.applyAsDouble(o));
+        }
+        return out;
+    }
+}
