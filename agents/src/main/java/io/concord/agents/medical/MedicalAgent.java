@@ -250,8 +250,8 @@ public class MedicalAgent extends Agent {
 
     /**
      * A chair at work on a task it holds: it gets {@link Settings#progressMs()} more for its result
-     * from each report, however long it is held up; once it has the patient on board, the task is
-     * never withdrawn from it nor auctioned again.
+     * from each report, however long it is held up, and so do the tasks queued behind it on that
+     * chair; once it has the patient on board, the task is never withdrawn from it nor auctioned again.
      */
     private void progressReport(AclMessage m, Progress p) {
         AclMessage winner = awarded.get(p.task());
@@ -259,9 +259,15 @@ public class MedicalAgent extends Agent {
             return; // not a task of this agent's, or not that chair's any more
         }
         Progress before = progress.put(p.task(), p);
-        ContractNetInitiator cn = running.get(p.task());
-        if (cn != null && settings.progressMs() > 0) {
-            cn.postponeResultDeadline(settings.progressMs());
+        if (settings.progressMs() > 0) {
+            // The chair's other tasks wait in its queue behind this one: they get the same time (a
+            // queue of three behind a chair held up is not three silent tasks; 20 chairs, 50 tasks).
+            awarded.forEach((task, w) -> {
+                ContractNetInitiator cn = running.get(task);
+                if (cn != null && w.getSender().equals(m.getSender())) {
+                    cn.postponeResultDeadline(settings.progressMs());
+                }
+            });
         }
         if (before == null || !before.phase().equals(p.phase())) {
             log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()

@@ -72,6 +72,49 @@ class GeneratedMapSoakTest {
         System.out.println(String.join("\n", report));
     }
 
+    /**
+     * Twenty chairs and fifty transports asked for at once on the large generated hospital: each
+     * task is awarded at its first auction (twenty bidders, fifty auctions running side by side;
+     * the tasks queued on a chair are kept alive by its progress reports), no chair is left out
+     * (each takes at least one; the nearer chairs take more, as the utility wants), and every one
+     * is done, with no contact and nobody left waiting. How fast the auctions are is the
+     * benchmark's ({@code bench/run quick fleet}).
+     */
+    @Test
+    void twentyChairsTakeFiftyTransportsAskedAtOnce() {
+        HospitalMap map = MapGenerator.map(37, Shape.large());
+        int[] rooms = rooms(map);
+        try (ScenarioTest.Run r = new ScenarioTest.Run(map, 37, io.concord.testkit.FaultPlan.NONE, 20, true,
+                MedicalAgent.Settings.standard())) {
+            java.util.SplittableRandom random = new java.util.SplittableRandom(37);
+            List<java.util.concurrent.CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
+            while (fs.size() < 50) {
+                int from = rooms[random.nextInt(rooms.length)];
+                int to = rooms[random.nextInt(rooms.length)];
+                if (from != to) {
+                    fs.add(r.medical.transport(from, to, random.nextInt(4), 20));
+                }
+            }
+            boolean ended = r.sim.runUntil(() -> fs.stream().allMatch(java.util.concurrent.CompletableFuture::isDone), 4 * 3_600_000L);
+            r.writeLogs("fifty-at-once");
+            if (!ended || r.world.collisionCount() > 0) {
+                io.concord.sim.render.HospitalPicture.write(r.world, java.nio.file.Path.of("target", "fleet", "fifty-at-once.png"),
+                        null, r.hospital.traffic().holders());
+            }
+            assertTrue(ended, "every transport ended; waits: " + r.hospital.traffic().waits());
+            java.util.Map<String, Integer> perChair = new java.util.TreeMap<>();
+            for (var f : fs) {
+                MedicalAgent.Outcome o = f.join();
+                assertTrue(o.done(), o.toString());
+                assertEquals(1, o.auctions(), "awarded at its first auction: " + o);
+                perChair.merge(o.chair(), 1, Integer::sum);
+            }
+            assertEquals(20, perChair.size(), "no chair left idle while transports wait: " + perChair);
+            assertEquals(0, r.world.collisionCount(), "no contact: " + r.world.collisions());
+            assertEquals(List.of(), r.hospital.traffic().waits());
+        }
+    }
+
     @Test
     void aSeedOnAGeneratedMapReplaysBitForBit() {
         FleetSoakTest.Result a = run(4);
