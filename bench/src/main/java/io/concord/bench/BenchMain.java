@@ -58,7 +58,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.ToDoubleFunction;
 
 /**
- * {@code bench/run quick|full [name ...]}: runs the named benchmarks (all by default), prints one
+ * {@code bench/run quick|full [name ...]}: runs the named benchmarks (all but fleet by default), prints one
  * RESULT line per measured point, and writes a page per benchmark under {@code bench/report/} with
  * tables, PNG charts and the machine's description. Names: {@code stack}, {@code chain},
  * {@code books}, {@code udp}.
@@ -106,6 +106,7 @@ public final class BenchMain {
         boolean stressByName = names.contains("stress");
         if (names.isEmpty()) {
             names.addAll(NAMES);
+            names.remove("fleet"); // ten minutes of its own: asked for by name
         }
         // -Dconcord.bench.hogs=N: N busy loops (processes at normal priority) beside every platform
         // measured, the same for each, for the whole run: a busy machine. Its report goes apart.
@@ -987,15 +988,15 @@ public final class BenchMain {
                 + "waiting: a chair with a task under way standing still (for a route, its turn, a door), sampled each second.",
                 "Simulated time, wall-clock CPU"));
         md.append("| map | nodes | chairs | rules | done / sim h | failed | wait mean s | wait p95 s | decision p99 µs | decisions | "
-                + "chair-h waiting | contacts | CPU s / sim h | moved aside | deadlocks |\n");
-        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                + "chair-h waiting | waiting for (chair-h) | contacts | CPU s / sim h | moved aside | deadlocks |\n");
+        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         List<FleetHarness.Outcome> all = new ArrayList<>();
         for (io.concord.sim.maps.Shape shape : List.of(io.concord.sim.maps.Shape.small(), io.concord.sim.maps.Shape.medium(),
                 io.concord.sim.maps.Shape.large())) {
             HospitalMap map = FleetHarness.map(shape);
             for (int chairs : List.of(1, 5, 10, 20)) {
                 if (chairs > map.parking().size()) {
-                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | |%n", shape.name(),
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | | |%n", shape.name(),
                             map.nodes().size(), chairs, map.parking().size()));
                     continue;
                 }
@@ -1004,13 +1005,23 @@ public final class BenchMain {
                     FleetHarness.Outcome o = FleetHarness.run(map, chairs, rules, seconds, 37);
                     System.out.println(FleetHarness.describe(o));
                     all.add(o);
-                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %d | %.1f | %d | %d |%n",
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %s | %d | %.1f | %d | %d |%n",
                             shape.name(), o.nodes(), chairs, rules == io.concord.agents.traffic.TrafficRules.IN_ORDER ? "in order" : "whole routes",
                             o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(), o.decisionP99Us(), o.decisions(),
-                            o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside(), o.deadlocks()));
+                            o.chairHoursWaiting(), FleetHarness.hours(o.waitingFor()), o.contacts(), o.cpuSPerSimHour(), o.movedAside(),
+                            o.deadlocks()));
                 }
             }
         }
+        FleetHarness.Burst burst = FleetHarness.burst(FleetHarness.map(io.concord.sim.maps.Shape.large()), 20, 50, 37);
+        System.out.println(FleetHarness.describe(burst));
+        md.append(String.format(Locale.ROOT, "%n## Twenty chairs, fifty transports at once%n%nThe large map, 50 transports asked "
+                        + "for in one instant of 20 idle chairs (50 auctions side by side, each CFP to 20 chairs, a 2 s window):%n%n"
+                        + "| figure | value |%n|---|---|%n| all 50 awarded, hospital time | %.1f s |%n| all 50 awarded, wall time | %.0f ms |%n"
+                        + "| awarded at their first auction | %d of %d |%n| transports a chair | %d to %d, %d chairs used |%n"
+                        + "| all done, hospital time | %.0f s |%n| done | %d |%n| contacts | %d |%n",
+                burst.awardSimS(), burst.awardWallMs(), burst.firstAuction(), burst.tasks(), burst.minPerChair(), burst.maxPerChair(),
+                burst.chairsUsed(), burst.allDoneSimS(), burst.done(), burst.contacts()));
         Charts.line(reportDir.resolve("fleet.png"), "Fleet: transports done per simulated hour", "chairs", "transports / hour",
                 FleetHarness.series(all, FleetHarness.Outcome::donePerHour));
         Charts.line(reportDir.resolve("fleet-wait.png"), "Fleet: patients' wait, p95", "chairs", "seconds",

@@ -175,6 +175,15 @@ public class ControlAgent extends Agent implements ChairListener {
         return tasks.views();
     }
 
+    /**
+     * What the chair waits for while a task is under way, as its progress reports say it: {@code
+     * its route (the traffic agent)}, {@code its turn at node N ...}, {@code door D}, {@code a new
+     * plan}; null while it drives or has nothing to do. Loop thread (tests, console, benchmark).
+     */
+    public String waitingFor() {
+        return runner == null ? null : runner.waitsFor();
+    }
+
     /** Where it believes the chair is. */
     public Pose pose() {
         return follower.pose();

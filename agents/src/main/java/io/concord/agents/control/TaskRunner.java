@@ -140,6 +140,11 @@ final class TaskRunner {
         this.agent = agent;
     }
 
+    /** What the chair waits for while its task is under way (its route, its turn at a node, a door, a plan), or null. */
+    String waitsFor() {
+        return waitsFor;
+    }
+
     /** The task under way, or null. */
     Task active() {
         return active;

@@ -167,6 +167,17 @@ public final class HospitalMap {
         return parking;
     }
 
+    /** Whether a node lies in a patient's room (an area of kind {@code room}): where a patient is fetched or taken, never where a chair parks or steps aside. */
+    public boolean inRoom(int node) {
+        String area = node(node).area();
+        return area != null && area(area).kind() == Area.Kind.ROOM;
+    }
+
+    /** The nodes in patients' rooms, in map order. */
+    public List<Integer> roomNodes() {
+        return nodes().stream().map(Node::id).filter(this::inRoom).toList();
+    }
+
     /** Every node, in map order. */
     public List<Node> nodes() {
         return nodeList;

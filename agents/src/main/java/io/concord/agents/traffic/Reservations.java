@@ -1,6 +1,5 @@
 package io.concord.agents.traffic;
 
-import io.concord.agents.map.Area;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
 
@@ -627,7 +626,7 @@ final class Reservations<T> {
                 hops.put(v, hops.get(u) + 1);
                 prev.put(v, u);
                 q.add(v);
-                if (!needed.contains(v) && (intoRooms || !inRoom(v))) {
+                if (!needed.contains(v) && (intoRooms || !map.inRoom(v))) {
                     int score = hops.get(v) + (map.edgesAt(v).size() == 1 || parking.contains(v) ? 0 : 2);
                     if (score < bestScore || (score == bestScore && v < best)) {
                         best = v;
@@ -654,11 +653,6 @@ final class Reservations<T> {
         out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
         out.add(new Note<>(local(chair) + " makes way from node " + from + " to node " + best + " (" + why + ")"));
         return true;
-    }
-
-    private boolean inRoom(int node) {
-        String area = map.node(node).area();
-        return area != null && map.area(area).kind() == Area.Kind.ROOM;
     }
 
     private boolean freeFor(String chair, int node) {

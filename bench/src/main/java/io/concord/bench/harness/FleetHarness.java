@@ -2,9 +2,7 @@ package io.concord.bench.harness;
 
 import io.concord.agents.control.ControlAgent;
 import io.concord.agents.control.TaskView;
-import io.concord.agents.map.Area;
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.map.Node;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.agents.traffic.TrafficRules;
 import io.concord.sim.VirtualHospital;
@@ -41,7 +39,7 @@ public final class FleetHarness {
 
     public record Outcome(String map, int nodes, int chairs, TrafficRules rules, double simHours, int done, int failed,
                           double waitMeanS, double waitP95S, double decisionP99Us, long decisions, double chairHoursWaiting,
-                          long contacts, double cpuSPerSimHour, long movedAside, long deadlocks) {
+                          long contacts, double cpuSPerSimHour, long movedAside, long deadlocks, Map<String, Double> waitingFor) {
         public double donePerHour() {
             return done / simHours;
         }
@@ -52,13 +50,7 @@ public final class FleetHarness {
 
     /** The rooms of a map: where patients are fetched and taken. */
     static int[] rooms(HospitalMap map) {
-        List<Integer> out = new ArrayList<>();
-        for (Node n : map.nodes()) {
-            if (n.area() != null && map.area(n.area()).kind() == Area.Kind.ROOM) {
-                out.add(n.id());
-            }
-        }
-        return out.stream().mapToInt(Integer::intValue).toArray();
+        return map.roomNodes().stream().mapToInt(Integer::intValue).toArray();
     }
 
     /** The generated map of a shape the curve uses (the same seed each time). */
@@ -99,6 +91,7 @@ public final class FleetHarness {
             long start = h.world.worldTimeNs() / 1_000_000;
             long end = start + (long) (simSeconds * 1000);
             double waitingChairS = 0;
+            Map<String, Double> waitingFor = new java.util.TreeMap<>();
             while (true) {
                 now[0] = h.world.worldTimeNs() / 1_000_000;
                 if (now[0] >= end) {
@@ -126,6 +119,7 @@ public final class FleetHarness {
                             || t.state() == TaskView.State.TO_DROPOFF);
                     if (driving && p[0] == 0 && p[1] == 0) {
                         waitingChairS += 1;
+                        waitingFor.merge(why(c.waitingFor()), 1 / 3600.0, Double::sum);
                     }
                 }
             }
@@ -142,15 +136,98 @@ public final class FleetHarness {
                     SerialBench.percentile(us, 99), h.hospital.traffic() == null ? 0 : h.hospital.traffic().decisions(),
                     waitingChairS / 3600, h.world.collisionCount(), cpuS / hours,
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().moves(),
-                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks());
+                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks(), waitingFor);
         }
+    }
+
+    /** Fifty transports asked for at once of twenty chairs: how fast and how evenly they are awarded. */
+    public record Burst(int chairs, int tasks, double awardSimS, double awardWallMs, long firstAuction, int minPerChair,
+                        int maxPerChair, int chairsUsed, double allDoneSimS, int done, long contacts) {
+    }
+
+    /** {@code tasks} transports between random rooms asked for at once of {@code chairs} chairs on {@code map}. */
+    public static Burst burst(HospitalMap map, int chairs, int tasks, long seed) {
+        int[] rooms = rooms(map);
+        int[] accepts = {0};
+        long[] awardedWallNs = {0};
+        long[] awardedSimMs = {0};
+        VirtualHospital[] hh = new VirtualHospital[1];
+        try (VirtualHospital h = new VirtualHospital(map, seed, FaultPlan.NONE, chairs, TrafficRules.IN_ORDER,
+                MedicalAgent.Settings.standard(), line -> {
+                    if (line.startsWith("medical: ACCEPT ") && ++accepts[0] == tasks) {
+                        awardedWallNs[0] = System.nanoTime();
+                        awardedSimMs[0] = hh[0].world.worldTimeNs() / 1_000_000;
+                    }
+                })) {
+            hh[0] = h;
+            if (!h.ready()) {
+                throw new IllegalStateException("the planners of " + map.name() + " did not learn its doors");
+            }
+            SplittableRandom random = new SplittableRandom(seed);
+            List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
+            long t0Sim = h.world.worldTimeNs() / 1_000_000;
+            long t0 = System.nanoTime();
+            while (fs.size() < tasks) {
+                int from = rooms[random.nextInt(rooms.length)];
+                int to = rooms[random.nextInt(rooms.length)];
+                if (from != to) {
+                    fs.add(h.medical.transport(from, to, random.nextInt(4), 20));
+                }
+            }
+            h.sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), 6 * 3_600_000L);
+            Map<String, Integer> perChair = new TreeMap<>();
+            int done = 0;
+            long first = 0;
+            for (CompletableFuture<MedicalAgent.Outcome> f : fs) {
+                if (f.isDone() && f.join().done()) {
+                    done++;
+                    first += f.join().auctions() == 1 ? 1 : 0;
+                    perChair.merge(f.join().chair(), 1, Integer::sum);
+                }
+            }
+            return new Burst(chairs, tasks, (awardedSimMs[0] - t0Sim) / 1000.0, (awardedWallNs[0] - t0) / 1e6, first,
+                    perChair.values().stream().mapToInt(Integer::intValue).min().orElse(0),
+                    perChair.values().stream().mapToInt(Integer::intValue).max().orElse(0), perChair.size(),
+                    (h.world.worldTimeNs() / 1_000_000 - t0Sim) / 1000.0, done, h.world.collisionCount());
+        }
+    }
+
+    public static String describe(Burst b) {
+        return String.format(Locale.ROOT, "RESULT fleet_burst chairs=%d tasks=%d all_awarded_sim_s=%.1f all_awarded_wall_ms=%.0f "
+                        + "first_auction=%d per_chair=%d..%d chairs_used=%d all_done_sim_s=%.0f done=%d contacts=%d", b.chairs(), b.tasks(),
+                b.awardSimS(), b.awardWallMs(), b.firstAuction(), b.minPerChair(), b.maxPerChair(), b.chairsUsed(), b.allDoneSimS(),
+                b.done(), b.contacts());
+    }
+
+    /** What a standing chair waits for, in a few words. */
+    static String why(String waitsFor) {
+        if (waitsFor == null) {
+            return "stopped (sensors, a turn)";
+        }
+        if (waitsFor.startsWith("its route")) {
+            return "route not granted";
+        }
+        if (waitsFor.startsWith("its turn")) {
+            return "behind a chair";
+        }
+        if (waitsFor.startsWith("door")) {
+            return "a door";
+        }
+        return waitsFor;
     }
 
     public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT fleet map=%s nodes=%d chairs=%d rules=%s done_per_hour=%.1f failed=%d wait_mean_s=%.0f "
-                        + "wait_p95_s=%.0f decision_p99_us=%.1f chair_hours_waiting=%.2f contacts=%d cpu_s_per_sim_hour=%.1f moved_aside=%d",
+                        + "wait_p95_s=%.0f decision_p99_us=%.1f chair_hours_waiting=%.2f contacts=%d cpu_s_per_sim_hour=%.1f moved_aside=%d waiting_for=%s",
                 o.map(), o.nodes(), o.chairs(), o.rules(), o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(),
-                o.decisionP99Us(), o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside());
+                o.decisionP99Us(), o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside(), hours(o.waitingFor()));
+    }
+
+    /** Chair-hours by reason, to two places. */
+    public static String hours(Map<String, Double> byReason) {
+        StringBuilder b = new StringBuilder();
+        byReason.forEach((k, v) -> b.append(b.length() == 0 ? "" : ", ").append(k).append(String.format(Locale.ROOT, " %.2f", v)));
+        return b.toString();
     }
 
     /** The series of a chart: one per map and rules, chairs to {@code value}. */

@@ -189,12 +189,7 @@ class MapGeneratorTest {
             out.add("hinged doors only with " + hinged);
         }
         Map<Integer, List<Integer>> next = neighbours(map);
-        Set<Integer> rooms = new HashSet<>();
-        for (Node node : map.nodes()) {
-            if (node.area() != null && map.area(node.area()).kind() == Area.Kind.ROOM) {
-                rooms.add(node.id());
-            }
-        }
+        Set<Integer> rooms = new HashSet<>(map.roomNodes());
         // Dead ends: rooms with one way in; corridors a chair must turn round at the end of.
         if (rooms.stream().noneMatch(r -> next.get(r).size() == 1)) {
             out.add("no dead-end room");

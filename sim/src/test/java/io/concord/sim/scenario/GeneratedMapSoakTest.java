@@ -1,8 +1,6 @@
 package io.concord.sim.scenario;
 
-import io.concord.agents.map.Area;
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.map.Node;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.sim.maps.MapGenerator;
 import io.concord.sim.maps.Shape;
@@ -32,13 +30,7 @@ class GeneratedMapSoakTest {
 
     /** The nodes of a map's rooms: where patients are fetched and taken. */
     static int[] rooms(HospitalMap map) {
-        List<Integer> out = new ArrayList<>();
-        for (Node n : map.nodes()) {
-            if (n.area() != null && map.area(n.area()).kind() == Area.Kind.ROOM) {
-                out.add(n.id());
-            }
-        }
-        return out.stream().mapToInt(Integer::intValue).toArray();
+        return map.roomNodes().stream().mapToInt(Integer::intValue).toArray();
     }
 
     /** Seed {@code s}: its kind, and from 3 to 20 chairs as the map parks them. */
