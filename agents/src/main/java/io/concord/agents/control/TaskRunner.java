@@ -19,6 +19,8 @@ import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
 
 import java.util.EnumSet;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -65,6 +67,9 @@ final class TaskRunner {
     private String waitsFor;
 
     private static final String WAITS_FOR_ROUTE = "its route (the traffic agent)";
+    /** What it says it waits for, made once a door or node (asked at every reading while it waits). */
+    private final Map<String, String> doorWaits = new HashMap<>();
+    private final Map<Integer, String> turnWaits = new HashMap<>();
 
     private final RouteFollower.Way way = new RouteFollower.Way() {
         @Override
@@ -77,14 +82,15 @@ final class TaskRunner {
         @Override
         public boolean mayGoOn(List<Integer> route, int index) {
             boolean may = traffic.mayGoOn(route, index);
-            waitsFor = may ? null : "its turn at node " + route.get(index) + " (the traffic agent: a chair ahead)";
+            waitsFor = may ? null : turnWaits.computeIfAbsent(route.get(index), n -> "its turn at node " + n
+                    + " (the traffic agent: a chair ahead)");
             return may;
         }
 
         @Override
         public boolean mayEnter(Edge edge, int fromId, Pose pose) {
             boolean may = doors.mayEnter(edge, fromId, pose);
-            waitsFor = may ? null : "door " + edge.door();
+            waitsFor = may ? null : doorWaits.computeIfAbsent(edge.door(), d -> "door " + d);
             return may;
         }
 
