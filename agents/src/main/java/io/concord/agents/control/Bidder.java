@@ -41,7 +41,12 @@ final class Bidder {
         AID planner();
 
         /** A plan as the planner's final answer (INFORM-REF with {@code nodes; length; doors}), never null. */
-        CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to);
+        default CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to) {
+            return plan(planner, task, from, to, null);
+        }
+
+        /** The same along {@code via} (its first node {@code from}, its last {@code to}) if not null: that way, its doors asked. */
+        CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to, List<Integer> via);
     }
 
     private final TaskQueue queue;

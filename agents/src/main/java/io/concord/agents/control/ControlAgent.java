@@ -317,12 +317,12 @@ public class ControlAgent extends Agent implements ChairListener {
 
         /** A plan, as the planner's final answer (never null: no answer becomes a FAILURE). */
         @Override
-        public CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to) {
+        public CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to, List<Integer> via) {
             AclMessage req = new AclMessage(Performative.REQUEST);
             req.addReceiver(planner);
             req.setProtocol(FipaProtocols.REQUEST);
             req.setOntology(Services.ONTOLOGY);
-            req.setContent(new PlanRequest(task, from, to, null).encode());
+            req.setContent(new PlanRequest(task, from, to, null, via).encode());
             return asks.ask(req, 10_000, null).thenApply(a -> a != null ? a
                     : new AclMessage(Performative.FAILURE).setContent(new NoRoute(null, "the planner did not answer within 10 s").encode()));
         }

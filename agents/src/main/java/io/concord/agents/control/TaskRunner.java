@@ -172,6 +172,10 @@ final class TaskRunner {
         return agent.plan(planner, task, from, to);
     }
 
+    private CompletableFuture<AclMessage> plan(AID planner, String task, List<Integer> via) {
+        return agent.plan(planner, task, via.get(0), via.get(via.size() - 1), via);
+    }
+
     /**
      * Tells whoever gave the task where it stands (its phase, the node last reached, what the chair
      * waits for): at each phase, at each node, and every keep-alive while it is the chair's, so that a
@@ -354,10 +358,16 @@ final class TaskRunner {
     void makeWay(AclMessage m) {
         int from;
         int to;
+        List<Integer> way = new java.util.ArrayList<>();
         try {
             MakeWay order = WheelchairMessage.decode(m, MakeWay.class);
             from = order.from();
             to = order.to();
+            way.add(from);
+            way.addAll(order.path());
+            if (way.get(way.size() - 1) != to) {
+                throw new IllegalArgumentException("its path " + order.path() + " does not end at node " + to);
+            }
             if (!map.hasNode(to)) {
                 throw new IllegalArgumentException("no node " + to);
             }
@@ -386,7 +396,9 @@ final class TaskRunner {
         replanning = true;
         waitsFor = "a new plan";
         chair.stop();
-        plan(planner, "make-way", from, to).thenAccept(a -> {
+        // The way the traffic agent chose, over nodes nobody held: another (the planner's shortest)
+        // may cross a node another chair holds, and each then waits for the other.
+        plan(planner, "make-way", way).thenAccept(a -> {
             replanning = false;
             if (asideTo != to) {
                 return;

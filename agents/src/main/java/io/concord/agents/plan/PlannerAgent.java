@@ -146,6 +146,10 @@ public class PlannerAgent extends Agent {
             }
             send(m.createReply().setPerformative(Performative.AGREE).setContent(new PlanAgreed(p.task()).encode()));
             String forChair = p.chair() != null ? p.chair() : m.getSender().name();
+            if (p.via() != null) {
+                along(m, p.task(), p.via(), forChair);
+                return;
+            }
             plan(m, p.task(), p.from(), p.to(), forChair, new HashSet<>(), ATTEMPTS);
         }
 
@@ -156,6 +160,32 @@ public class PlannerAgent extends Agent {
             }
         }
     };
+
+    /** The way the chair was told to take (its doors asked, no other way sought), or FAILURE if it is not on the map or a door refuses. */
+    private void along(AclMessage request, String task, List<Integer> via, String forChair) {
+        List<String> onWay = new ArrayList<>();
+        double length = 0;
+        for (int i = 1; i < via.size(); i++) {
+            var e = map.edge(via.get(i - 1), via.get(i));
+            if (e.isEmpty()) {
+                send(request.createReply().setPerformative(Performative.FAILURE).setContent(
+                        new NoRoute(task, "via: no edge " + via.get(i - 1) + "-" + via.get(i) + " on " + map.name()).encode()));
+                return;
+            }
+            length += e.get().length(map);
+            if (e.get().door() != null) {
+                if (!doorUsable(e.get().door())) {
+                    send(request.createReply().setPerformative(Performative.FAILURE).setContent(
+                            new NoRoute(task, "via: door " + e.get().door() + " is offline or unknown").encode()));
+                    return;
+                }
+                onWay.add(e.get().door());
+            }
+        }
+        Route r = new Route(via, onWay, length);
+        confirm(request, task, r, forChair, refusedAll -> send(request.createReply().setPerformative(Performative.FAILURE).setContent(
+                new NoRoute(task, "doors " + refusedAll + " refused the chair on the way " + via).encode())));
+    }
 
     private void plan(AclMessage request, String task, int from, int to, String forChair, Set<String> refused, int attempts) {
         long now = currentTimeMillis();
@@ -168,7 +198,22 @@ public class PlannerAgent extends Agent {
             send(request.createReply().setPerformative(Performative.FAILURE).setContent(new NoRoute(task, why).encode()));
             return;
         }
-        // Every door on the plan must let the chair pass.
+        confirm(request, task, r, forChair, now2 -> {
+            if (attempts > 1) {
+                Set<String> all = new HashSet<>(refused);
+                all.addAll(now2);
+                plan(request, task, from, to, forChair, all, attempts - 1);
+            } else {
+                Set<String> all = new HashSet<>(refused);
+                all.addAll(now2);
+                send(request.createReply().setPerformative(Performative.FAILURE).setContent(
+                        new NoRoute(task, "doors " + all + " refused the chair").encode()));
+            }
+        });
+    }
+
+    /** Asks every door on {@code r} to let the chair pass: gives the plan if all confirm, else tells {@code refusedBy} which did not. */
+    private void confirm(AclMessage request, String task, Route r, String forChair, Consumer<Set<String>> refusedBy) {
         List<CompletableFuture<AclMessage>> answers = new ArrayList<>();
         for (String d : r.doors()) {
             KnownDoor k = doors.get(d);
@@ -180,23 +225,20 @@ public class PlannerAgent extends Agent {
             answers.add(asks.ask(ask, 2_000, null));
         }
         CompletableFuture.allOf(answers.toArray(new CompletableFuture[0])).thenRun(() -> {
-            Set<String> now2 = new HashSet<>(refused);
+            Set<String> no = new HashSet<>();
             for (int i = 0; i < answers.size(); i++) {
                 AclMessage a = answers.get(i).join();
                 if (a == null || a.getPerformative() != Performative.CONFIRM) {
-                    now2.add(r.doors().get(i));
+                    no.add(r.doors().get(i));
                 }
             }
-            if (now2.size() == refused.size()) {
+            if (no.isEmpty()) {
                 log.accept(getLocalName() + ": " + task + " plan " + r.nodes() + " through " + r.doors() + " confirmed");
                 AclMessage inform = request.createReply().setPerformative(Performative.INFORM_REF);
                 inform.setContent(new Plan(task, r.nodes(), r.doors(), r.lengthM()).encode());
                 send(inform);
-            } else if (attempts > 1) {
-                plan(request, task, from, to, forChair, now2, attempts - 1);
             } else {
-                send(request.createReply().setPerformative(Performative.FAILURE).setContent(
-                        new NoRoute(task, "doors " + now2 + " refused the chair").encode()));
+                refusedBy.accept(no);
             }
         });
     }

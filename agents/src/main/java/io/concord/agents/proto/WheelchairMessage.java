@@ -350,15 +350,30 @@ public sealed interface WheelchairMessage {
     // ---- a plan: control <-> planner ----------------------------------------------------------------
 
     /** REQUEST {@code plan}, control -> planner; {@code chair}: whom the doors are asked for (null: the sender). */
-    record PlanRequest(String task, int from, int to, String chair) implements WheelchairMessage {
+    record PlanRequest(String task, int from, int to, String chair, List<Integer> via) implements WheelchairMessage {
+        public PlanRequest {
+            if (via != null) {
+                via = List.copyOf(via);
+                if (via.isEmpty() || via.get(0) != from || via.get(via.size() - 1) != to) {
+                    throw new IllegalArgumentException("via: the way " + via + " must go from node " + from + " to node " + to);
+                }
+            }
+        }
+
+        /** A plan the planner chooses. */
+        public PlanRequest(String task, int from, int to, String chair) {
+            this(task, from, to, chair, null);
+        }
+
         public String encode() {
-            return Content.of("plan").with("task", task).with("from", from).with("to", to).maybe("chair", chair).toString();
+            return Content.of("plan").with("task", task).with("from", from).with("to", to).maybe("chair", chair)
+                    .maybe("via", via == null ? null : Codec.join(via)).toString();
         }
 
         static PlanRequest read(Content c) {
             int from = c.integer("from");
             int to = c.integer("to");
-            return new PlanRequest(c.text("task"), from, to, c.get("chair"));
+            return new PlanRequest(c.text("task"), from, to, c.get("chair"), c.get("via") == null ? null : Codec.nodes(c, "via"));
         }
 
         public void to(Handler h, AclMessage m) {

@@ -33,7 +33,7 @@ class BidderTest {
         }
 
         @Override
-        public CompletableFuture<AclMessage> plan(AID p, String task, int from, int to) {
+        public CompletableFuture<AclMessage> plan(AID p, String task, int from, int to, java.util.List<Integer> via) {
             asked.add(task + " " + from + "->" + to);
             CompletableFuture<AclMessage> f = new CompletableFuture<>();
             plans.add(f);

@@ -59,6 +59,7 @@ class WheelchairMessageTest {
             new Case(new ResumeRequest(null), REQUEST, "resume"),
             new Case(new Resuming("chair1"), INFORM, "resuming; chair=chair1"),
             new Case(new PlanRequest("T1/pickup", 19, 3, null), REQUEST, "plan; task=T1/pickup; from=19; to=3"),
+            new Case(new PlanRequest("make-way", 26, 25, null, List.of(26, 10, 25)), REQUEST, "plan; task=make-way; from=26; to=25; via=26,10,25"),
             new Case(new PlanRequest("T1/pickup", 19, 3, "control-chair1@hospital"), REQUEST,
                     "plan; task=T1/pickup; from=19; to=3; chair=control-chair1@hospital"),
             new Case(new PlanAgreed("T1/pickup"), AGREE, "plan; task=T1/pickup"),

@@ -88,6 +88,28 @@ class HospitalAgentsTest {
         }
     }
 
+    /**
+     * A plan asked for along a way (a chair told to make way) is that way, not the planner's
+     * shortest (19-22-7 is shorter than 19-23-22-7), with its doors asked; a way over an edge the
+     * map has not is a FAILURE that names it.
+     */
+    @Test
+    void aPlanAlongAWayIsThatWayWithItsDoorsAsked() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
+            Probe p = new Probe();
+            r.platform.startAgent("probe", p);
+            r.sim.runFor(200);
+            AclMessage plan = await(r, p.ask("planner-chair1", "plan; task=make-way; from=19; to=5; via=19,23,22,7,6,5"));
+            assertEquals(Performative.INFORM_REF, plan.getPerformative(), plan.getContent());
+            assertEquals("19,23,22,7,6,5", Content.parse(plan.getContent()).get("nodes"));
+            assertEquals("WA", Content.parse(plan.getContent()).get("doors"));
+            assertTrue(r.log.contains("planner-chair1: make-way plan [19, 23, 22, 7, 6, 5] through [WA] confirmed"), String.join("\n", r.log));
+            AclMessage off = await(r, p.ask("planner-chair1", "plan; task=make-way; from=19; to=5; via=19,5"));
+            assertEquals(Performative.FAILURE, off.getPerformative());
+            assertEquals("via: no edge 19-5 on " + r.world.map().name(), Content.parse(off.getContent()).get("reason"));
+        }
+    }
+
     @Test
     void aTaskToAnUnknownNodeIsRefusedWithTheReason() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
