@@ -988,15 +988,15 @@ public final class BenchMain {
                 + "waiting: a chair with a task under way standing still (for a route, its turn, a door), sampled each second.",
                 "Simulated time, wall-clock CPU"));
         md.append("| map | nodes | chairs | rules | done / sim h | failed | wait mean s | wait p95 s | decision p99 µs | decisions | "
-                + "chair-h waiting | waiting for (chair-h) | contacts | CPU s / sim h | moved aside | deadlocks |\n");
-        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                + "chair-h waiting | waiting for (chair-h) | contacts | CPU s / sim h | moved aside | deadlocks broken | reviews in an unbroken deadlock |\n");
+        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         List<FleetHarness.Outcome> all = new ArrayList<>();
         for (io.concord.sim.maps.Shape shape : List.of(io.concord.sim.maps.Shape.small(), io.concord.sim.maps.Shape.medium(),
                 io.concord.sim.maps.Shape.large())) {
             HospitalMap map = FleetHarness.map(shape);
             for (int chairs : List.of(1, 5, 10, 20)) {
                 if (chairs > map.parking().size()) {
-                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | | |%n", shape.name(),
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | | | |%n", shape.name(),
                             map.nodes().size(), chairs, map.parking().size()));
                     continue;
                 }
@@ -1005,11 +1005,11 @@ public final class BenchMain {
                     FleetHarness.Outcome o = FleetHarness.run(map, chairs, rules, seconds, 37);
                     System.out.println(FleetHarness.describe(o));
                     all.add(o);
-                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %s | %d | %.1f | %d | %d |%n",
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %s | %d | %.1f | %d | %d | %d |%n",
                             shape.name(), o.nodes(), chairs, rules == io.concord.agents.traffic.TrafficRules.IN_ORDER ? "in order" : "whole routes",
                             o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(), o.decisionP99Us(), o.decisions(),
                             o.chairHoursWaiting(), FleetHarness.hours(o.waitingFor()), o.contacts(), o.cpuSPerSimHour(), o.movedAside(),
-                            o.deadlocks()));
+                            o.deadlocks(), o.deadlockedReviews()));
                 }
             }
         }

@@ -120,6 +120,7 @@ final class Reservations<T> {
     private long grants;
     private long moves;
     private long deadlocks;
+    private long unbroken;
 
     /**
      * @param map   the route graph it reserves
@@ -177,9 +178,17 @@ final class Reservations<T> {
         return moves;
     }
 
-    /** Deadlocks found (each broken by moving a chair of it). */
+    /** Deadlocks broken (by moving a chair of each aside, or taking a grant back). */
     public long deadlocks() {
         return deadlocks;
+    }
+
+    /**
+     * Reviews that found a deadlock nobody could break then (no free node to step aside to, no
+     * grant to take back): it waits for a chair elsewhere to free a node. Counted once a review.
+     */
+    public long deadlockReviewsUnbroken() {
+        return unbroken;
     }
 
     // ---- what chairs say ------------------------------------------------------------------------
@@ -486,7 +495,6 @@ final class Reservations<T> {
             if (cycle.isEmpty() || cycle.stream().anyMatch(aside::containsKey)) {
                 continue;
             }
-            deadlocks++;
             String why = "deadlock " + cycle.stream().map(Reservations::local).toList();
             // A chair that stands still steps aside; one granted a route ahead of others cannot (it is under way).
             List<String> victims = new ArrayList<>(cycle);
@@ -506,7 +514,13 @@ final class Reservations<T> {
                 granteds.sort(null);
                 if (!granteds.isEmpty()) {
                     withdraw(granteds.get(0), why, out);
+                    broken = true;
                 }
+            }
+            if (broken) {
+                deadlocks++;
+            } else {
+                unbroken++;
             }
         }
     }

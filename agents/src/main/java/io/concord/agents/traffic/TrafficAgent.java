@@ -126,9 +126,14 @@ public class TrafficAgent extends Agent {
         return rules.moves();
     }
 
-    /** Deadlocks found (each broken by moving a chair of it). */
+    /** Deadlocks broken (by moving a chair of each aside, or taking a grant back). */
     public long deadlocks() {
         return rules.deadlocks();
+    }
+
+    /** Reviews (one a second at most) that found a deadlock nobody could break then: see {@code Reservations}. */
+    public long deadlockReviewsUnbroken() {
+        return rules.deadlockReviewsUnbroken();
     }
 
     // ---- messages -------------------------------------------------------------------------------

@@ -39,7 +39,8 @@ public final class FleetHarness {
 
     public record Outcome(String map, int nodes, int chairs, TrafficRules rules, double simHours, int done, int failed,
                           double waitMeanS, double waitP95S, double decisionP99Us, long decisions, double chairHoursWaiting,
-                          long contacts, double cpuSPerSimHour, long movedAside, long deadlocks, Map<String, Double> waitingFor) {
+                          long contacts, double cpuSPerSimHour, long movedAside, long deadlocks, long deadlockedReviews,
+                          Map<String, Double> waitingFor) {
         public double donePerHour() {
             return done / simHours;
         }
@@ -136,7 +137,8 @@ public final class FleetHarness {
                     SerialBench.percentile(us, 99), h.hospital.traffic() == null ? 0 : h.hospital.traffic().decisions(),
                     waitingChairS / 3600, h.world.collisionCount(), cpuS / hours,
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().moves(),
-                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks(), waitingFor);
+                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks(),
+                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlockReviewsUnbroken(), waitingFor);
         }
     }
 
@@ -156,7 +158,7 @@ public final class FleetHarness {
                 MedicalAgent.Settings.standard(), line -> {
                     if (line.startsWith("medical: ACCEPT ") && ++accepts[0] == tasks) {
                         awardedWallNs[0] = System.nanoTime();
-                        awardedSimMs[0] = hh[0].world.worldTimeNs() / 1_000_000;
+                        awardedSimMs[0] = hh[0].sim.clock().nanoTime() / 1_000_000;
                     }
                 })) {
             hh[0] = h;
@@ -165,7 +167,7 @@ public final class FleetHarness {
             }
             SplittableRandom random = new SplittableRandom(seed);
             List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
-            long t0Sim = h.world.worldTimeNs() / 1_000_000;
+            long t0Sim = h.sim.clock().nanoTime() / 1_000_000;
             long t0 = System.nanoTime();
             while (fs.size() < tasks) {
                 int from = rooms[random.nextInt(rooms.length)];
@@ -188,7 +190,7 @@ public final class FleetHarness {
             return new Burst(chairs, tasks, (awardedSimMs[0] - t0Sim) / 1000.0, (awardedWallNs[0] - t0) / 1e6, first,
                     perChair.values().stream().mapToInt(Integer::intValue).min().orElse(0),
                     perChair.values().stream().mapToInt(Integer::intValue).max().orElse(0), perChair.size(),
-                    (h.world.worldTimeNs() / 1_000_000 - t0Sim) / 1000.0, done, h.world.collisionCount());
+                    (h.sim.clock().nanoTime() / 1_000_000 - t0Sim) / 1000.0, done, h.world.collisionCount());
         }
     }
 
