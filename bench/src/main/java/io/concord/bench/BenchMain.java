@@ -1017,10 +1017,10 @@ public final class BenchMain {
         System.out.println(FleetHarness.describe(burst));
         md.append(String.format(Locale.ROOT, "%n## Twenty chairs, fifty transports at once%n%nThe large map, 50 transports asked "
                         + "for in one instant of 20 idle chairs (50 auctions side by side, each CFP to 20 chairs, a 2 s window):%n%n"
-                        + "| figure | value |%n|---|---|%n| all 50 awarded, hospital time | %.1f s |%n| all 50 awarded, wall time | %.0f ms |%n"
+                        + "| figure | value |%n|---|---|%n| all 50 awarded, hospital time | %.0f ms |%n| all 50 awarded, wall time | %.0f ms |%n"
                         + "| awarded at their first auction | %d of %d |%n| transports a chair | %d to %d, %d chairs used |%n"
                         + "| all done, hospital time | %.0f s |%n| done | %d |%n| contacts | %d |%n",
-                burst.awardSimS(), burst.awardWallMs(), burst.firstAuction(), burst.tasks(), burst.minPerChair(), burst.maxPerChair(),
+                burst.awardSimS() * 1000, burst.awardWallMs(), burst.firstAuction(), burst.tasks(), burst.minPerChair(), burst.maxPerChair(),
                 burst.chairsUsed(), burst.allDoneSimS(), burst.done(), burst.contacts()));
         Charts.line(reportDir.resolve("fleet.png"), "Fleet: transports done per simulated hour", "chairs", "transports / hour",
                 FleetHarness.series(all, FleetHarness.Outcome::donePerHour));

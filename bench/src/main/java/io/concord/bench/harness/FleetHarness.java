@@ -195,7 +195,7 @@ public final class FleetHarness {
     }
 
     public static String describe(Burst b) {
-        return String.format(Locale.ROOT, "RESULT fleet_burst chairs=%d tasks=%d all_awarded_sim_s=%.1f all_awarded_wall_ms=%.0f "
+        return String.format(Locale.ROOT, "RESULT fleet_burst chairs=%d tasks=%d all_awarded_sim_s=%.3f all_awarded_wall_ms=%.0f "
                         + "first_auction=%d per_chair=%d..%d chairs_used=%d all_done_sim_s=%.0f done=%d contacts=%d", b.chairs(), b.tasks(),
                 b.awardSimS(), b.awardWallMs(), b.firstAuction(), b.minPerChair(), b.maxPerChair(), b.chairsUsed(), b.allDoneSimS(),
                 b.done(), b.contacts());
