@@ -1023,9 +1023,9 @@ public final class BenchMain {
                 burst.awardSimS() * 1000, burst.awardWallMs(), burst.firstAuction(), burst.tasks(), burst.minPerChair(), burst.maxPerChair(),
                 burst.chairsUsed(), burst.allDoneSimS(), burst.done(), burst.contacts()));
         Charts.line(reportDir.resolve("fleet.png"), "Fleet: transports done per simulated hour", "chairs", "transports / hour",
-                FleetHarness.series(all, FleetHarness.Outcome::donePerHour));
+                FleetHarness.series(all, FleetHarness.Outcome::donePerHour), true);
         Charts.line(reportDir.resolve("fleet-wait.png"), "Fleet: patients' wait, p95", "chairs", "seconds",
-                FleetHarness.series(all, FleetHarness.Outcome::waitP95S));
+                FleetHarness.series(all, FleetHarness.Outcome::waitP95S), true);
         md.append("\n![transports per hour](fleet.png)\n\n![patients' wait p95](fleet-wait.png)\n");
         Files.writeString(reportDir.resolve("fleet.md"), md.toString());
     }

@@ -282,7 +282,8 @@ public final class HospitalDemo {
         OUT.println(o.chairs() + (o.chairs() == 1 ? " chair waits" : " chairs wait") + " at the map's parking places "
                 + map.parking().subList(0, o.chairs()) + ".");
         if (o.chairs() > 1) {
-            OUT.println("The traffic agent grants each chair its whole route before it drives: they never meet.");
+            OUT.println("The traffic agent queues the chairs at each node of their routes and lets a chair into a node only"
+                    + " when it is first there: they follow each other down corridors and never meet.");
         }
         if (o.serial() != null) {
             OUT.println("chair1 is driven over the serial port " + o.serial() + " (a real chair's board, or the emulator), in real time"

@@ -27,6 +27,15 @@ public final class Charts {
      */
     public static void line(Path file, String title, String xLabel, String yLabel, Map<String, TreeMap<Integer, Double>> series)
             throws IOException {
+        line(file, title, xLabel, yLabel, series, false);
+    }
+
+    /**
+     * @param pairs the series come in pairs to compare (a variant, then its baseline): one colour
+     *              a pair, the second of each dashed, all of one width
+     */
+    public static void line(Path file, String title, String xLabel, String yLabel, Map<String, TreeMap<Integer, Double>> series,
+                            boolean pairs) throws IOException {
         int w = 820;
         int h = 480;
         int left = 80;
@@ -75,12 +84,13 @@ public final class Charts {
         g.rotate(Math.PI / 2);
         int k = 0;
         for (Map.Entry<String, TreeMap<Integer, Double>> s : series.entrySet()) {
-            Color c = COLORS[k % COLORS.length];
+            Color c = COLORS[(pairs ? k / 2 : k) % COLORS.length];
             g.setColor(c);
             // Earlier series wider: where two lines coincide, the first still shows around the next.
-            int wider = series.size() - 1 - k;
-            g.setStroke(new BasicStroke(2.5f + 3f * wider));
-            int r = 4 + 2 * wider;
+            int wider = pairs ? 0 : series.size() - 1 - k;
+            g.setStroke(pairs && k % 2 == 1 ? new BasicStroke(2.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10, new float[] {8, 5}, 0)
+                    : new BasicStroke(pairs ? 3f : 2.5f + 3f * wider));
+            int r = pairs ? 4 : 4 + 2 * wider;
             int px0 = -1;
             int py0 = -1;
             for (Map.Entry<Integer, Double> e : s.getValue().entrySet()) {
@@ -93,7 +103,13 @@ public final class Charts {
                 px0 = px;
                 py0 = py;
             }
-            legend(g, k, s.getKey(), left + pw, top);
+            if (pairs) {
+                g.drawLine(left + pw + 14, top + 17 + 22 * k, left + pw + 36, top + 17 + 22 * k);
+                g.setColor(Color.BLACK);
+                g.drawString(s.getKey(), left + pw + 40, top + 22 + 22 * k);
+            } else {
+                legend(g, k, s.getKey(), left + pw, top);
+            }
             k++;
         }
         g.dispose();

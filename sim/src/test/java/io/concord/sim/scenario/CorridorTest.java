@@ -53,7 +53,7 @@ class CorridorTest {
         return true;
     }
 
-    /** Two transports east, from rooms off node 5 (A4, A8) to rooms off node 4 (A3) and 5: both chairs drive the corridor at once. */
+    /** Two transports east, from rooms off node 5 (A4, A8) to rooms off node 4 (A3, A7): both chairs drive the corridor at once. */
     @Test
     void aCorridorCarriesTwoChairsGoingTheSameWayAtOnce() {
         sameWay(TrafficRules.IN_ORDER, true);
