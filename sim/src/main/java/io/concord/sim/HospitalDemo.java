@@ -4,6 +4,7 @@ import io.concord.agents.map.Area;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.Node;
 import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.traffic.TrafficRules;
 import io.concord.agents.proto.Services;
 import io.concord.console.Console;
 import io.concord.core.agent.AgentRuntime;
@@ -298,18 +299,15 @@ public final class HospitalDemo {
     static boolean runVirtual(HospitalMap map, Options o) {
         intro(map, o);
         OUT.println("The platform, the agents and the world run on the test kit's virtual clock and network, as fast as the CPU allows.");
-        try (Simulation sim = new Simulation(o.seed(), FaultPlan.NONE)) {
-            sim.platformName("hospital");
-            AgentRuntime rt = sim.newRuntime("h1");
-            Platform platform = Platform.builder().runtime(rt).ports(new PortRange(7001, 200, 10))
-                    .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
-            HospitalWorld world = world(map, o);
-            world.attach(rt);
-            Consumer<String> log = line -> OUT.printf(Locale.ROOT, "  t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
-            Hospital hospital = Hospital.start(platform, world, log);
-            MedicalAgent medical = new MedicalAgent(log);
-            platform.startAgent("medical", medical);
-            sim.runUntil(hospital::ready, 60_000);
+        HospitalWorld[] seen = new HospitalWorld[1];
+        Consumer<String> log = line -> OUT.printf(Locale.ROOT, "  t=%7.1f s  %s%n", seen[0] == null ? 0 : seen[0].worldTimeNs() / 1e9, line);
+        try (VirtualHospital h = new VirtualHospital(map, o.seed(), FaultPlan.NONE, o.chairs(), TrafficRules.IN_ORDER,
+                MedicalAgent.Settings.standard(), log)) {
+            seen[0] = h.world;
+            Simulation sim = h.sim;
+            HospitalWorld world = h.world;
+            MedicalAgent medical = h.medical;
+            h.ready();
             List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
             for (TaskSpec t : o.tasks()) {
                 fs.add(medical.transport(t.from(), t.to(), t.priority(), t.unloadS()));

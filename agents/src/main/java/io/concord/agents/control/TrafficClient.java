@@ -108,8 +108,7 @@ final class TrafficClient {
             } else if (why.equals("make-way") || why.startsWith("superseded")) {
                 return;
             }
-            int node = WheelchairMessage.tryDecode(a).map(w -> w instanceof Failure f && f.node() != null ? f.node() : -1).orElse(-1);
-            onRefused.accept(node, a.getPerformative() + ": " + why);
+            onRefused.accept(failedAt(a), a.getPerformative() + ": " + why);
         });
         return false;
     }
@@ -154,10 +153,14 @@ final class TrafficClient {
         }
         if (m.getPerformative() == Performative.FAILURE) {
             String why = WheelchairMessage.reasonOf(m);
-            int node = WheelchairMessage.tryDecode(m).map(w -> w instanceof Failure f && f.node() != null ? f.node() : -1).orElse(-1);
             reset();
-            onRefused.accept(node, "FAILURE: " + (why == null ? "" : why));
+            onRefused.accept(failedAt(m), "FAILURE: " + (why == null ? "" : why));
         }
+    }
+
+    /** The node a FAILURE of the traffic agent names (where the route is stuck), or -1. */
+    private static int failedAt(AclMessage m) {
+        return WheelchairMessage.tryDecode(m).map(w -> w instanceof Failure f && f.node() != null ? f.node() : -1).orElse(-1);
     }
 
     /** True if {@code route} (this very list) is granted or needs no grant. */

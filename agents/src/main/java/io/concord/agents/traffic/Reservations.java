@@ -531,16 +531,8 @@ final class Reservations<T> {
      */
     private void withdraw(String chair, String why, List<Outcome<T>> out) {
         Route<T> r = routes.remove(chair);
-        List<Integer> body = new ArrayList<>(standing.getOrDefault(chair, List.of()));
-        body.retainAll(held.getOrDefault(chair, List.of()));
-        if (body.isEmpty()) {
-            body.add(r.path.get(r.upto));
-        }
-        for (int n : new ArrayList<>(held.getOrDefault(chair, List.of()))) {
-            if (!body.contains(n)) {
-                giveBack(chair, n);
-            }
-        }
+        List<Integer> body = body(chair, r.path.get(r.upto));
+        keepOnly(chair, body);
         goals.remove(chair);
         moves++;
         out.add(new Failed<>(chair, r.ticket, why + ": the route is given back, ask again", null));
@@ -564,21 +556,35 @@ final class Reservations<T> {
     private void silenced(String chair, List<Outcome<T>> out) {
         silent.add(chair);
         List<Integer> mine = held.getOrDefault(chair, List.of());
-        List<Integer> body = new ArrayList<>(standing.getOrDefault(chair, List.of()));
-        body.retainAll(mine);
-        if (body.isEmpty() && !mine.isEmpty()) {
-            body.add(mine.get(0));
-        }
+        List<Integer> body = body(chair, mine.isEmpty() ? null : mine.get(0));
         Wait<T> w = waiting.remove(chair);
         if (w != null) {
             out.add(new Failed<>(chair, w.ticket(), "silent for " + SILENT_MS / 1000 + " s", null));
         }
-        for (int n : new ArrayList<>(mine)) {
+        keepOnly(chair, body);
+        out.add(new Note<>(local(chair) + " is silent; it keeps " + body + " where it stands"));
+    }
+
+    /**
+     * The nodes a chair's body takes: what it last said it stands on and still holds, or else
+     * {@code fallback} (null: none).
+     */
+    private List<Integer> body(String chair, Integer fallback) {
+        List<Integer> body = new ArrayList<>(standing.getOrDefault(chair, List.of()));
+        body.retainAll(held.getOrDefault(chair, List.of()));
+        if (body.isEmpty() && fallback != null) {
+            body.add(fallback);
+        }
+        return body;
+    }
+
+    /** Gives back every node the chair holds but {@code body}. */
+    private void keepOnly(String chair, List<Integer> body) {
+        for (int n : new ArrayList<>(held.getOrDefault(chair, List.of()))) {
             if (!body.contains(n)) {
                 giveBack(chair, n);
             }
         }
-        out.add(new Note<>(local(chair) + " is silent; it keeps " + body + " where it stands"));
     }
 
     /** A cycle of waits through {@code start}, or empty: each chair of it waits for a node the next holds. */

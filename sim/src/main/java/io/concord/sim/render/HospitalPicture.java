@@ -88,9 +88,7 @@ public final class HospitalPicture {
     /** Writes the world as it is now, with a caption (null: the map's name and the world time). */
     public static void write(HospitalWorld world, Path png, String caption) {
         HospitalPicture p = new HospitalPicture(world.map(), 24);
-        String title = caption != null ? caption : String.format(Locale.ROOT, "%s, t = %.1f s", world.map().name(),
-                world.worldTimeNs() / 1e9);
-        p.save(p.draw(world.map(), world, title), png);
+        p.save(p.draw(world.map(), world, title(world, caption)), png);
     }
 
     /**
@@ -100,14 +98,17 @@ public final class HospitalPicture {
      */
     public static void write(HospitalWorld world, Path png, String caption, Map<Integer, List<String>> reservations) {
         HospitalPicture p = new HospitalPicture(world.map(), 24);
-        String title = caption != null ? caption : String.format(Locale.ROOT, "%s, t = %.1f s", world.map().name(),
-                world.worldTimeNs() / 1e9);
-        BufferedImage img = p.draw(world.map(), world, title);
+        BufferedImage img = p.draw(world.map(), world, title(world, caption));
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         p.reservations(g, world, reservations);
         g.dispose();
         p.save(img, png);
+    }
+
+    /** The caption, or the map's name and the world time. */
+    private static String title(HospitalWorld world, String caption) {
+        return caption != null ? caption : String.format(Locale.ROOT, "%s, t = %.1f s", world.map().name(), world.worldTimeNs() / 1e9);
     }
 
     /** The world drawn as an image. */

@@ -50,6 +50,14 @@ class HospitalAgentsTest {
         }
     }
 
+    /** A probe started on the hospital's platform, after {@code ms} of the hospital's time (the yellow pages settle). */
+    private static Probe probe(ScenarioTest.Run r, String name, long ms) {
+        Probe p = new Probe();
+        r.platform.startAgent(name, p);
+        r.sim.runFor(ms);
+        return p;
+    }
+
     private static AclMessage await(ScenarioTest.Run r, CompletableFuture<AclMessage> f) {
         assertTrue(r.sim.runUntil(f::isDone, 60_000), "an answer");
         return f.join();
@@ -96,9 +104,7 @@ class HospitalAgentsTest {
     @Test
     void aPlanAlongAWayIsThatWayWithItsDoorsAsked() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
-            Probe p = new Probe();
-            r.platform.startAgent("probe", p);
-            r.sim.runFor(200);
+            Probe p = probe(r, "probe", 200);
             AclMessage plan = await(r, p.ask("planner-chair1", "plan; task=make-way; from=19; to=5; via=19,23,22,7,6,5"));
             assertEquals(Performative.INFORM_REF, plan.getPerformative(), plan.getContent());
             assertEquals("19,23,22,7,6,5", Content.parse(plan.getContent()).get("nodes"));
@@ -156,9 +162,7 @@ class HospitalAgentsTest {
     @Test
     void aDoorOpensOnlyForAChairItConfirmedAndClosesAfterItsTimeout() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
-            Probe p = new Probe();
-            r.platform.startAgent("stranger", p);
-            r.sim.runFor(2_000);
+            Probe p = probe(r, "stranger", 2_000);
             AclMessage refused = await(r, p.ask("door-A1", "open; body=nobody"));
             assertEquals(Performative.REFUSE, refused.getPerformative());
             assertTrue(refused.getContent().contains("not confirmed"), refused.getContent());
@@ -183,9 +187,7 @@ class HospitalAgentsTest {
     @Test
     void aClosingDoorThatMeetsAChairStopsAndOpensAgain() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
-            Probe p = new Probe();
-            r.platform.startAgent("stranger", p);
-            r.sim.runFor(2_000);
+            Probe p = probe(r, "stranger", 2_000);
             await(r, p.ask("door-A1", "pass; chair=stranger@hospital"));
             await(r, p.ask("door-A1", "open; body=nobody"));
             p.tell("door-A1", "passed");
@@ -205,9 +207,7 @@ class HospitalAgentsTest {
     @Test
     void aDoorWhoseMechanismFailsIsOfflineAndRefusesPassage() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
-            Probe p = new Probe();
-            r.platform.startAgent("stranger", p);
-            r.sim.runFor(2_000);
+            Probe p = probe(r, "stranger", 2_000);
             WorldDoor d = r.world.door("B2");
             d.setMechanismFailed(true);
             assertTrue(r.sim.runUntil(() -> r.hospital.door("B2").state() == DoorAgent.State.OFFLINE, 1_000));
@@ -249,9 +249,7 @@ class HospitalAgentsTest {
     @Test
     void aSessionLapsesWhenTheChairGoesSilent() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
-            Probe p = new Probe();
-            r.platform.startAgent("stranger", p);
-            r.sim.runFor(2_000);
+            Probe p = probe(r, "stranger", 2_000);
             await(r, p.ask("door-A3", "pass; chair=stranger@hospital"));
             assertEquals(java.util.List.of("stranger@hospital"), r.hospital.door("A3").sessions());
             r.sim.runFor(50_000);
@@ -271,9 +269,7 @@ class HospitalAgentsTest {
             assertTrue(r.sim.runUntil(() -> r.log.stream().anyMatch(l -> l.startsWith("control-chair1: starts T1")), 60_000));
             r.sim.runFor(5_000);
             // A stranger's CANCEL in the task's conversation changes nothing.
-            Probe p = new Probe();
-            r.platform.startAgent("stranger", p);
-            r.sim.runFor(1_000);
+            Probe p = probe(r, "stranger", 1_000);
             AclMessage cancel = new AclMessage(Performative.CANCEL);
             cancel.addReceiver(AID.local("control-chair1", "hospital"));
             cancel.setConversationId("T1-1");
