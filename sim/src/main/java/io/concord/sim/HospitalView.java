@@ -180,33 +180,48 @@ public final class HospitalView implements ConsoleView {
 
     /**
      * The traffic agent's reservations: a ring round each node someone holds (solid: the chair
-     * whose turn it is there; dashed, smaller: each chair queued after it), titled with the queue.
+     * whose turn it is there; dashed, smaller: each chair queued after it), titled with the queue;
+     * at a node chairs pass in lanes, a ring round each lane's point ({@code reserved-N-lane-L}).
      */
     private void reservations(ArrayNode shapes) {
         if (hospital.traffic() == null) {
             return;
         }
         HospitalMap map = world.map();
+        Map<Integer, List<List<String>>> lanes = hospital.traffic().lanes();
         hospital.traffic().holders().forEach((node, queue) -> {
             if (!map.hasNode(node) || queue.isEmpty()) {
                 return;
             }
-            List<String> names = queue.stream().map(a -> a.replaceFirst("@.*", "").replaceFirst("^control-", "")).toList();
-            Point at = map.node(node).at();
-            String title = "node " + node + ": " + names.get(0) + "'s turn" + (names.size() > 1 ? "; queued: "
-                    + String.join(", ", names.subList(1, names.size())) : "");
-            for (int k = 0; k < names.size(); k++) {
-                ObjectNode ring = shapes.addObject().put("type", "circle").put("x", at.x()).put("y", at.y())
-                        .put("r", k == 0 ? 0.7 : Math.max(0.3, 0.55 - 0.1 * k)).put("color", "none").put("stroke", "#2d6cb5")
-                        .put("strokeWidth", k == 0 ? 0.14 : 0.07).put("title", title);
-                if (k > 0) {
-                    ring.put("dash", "0.15 0.12");
-                } else {
-                    ring.put("id", "reserved-" + node);
-                    ring.putObject("data").put("queue", String.join(",", names));
+            if (lanes.containsKey(node) && map.laned(node)) {
+                for (int lane = 0; lane < 2; lane++) {
+                    if (!lanes.get(node).get(lane).isEmpty()) {
+                        rings(shapes, map.lanePoint(node, lane), "node " + node + ", lane " + lane, node + "-lane-" + lane,
+                                lanes.get(node).get(lane));
+                    }
                 }
+            } else {
+                rings(shapes, map.node(node).at(), "node " + node, Integer.toString(node), queue);
             }
         });
+    }
+
+    /** A queue's rings at a point (a node, or a lane's point at a node with lanes), titled with the queue. */
+    private static void rings(ArrayNode shapes, Point at, String where, String id, List<String> queue) {
+        List<String> names = queue.stream().map(a -> a.replaceFirst("@.*", "").replaceFirst("^control-", "")).toList();
+        String title = where + ": " + names.get(0) + "'s turn" + (names.size() > 1 ? "; queued: "
+                + String.join(", ", names.subList(1, names.size())) : "");
+        for (int k = 0; k < names.size(); k++) {
+            ObjectNode ring = shapes.addObject().put("type", "circle").put("x", at.x()).put("y", at.y())
+                    .put("r", k == 0 ? 0.7 : Math.max(0.3, 0.55 - 0.1 * k)).put("color", "none").put("stroke", "#2d6cb5")
+                    .put("strokeWidth", k == 0 ? 0.14 : 0.07).put("title", title);
+            if (k > 0) {
+                ring.put("dash", "0.15 0.12");
+            } else {
+                ring.put("id", "reserved-" + id);
+                ring.putObject("data").put("queue", String.join(",", names));
+            }
+        }
     }
 
     private static int integer(Map<String, String> p, String k) {

@@ -62,6 +62,8 @@ class HospitalConsoleTest {
                 });
                 // The traffic agent's reservations on the map: a ring round a node of chair1's route, chair1's turn.
                 browser.until(d -> d.findElements(By.cssSelector("circle[id^='reserved-'][data-queue='chair1']")).size() > 0);
+                // Its way west along ward A's two-lane corridor passes node 4 in lane 1: a ring at that lane's point.
+                browser.until(d -> d.findElements(By.cssSelector("circle[id='reserved-4-lane-1'][data-queue='chair1']")).size() > 0);
                 browser.until(d -> d.findElements(By.cssSelector("polyline[id^='door-'][data-state='open']")).size() > 0);
                 browser.until(d -> d.findElement(By.id("transports")).getText().contains("agreed"));
                 browser.screenshot("hospital-console");

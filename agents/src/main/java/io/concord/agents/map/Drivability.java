@@ -77,10 +77,10 @@ final class Drivability {
                         + " m (add a node on it): odometry drifts with the distance driven");
             }
         }
-        for (Node n : map.nodes()) {
+        for (Place n : places(map)) {
             Wall w = nearest(map.walls(), x -> face(n.at(), x));
             if (w != null && face(n.at(), w) < NODE_WALL_M) {
-                out.add("node " + n.id() + " at " + n.at() + " is " + m(face(n.at(), w)) + " m from the face of wall '" + w.id()
+                out.add(n + " is " + m(face(n.at(), w)) + " m from the face of wall '" + w.id()
                         + "'; a chair turning on the spot there reaches " + m(TURN_REACH_M) + " m: keep " + m(NODE_WALL_M) + " m");
             }
         }
@@ -92,6 +92,20 @@ final class Drivability {
             if (d < EDGE_WALL_M) {
                 out.add("edge " + e.a() + "-" + e.b() + " passes " + m(d) + " m from the face of wall '" + w.id() + "'; a chair "
                         + m(2 * HALF_WIDTH_M) + " m wide driving it needs " + m(EDGE_WALL_M) + " m");
+            }
+        }
+        for (Edge e : map.edges()) {
+            List<Point[]> lines = driven(map, e);
+            for (Point[] lane : lines.subList(1, lines.size())) {
+                Wall w = nearest(map.walls(), x -> segmentToSegment(lane[0], lane[1], x.from(), x.to()) - x.thicknessM() / 2);
+                double d = w == null ? Double.MAX_VALUE : segmentToSegment(lane[0], lane[1], w.from(), w.to()) - w.thicknessM() / 2;
+                if (d < EDGE_WALL_M) {
+                    out.add("edge " + e.a() + "-" + e.b() + "'s lane from " + lane[0] + " to " + lane[1]
+                            + " passes " + m(d) + " m from the face of wall '" + w.id() + "'; a chair in it needs "
+                            + m(EDGE_WALL_M) + " m: give the corridor's edges one lane, or the corridor "
+                            + m(2 * (HospitalMap.LANE_OFFSET_M + NODE_WALL_M)) + " m of width");
+                    break;
+                }
             }
         }
         List<Node> nodes = map.nodes();
@@ -149,10 +163,10 @@ final class Drivability {
             return Math.min(pointToSegment(p, h, f), pointToSegment(p, h, open));
         };
         String what = "the swing of door '" + d.id() + "' (a quarter circle of " + m(w) + " m from its hinge at " + h + ")";
-        for (Node n : map.nodes()) {
+        for (Place n : places(map)) {
             double dist = sweep.applyAsDouble(n.at());
             if (dist < TURN_REACH_M) {
-                out.add("node " + n.id() + " at " + n.at() + (dist == 0 ? " is in " : " is " + m(dist) + " m from ") + what
+                out.add(n + (dist == 0 ? " is in " : " is " + m(dist) + " m from ") + what
                         + "; a chair there would meet the leaf: keep " + m(TURN_REACH_M) + " m out of it");
             }
         }
@@ -160,16 +174,25 @@ final class Drivability {
             Point a = map.node(e.a()).at();
             Point b = map.node(e.b()).at();
             if (d.id().equals(e.door())) {
-                double dist = segmentToSegment(a, b, h, open);
-                if (dist < LEAF_CLEARANCE_M) {
-                    out.add("edge " + e.a() + "-" + e.b() + " passes " + m(dist) + " m from the open leaf of door '" + d.id()
-                            + "'; keep " + m(LEAF_CLEARANCE_M) + " m (drive through the middle of the opening)");
+                for (Point[] line : driven(map, e)) {
+                    double dist = segmentToSegment(line[0], line[1], h, open);
+                    if (dist < LEAF_CLEARANCE_M) {
+                        out.add("edge " + e.a() + "-" + e.b() + (line[0] == a && line[1] == b ? "" : "'s lane") + " passes " + m(dist)
+                                + " m from the open leaf of door '" + d.id() + "'; keep " + m(LEAF_CLEARANCE_M)
+                                + " m (drive through the middle of the opening)");
+                        break;
+                    }
                 }
-            } else if (pointToSegment(h, a, b) < w + HALF_WIDTH_M) {
-                double dist = minOnSegment(a, b, sweep);
-                if (dist < HALF_WIDTH_M) {
-                    out.add("edge " + e.a() + "-" + e.b() + " passes " + m(dist) + " m from " + what + "; a chair driving it needs "
-                            + m(HALF_WIDTH_M) + " m");
+            } else {
+                for (Point[] line : driven(map, e)) {
+                    if (pointToSegment(h, line[0], line[1]) < w + HALF_WIDTH_M) {
+                        double dist = minOnSegment(line[0], line[1], sweep);
+                        if (dist < HALF_WIDTH_M) {
+                            out.add("edge " + e.a() + "-" + e.b() + (line[0] == a && line[1] == b ? "" : "'s lane") + " passes " + m(dist) + " m from "
+                                    + what + "; a chair driving it needs " + m(HALF_WIDTH_M) + " m");
+                            break;
+                        }
+                    }
                 }
             }
         }
@@ -183,6 +206,68 @@ final class Drivability {
         }
     }
 
+    /** Where a chair may stand and turn: a node, or a lane's point at a node with lanes. */
+    private record Place(String what, Point at) {
+        @Override
+        public String toString() {
+            return what + " at " + at;
+        }
+    }
+
+    /** Every node, then every lane point (a chair stopped in its lane may be told to turn back there). */
+    private static List<Place> places(HospitalMap map) {
+        List<Place> out = new ArrayList<>();
+        for (Node n : map.nodes()) {
+            out.add(new Place("node " + n.id(), n.at()));
+        }
+        for (Node n : map.nodes()) {
+            if (map.laned(n.id())) {
+                for (int lane = 0; lane < 2; lane++) {
+                    out.add(new Place("lane " + lane + " of node " + n.id(), map.lanePoint(n.id(), lane)));
+                }
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The lines chairs drive along an edge: its own first, then those from or to a lane's point at
+     * an end with lanes (along the corridor, and turning off it to the right or onto it from the
+     * right: {@link HospitalMap#lane}).
+     */
+    private static List<Point[]> driven(HospitalMap map, Edge e) {
+        List<Point[]> out = new ArrayList<>();
+        Point a = map.node(e.a()).at();
+        Point b = map.node(e.b()).at();
+        out.add(new Point[] {a, b});
+        for (Point p : points(map, e.a(), e.b())) {
+            for (Point q : points(map, e.b(), e.a())) {
+                if (p != a || q != b) {
+                    out.add(new Point[] {p, q});
+                }
+            }
+        }
+        return out;
+    }
+
+    /** Where a chair on the edge from {@code n} to {@code other} may pass {@code n}: the node, then the lanes' points it may use. */
+    private static List<Point> points(HospitalMap map, int n, int other) {
+        List<Point> out = new ArrayList<>(List.of(map.node(n).at()));
+        int[] axis = map.laneAxis(n);
+        if (axis == null) {
+            return out;
+        }
+        boolean along = other == axis[0] || other == axis[1];
+        for (int lane = 0; lane < 2; lane++) {
+            int from = lane == 0 ? axis[0] : axis[1];
+            int to = lane == 0 ? axis[1] : axis[0];
+            if (along || map.lane(from, n, other) == lane || map.lane(other, n, to) == lane) {
+                out.add(map.lanePoint(n, lane));
+            }
+        }
+        return out;
+    }
+
     private static void rotating(HospitalMap map, Door d, List<String> out) {
         Point c = d.centre();
         double r = d.width() / 2;
@@ -190,10 +275,10 @@ final class Drivability {
         double ny = (d.to().x() - d.from().x()) / d.width();
         Point leafA = new Point(c.x() + r * nx, c.y() + r * ny);
         Point leafB = new Point(c.x() - r * nx, c.y() - r * ny);
-        for (Node n : map.nodes()) {
+        for (Place n : places(map)) {
             double dist = n.at().distanceTo(c);
             if (dist < r + TURN_REACH_M) {
-                out.add("node " + n.id() + " at " + n.at() + " is " + m(dist) + " m from the pivot of revolving door '" + d.id()
+                out.add(n + " is " + m(dist) + " m from the pivot of revolving door '" + d.id()
                         + "'; its leaf sweeps " + m(r) + " m round it and a chair turning there reaches " + m(TURN_REACH_M)
                         + " m: keep " + m(r + TURN_REACH_M) + " m");
             }
@@ -209,10 +294,14 @@ final class Drivability {
                             + m(LEAF_CLEARANCE_M) + " m clear of the leaf");
                 }
             } else {
-                double dist = pointToSegment(c, a, b);
-                if (dist < r + HALF_WIDTH_M) {
-                    out.add("edge " + e.a() + "-" + e.b() + " passes " + m(dist) + " m from the pivot of revolving door '" + d.id()
-                            + "', through the circle its leaf sweeps; keep " + m(r + HALF_WIDTH_M) + " m");
+                for (Point[] line : driven(map, e)) {
+                    double dist = pointToSegment(c, line[0], line[1]);
+                    if (dist < r + HALF_WIDTH_M) {
+                        out.add("edge " + e.a() + "-" + e.b() + (line[0] == a && line[1] == b ? "" : "'s lane") + " passes " + m(dist)
+                                + " m from the pivot of revolving door '" + d.id() + "', through the circle its leaf sweeps; keep "
+                                + m(r + HALF_WIDTH_M) + " m");
+                        break;
+                    }
                 }
             }
         }

@@ -39,6 +39,8 @@ public final class HospitalMap {
     private final List<Edge> edges;
     private final Map<Integer, List<Edge>> adjacency;
     private final List<Integer> parking;
+    /** node -> its two neighbours along a two-lane corridor through it, lower id first (see {@link #laneAxis}). */
+    private final Map<Integer, int[]> laneAxes;
     private List<String> warnings;
 
     HospitalMap(String name, double clearanceM, List<Wall> walls, List<Area> areas, List<Door> doors, List<Node> nodes,
@@ -71,6 +73,167 @@ public final class HospitalMap {
         }
         adj.replaceAll((k, v) -> List.copyOf(v));
         this.adjacency = Collections.unmodifiableMap(adj);
+        Map<Integer, int[]> axes = new HashMap<>();
+        for (Node node : nodes) {
+            int[] axis = axis(node.id());
+            if (axis != null) {
+                axes.put(node.id(), axis);
+            }
+        }
+        this.laneAxes = Collections.unmodifiableMap(axes);
+    }
+
+    /** The two two-lane edges at a node that run on in line (turning at most {@link #LANE_TURN_DEG}), or null. */
+    private int[] axis(int id) {
+        List<Edge> two = new ArrayList<>();
+        for (Edge e : adjacency.get(id)) {
+            if (e.twoLanes()) {
+                two.add(e);
+            }
+        }
+        if (two.size() != 2) {
+            return null;
+        }
+        int x = Math.min(two.get(0).other(id), two.get(1).other(id));
+        int y = Math.max(two.get(0).other(id), two.get(1).other(id));
+        Point p = nodes.get(x).at();
+        Point c = nodes.get(id).at();
+        Point q = nodes.get(y).at();
+        double turn = Math.abs(Math.atan2((c.x() - p.x()) * (q.y() - c.y()) - (c.y() - p.y()) * (q.x() - c.x()),
+                (c.x() - p.x()) * (q.x() - c.x()) + (c.y() - p.y()) * (q.y() - c.y())));
+        return Math.toDegrees(turn) <= LANE_TURN_DEG ? new int[] {x, y} : null;
+    }
+
+    // ---- lanes ------------------------------------------------------------------------------------
+
+    /**
+     * How far right of a two-lane edge's line a chair drives: chairs in the two lanes keep 1.6 m
+     * between centres, so that two turning on the spot at a node's two lane points at once (0.7 m
+     * reach each) keep 0.2 m apart (at 1.2 m, two chairs turning into rooms on either side of a
+     * ring corridor touched: seed 37 of the large generated map). A node with lanes has a floor
+     * marker at each lane's point ({@link #markers()}).
+     */
+    public static final double LANE_OFFSET_M = 0.8;
+    /**
+     * The least distance from a lane's point to the opening of a door a chair turns to there: it
+     * waits there for the door, facing it, its nose 0.6 m ahead (a hinged leaf's swing keeps
+     * clear of every lane's point by the map's rules, as of every node). A room door in the wall
+     * of a 3.6 m corridor is 1 m from the lane's point on its side.
+     */
+    static final double LANE_DOOR_WAIT_M = 0.95;
+    /** The most a two-lane corridor may turn at a node for chairs to keep their lanes through it. */
+    public static final double LANE_TURN_DEG = 30;
+
+    /**
+     * A node chairs may pass through in lanes: the two neighbours of the two-lane corridor running
+     * through it in line, lower id first, or null. A chair driving from the first to the second is
+     * in lane 0, the other way in lane 1, and so is one turning off the corridor to its right or
+     * onto it from its right, which crosses no other lane ({@link #lane}); any other way through
+     * the node (turning across the other lane, starting, ending or turning back there) takes the
+     * whole node.
+     */
+    public int[] laneAxis(int node) {
+        int[] a = laneAxes.get(node);
+        return a == null ? null : a.clone();
+    }
+
+    /**
+     * Where the floor markers are, which a chair reads to find its place again: every node, and
+     * at a node with lanes each lane's point too.
+     */
+    public List<Point> markers() {
+        List<Point> out = new ArrayList<>();
+        for (Node n : nodeList) {
+            out.add(n.at());
+        }
+        for (Node n : nodeList) {
+            if (laned(n.id())) {
+                out.add(lanePoint(n.id(), 0));
+                out.add(lanePoint(n.id(), 1));
+            }
+        }
+        return out;
+    }
+
+    /** Whether chairs may pass through {@code node} in lanes. */
+    public boolean laned(int node) {
+        return laneAxes.containsKey(node);
+    }
+
+    /**
+     * The lane a chair driving from {@code prev} through {@code node} on to {@code next} keeps
+     * there: 0 or 1, or -1 if it takes the whole node (prev or next -1: it starts or ends there).
+     * Straight on along the corridor, its lane; turning off it to the right, or onto it from the
+     * right, the lane it drives in on the corridor, if it waits there far enough from the door
+     * the turn goes through (not a revolving one); any other way, the whole node.
+     */
+    public int lane(int prev, int node, int next) {
+        int[] a = laneAxes.get(node);
+        if (a == null || prev < 0 || next < 0 || prev == next) {
+            return -1;
+        }
+        boolean inP = prev == a[0] || prev == a[1];
+        boolean inN = next == a[0] || next == a[1];
+        if (inP && inN) {
+            return prev == a[0] ? 0 : 1;
+        }
+        if (inP) {
+            int lane = prev == a[0] ? 0 : 1;
+            return turnsRight(node, lane, next) ? lane : -1;
+        }
+        if (inN) {
+            int lane = next == a[1] ? 0 : 1;
+            return turnsRight(node, lane, prev) ? lane : -1;
+        }
+        return -1;
+    }
+
+    /** Whether {@code branch} lies right of {@code lane} at {@code node}, and a chair in the lane may wait there for its door. */
+    private boolean turnsRight(int node, int lane, int branch) {
+        int[] a = laneAxes.get(node);
+        Point c = nodes.get(node).at();
+        Point from = nodes.get(lane == 0 ? a[0] : a[1]).at();
+        Point to = nodes.get(lane == 0 ? a[1] : a[0]).at();
+        Point b = nodes.get(branch).at();
+        double dx = to.x() - from.x();
+        double dy = to.y() - from.y();
+        if (dx * (b.y() - c.y()) - dy * (b.x() - c.x()) >= 0) {
+            return false; // on the left, or straight ahead: across the other lane
+        }
+        Edge e = edge(node, branch).orElseThrow();
+        if (e.door() == null) {
+            return true;
+        }
+        Door d = door(e.door());
+        if (d.kind() == Door.Kind.ROTATING) {
+            return false;
+        }
+        return Geometry.pointToSegment(lanePoint(node, lane), d.from(), d.to()) >= LANE_DOOR_WAIT_M;
+    }
+
+    /**
+     * Where a chair driving {@code prev} -> {@code node} -> {@code next} passes the node: the node
+     * itself, or its lane's point {@link #LANE_OFFSET_M} to the right of the corridor's line.
+     */
+    public Point waypoint(int prev, int node, int next) {
+        int lane = lane(prev, node, next);
+        return lane < 0 ? node(node).at() : lanePoint(node, lane);
+    }
+
+    /** The point of a laned node's lane: right of the way a chair in that lane drives, where the lane's floor marker is. */
+    public Point lanePoint(int node, int lane) {
+        int[] a = laneAxes.get(node);
+        if (a == null) {
+            throw new IllegalArgumentException("node " + node + " of map '" + name + "' has no lanes");
+        }
+        Point p = nodes.get(lane == 0 ? a[0] : a[1]).at();
+        Point c = nodes.get(node).at();
+        Point q = nodes.get(lane == 0 ? a[1] : a[0]).at();
+        double ux = (c.x() - p.x()) / c.distanceTo(p) + (q.x() - c.x()) / q.distanceTo(c);
+        double uy = (c.y() - p.y()) / c.distanceTo(p) + (q.y() - c.y()) / q.distanceTo(c);
+        double len = Math.hypot(ux, uy);
+        // Right of the heading (ux, uy) is (uy, -ux).
+        return new Point(c.x() + LANE_OFFSET_M * uy / len, c.y() - LANE_OFFSET_M * ux / len);
     }
 
     /** The default hospital shipped with Concord: two wards joined by a corridor and a lobby. */

@@ -257,10 +257,10 @@ final class MapReader {
             i++;
             String what = "edge #" + i;
             if (!e.isObject()) {
-                problem(what + ": must be an object {\"from\", \"to\", \"door\"?}");
+                problem(what + ": must be an object {\"from\", \"to\", \"door\"?, \"lanes\"?}");
                 continue;
             }
-            known(e, what, "from", "to", "door");
+            known(e, what, "from", "to", "door", "lanes");
             JsonNode a = e.get("from");
             JsonNode b = e.get("to");
             if (a == null || !a.isIntegralNumber() || b == null || !b.isIntegralNumber()) {
@@ -268,7 +268,21 @@ final class MapReader {
                 continue;
             }
             String door = text(e, "door", what, false);
-            out.add(new Edge(a.asInt(), b.asInt(), door));
+            JsonNode l = e.get("lanes");
+            int lanes = 1;
+            if (l != null) {
+                if (!l.isIntegralNumber() || (l.asInt() != 1 && l.asInt() != 2)) {
+                    problem(what + ": \"lanes\" must be 1 or 2 (2: a corridor two chairs can pass each other in)");
+                    continue;
+                }
+                lanes = l.asInt();
+            }
+            if (lanes == 2 && door != null) {
+                problem(what + ": a door's opening passes one chair at a time; give an edge through door '" + door
+                        + "' one lane (leave out \"lanes\")");
+                continue;
+            }
+            out.add(new Edge(a.asInt(), b.asInt(), door, lanes));
         }
         return out;
     }

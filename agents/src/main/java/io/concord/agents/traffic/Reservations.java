@@ -40,6 +40,12 @@ import java.util.TreeMap;
  * or an idle chair standing where another must go, with every other way held) is a chair sent into
  * a room.
  *
+ * <p>A node chairs pass in lanes (a two-lane corridor running on through it: {@link
+ * HospitalMap#laneAxis}) has a queue per lane instead: a route that keeps its lane there (straight
+ * on, or turning off or onto the corridor on its right) joins only that lane's queue, any other
+ * the queues of both. Two chairs driving opposite ways in their lanes share no queue and pass each
+ * other; everything above holds with "node" read as "a node's lane, or the node".
+ *
  * <p>Every call returns what the chairs are to be told, in order, as {@link Outcome}s; each answer
  * to a request carries the request's ticket (the agent's message, for its reply).
  *
@@ -80,15 +86,21 @@ final class Reservations<T> {
     private record Wait<T>(String chair, List<Integer> path, T ticket, long since, boolean aside) {
     }
 
-    /** A route granted in order: the chair may drive up to {@code path[upto]}; {@code told}: it was told the silent chair ahead. */
+    /**
+     * A route granted in order: the chair may drive up to {@code path[upto]}; {@code keys[i]}: what
+     * it takes at {@code path[i]} (its lane, or the whole node); {@code told}: it was told the
+     * silent chair ahead.
+     */
     private static final class Route<T> {
         final List<Integer> path;
+        final List<long[]> keys;
         final T ticket;
         int upto;
         boolean told;
 
-        Route(List<Integer> path, T ticket) {
+        Route(List<Integer> path, List<long[]> keys, T ticket) {
             this.path = path;
+            this.keys = keys;
             this.ticket = ticket;
         }
 
@@ -101,10 +113,14 @@ final class Reservations<T> {
     /** The map's parking places: where an idle chair stands best. */
     private final Set<Integer> parking;
     private final TrafficRules rules;
-    /** node -> the chairs holding it (two only when a chair's report contradicts a grant). */
-    private final Map<Integer, Set<String>> holders = new TreeMap<>();
-    /** chair -> the nodes it holds, where it stands first. */
-    private final Map<String, List<Integer>> held = new TreeMap<>();
+    /**
+     * What is reserved, a key for each: a node ({@link #whole}), or one lane of a node chairs may
+     * pass through in lanes (a two-lane corridor: {@link HospitalMap#laneAxis}), whose whole is
+     * both its lanes. key -> the chairs holding it, in queue order.
+     */
+    private final Map<Long, Set<String>> holders = new TreeMap<>();
+    /** chair -> the keys it holds, where it stands first. */
+    private final Map<String, List<Long>> held = new TreeMap<>();
     private final Map<String, Wait<T>> waiting = new LinkedHashMap<>();
     /** chair -> the end of the route it was granted last. */
     private final Map<String, Integer> goals = new HashMap<>();
@@ -134,14 +150,31 @@ final class Reservations<T> {
 
     // ---- what it can tell -----------------------------------------------------------------------
 
-    /** Who holds which node, in the node's queue order (the first may be on it). */
+    /**
+     * Who holds which node, in the node's queue order (the first may be on it); for a node with
+     * lanes, lane 0's queue and then the chairs only in lane 1's ({@link #lanes()} has both).
+     */
     public Map<Integer, List<String>> holders() {
         Map<Integer, List<String>> out = new TreeMap<>();
         holders.forEach((k, v) -> {
             if (!v.isEmpty()) {
-                out.put(k, List.copyOf(v));
+                List<String> q = out.computeIfAbsent(node(k), n -> new ArrayList<>());
+                v.stream().filter(c -> !q.contains(c)).forEach(q::add);
             }
         });
+        out.replaceAll((k, v) -> List.copyOf(v));
+        return out;
+    }
+
+    /** For each node with lanes that somebody holds: its two lanes' queues, lane 0 first (the first of each may be in it). */
+    public Map<Integer, List<List<String>>> lanes() {
+        Map<Integer, List<List<String>>> out = new TreeMap<>();
+        holders.forEach((k, v) -> {
+            if (!v.isEmpty() && kind(k) != WHOLE) {
+                out.computeIfAbsent(node(k), n -> new ArrayList<>(List.of(List.of(), List.of()))).set(kind(k) - 1, List.copyOf(v));
+            }
+        });
+        out.replaceAll((k, v) -> List.copyOf(v));
         return out;
     }
 
@@ -220,10 +253,10 @@ final class Reservations<T> {
         }
         List<Outcome<T>> out = new ArrayList<>();
         Integer target = aside.get(chair);
-        List<Integer> keep = new ArrayList<>(at);
+        List<Long> keep = wholes(at);
         boolean stepping = asked && target != null && path.contains(target);
         if (stepping) {
-            keep.add(target);
+            keep.addAll(wholes(List.of(target)));
         }
         drop(chair, "a new route", out, keep);
         if (stepping) {
@@ -255,8 +288,9 @@ final class Reservations<T> {
     /** A chair has nothing to do, standing on {@code at}. */
     public List<Outcome<T>> idle(String chair, List<Integer> at, long nowMs) {
         List<Outcome<T>> out = new ArrayList<>();
-        drop(chair, "idle", out, at);
-        hold(chair, at);
+        List<Long> keep = wholes(at);
+        drop(chair, "idle", out, keep);
+        hold(chair, keep);
         standing.put(chair, new ArrayList<>(at));
         idle.add(chair);
         goals.remove(chair);
@@ -282,20 +316,20 @@ final class Reservations<T> {
      * Forgets a chair's wait (answering it FAILURE) and every node it holds but {@code keep} (where
      * it stands: it keeps its place in those nodes' queues).
      */
-    private void drop(String chair, String why, List<Outcome<T>> out, List<Integer> keep) {
+    private void drop(String chair, String why, List<Outcome<T>> out, List<Long> keep) {
         Wait<T> old = waiting.remove(chair);
         if (old != null) {
             out.add(new Failed<>(chair, old.ticket(), "superseded by " + why, null));
         }
-        List<Integer> mine = held.remove(chair);
+        List<Long> mine = held.remove(chair);
         if (mine != null) {
-            List<Integer> kept = new ArrayList<>();
-            for (int n : keep) {
+            List<Long> kept = new ArrayList<>();
+            for (long n : keep) {
                 if (mine.contains(n) && !kept.contains(n)) {
                     kept.add(n);
                 }
             }
-            for (int n : mine) {
+            for (long n : mine) {
                 Set<String> h = holders.get(n);
                 if (h != null && !keep.contains(n)) {
                     h.remove(chair);
@@ -309,9 +343,9 @@ final class Reservations<T> {
         routes.remove(chair);
     }
 
-    private void hold(String chair, List<Integer> nodes) {
-        List<Integer> mine = held.computeIfAbsent(chair, k -> new ArrayList<>());
-        for (int n : nodes) {
+    private void hold(String chair, List<Long> keys) {
+        List<Long> mine = held.computeIfAbsent(chair, k -> new ArrayList<>());
+        for (long n : keys) {
             if (!mine.contains(n)) {
                 mine.add(n);
             }
@@ -319,14 +353,10 @@ final class Reservations<T> {
         }
     }
 
+    /** Gives back the node: whatever of it (its lanes, or all of it) the chair holds. */
     private void giveBack(String chair, int node) {
-        Set<String> h = holders.get(node);
-        if (h != null) {
-            h.remove(chair);
-        }
-        List<Integer> mine = held.get(chair);
-        if (mine != null) {
-            mine.remove(Integer.valueOf(node));
+        for (int kind = WHOLE; kind <= LANE_1; kind++) {
+            giveBackKey(chair, key(node, kind));
         }
         List<Integer> on = standing.get(chair);
         if (on != null) {
@@ -337,33 +367,120 @@ final class Reservations<T> {
         }
     }
 
+    private void giveBackKey(String chair, long key) {
+        Set<String> h = holders.get(key);
+        if (h != null) {
+            h.remove(chair);
+        }
+        List<Long> mine = held.get(chair);
+        if (mine != null) {
+            mine.remove(Long.valueOf(key));
+        }
+    }
+
+    // ---- what a chair takes at a node: the node, or its lane -------------------------------------
+
+    private static final int WHOLE = 0;
+    private static final int LANE_0 = 1;
+    private static final int LANE_1 = 2;
+
+    private static long key(int node, int kind) {
+        return ((long) node << 2) | kind;
+    }
+
+    private static int node(long key) {
+        return (int) (key >> 2);
+    }
+
+    private static int kind(long key) {
+        return (int) (key & 3);
+    }
+
+    /** A whole node: both its lanes if it has lanes, else the node. */
+    private long[] whole(int node) {
+        return map.laned(node) ? new long[] {key(node, LANE_0), key(node, LANE_1)} : new long[] {key(node, WHOLE)};
+    }
+
+    private List<Long> wholes(List<Integer> nodes) {
+        List<Long> out = new ArrayList<>();
+        for (int n : nodes) {
+            for (long k : whole(n)) {
+                out.add(k);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * What a route takes at each of its nodes: in order, only its lane where it passes straight
+     * through a node with lanes; else (and by other rules) the whole node.
+     */
+    private List<long[]> keys(List<Integer> path) {
+        List<long[]> out = new ArrayList<>();
+        for (int i = 0; i < path.size(); i++) {
+            int lane = rules != TrafficRules.IN_ORDER || i == 0 || i == path.size() - 1 ? -1
+                    : map.lane(path.get(i - 1), path.get(i), path.get(i + 1));
+            out.add(lane < 0 ? whole(path.get(i)) : new long[] {key(path.get(i), lane == 0 ? LANE_0 : LANE_1)});
+        }
+        return out;
+    }
+
+    private static List<Long> flat(List<long[]> keys) {
+        List<Long> out = new ArrayList<>();
+        for (long[] ks : keys) {
+            for (long k : ks) {
+                out.add(k);
+            }
+        }
+        return out;
+    }
+
+    /** Whether the chair is first in the queue of every key. */
+    private boolean heads(String chair, long[] keys) {
+        for (long k : keys) {
+            if (!chair.equals(head(k))) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     private void grant(Wait<T> w, List<Outcome<T>> out) {
         waiting.remove(w.chair());
-        hold(w.chair(), w.path());
+        List<long[]> keys = keys(w.path());
+        hold(w.chair(), flat(keys));
         goals.put(w.chair(), w.path().get(w.path().size() - 1));
         grants++;
         if (rules != TrafficRules.IN_ORDER) {
             out.add(new Granted<>(w.chair(), w.ticket(), w.path(), null));
             return;
         }
-        Route<T> r = new Route<>(w.path(), w.ticket());
+        Route<T> r = new Route<>(w.path(), keys, w.ticket());
         routes.put(w.chair(), r);
         advance(w.chair(), r);
         out.add(new Granted<>(w.chair(), w.ticket(), w.path(), r.path.get(r.upto)));
     }
 
-    /** Moves a route's {@code upto} on over every node whose queue the chair now heads; true if it moved. */
+    /**
+     * Moves a route's {@code upto} on over every node whose queues the chair now heads (and, to set
+     * off from a node with lanes, both its lanes: a chair that stopped in one and turns there waits
+     * for the other lane's chairs ahead of it); true if it moved.
+     */
     private boolean advance(String chair, Route<T> r) {
         int before = r.upto;
-        while (r.upto + 1 < r.path.size() && chair.equals(head(r.path.get(r.upto + 1)))) {
+        while (r.upto + 1 < r.path.size() && heads(chair, r.keys.get(r.upto + 1)) && (r.upto > 0 || setsOff(chair, r))) {
             r.upto++;
         }
         return r.upto != before;
     }
 
-    /** The chair first in a node's queue, or null. */
-    private String head(int node) {
-        Set<String> h = holders.get(node);
+    private boolean setsOff(String chair, Route<T> r) {
+        return !map.laned(r.path.get(0)) || heads(chair, r.keys.get(0));
+    }
+
+    /** The chair first in a key's queue, or null. */
+    private String head(long key) {
+        Set<String> h = holders.get(key);
         return h == null || h.isEmpty() ? null : h.iterator().next();
     }
 
@@ -376,7 +493,7 @@ final class Reservations<T> {
     private List<String> blockers(Wait<T> w) {
         List<String> out = new ArrayList<>();
         Set<String> behind = rules == TrafficRules.IN_ORDER ? behind(w.chair()) : Set.of();
-        for (int n : w.path()) {
+        for (long n : flat(keys(w.path()))) {
             for (String h : holders.getOrDefault(n, Set.of())) {
                 if (!h.equals(w.chair()) && !out.contains(h)
                         && (rules != TrafficRules.IN_ORDER || !passes(h, n) || behind.contains(h))) {
@@ -394,23 +511,35 @@ final class Reservations<T> {
             return blockers(w);
         }
         Route<T> r = routes.get(chair);
+        List<String> out = new ArrayList<>();
         if (r != null && r.next() >= 0) {
-            String h = head(r.next());
-            if (h != null && !h.equals(chair)) {
-                return List.of(h);
+            List<long[]> at = r.upto == 0 && !setsOff(chair, r) ? List.of(r.keys.get(0)) : List.of(r.keys.get(r.upto + 1));
+            for (long[] ks : at) {
+                for (long k : ks) {
+                    String h = head(k);
+                    if (h != null && !h.equals(chair) && !out.contains(h)) {
+                        out.add(h);
+                    }
+                }
             }
         }
-        return List.of();
+        return out;
     }
 
-    /** Whether {@code chair} will drive on through {@code node}: it is on its granted route, not its end, and the chair is heard. */
-    private boolean passes(String chair, int node) {
+    /** Whether {@code chair} will drive on through {@code key}: it is on its granted route, not its end, and the chair is heard. */
+    private boolean passes(String chair, long key) {
         Route<T> r = routes.get(chair);
         if (r == null || silent.contains(chair) || idle.contains(chair) || aside.containsKey(chair)) {
             return false;
         }
-        int i = r.path.indexOf(node);
-        return i >= 0 && i < r.path.size() - 1;
+        for (int i = 0; i < r.keys.size() - 1; i++) {
+            for (long k : r.keys.get(i)) {
+                if (k == key) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /** Every chair behind {@code chair} in some node's queue, and behind those, and so on. */
@@ -419,7 +548,7 @@ final class Reservations<T> {
         ArrayDeque<String> todo = new ArrayDeque<>(List.of(chair));
         while (!todo.isEmpty()) {
             String c = todo.poll();
-            for (int n : held.getOrDefault(c, List.of())) {
+            for (long n : held.getOrDefault(c, List.of())) {
                 boolean after = false;
                 for (String h : holders.getOrDefault(n, Set.of())) {
                     if (after && out.add(h)) {
@@ -541,11 +670,21 @@ final class Reservations<T> {
 
     private int firstHeldBy(List<Integer> path, String chair) {
         for (int n : path) {
-            if (holders.getOrDefault(n, Set.of()).contains(chair)) {
+            if (holds(chair, n)) {
                 return n;
             }
         }
         return -1;
+    }
+
+    /** Whether the chair holds any of the node (the node, or a lane of it). */
+    private boolean holds(String chair, int node) {
+        for (long k : held.getOrDefault(chair, List.of())) {
+            if (node(k) == node) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -555,8 +694,8 @@ final class Reservations<T> {
      */
     private void silenced(String chair, List<Outcome<T>> out) {
         silent.add(chair);
-        List<Integer> mine = held.getOrDefault(chair, List.of());
-        List<Integer> body = body(chair, mine.isEmpty() ? null : mine.get(0));
+        List<Long> mine = held.getOrDefault(chair, List.of());
+        List<Integer> body = body(chair, mine.isEmpty() ? null : node(mine.get(0)));
         Wait<T> w = waiting.remove(chair);
         if (w != null) {
             out.add(new Failed<>(chair, w.ticket(), "silent for " + SILENT_MS / 1000 + " s", null));
@@ -571,7 +710,7 @@ final class Reservations<T> {
      */
     private List<Integer> body(String chair, Integer fallback) {
         List<Integer> body = new ArrayList<>(standing.getOrDefault(chair, List.of()));
-        body.retainAll(held.getOrDefault(chair, List.of()));
+        body.removeIf(n -> !holds(chair, n));
         if (body.isEmpty() && fallback != null) {
             body.add(fallback);
         }
@@ -580,9 +719,9 @@ final class Reservations<T> {
 
     /** Gives back every node the chair holds but {@code body}. */
     private void keepOnly(String chair, List<Integer> body) {
-        for (int n : new ArrayList<>(held.getOrDefault(chair, List.of()))) {
-            if (!body.contains(n)) {
-                giveBack(chair, n);
+        for (long k : new ArrayList<>(held.getOrDefault(chair, List.of()))) {
+            if (!body.contains(node(k))) {
+                giveBack(chair, node(k));
             }
         }
     }
@@ -614,11 +753,11 @@ final class Reservations<T> {
      * told).
      */
     private boolean makeWay(String chair, String why, boolean intoRooms, List<Outcome<T>> out) {
-        List<Integer> mine = held.get(chair);
+        List<Long> mine = held.get(chair);
         if (mine == null || mine.isEmpty() || !heard.containsKey(chair) || silent.contains(chair)) {
             return false;
         }
-        int from = mine.get(0);
+        int from = node(mine.get(0));
         Set<Integer> needed = new HashSet<>();
         for (Wait<T> w : waiting.values()) {
             if (!w.chair().equals(chair)) {
@@ -667,7 +806,7 @@ final class Reservations<T> {
             out.add(new Failed<>(chair, own.ticket(), "make-way", null));
         }
         idle.remove(chair);
-        hold(chair, List.of(best));
+        hold(chair, wholes(List.of(best)));
         aside.put(chair, best);
         moves++;
         out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
@@ -676,9 +815,11 @@ final class Reservations<T> {
     }
 
     private boolean freeFor(String chair, int node) {
-        for (String h : holders.getOrDefault(node, Set.of())) {
-            if (!h.equals(chair)) {
-                return false;
+        for (long k : whole(node)) {
+            for (String h : holders.getOrDefault(k, Set.of())) {
+                if (!h.equals(chair)) {
+                    return false;
+                }
             }
         }
         return true;

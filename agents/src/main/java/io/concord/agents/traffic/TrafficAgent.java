@@ -106,6 +106,11 @@ public class TrafficAgent extends Agent {
         return rules.holders();
     }
 
+    /** For each node with lanes somebody holds: its two lanes' queues, lane 0 first (see {@code HospitalMap.laneAxis}). */
+    public Map<Integer, List<List<String>>> lanes() {
+        return rules.lanes();
+    }
+
     /** Each chair's granted route, up to where it may drive now. */
     public Map<String, List<Integer>> cleared() {
         return rules.cleared();

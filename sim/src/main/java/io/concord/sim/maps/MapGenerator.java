@@ -4,6 +4,7 @@ import io.concord.agents.map.HospitalMap;
 
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -192,7 +193,70 @@ public final class MapGenerator {
         }
         List<int[]> walls = walls(l);
         List<Integer> parking = parking(l);
+        lanes(l, walls, parking);
         return json(l, walls, parking);
+    }
+
+    /**
+     * Two lanes on every corridor and link edge without a door, then one again on each edge a
+     * lane of which the map checker finds too near a wall, a leaf's swing or a pivot (and on
+     * both corridor edges at a node whose lane point is), until it finds none.
+     */
+    private void lanes(Layout l, List<int[]> walls, List<Integer> parking) {
+        Map<Integer, Role> role = new HashMap<>();
+        for (NodeSpec n : l.nodes) {
+            role.put(n.id, n.role);
+        }
+        for (int i = 0; i < l.edges.size(); i++) {
+            EdgeSpec e = l.edges.get(i);
+            if (e.door == null && corridor(role.get(e.a)) && corridor(role.get(e.b))) {
+                l.edges.set(i, new EdgeSpec(e.a, e.b, null, 2));
+            }
+        }
+        for (int round = 0; round < 10; round++) {
+            HospitalMap m = HospitalMap.parse(json(l, walls, parking), source(seed, shape));
+            Set<Integer> narrow = new TreeSet<>();
+            for (String w : m.warnings()) {
+                java.util.regex.Matcher lane = LANE_WARNING.matcher(w);
+                if (lane.find()) {
+                    int node = Integer.parseInt(lane.group(1));
+                    narrow.add(node);
+                    for (int other : m.laneAxis(node)) {
+                        narrow.add(other);
+                    }
+                } else if (w.contains("lane")) {
+                    java.util.regex.Matcher edge = EDGE_WARNING.matcher(w);
+                    if (edge.find()) {
+                        narrow.add(Integer.parseInt(edge.group(1)));
+                        narrow.add(Integer.parseInt(edge.group(2)));
+                    }
+                }
+            }
+            if (narrow.isEmpty()) {
+                return;
+            }
+            // A turn's line (a lane's point to a room) too near a jamb: the corridor's lanes there go.
+            for (int node : new ArrayList<>(narrow)) {
+                if (m.laned(node)) {
+                    for (int other : m.laneAxis(node)) {
+                        narrow.add(other);
+                    }
+                }
+            }
+            for (int i = 0; i < l.edges.size(); i++) {
+                EdgeSpec e = l.edges.get(i);
+                if (e.lanes == 2 && narrow.contains(e.a) && narrow.contains(e.b)) {
+                    l.edges.set(i, new EdgeSpec(e.a, e.b, null, 1));
+                }
+            }
+        }
+    }
+
+    private static final java.util.regex.Pattern LANE_WARNING = java.util.regex.Pattern.compile("^lane [01] of node (-?\\d+)");
+    private static final java.util.regex.Pattern EDGE_WARNING = java.util.regex.Pattern.compile("^edge (-?\\d+)-(-?\\d+)");
+
+    private static boolean corridor(Role r) {
+        return r == Role.CORRIDOR || r == Role.LINK;
     }
 
     private void plan() {
@@ -514,7 +578,10 @@ public final class MapGenerator {
     private record NodeSpec(int id, int x, int y, String name, Role role, String group) {
     }
 
-    private record EdgeSpec(int a, int b, String door) {
+    private record EdgeSpec(int a, int b, String door, int lanes) {
+        EdgeSpec(int a, int b, String door) {
+            this(a, b, door, 1);
+        }
     }
 
     /** Where a segment joins its neighbours: the nodes nearest its west and east ends, and its corridor's space. */
@@ -1302,6 +1369,9 @@ public final class MapGenerator {
             b.append("    {\"from\": ").append(e.a).append(", \"to\": ").append(e.b);
             if (e.door != null) {
                 b.append(", \"door\": ").append(quote(e.door));
+            }
+            if (e.lanes == 2) {
+                b.append(", \"lanes\": 2");
             }
             b.append('}').append(i + 1 < l.edges.size() ? ",\n" : "\n");
         }

@@ -97,11 +97,20 @@ public final class HospitalPicture {
      * in the colour of its first chair, and a smaller ring for each chair queued after it.
      */
     public static void write(HospitalWorld world, Path png, String caption, Map<Integer, List<String>> reservations) {
+        write(world, png, caption, reservations, Map.of());
+    }
+
+    /**
+     * The same, with the lanes' queues at nodes chairs pass in lanes ({@code TrafficAgent.lanes()}):
+     * those rings are drawn at each lane's point, not at the node.
+     */
+    public static void write(HospitalWorld world, Path png, String caption, Map<Integer, List<String>> reservations,
+                             Map<Integer, List<List<String>>> lanes) {
         HospitalPicture p = new HospitalPicture(world.map(), 24);
         BufferedImage img = p.draw(world.map(), world, title(world, caption));
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        p.reservations(g, world, reservations);
+        p.reservations(g, world, reservations, lanes);
         g.dispose();
         p.save(img, png);
     }
@@ -223,7 +232,20 @@ public final class HospitalPicture {
             Point a = map.node(e.a()).at();
             Point b = map.node(e.b()).at();
             g.setColor(EDGE);
-            g.draw(new Line2D.Double(px(a.x()), py(a.y()), px(b.x()), py(b.y())));
+            if (e.twoLanes()) {
+                // Two lanes: a thin line each, either side of the edge's own.
+                double len = a.distanceTo(b);
+                double ox = (b.y() - a.y()) / len * HospitalMap.LANE_OFFSET_M;
+                double oy = -(b.x() - a.x()) / len * HospitalMap.LANE_OFFSET_M;
+                Stroke was = g.getStroke();
+                g.setStroke(new BasicStroke(1f));
+                for (int side = -1; side <= 1; side += 2) {
+                    g.draw(new Line2D.Double(px(a.x() + side * ox), py(a.y() + side * oy), px(b.x() + side * ox), py(b.y() + side * oy)));
+                }
+                g.setStroke(was);
+            } else {
+                g.draw(new Line2D.Double(px(a.x()), py(a.y()), px(b.x()), py(b.y())));
+            }
         }
     }
 
@@ -382,7 +404,8 @@ public final class HospitalPicture {
         }
     }
 
-    private void reservations(Graphics2D g, HospitalWorld world, Map<Integer, List<String>> reservations) {
+    private void reservations(Graphics2D g, HospitalWorld world, Map<Integer, List<String>> reservations,
+                              Map<Integer, List<List<String>>> lanes) {
         List<SimChair> chairs = world.chairs();
         Map<String, Color> colours = new java.util.HashMap<>();
         for (int i = 0; i < chairs.size(); i++) {
@@ -392,16 +415,13 @@ public final class HospitalPicture {
             if (!world.map().hasNode(node)) {
                 return;
             }
-            Point at = world.map().node(node).at();
-            for (int k = 0; k < queue.size(); k++) {
-                String agent = queue.get(k);
-                String chair = agent.replaceFirst("@.*", "").replaceFirst("^control-", "");
-                Color col = colours.getOrDefault(chair, Color.DARK_GRAY);
-                double r = (k == 0 ? 0.75 : Math.max(0.25, 0.6 - 0.12 * k)) * scale;
-                g.setColor(col);
-                g.setStroke(k == 0 ? new BasicStroke(3.5f) : new BasicStroke(1.6f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10,
-                        new float[] {3, 3}, 0));
-                g.draw(new Ellipse2D.Double(px(at.x()) - r, py(at.y()) - r, 2 * r, 2 * r));
+            List<List<String>> inLanes = lanes.get(node);
+            if (inLanes != null && world.map().laned(node)) {
+                for (int lane = 0; lane < 2; lane++) {
+                    rings(g, colours, world.map().lanePoint(node, lane), inLanes.get(lane));
+                }
+            } else {
+                rings(g, colours, world.map().node(node).at(), queue);
             }
         });
         int y = height - legendHeight + 28;
@@ -418,6 +438,20 @@ public final class HospitalPicture {
         g.draw(new Ellipse2D.Double(x + 2, y - 8, 8, 8));
         g.setColor(Color.DARK_GRAY);
         g.drawString("queued after it (chair's colour)", x + 16, y);
+    }
+
+    /** A queue's rings at a point: a bold one in the colour of the chair whose turn it is, smaller dashed ones after it. */
+    private void rings(Graphics2D g, Map<String, Color> colours, Point at, List<String> queue) {
+        for (int k = 0; k < queue.size(); k++) {
+            String agent = queue.get(k);
+            String chair = agent.replaceFirst("@.*", "").replaceFirst("^control-", "");
+            Color col = colours.getOrDefault(chair, Color.DARK_GRAY);
+            double r = (k == 0 ? 0.75 : Math.max(0.25, 0.6 - 0.12 * k)) * scale;
+            g.setColor(col);
+            g.setStroke(k == 0 ? new BasicStroke(3.5f) : new BasicStroke(1.6f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10,
+                    new float[] {3, 3}, 0));
+            g.draw(new Ellipse2D.Double(px(at.x()) - r, py(at.y()) - r, 2 * r, 2 * r));
+        }
     }
 
     private void path(Graphics2D g, Track track, Color col, Stroke stroke) {

@@ -39,6 +39,8 @@ public final class SimChair implements ChairDriver {
     private static final double MARKER_RANGE_M = 0.8;
 
     private final HospitalWorld world;
+    /** The map's floor markers: its nodes, and at a node with lanes each lane's point. */
+    private final java.util.List<io.concord.agents.map.Point> markers;
     private final String name;
     private final ChairConfig config;
     private final ChairLayout layout;
@@ -96,6 +98,7 @@ public final class SimChair implements ChairDriver {
     SimChair(HospitalWorld world, String name, ChairConfig config, Body body, org.jbox2d.dynamics.joints.FrictionJoint brake,
              Pose start, SplittableRandom random) {
         this.world = world;
+        this.markers = world.map().markers();
         this.brake = brake;
         this.name = name;
         this.config = config;
@@ -406,9 +409,9 @@ public final class SimChair implements ChairDriver {
     /** The pose a floor marker under the chair gives, with its noise, or null if none is within reach. */
     private Pose markerFix() {
         Vec2 p = body.getPosition();
-        for (io.concord.agents.map.Node n : world.map().nodes()) {
-            double dx = n.at().x() - p.x;
-            double dy = n.at().y() - p.y;
+        for (io.concord.agents.map.Point m : markers) {
+            double dx = m.x() - p.x;
+            double dy = m.y() - p.y;
             if (dx * dx + dy * dy <= MARKER_RANGE_M * MARKER_RANGE_M) {
                 return new Pose(p.x + 0.01 * random.nextGaussian(), p.y + 0.01 * random.nextGaussian(),
                         body.getAngle() + Math.toRadians(0.5) * random.nextGaussian());

@@ -122,8 +122,13 @@ class FleetSoakTest {
 
     @Test
     void withoutTheTrafficAgentChairsMeet() {
-        // What the reservations prevent: the same seed with chairs keeping apart by their sensors alone.
-        Result r = run(1, false);
-        assertTrue(r.collisions().stream().anyMatch(c -> c.other().startsWith("chair")), "chairs met: " + r.collisions());
+        // What the reservations prevent: the soak's first seeds with chairs keeping apart by their
+        // sensors alone, until two meet (seed 1 did before the ward corridors had two lanes).
+        List<String> met = new ArrayList<>();
+        for (long seed = 1; seed <= 10 && met.isEmpty(); seed++) {
+            Result r = run(seed, false);
+            r.collisions().stream().filter(c -> c.other().startsWith("chair")).forEach(c -> met.add(c.toString()));
+        }
+        assertTrue(!met.isEmpty(), "chairs met in one of seeds 1 to 10 without the traffic agent");
     }
 }
