@@ -223,8 +223,8 @@ final class RouteFollower {
         // agent lets a chair the other way pass in the other lane. Nowhere else: a chair kept 0.6 m
         // right of every line missed the markers once its heading had drifted 3 degrees in a spot
         // turn, and met a door's jamb 0.85 m off course (seed 156 of the soak); a lane is never
-        // through a door, turns at most 30 degrees at a node, and its points are 0.5 m from the
-        // marker, which a chair reads within 0.8 m.
+        // through a door, turns at most 30 degrees at a node, and has a floor marker of its own at
+        // each lane point (HospitalMap.markers()).
         Point target = map.waypoint(fromId, toId, index + 1 < route.size() ? route.get(index + 1) : -1);
         if (control.reached(pose, target.x(), target.y())) {
             lastNode = toId;
