@@ -141,6 +141,14 @@ public final class HospitalDemo {
             return;
         }
         boolean ok;
+        if (role != null) {
+            // A ward or staff JVM of the launcher's ends with it, however it ends (even kill -9): a
+            // ward left behind would keep its ports, its console, and a real chair.
+            ProcessHandle.current().parent().ifPresent(parent -> parent.onExit().thenRun(() -> {
+                System.err.println(role + ": the demo's launcher has ended; so does this JVM");
+                System.exit(1);
+            }));
+        }
         if ("ward".equals(role)) {
             ward(map, o);
             return;
@@ -397,23 +405,39 @@ public final class HospitalDemo {
         }
         Process staff = spawn("staff", o);
         children.add(0, staff);
-        pump(staff, "staff", line -> seen.accept("[staff] " + line));
-        boolean ended = staff.waitFor((long) (o.maxSeconds() / o.speed()) + 120, TimeUnit.SECONDS);
-        int code = ended ? staff.exitValue() : -1;
-        if (!ended) {
-            staff.destroyForcibly();
+        // With a console the staff's JVM stays after its transports (the Medical agent takes those
+        // asked at the console); it says how its own went in one line.
+        CompletableFuture<Boolean> batch = new CompletableFuture<>();
+        pump(staff, "staff", line -> {
+            seen.accept("[staff] " + line);
+            if (line.startsWith(STAFF_DONE)) {
+                batch.complete(line.startsWith(STAFF_DONE + " every transport was done"));
+            }
+        });
+        staff.onExit().thenRun(() -> batch.complete(staff.exitValue() == 0));
+        boolean ok;
+        try {
+            ok = batch.get((long) (o.maxSeconds() / o.speed()) + 120, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            ok = false;
         }
-        if (o.console() != null && ward.isAlive()) {
-            OUT.println("The staff's transports ended; the ward and its console go on (ask for more transports there). Ctrl-C stops them.");
+        if (o.console() != null && ward.isAlive() && staff.isAlive()) {
+            OUT.println("The staff's transports ended; the ward, its console and the Medical agent go on (ask for more "
+                    + "transports there). Ctrl-C stops them.");
             ward.waitFor();
         }
-        ward.destroy();   // its shutdown hook writes the picture
-        if (!ward.waitFor(20, TimeUnit.SECONDS)) {
-            ward.destroyForcibly();
+        for (Process p : List.of(staff, ward)) {
+            p.destroy();   // the ward's shutdown hook writes the picture
+            if (!p.waitFor(20, TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+            }
         }
-        OUT.println(code == 0 ? "Every transport was done." : "Not every transport was done (staff exit " + code + ").");
-        return code == 0;
+        OUT.println(ok ? "Every transport was done." : "Not every transport was done.");
+        return ok;
     }
+
+    /** What the staff's JVM says when its own transports have ended: then "every transport was done" or "not every...". */
+    static final String STAFF_DONE = "staff: its transports ended:";
 
     private static Process spawn(String role, Options o) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
@@ -550,6 +574,13 @@ public final class HospitalDemo {
             OUT.println("staff: not every transport ended in time");
         }
         boolean ok = report(fs);
+        OUT.println(STAFF_DONE + (ok ? " every transport was done" : " not every transport was done")
+                + (o.console() == null ? "" : "; the Medical agent stays for transports asked at the console"));
+        if (o.console() != null) {
+            // Until the launcher stops this JVM (Ctrl-C, SIGTERM, or its own end): the Medical agent
+            // answers the console's front desk and reports what it asked for.
+            new CountDownLatch(1).await();
+        }
         platform.close();
         return ok;
     }

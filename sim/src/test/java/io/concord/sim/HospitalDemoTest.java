@@ -86,4 +86,74 @@ class HospitalDemoTest {
         assertEquals("unknown argument 'fast'",
                 assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"fast"})).getMessage());
     }
+
+    /**
+     * The demo with its console, as an operator starts it (the launcher as a real process, its
+     * ward and staff JVMs on loopback): after the staff's own transport is done the Medical agent
+     * stays, and a transport asked at the console (its HTTP action, as the page posts it) is done
+     * and reported in the staff's terminal; SIGTERM to the launcher then stops every JVM it
+     * started.
+     */
+    @Test
+    void withTheConsoleTheMedicalAgentStaysAndSigtermLeavesNoJvmBehind() throws Exception {
+        List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Demo.class.getName(), "hospital",
+                "--console", "127.0.0.1:0", "--speed", "20", "--tasks", "3-14:0:5"));
+        Process launcher = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        java.util.concurrent.BlockingQueue<String> lines = new java.util.concurrent.LinkedBlockingQueue<>();
+        List<String> all = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
+        Thread reader = new Thread(() -> {
+            try (java.io.BufferedReader r = launcher.inputReader()) {
+                for (String line; (line = r.readLine()) != null; ) {
+                    all.add(line);
+                    lines.add(line);
+                }
+            } catch (java.io.IOException e) {
+                // the launcher ended
+            }
+        });
+        reader.setDaemon(true);
+        reader.start();
+        try {
+            String console = until(lines, all, l -> l.contains("console: http://")).replaceFirst(".*console: (http://\\S+).*", "$1");
+            until(lines, all, l -> l.contains(HospitalDemo.STAFF_DONE + " every transport was done"));
+            List<ProcessHandle> children = launcher.descendants().toList();
+            assertTrue(children.size() >= 2, "the ward's and the staff's JVMs: " + children);
+
+            java.net.http.HttpResponse<String> asked = java.net.http.HttpClient.newHttpClient().send(
+                    java.net.http.HttpRequest.newBuilder(java.net.URI.create(console + "api/views/hospital/transport"))
+                            .header("X-Concord-Console", "1").header("Content-Type", "application/x-www-form-urlencoded")
+                            .POST(java.net.http.HttpRequest.BodyPublishers.ofString("from=14&to=3&priority=0&unload=5")).build(),
+                    java.net.http.HttpResponse.BodyHandlers.ofString());
+            assertEquals(200, asked.statusCode(), asked.body());
+            until(lines, all, l -> l.matches(".*medical: control-chair\\d+ reports T2 done.*"));
+
+            launcher.destroy(); // SIGTERM, as kill or a service manager sends it
+            assertTrue(launcher.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "the launcher ended");
+            for (ProcessHandle child : children) {
+                child.onExit().get(60, java.util.concurrent.TimeUnit.SECONDS);
+                assertTrue(!child.isAlive(), "a JVM of the demo was left running: " + child.info());
+            }
+        } finally {
+            launcher.descendants().forEach(ProcessHandle::destroyForcibly);
+            launcher.destroyForcibly();
+        }
+    }
+
+    /** The next line that matches, waiting for the launcher's output (a minute at most per line: a failure, not a timing). */
+    private static String until(java.util.concurrent.BlockingQueue<String> lines, List<String> all,
+                                java.util.function.Predicate<String> p) throws InterruptedException {
+        while (true) {
+            String l = lines.poll(180, java.util.concurrent.TimeUnit.SECONDS);
+            if (l == null) {
+                synchronized (all) {
+                    throw new AssertionError("the demo never printed what was awaited; it printed last:\n"
+                            + String.join("\n", all.subList(Math.max(0, all.size() - 40), all.size())));
+                }
+            }
+            if (p.test(l)) {
+                return l;
+            }
+        }
+    }
 }
