@@ -30,7 +30,9 @@ class ReadmeHospitalExampleTest {
             HospitalMap map = HospitalMap.defaultHospital();
             HospitalWorld world = HospitalWorld.builder(map).seed(42).build();
             SimChair chair = world.addChair("chair1", ChairConfig.standard(), world.poseAt(19, 90));
-            world.attach(runtime);
+            world.door("WA").open();
+            world.addPerson("visitor", List.of(new Point(30, 11), new Point(46, 11)), 0.9, true);
+            world.addBox("bed", new Point(15, 6.2), 2.0, 0.9, 0);
 
             ChairDriver driver = chair;
             driver.setListener(r -> {
@@ -38,10 +40,7 @@ class ReadmeHospitalExampleTest {
                 double ahead = r.range(driver.layout().sensorIndex("front"));
                 driver.drive(ahead < 0.5 ? 0 : 50, ahead < 0.5 ? 0 : 50);
             });
-
-            world.door("WA").open();
-            world.addPerson("visitor", List.of(new Point(30, 11), new Point(46, 11)), 0.9, true);
-            world.addBox("bed", new Point(15, 6.2), 2.0, 0.9, 0);
+            world.attach(runtime);
             // --- end ---
             sim.runFor(20_000);
             HospitalPicture.write(world, Path.of("target", "pictures", "readme-example.png"));

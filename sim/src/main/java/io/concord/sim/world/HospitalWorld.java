@@ -211,6 +211,7 @@ public final class HospitalWorld {
      *                                  something (naming what)
      */
     public SimChair addChair(String name, ChairConfig config, Pose start) {
+        onLoop("addChair");
         checkName(name);
         if (chairs.containsKey(name)) {
             throw new IllegalArgumentException("there is a chair named '" + name + "' already");
@@ -269,6 +270,7 @@ public final class HospitalWorld {
 
     /** Takes a chair out of the world (its driver goes offline). */
     public void removeChair(String name) {
+        onLoop("removeChair");
         SimChair c = chair(name);
         chairs.remove(name);
         chairList.remove(c);
@@ -292,6 +294,7 @@ public final class HospitalWorld {
 
     /** A static box (a bed, a trolley): centre, length along {@code angleDeg}, width across. */
     public Obstacle addBox(String name, Point centre, double lengthM, double widthM, double angleDeg) {
+        onLoop("addBox");
         checkObstacle(name, lengthM, widthM);
         PolygonShape s = new PolygonShape();
         s.setAsBox((float) (lengthM / 2), (float) (widthM / 2));
@@ -312,6 +315,7 @@ public final class HospitalWorld {
      * {@code loop}, and can be pushed and blocked like anything else.
      */
     public Obstacle addPerson(String name, List<Point> path, double speedMps, boolean loop) {
+        onLoop("addPerson");
         checkObstacle(name, 0.5, 0.5);
         if (path == null || path.isEmpty()) {
             throw new IllegalArgumentException("person '" + name + "' needs a path of at least one point");
@@ -463,12 +467,28 @@ public final class HospitalWorld {
             throw new IllegalArgumentException("speedup must be in (0, 10000], got " + speedup);
         }
         Attachment a = new Attachment(runtime, speedup);
+        owner = runtime;
         if (runtime.inLoop()) {
             a.begin();
         } else {
             runtime.execute(a::begin);
         }
         return a;
+    }
+
+    /** The runtime whose loop steps the world since {@link #attach}, or null. */
+    private volatile AgentRuntime owner;
+
+    /**
+     * Refuses a change of the world from another thread than the loop that steps it (jbox2d is not
+     * thread-safe: a box added from the main thread while the loop stepped threw inside it).
+     */
+    void onLoop(String what) {
+        AgentRuntime o = owner;
+        if (o != null && !o.inLoop()) {
+            throw new IllegalStateException(what + ": the world steps on its runtime's loop since attach(); change it there "
+                    + "(runtime.execute(() -> ...)), or before attach()");
+        }
     }
 
     /** The world stepping on a runtime's loop; {@link #detach()} stops it. */

@@ -90,6 +90,7 @@ public final class WorldDoor implements DoorDriver {
     /** Starts opening (or keeps opening); a revolving door turns on the same way. Ignored while the mechanism has failed. */
     @Override
     public void open() {
+        world.onLoop("door " + spec.id() + ": open");
         if (mechanismFailed) {
             return;
         }
@@ -106,6 +107,7 @@ public final class WorldDoor implements DoorDriver {
     /** Starts closing. Ignored while the mechanism has failed. */
     @Override
     public void close() {
+        world.onLoop("door " + spec.id() + ": close");
         if (mechanismFailed) {
             return;
         }
@@ -118,6 +120,7 @@ public final class WorldDoor implements DoorDriver {
     /** Stops the leaf where it is, and holds it there. */
     @Override
     public void halt() {
+        world.onLoop("door " + spec.id() + ": halt");
         target = position();
         motion = Motion.STILL;
     }

@@ -168,4 +168,31 @@ class OneClockTest {
             assertEquals(240, world.stepCount());
         }
     }
+
+    /**
+     * Once attached to a runtime that runs on a thread of its own, the world is that loop's: a
+     * change from another thread (the README's snippet once added a box from the main thread, and
+     * jbox2d threw inside its step) is refused with what to do, and the same change on the loop
+     * is made.
+     */
+    @Test
+    void aChangeFromAnotherThreadThanTheLoopIsRefusedWithWhatToDo() throws Exception {
+        HospitalWorld world = HospitalWorld.builder(HospitalMap.defaultHospital()).seed(1).build();
+        world.addBox("before", new Point(15, 6.2), 1.0, 0.5, 0);   // before attach: anyone may build it
+        try (AgentRuntime rt = AgentRuntime.builder().build().start()) {
+            world.attach(rt);
+            IllegalStateException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class,
+                    () -> world.addBox("bed", new Point(15, 8.2), 2.0, 0.9, 0));
+            assertTrue(e.getMessage().startsWith("addBox: the world steps on its runtime's loop since attach(); change it there"),
+                    e.getMessage());
+            org.junit.jupiter.api.Assertions.assertThrows(IllegalStateException.class, () -> world.door("WA").open());
+            java.util.concurrent.CompletableFuture<String> onLoop = new java.util.concurrent.CompletableFuture<>();
+            rt.execute(() -> {
+                world.addBox("bed", new Point(15, 8.2), 2.0, 0.9, 0);
+                world.door("WA").open();
+                onLoop.complete(world.door("WA").motion().toString());
+            });
+            assertEquals("OPENING", onLoop.get(30, java.util.concurrent.TimeUnit.SECONDS));
+        }
+    }
 }
