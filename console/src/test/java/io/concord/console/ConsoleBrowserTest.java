@@ -94,9 +94,8 @@ class ConsoleBrowserTest {
         browser.until(d -> !rows("lal").contains("seller2@console-ui") && rows("lal").contains("seller1@console-ui"));
     }
 
-    @Test
-    void theSnifferDrawsARequestAndItsReplyInOrder() {
-        browser.driver.get(console.uri());
+    /** Shows the sniffer and picks the buyer, once the picker lists it. */
+    private static void sniffBuyer() {
         browser.until(d -> {
             tab("sniffer");
             return d.findElement(By.id("sniffer")).isDisplayed();
@@ -125,6 +124,12 @@ class ConsoleBrowserTest {
                 return false;
             }
         });
+    }
+
+    @Test
+    void theSnifferDrawsARequestAndItsReplyInOrder() {
+        browser.driver.get(console.uri());
+        sniffBuyer();
         assertTrue(browser.driver.findElement(By.id("sniffer")).isDisplayed(), "the sniffer tab is shown");
         // Once the buyer is sniffed (the subscription is agreed), its request and the reply are drawn.
         Agent buyer = platform.runtime().agent(new AID("buyer@console-ui"));
@@ -146,6 +151,43 @@ class ConsoleBrowserTest {
         String whole = browser.driver.findElement(By.id("message")).getText();
         assertTrue(whole.startsWith("(REQUEST") && whole.contains(":sender") && whole.contains("Dune"), whole);
         browser.screenshot("console-sniffer");
+    }
+
+    /**
+     * What the sniffer saw stays when another tab is shown, and what happens meanwhile is added:
+     * the page keeps every topic whatever the tab (an auction seen on the page's stream was lost
+     * when the diagram was cleared at each tab switch).
+     */
+    @Test
+    void theSniffersStorySurvivesATabSwitch() {
+        browser.driver.get(console.uri());
+        sniffBuyer();
+        Agent buyer = platform.runtime().agent(new AID("buyer@console-ui"));
+        browser.until(d -> {
+            if (d.findElements(By.cssSelector("#diagram g.arrow")).size() >= 2) {
+                return true;
+            }
+            buyer.send(request("before-" + System.nanoTime()));
+            return false;
+        });
+        int before = browser.driver.findElements(By.cssSelector("#diagram g.arrow")).size();
+        tab("platform");
+        buyer.send(request("while-away"));
+        // Drawn (hidden) while the platform tab is shown: the request and the seller's AGREE.
+        browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow")).size() >= before + 2);
+        tab("sniffer");
+        List<WebElement> arrows = browser.driver.findElements(By.cssSelector("#diagram g.arrow"));
+        assertTrue(arrows.size() >= before + 2, "the story before the switch and what came meanwhile: " + arrows.size());
+        assertEquals("REQUEST", arrows.get(0).getAttribute("data-performative"), "the first arrow is still the first request");
+        assertTrue(arrows.stream().anyMatch(a -> a.getText().contains("while-away")), "the request sent while away is drawn");
+    }
+
+    private static AclMessage request(String conversation) {
+        AclMessage m = new AclMessage(Performative.REQUEST);
+        m.addReceiver(new AID("seller1@console-ui"));
+        m.setConversationId(conversation);
+        m.setContent("(sell (book :title \"Dune\"))");
+        return m;
     }
 
     @Test

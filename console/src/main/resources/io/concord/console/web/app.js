@@ -32,18 +32,18 @@
     return s < 120 ? s + ' s ago' : Math.round(s / 60) + ' min ago';
   }
 
-  // ---- the event stream: one per page, its topics follow the tab ------------------------------
+  // ---- the event stream: one per page, every topic whatever the tab -----------------------------
+  // A tab switch neither reconnects nor clears: what the sniffer saw while another tab was shown
+  // is there when it is shown again. Only a new choice of agents or conversation starts a new story.
   function topics() {
-    const t = ['platform'];
-    if (state.tab === 'safety') t.push('safety');
-    if (state.tab === 'sniffer') t.push('sniff');
-    if (state.tab === 'view' && state.view) t.push('view-' + state.view.id);
-    return t.join(',');
+    return ['platform', 'safety', 'sniff'].concat(state.views.map((v) => 'view-' + v.id)).join(',');
   }
-  function connect() {
+  function connect(fresh) {
     if (state.source) state.source.close();
-    state.sniffed = [];
-    drawDiagram();
+    if (fresh) {
+      state.sniffed = [];
+      drawDiagram();
+    }
     const src = new EventSource(url('api/events', { topics: topics(), sniff: [...state.picked].join(','),
       conversation: state.conversation }));
     state.source = src;
@@ -75,7 +75,7 @@
     document.querySelectorAll('.tab').forEach((s) => s.classList.toggle('active', s.id === tab));
     if (tab === 'bench') loadBench();
     if (tab === 'view') drawForm();
-    connect();
+    if (tab === 'sniffer') drawDiagram();
   }
   document.querySelectorAll('nav button[data-tab]').forEach((b) => b.addEventListener('click', () => show(b.dataset.tab)));
 
@@ -184,14 +184,14 @@
       c.checked = state.picked.has(n);
       c.addEventListener('change', () => {
         if (c.checked) state.picked.add(n); else state.picked.delete(n);
-        connect();
+        connect(true);
       });
       l.appendChild(c);
       l.appendChild(document.createTextNode(' ' + n));
       box.appendChild(l);
     }
   }
-  $('sniff-conversation').addEventListener('change', (e) => { state.conversation = e.target.value.trim(); connect(); });
+  $('sniff-conversation').addEventListener('change', (e) => { state.conversation = e.target.value.trim(); connect(true); });
   $('sniff-clear').addEventListener('click', () => { state.sniffed = []; drawDiagram(); $('message').textContent = ''; });
 
   function visible() {
@@ -246,7 +246,7 @@
         b.addEventListener('click', () => show('view', v));
         box.appendChild(b);
       }
-      connect();
+      connect(true);
     });
   }
   function drawForm() {
