@@ -208,6 +208,11 @@ class ConsoleBrowserTest {
             }
         }
         browser.until(d -> total("seller1@console-ui") > before);
+        // The copies the stack sends on purpose have a grey column of their own, never an alarm.
+        WebElement copies = browser.driver.findElement(By.cssSelector(
+                "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.COPIES + "']"));
+        assertTrue(copies.getAttribute("class").contains("expected") && !copies.getAttribute("class").contains("hot"),
+                copies.getAttribute("class"));
         browser.driver.findElement(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).click();
         browser.until(d -> d.findElement(By.id("safety-detail")).getText().contains("seller1@console-ui"));
         browser.screenshot("console-safety");

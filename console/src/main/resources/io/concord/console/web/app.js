@@ -146,7 +146,9 @@
       for (const t of s.threats) {
         const td = el('td', a.threats[t] + (a.perMinute[t] ? ' (+' + a.perMinute[t] + ' in the last minute)' : ''), 'num');
         td.dataset.threat = t;
-        if (a.perMinute[t] > 0) td.classList.add('hot');
+        // Copies the stack sends on purpose are shown apart, in grey: never an alarm.
+        if (t === s.threats[0]) td.classList.add('expected');
+        else if (a.perMinute[t] > 0) td.classList.add('hot');
         tr.appendChild(td);
       }
       tr.addEventListener('click', () => { state.safetyPick = a.agent; drawSafetyDetail(); });

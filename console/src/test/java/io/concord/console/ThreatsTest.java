@@ -1,0 +1,19 @@
+package io.concord.console;
+
+import org.junit.jupiter.api.Test;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+/** Drop reasons by the threat their defence stands against; the copies sent on purpose apart from every threat. */
+class ThreatsTest {
+    @Test
+    void copiesSentOnPurposeAreNoThreatAndRepeatsAre() {
+        assertEquals(Threats.COPIES, Threats.of("copy"), "the second UDP copy of a frame, dropped by its tag");
+        assertEquals(Threats.COPIES, Threats.ORDER.get(0), "shown first, apart");
+        assertEquals("repetition", Threats.of("repeated"), "a frame the sequence window delivered already");
+        assertEquals("repetition", Threats.of("replayed-handshake"));
+        assertEquals("corruption", Threats.of("bad-tag"));
+        assertEquals("flooding", Threats.of("handshake-limit"));
+        assertEquals("other", Threats.of("something-new"));
+    }
+}
