@@ -34,6 +34,10 @@ import java.util.function.ToDoubleFunction;
  *       lane, {@value #LEAF_CLEARANCE_M} m from the open leaf; no wall in its circle.</li>
  *   <li>A sliding door: a wall in line past its {@code hinge} jamb at least as long as the opening,
  *       the pocket its leaf slides into.</li>
+ *   <li>Two lanes ({@link HospitalMap#laneAxis}): each lane's point keeps the rules of a node (from
+ *       walls, swings and pivots: a chair stopped in its lane may turn there), and each line a
+ *       chair in a lane drives (along the corridor, and the turns to and from rooms on its right)
+ *       those of an edge.</li>
  * </ul>
  *
  * <p>Each problem is a sentence naming the element, as the reader's are; {@link HospitalMap#warnings()}
