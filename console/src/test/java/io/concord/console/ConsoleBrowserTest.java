@@ -126,6 +126,20 @@ class ConsoleBrowserTest {
         });
     }
 
+    /**
+     * "since ... ago" goes on between the platform's events: the page's clock moved an hour on
+     * (Date.now replaced in the page), the container's line says so without any new event.
+     */
+    @Test
+    void theContainersSinceTicksBetweenEvents() {
+        browser.driver.get(console.uri());
+        tab("platform");
+        browser.until(d -> d.findElement(By.id("container-box")).getText().matches("(?s).*since \\d+ s ago.*"));
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const real = Date.now.bind(Date); Date.now = () => real() + 3600000;");
+        browser.until(d -> d.findElement(By.id("container-box")).getText().matches("(?s).*since 60 min ago.*"));
+    }
+
     @Test
     void theSnifferDrawsARequestAndItsReplyInOrder() {
         browser.driver.get(console.uri());

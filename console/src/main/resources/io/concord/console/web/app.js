@@ -31,6 +31,13 @@
     const s = Math.max(0, Math.round((Date.now() - ms) / 1000));
     return s < 120 ? s + ' s ago' : Math.round(s / 60) + ' min ago';
   }
+  // A time since, that goes on ticking between the platform's events.
+  function agoEl(ms) {
+    const e = el('span', ago(ms), 'ago');
+    e.dataset.ms = ms || '';
+    return e;
+  }
+  setInterval(() => document.querySelectorAll('span.ago').forEach((e) => { e.textContent = ago(Number(e.dataset.ms)); }), 1000);
 
   // ---- the event stream: one per page, every topic whatever the tab -----------------------------
   // A tab switch neither reconnects nor clears: what the sniffer saw while another tab was shown
@@ -100,7 +107,9 @@
       const s = el('td');
       for (const d of a.services) s.appendChild(el('span', d.type + (d.name ? ': ' + d.name : ''), 'svc'));
       tr.appendChild(s);
-      tr.appendChild(el('td', ago(a.startMs)));
+      const since = el('td');
+      since.appendChild(agoEl(a.startMs));
+      tr.appendChild(since);
       tbody.appendChild(tr);
     }
     return n;
@@ -112,7 +121,10 @@
     const box = $('container-box');
     box.replaceChildren();
     box.appendChild(el('strong', p.container ? 'Container: ' + p.container : 'No container elected yet'));
-    if (p.container) box.appendChild(el('span', ' — term ' + p.term + ', since ' + ago(p.containerSinceMs)));
+    if (p.container) {
+      box.appendChild(el('span', ' — term ' + p.term + ', since '));
+      box.appendChild(agoEl(p.containerSinceMs));
+    }
     box.appendChild(el('div', 'This console is ' + p.console + ' (' + p.role.toLowerCase() + ').', 'hint'));
     const q = $('search').value.trim();
     const n = fillAgents($('lal').tBodies[0], p.lal, q, p.container) + fillAgents($('gal').tBodies[0], p.gal, q, p.container);
