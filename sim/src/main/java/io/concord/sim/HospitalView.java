@@ -206,6 +206,22 @@ public final class HospitalView implements ConsoleView {
         });
     }
 
+    /**
+     * A chair's colour, the same for its body, its route and its reservations: the picture's
+     * palette by the chair's number (none of the doors' red, orange or green).
+     */
+    static String colour(String chair) {
+        int n = 0;
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(\\d+)$").matcher(chair);
+        if (m.find()) {
+            n = Integer.parseInt(m.group(1)) - 1;
+        }
+        return CHAIR_COLOURS[Math.floorMod(n, CHAIR_COLOURS.length)];
+    }
+
+    private static final String[] CHAIR_COLOURS = {"#1f77b4", "#9467bd", "#e6ab02", "#17becf", "#e377c2", "#8c564b", "#393b79",
+        "#bcbd22", "#7b4173", "#000000"};
+
     /** A queue's rings at a point (a node, or a lane's point at a node with lanes), titled with the queue. */
     private static void rings(ArrayNode shapes, Point at, String where, String id, List<String> queue) {
         List<String> names = queue.stream().map(a -> a.replaceFirst("@.*", "").replaceFirst("^control-", "")).toList();
@@ -213,7 +229,7 @@ public final class HospitalView implements ConsoleView {
                 + String.join(", ", names.subList(1, names.size())) : "");
         for (int k = 0; k < names.size(); k++) {
             ObjectNode ring = shapes.addObject().put("type", "circle").put("x", at.x()).put("y", at.y())
-                    .put("r", k == 0 ? 0.7 : Math.max(0.3, 0.55 - 0.1 * k)).put("color", "none").put("stroke", "#2d6cb5")
+                    .put("r", k == 0 ? 0.7 : Math.max(0.3, 0.55 - 0.1 * k)).put("color", "none").put("stroke", colour(names.get(k)))
                     .put("strokeWidth", k == 0 ? 0.14 : 0.07).put("title", title);
             if (k > 0) {
                 ring.put("dash", "0.15 0.12");
@@ -283,7 +299,7 @@ public final class HospitalView implements ConsoleView {
             if (ctl != null) {
                 List<Integer> route = ctl.route();
                 if (route != null && !route.isEmpty()) {
-                    ObjectNode path = shapes.addObject().put("type", "line").put("color", "#2d6cb5").put("width", 0.12).put("dash", "0.4 0.3");
+                    ObjectNode path = shapes.addObject().put("type", "line").put("color", colour(c.name())).put("width", 0.12).put("dash", "0.4 0.3");
                     ArrayNode pts = path.putArray("points");
                     pts.add(p.x()).add(p.y());
                     // What is left of the route: from the leg the chair is on.
@@ -304,7 +320,7 @@ public final class HospitalView implements ConsoleView {
                 }
             }
             ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
-                    .put("color", "#2d6cb5").put("stroke", "#ffffff").put("id", "chair-" + c.name()).put("title", c.name());
+                    .put("color", colour(c.name())).put("stroke", "#ffffff").put("id", "chair-" + c.name()).put("title", c.name());
             body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()));
             line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
             shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330").put("text", c.name());
@@ -320,7 +336,7 @@ public final class HospitalView implements ConsoleView {
                 }
             }
             chairs.add(json.createArrayNode().add(c.name()).add(String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y()))
-                    .add(String.format(Locale.ROOT, "%.2f m/s", c.forwardSpeed()))
+                    .add(String.format(Locale.ROOT, "%.2f m/s", Math.abs(c.forwardSpeed()) < 0.005 ? 0.0 : c.forwardSpeed()))
                     .add(current == null ? "idle" : current.id() + " " + current.state().name().toLowerCase(Locale.ROOT))
                     .add(ctl == null ? "" : safety(ctl)));
         }

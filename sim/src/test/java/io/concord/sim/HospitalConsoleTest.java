@@ -64,6 +64,20 @@ class HospitalConsoleTest {
                 browser.until(d -> d.findElements(By.cssSelector("circle[id^='reserved-'][data-queue='chair1']")).size() > 0);
                 // Its way west along ward A's two-lane corridor passes node 4 in lane 1: a ring at that lane's point.
                 browser.until(d -> d.findElements(By.cssSelector("circle[id='reserved-4-lane-1'][data-queue='chair1']")).size() > 0);
+                // One colour a chair: its body, its route and its reservations (redrawn with each snapshot: read at once).
+                browser.until(d -> {
+                    try {
+                        String body = d.findElement(By.id("chair-chair1")).getAttribute("fill");
+                        return body.equals(HospitalView.colour("chair1"))
+                                && body.equals(d.findElement(By.id("route-chair1")).getAttribute("stroke"))
+                                && body.equals(d.findElement(By.cssSelector("circle[id^='reserved-'][data-queue='chair1']")).getAttribute("stroke"));
+                    } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                        return false;
+                    }
+                });
+                assertTrue(!HospitalView.colour("chair1").equals(HospitalView.colour("chair2")), "each chair a colour of its own");
+                assertTrue(browser.driver.findElement(By.id("chairs")).getText().lines().noneMatch(l -> l.contains("-0.00 m/s")),
+                        "a chair standing still has no sign");
                 browser.until(d -> d.findElements(By.cssSelector("polyline[id^='door-'][data-state='open']")).size() > 0);
                 browser.until(d -> d.findElement(By.id("transports")).getText().contains("agreed"));
                 browser.screenshot("hospital-console");
