@@ -206,6 +206,15 @@ public final class HospitalView implements ConsoleView {
         });
     }
 
+    /** How far a point is from the nearest of {@code labels}, counting a label's width twice its height. */
+    private static double clearOfLabels(List<Point> labels, Point p) {
+        double best = Double.MAX_VALUE;
+        for (Point q : labels) {
+            best = Math.min(best, Math.hypot((p.x() - q.x()) / 2, p.y() - q.y()));
+        }
+        return best;
+    }
+
     /**
      * A chair's colour, the same for its body, its route and its reservations: the picture's
      * palette by the chair's number (none of the doors' red, orange or green).
@@ -270,9 +279,28 @@ public final class HospitalView implements ConsoleView {
         for (Wall w : map.walls()) {
             line(shapes, "#3b4252", Math.max(0.1, w.thicknessM()), w.from().x(), w.from().y(), w.to().x(), w.to().y());
         }
+        List<Point> labels = new ArrayList<>();
+        // The rooms', corridors' and halls' names, near the top of each (the nodes' numbers are at their centres).
+        for (io.concord.agents.map.Area a : map.areas()) {
+            if (a.kind() == io.concord.agents.map.Area.Kind.WARD || a.name() == null) {
+                continue;
+            }
+            double ax0 = Double.MAX_VALUE;
+            double ax1 = -Double.MAX_VALUE;
+            double ay1 = -Double.MAX_VALUE;
+            for (Point q : a.polygon()) {
+                ax0 = Math.min(ax0, q.x());
+                ax1 = Math.max(ax1, q.x());
+                ay1 = Math.max(ay1, q.y());
+            }
+            shapes.addObject().put("type", "text").put("x", (ax0 + ax1) / 2).put("y", ay1 - 0.7).put("size", 0.5).put("color", "#9aa3b2")
+                    .put("text", a.name()).put("id", "label-area-" + a.id());
+            labels.add(new Point((ax0 + ax1) / 2, ay1 - 0.7));
+        }
         for (Node n : map.nodes()) {
             shapes.addObject().put("type", "circle").put("x", n.at().x()).put("y", n.at().y()).put("r", 0.22).put("color", "#c8cfdb")
                     .put("title", "node " + n.id() + (n.name() == null ? "" : ": " + n.name()));
+            labels.add(new Point(n.at().x(), n.at().y() - 0.6));
             shapes.addObject().put("type", "text").put("x", n.at().x()).put("y", n.at().y() - 0.6).put("size", 0.45)
                     .put("color", "#7b8494").put("text", Integer.toString(n.id()));
         }
@@ -288,6 +316,27 @@ public final class HospitalView implements ConsoleView {
             };
             ObjectNode s = line(shapes, color, 0.35, d.from().x(), d.from().y(), d.to().x(), d.to().y());
             s.put("id", "door-" + wd.id()).put("title", "door " + wd.id() + ": " + state);
+            // Its name beside the opening: of the four places by either jamb on either side of the
+            // wall, the one farthest from the other labels (nodes' numbers, rooms' names).
+            double nx = -(d.to().y() - d.from().y()) / d.width();
+            double ny = (d.to().x() - d.from().x()) / d.width();
+            double ux = (d.to().x() - d.from().x()) / d.width();
+            double uy = (d.to().y() - d.from().y()) / d.width();
+            Point label = null;
+            double room = -1;
+            for (int side = -1; side <= 1; side += 2) {
+                for (int end = -1; end <= 1; end += 2) {
+                    Point q = new Point(d.centre().x() + side * 0.45 * nx + end * (d.width() / 2 + 0.3) * ux,
+                            d.centre().y() + side * 0.45 * ny + end * (d.width() / 2 + 0.3) * uy);
+                    double free = clearOfLabels(labels, q);
+                    if (free > room + 1e-9) {
+                        room = free;
+                        label = q;
+                    }
+                }
+            }
+            shapes.addObject().put("type", "text").put("x", label.x()).put("y", label.y()).put("size", 0.45)
+                    .put("color", color).put("text", wd.id()).put("id", "label-door-" + wd.id());
             s.putObject("data").put("state", state).put("open", String.format(Locale.ROOT, "%.2f", wd.openFraction()));
         }
         reservations(shapes);
@@ -365,8 +414,8 @@ public final class HospitalView implements ConsoleView {
         for (FrontDesk.Asked a : List.copyOf(desk.asked)) {
             asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
         }
-        table(tables, "transports", "Transports asked here", List.of("id", "from → to", "state", ""), asked);
-        table(tables, "bids", "The chairs' tasks and bids (the Medical agent's auctions)", List.of("chair", "task", "from → to", "state", "cost", ""), tasks);
+        table(tables, "transports", "Transports asked here", List.of("id", "from → to", "state", "detail"), asked);
+        table(tables, "bids", "The chairs' tasks and bids (the Medical agent's auctions)", List.of("chair", "task", "from → to", "state", "cost", "reason"), tasks);
         ArrayNode forms = o.putArray("forms");
         ObjectNode f = forms.addObject().put("title", "Ask for a transport").put("action", "transport").put("button", "Ask the Medical agent");
         ArrayNode fields = f.putArray("fields");

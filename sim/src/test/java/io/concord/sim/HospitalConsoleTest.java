@@ -54,6 +54,15 @@ class HospitalConsoleTest {
                 String startX = chair.getAttribute("data-x");
                 String startY = chair.getAttribute("data-y");
                 browser.screenshot("hospital-before");
+                // Labelled: every door by its id, the rooms and corridors by name.
+                browser.until(d -> {
+                    try {
+                        return d.findElement(By.id("label-door-A2")).getText().equals("A2")
+                                && d.findElements(By.cssSelector("text[id^='label-area-']")).stream().anyMatch(t -> t.getText().equals("Room A2"));
+                    } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                        return false; // the map is drawn again with each snapshot
+                    }
+                });
                 browser.until(d -> d.findElement(By.id("action-transport"))).click();
                 browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith("asked medical for a transport from node 3 to node 9"));
                 browser.until(d -> {
