@@ -123,7 +123,8 @@ public final class HospitalView implements ConsoleView {
             x1 = Math.max(x1, Math.max(w.from().x(), w.to().x()));
             y1 = Math.max(y1, Math.max(w.from().y(), w.to().y()));
         }
-        this.bounds = new double[] {x0 - 1, y0 - 1, x1 + 1, y1 + 1};
+        // Below the floor, a strip for the legend.
+        this.bounds = new double[] {x0 - 1, y0 - 1 - LEGEND_M, x1 + 1, y1 + 1};
     }
 
     @Override
@@ -213,6 +214,40 @@ public final class HospitalView implements ConsoleView {
             best = Math.min(best, Math.hypot((p.x() - q.x()) / 2, p.y() - q.y()));
         }
         return best;
+    }
+
+    /** The legend's strip under the floor, in metres. */
+    private static final double LEGEND_M = 1.6;
+
+    /** What the marks mean, in a row under the floor: doors by state, a chair, its route, its reservations. */
+    private void legend(ArrayNode shapes) {
+        double y = bounds[1] + 0.9;
+        double x = bounds[0] + 1;
+        String[][] doors = {{"closed", "#c0392b"}, {"moving", "#e08e0b"}, {"open", "#27ae60"}, {"failed", "#7f8c8d"}};
+        for (String[] d : doors) {
+            line(shapes, d[1], 0.35, x, y, x + 0.9, y);
+            x = legendText(shapes, x + 1.35, y, "door " + d[0], "legend-door-" + d[0]);
+        }
+        shapes.addObject().put("type", "circle").put("x", x + 0.45).put("y", y).put("r", 0.45).put("color", colour("chair1"))
+                .put("stroke", "#ffffff");
+        x = legendText(shapes, x + 1.1, y, "a chair, its colour", "legend-chair");
+        ObjectNode route = shapes.addObject().put("type", "line").put("color", colour("chair1")).put("width", 0.12).put("dash", "0.4 0.3");
+        route.putArray("points").add(x).add(y).add(x + 1.2).add(y);
+        x = legendText(shapes, x + 1.4, y, "its route", "legend-route");
+        shapes.addObject().put("type", "circle").put("x", x + 0.7).put("y", y).put("r", 0.7).put("color", "none").put("stroke", colour("chair1"))
+                .put("strokeWidth", 0.14);
+        x = legendText(shapes, x + 1.6, y, "its turn (node or lane)", "legend-turn");
+        shapes.addObject().put("type", "circle").put("x", x + 0.5).put("y", y).put("r", 0.45).put("color", "none").put("stroke", colour("chair1"))
+                .put("strokeWidth", 0.07).put("dash", "0.15 0.12");
+        legendText(shapes, x + 1.2, y, "queued after it", "legend-queued");
+    }
+
+    /** A legend's words, starting at {@code x}; returns where the next item may start. */
+    private static double legendText(ArrayNode shapes, double x, double y, String text, String id) {
+        double w = 0.25 * text.length();
+        shapes.addObject().put("type", "text").put("x", x + w / 2).put("y", y - 0.18).put("size", 0.5).put("color", "#4a5160")
+                .put("text", text).put("id", id);
+        return x + w + 0.8;
     }
 
     /**
@@ -340,6 +375,7 @@ public final class HospitalView implements ConsoleView {
             s.putObject("data").put("state", state).put("open", String.format(Locale.ROOT, "%.2f", wd.openFraction()));
         }
         reservations(shapes);
+        legend(shapes);
         ArrayNode chairs = json.createArrayNode();
         ArrayNode tasks = json.createArrayNode();
         for (SimChair c : world.chairs()) {

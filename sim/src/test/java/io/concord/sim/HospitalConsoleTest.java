@@ -58,6 +58,8 @@ class HospitalConsoleTest {
                 browser.until(d -> {
                     try {
                         return d.findElement(By.id("label-door-A2")).getText().equals("A2")
+                                && d.findElement(By.id("legend-door-closed")).getText().equals("door closed")
+                                && d.findElement(By.id("legend-queued")).getText().equals("queued after it")
                                 && d.findElements(By.cssSelector("text[id^='label-area-']")).stream().anyMatch(t -> t.getText().equals("Room A2"));
                     } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
                         return false; // the map is drawn again with each snapshot
