@@ -71,12 +71,23 @@ public final class HospitalDemo {
             if (p.length < 2 || p.length > 4) {
                 throw new IllegalArgumentException("a task is from-to[:priority[:unload]], e.g. 3-9:3:60; got '" + s + "'");
             }
+            TaskSpec t;
             try {
-                return new TaskSpec(Integer.parseInt(p[0]), Integer.parseInt(p[1]), p.length > 2 ? Double.parseDouble(p[2]) : 0,
+                t = new TaskSpec(Integer.parseInt(p[0]), Integer.parseInt(p[1]), p.length > 2 ? Double.parseDouble(p[2]) : 0,
                         p.length > 3 ? Double.parseDouble(p[3]) : 60);
             } catch (NumberFormatException e) {
                 throw new IllegalArgumentException("a task is from-to[:priority[:unload]] with numbers, e.g. 3-9:3:60; got '" + s + "'");
             }
+            if (!(t.priority() >= 0 && t.priority() <= 3)) {
+                throw new IllegalArgumentException("task '" + s + "': its priority is 0 to 3 (the dissertation's TP: 0, 1.5 or 3)");
+            }
+            if (!(t.unloadS() >= 0 && t.unloadS() <= 3_600)) {
+                throw new IllegalArgumentException("task '" + s + "': seconds to load and unload are 0 to 3600");
+            }
+            if (t.from() == t.to()) {
+                throw new IllegalArgumentException("task '" + s + "': the patient is already at node " + t.to());
+            }
+            return t;
         }
 
         @Override
@@ -259,6 +270,15 @@ public final class HospitalDemo {
         if (map.parking().isEmpty()) {
             throw new IllegalArgumentException(which + " names no parking places, where the demo's chairs start: add"
                     + " \"parking\": [node ids] to it (docs/hospital-map.md)");
+        }
+        for (TaskSpec t : o.tasks()) {
+            for (int n : new int[] {t.from(), t.to()}) {
+                if (!map.hasNode(n)) {
+                    throw new IllegalArgumentException("--tasks " + t.from() + "-" + t.to() + ": " + which + " has no node " + n
+                            + "; its nodes are " + map.nodes().stream().map(x -> x.id()).sorted().toList()
+                            + (o.map() == null ? " (rooms: docs/hospital-map.md)" : ""));
+                }
+            }
         }
         if (o.chairs() > map.parking().size()) {
             throw new IllegalArgumentException("--chairs " + o.chairs() + ": " + which + " has " + map.parking().size()

@@ -55,6 +55,15 @@ class HospitalDemoTest {
                 .getMessage().contains("from-to"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "0"}))
                 .getMessage().contains("1 or more"));
+        assertEquals(new HospitalDemo.TaskSpec(3, 9, 0, 60), HospitalDemo.parse(new String[] {"--tasks", "3-9"}).tasks().get(0),
+                "the short form: priority 0, 60 s to load and unload");
+        assertEquals("task '3-9:7': its priority is 0 to 3 (the dissertation's TP: 0, 1.5 or 3)",
+                assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "3-9:7"})).getMessage());
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "9-9"}))
+                .getMessage().contains("already at node 9"));
+        HospitalDemo.Options far = HospitalDemo.parse(new String[] {"--tasks", "3-99"});
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.check(HospitalMap.defaultHospital(), far))
+                .getMessage().startsWith("--tasks 3-99: the default hospital has no node 99; its nodes are [1, 2, 3,"));
     }
 
     /** A chair starts at each of the map's parking places, in order; more chairs than places are refused, saying how many. */
