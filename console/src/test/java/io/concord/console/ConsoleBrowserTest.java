@@ -163,7 +163,17 @@ class ConsoleBrowserTest {
         assertEquals("AGREE", arrows.get(1).getAttribute("data-performative"));
         arrows.get(0).click();
         String whole = browser.driver.findElement(By.id("message")).getText();
-        assertTrue(whole.startsWith("(REQUEST") && whole.contains(":sender") && whole.contains("Dune"), whole);
+        assertTrue(whole.matches("(?s)\\d\\d:\\d\\d:\\d\\d\\.\\d{3}  sent by buyer@console-ui\n\\(REQUEST.*")
+                && whole.contains(":sender") && whole.contains("Dune"), whole);
+        assertTrue(arrows.get(0).getAttribute("data-at").matches("\\d\\d:\\d\\d:\\d\\d\\.\\d{3}"), "each arrow has its time");
+        // A long story: the diagram follows it down as it grows.
+        for (int i = 0; i < 25; i++) {
+            buyer.send(request("more-" + i));
+        }
+        browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow")).size() >= 50);
+        browser.until(d -> (Boolean) ((org.openqa.selenium.JavascriptExecutor) d).executeScript(
+                "const w = document.getElementById('diagram-wrap'); return w.scrollHeight > w.clientHeight"
+                        + " && w.scrollTop + w.clientHeight >= w.scrollHeight - 30;"));
         browser.screenshot("console-sniffer");
     }
 
@@ -207,7 +217,10 @@ class ConsoleBrowserTest {
     @Test
     void theSafetyViewCountsForgedFrames() throws Exception {
         browser.driver.get(console.uri());
-        tab("safety");
+        browser.until(d -> {
+            tab("safety");
+            return d.findElement(By.id("safety")).isDisplayed();
+        });
         browser.until(d -> d.findElements(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).size() == 1);
         long before = total("seller1@console-ui");
         // Forged frames to seller1's port: bytes an attacker made up.
@@ -236,7 +249,7 @@ class ConsoleBrowserTest {
         List<WebElement> row = browser.driver.findElements(By.cssSelector("#safety-table tbody tr[data-agent='" + agent + "'] td[data-threat]"));
         long t = 0;
         for (WebElement td : row) {
-            t += Long.parseLong(td.getText().split(" ")[0]);
+            t += Long.parseLong(td.getAttribute("textContent").split(" ")[0]);
         }
         return t;
     }

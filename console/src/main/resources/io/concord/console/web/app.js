@@ -213,38 +213,50 @@
     const sniffedAgents = new Set(state.sniffed.map((m) => m.by));
     return state.sniffed.filter((m) => m.dir === 'sent' || !sniffedAgents.has(m.from) || state.conversation);
   }
+  // The time a message was seen, to the millisecond, in the browser's time zone.
+  function clock(ms) {
+    if (!ms) return '';
+    const t = new Date(ms);
+    const two = (n) => String(n).padStart(2, '0');
+    return two(t.getHours()) + ':' + two(t.getMinutes()) + ':' + two(t.getSeconds()) + '.' + String(t.getMilliseconds()).padStart(3, '0');
+  }
   function drawDiagram() {
     const d = $('diagram');
+    const wrap = $('diagram-wrap');
+    // Follows the story as it grows, unless the reader has scrolled up to read (then it stays put).
+    const follow = wrap.scrollTop + wrap.clientHeight >= wrap.scrollHeight - 30;
     d.replaceChildren();
     const msgs = visible().filter((m, i, all) => m.dir === 'sent' || !all.some((o) => o.dir === 'sent'
       && o.from === m.from && o.to === m.to && o.message === m.message));
     const lanes = [];
     for (const a of [...state.picked]) if (!lanes.includes(a)) lanes.push(a);
     for (const m of msgs) for (const a of [m.from, m.to]) if (!lanes.includes(a)) lanes.push(a);
-    const W = 170, top = 40, step = 28;
+    const W = 170, top = 40, step = 28, T = 90;
     const height = top + 20 + msgs.length * step;
-    d.setAttribute('width', Math.max(400, lanes.length * W + 40));
+    d.setAttribute('width', Math.max(400, T + lanes.length * W + 40));
     d.setAttribute('height', Math.max(120, height));
     lanes.forEach((a, i) => {
-      const x = 20 + i * W + W / 2;
+      const x = T + 20 + i * W + W / 2;
       d.appendChild(svg('rect', { x: x - 75, y: 5, width: 150, height: 24, rx: 4, fill: '#e3effd', stroke: '#7aa7d6' }));
       d.appendChild(svg('text', { x: x, y: 21, 'text-anchor': 'middle' }, a.split('@')[0]));
       d.appendChild(svg('line', { x1: x, y1: 29, x2: x, y2: Math.max(120, height), stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
     });
     msgs.forEach((m, i) => {
       const y = top + 10 + i * step;
-      const x1 = 20 + lanes.indexOf(m.from) * W + W / 2;
-      const x2 = 20 + lanes.indexOf(m.to) * W + W / 2;
-      const g = svg('g', { class: 'arrow', 'data-performative': m.performative });
+      const x1 = T + 20 + lanes.indexOf(m.from) * W + W / 2;
+      const x2 = T + 20 + lanes.indexOf(m.to) * W + W / 2;
+      const g = svg('g', { class: 'arrow', 'data-performative': m.performative, 'data-at': clock(m.atMs) });
+      g.appendChild(svg('text', { x: 6, y: y + 4, fill: '#7b8494', class: 'at' }, clock(m.atMs)));
       const color = /FAILURE|REFUSE|NOT-UNDERSTOOD/.test(m.performative) ? '#c0392b' : '#2d6cb5';
       g.appendChild(svg('line', { x1: x1, y1: y, x2: x2 + (x2 > x1 ? -6 : 6), y2: y, stroke: color, 'stroke-width': 1.6 }));
       const dir = x2 > x1 ? -1 : 1;
       g.appendChild(svg('polygon', { points: `${x2},${y} ${x2 + dir * 8},${y - 4} ${x2 + dir * 8},${y + 4}`, fill: color }));
       g.appendChild(svg('text', { x: (x1 + x2) / 2, y: y - 4, 'text-anchor': 'middle', fill: color },
         m.performative + (m.conversation ? ' · ' + m.conversation : '') + (m.missed ? ' (+' + m.missed + ' missed)' : '')));
-      g.addEventListener('click', () => { $('message').textContent = m.message; });
+      g.addEventListener('click', () => { $('message').textContent = clock(m.atMs) + '  ' + m.dir + ' by ' + m.by + '\n' + m.message; });
       d.appendChild(g);
     });
+    if (follow) wrap.scrollTop = wrap.scrollHeight;
   }
 
   // ---- application views (the hospital) -------------------------------------------------------
