@@ -204,6 +204,16 @@ class ConsoleBrowserTest {
         assertTrue(arrows.size() >= before + 2, "the story before the switch and what came meanwhile: " + arrows.size());
         assertEquals("REQUEST", arrows.get(0).getAttribute("data-performative"), "the first arrow is still the first request");
         assertTrue(arrows.stream().anyMatch(a -> a.getText().contains("while-away")), "the request sent while away is drawn");
+        // Show only the AGREEs: the requests leave the diagram, not the story (the export has what is shown).
+        browser.driver.findElement(By.id("sniff-filter")).sendKeys("AGREE");
+        browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow")).stream()
+                .allMatch(a -> "AGREE".equals(a.getAttribute("data-performative"))));
+        String export = java.net.URLDecoder.decode(browser.driver.findElement(By.id("sniff-export")).getAttribute("href")
+                .substring("data:text/plain;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(export.contains("(AGREE") && export.contains("while-away") && !export.contains("(REQUEST"), export);
+        browser.driver.findElement(By.id("sniff-filter")).clear();
+        browser.driver.findElement(By.id("sniff-filter")).sendKeys(" ");
+        browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow[data-performative='REQUEST']")).size() >= 2);
     }
 
     private static AclMessage request(String conversation) {

@@ -208,10 +208,16 @@
   $('sniff-conversation').addEventListener('change', (e) => { state.conversation = e.target.value.trim(); connect(true); });
   $('sniff-clear').addEventListener('click', () => { state.sniffed = []; drawDiagram(); $('message').textContent = ''; });
 
+  $('sniff-filter').addEventListener('input', () => drawDiagram());
+
   function visible() {
     // A message seen by both its agents is drawn once: as sent, or as received if its sender is not sniffed.
     const sniffedAgents = new Set(state.sniffed.map((m) => m.by));
-    return state.sniffed.filter((m) => m.dir === 'sent' || !sniffedAgents.has(m.from) || state.conversation);
+    // "show only": a performative (AGREE) or a part of an agent's name, without a new stream.
+    const only = $('sniff-filter').value.trim().toLowerCase();
+    return state.sniffed.filter((m) => m.dir === 'sent' || !sniffedAgents.has(m.from) || state.conversation)
+      .filter((m) => !only || m.performative.toLowerCase() === only || m.from.toLowerCase().includes(only)
+        || m.to.toLowerCase().includes(only));
   }
   // The time a message was seen, to the millisecond, in the browser's time zone.
   function clock(ms) {
@@ -257,6 +263,9 @@
       d.appendChild(g);
     });
     if (follow) wrap.scrollTop = wrap.scrollHeight;
+    // What is drawn, as text: each message's time, who saw it, and the message in FIPA's string form.
+    $('sniff-export').href = 'data:text/plain;charset=utf-8,' + encodeURIComponent(msgs.map((m) => clock(m.atMs) + '  '
+      + m.dir + ' by ' + m.by + '\n' + m.message).join('\n\n') + '\n');
   }
 
   // ---- application views (the hospital) -------------------------------------------------------
