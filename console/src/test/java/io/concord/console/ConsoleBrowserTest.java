@@ -245,6 +245,9 @@ class ConsoleBrowserTest {
             }
         }
         browser.until(d -> total("seller1@console-ui") > before);
+        // Fifty forged frames in a minute: the platform's alarm (at 20 a minute) says so, and which threat.
+        browser.until(d -> d.findElement(By.id("safety-alarm")).isDisplayed()
+                && d.findElement(By.id("safety-alarm")).getText().matches("Alarm: \\d+ threats in the last minute \\(.*corruption \\d+.*"));
         // The copies the stack sends on purpose have a grey column of their own, never an alarm.
         WebElement copies = browser.driver.findElement(By.cssSelector(
                 "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.COPIES + "']"));

@@ -167,8 +167,37 @@
       body.appendChild(tr);
     }
     drawSafetyDetail();
+    drawThreatRate(s);
     $('safety-console').textContent = 'The console itself: ' + s.consoleDrops + ' events dropped for slow browsers, '
       + s.consoleMalformed + ' malformed reports.';
+  }
+  // The platform's real threats a minute (every agent's, the copies sent on purpose left out), as a
+  // line over the last samples, and an alarm when they reach what the operator set.
+  state.rate = [];
+  function drawThreatRate(s) {
+    const byThreat = {};
+    let now = 0;
+    for (const a of s.agents) {
+      for (const t of s.threats.slice(1)) {
+        if (t === 'other') continue;
+        now += a.perMinute[t] || 0;
+        byThreat[t] = (byThreat[t] || 0) + (a.perMinute[t] || 0);
+      }
+    }
+    state.rate.push(now);
+    if (state.rate.length > 120) state.rate.shift();
+    const at = Math.max(1, Number($('safety-alarm-at').value) || 20);
+    const top = Math.max(at * 1.25, ...state.rate);
+    const g = $('safety-rate');
+    g.replaceChildren();
+    const y = (v) => 56 - 52 * v / top;
+    g.appendChild(svg('line', { x1: 0, y1: y(at), x2: 600, y2: y(at), stroke: '#c0392b', 'stroke-dasharray': '4 3' }));
+    g.appendChild(svg('polyline', { points: state.rate.map((v, i) => (i * 5) + ',' + y(v)).join(' '), fill: 'none',
+      stroke: '#2d6cb5', 'stroke-width': 2, id: 'safety-rate-line' }));
+    const alarm = $('safety-alarm');
+    alarm.hidden = now < at;
+    alarm.textContent = now < at ? '' : 'Alarm: ' + now + ' threats in the last minute (' + Object.entries(byThreat)
+      .filter(([, v]) => v > 0).map(([t, v]) => t + ' ' + v).join(', ') + '); the table says which agents';
   }
   function drawSafetyDetail() {
     const s = state.safety;
