@@ -32,7 +32,7 @@ public final class Browser implements AutoCloseable {
         }
         ChromeOptions o = new ChromeOptions();
         o.setBinary(chromium);
-        o.addArguments("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu", "--window-size=1400,1000",
+        o.addArguments("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu", "--window-size=1600,1043",
                 "--no-first-run", "--no-default-browser-check", "--disable-extensions", "--disable-background-networking");
         ChromeDriverService s = new ChromeDriverService.Builder().usingDriverExecutable(new File(driverPath)).usingAnyFreePort().build();
         driver = new ChromeDriver(s, o);
