@@ -404,9 +404,14 @@ public final class HospitalView implements ConsoleView {
                     path.put("id", "route-" + c.name());
                 }
             }
+            // A chair its supervisor holds (e-stop, trip, reboot, refusal) or has lost: a red ring round it, and why in its title.
+            String safety = ctl == null ? "armed" : ctl.supervisor().state().name().toLowerCase(Locale.ROOT);
+            boolean stopped = !safety.equals("armed");
             ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
-                    .put("color", colour(c.name())).put("stroke", "#ffffff").put("id", "chair-" + c.name()).put("title", c.name());
-            body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()));
+                    .put("color", colour(c.name())).put("stroke", stopped ? "#c0392b" : "#ffffff").put("strokeWidth", stopped ? 0.16 : 0.05)
+                    .put("id", "chair-" + c.name()).put("title", c.name() + (stopped && ctl != null ? ": " + safety(ctl) : ""));
+            body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()))
+                    .put("safety", safety);
             line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
             shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330").put("text", c.name());
             TaskView current = null;

@@ -137,6 +137,8 @@ class HospitalConsoleTest {
                 browser.driver.get(console.uri());
                 browser.until(d -> d.findElement(By.cssSelector("nav button[data-view='hospital']"))).click();
                 browser.until(d -> d.findElement(By.id("chairs")).getText().contains("the e-stop was pressed; needs Resume"));
+                // On the map too: a red ring round the held chair.
+                browser.until(d -> d.findElements(By.cssSelector("circle#chair-chair1[data-safety='held'][stroke='#c0392b']")).size() == 1);
                 double held = onLoop(platform, simChair::distanceTravelled);
                 // Two seconds of hospital time at 20 times real time: the chair stands.
                 double t0 = onLoop(platform, () -> world.worldTimeNs() / 1e9);
