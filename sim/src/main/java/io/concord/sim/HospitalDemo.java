@@ -312,7 +312,7 @@ public final class HospitalDemo {
                 + map.parking().subList(0, o.chairs()) + ".");
         if (o.chairs() > 1) {
             OUT.println("The traffic agent queues the chairs at each node of their routes and lets a chair into a node only"
-                    + " when it is first there: they follow each other down corridors and never meet.");
+                    + " when it is first there: they follow each other down corridors, pass each other in two-lane ones, and never meet.");
         }
         if (o.serial() != null) {
             OUT.println("chair1 is driven over the serial port " + o.serial() + " (a real chair's board, or the emulator), in real time"
@@ -552,7 +552,7 @@ public final class HospitalDemo {
             asked.await();
             Thread.sleep(100);   // a person's patience, not a test's timing: the ward waits for its own agents
         }
-        OUT.println("ward ready: " + world.doors().size() + " door agents, " + o.chairs() + " chairs with a planner and a control agent each");
+        OUT.println("ward ready: " + world.doors().size() + " door agents, " + o.chairs() + (o.chairs() == 1 ? " chair" : " chairs") + " with a planner and a control agent each");
         stopped.await();
     }
 

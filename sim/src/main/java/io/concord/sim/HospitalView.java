@@ -79,8 +79,13 @@ public final class HospitalView implements ConsoleView {
                 try {
                     WheelchairMessage w = WheelchairMessage.decode(m);
                     String chair = w instanceof Done d ? d.chair() : w instanceof Failed f ? f.chair() : null;
+                    // The Medical agent's own id for it, as its log says it (T2...), beside the desk's.
+                    String task = w instanceof Done d ? d.task() : w instanceof Failed f ? f.task() : null;
                     String reason = w instanceof WheelchairMessage.Reasoned r ? r.reason() : null;
                     detail = chair != null && !chair.isEmpty() ? "by " + chair : reason != null ? reason : detail;
+                    if (task != null && !task.isEmpty()) {
+                        detail = task + ": " + detail;
+                    }
                 } catch (IllegalArgumentException e) {
                     detail = "an answer that is not content: " + m.getContent();
                 }
@@ -168,6 +173,9 @@ public final class HospitalView implements ConsoleView {
             throw new IllegalArgumentException("no chair named '" + chair + "'; chairs: "
                     + String.join(", ", hospital.controls().stream().map(c -> c.supervisor().name()).toList()));
         }
+        if (ctl.supervisor().state() == io.concord.agents.chair.ChairSupervisor.State.ARMED) {
+            throw new IllegalArgumentException(chair + " is not held: it is armed and drives as its tasks ask; nothing to resume");
+        }
         var f = ctl.resume("an operator at the console");
         if (!f.isDone()) {
             return "asked " + chair + " to resume";
@@ -239,7 +247,10 @@ public final class HospitalView implements ConsoleView {
         x = legendText(shapes, x + 1.6, y, "its turn (node or lane)", "legend-turn");
         shapes.addObject().put("type", "circle").put("x", x + 0.5).put("y", y).put("r", 0.45).put("color", "none").put("stroke", colour("chair1"))
                 .put("strokeWidth", 0.07).put("dash", "0.15 0.12");
-        legendText(shapes, x + 1.2, y, "queued after it", "legend-queued");
+        x = legendText(shapes, x + 1.2, y, "queued after it", "legend-queued");
+        shapes.addObject().put("type", "circle").put("x", x + 0.45).put("y", y).put("r", 0.45).put("color", colour("chair1"))
+                .put("stroke", "#c0392b").put("strokeWidth", 0.16);
+        legendText(shapes, x + 1.1, y, "held or lost", "legend-held");
     }
 
     /** A legend's words, starting at {@code x}; returns where the next item may start. */

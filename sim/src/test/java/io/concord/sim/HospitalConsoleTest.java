@@ -91,6 +91,9 @@ class HospitalConsoleTest {
                         "a chair standing still has no sign");
                 browser.until(d -> d.findElements(By.cssSelector("polyline[id^='door-'][data-state='open']")).size() > 0);
                 browser.until(d -> d.findElement(By.id("transports")).getText().contains("agreed"));
+                // Resume for a chair that is not held is refused, saying so (an operator must not believe something was held).
+                browser.until(d -> d.findElement(By.id("action-resume"))).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().contains("chair1 is not held: it is armed"));
                 browser.screenshot("hospital-console");
                 assertTrue(browser.driver.findElement(By.id("bids")).getText().contains("chair1"));
             }

@@ -85,7 +85,8 @@ final class Drivability {
             Wall w = nearest(map.walls(), x -> face(n.at(), x));
             if (w != null && face(n.at(), w) < NODE_WALL_M) {
                 out.add(n + " is " + m(face(n.at(), w)) + " m from the face of wall '" + w.id()
-                        + "'; a chair turning on the spot there reaches " + m(TURN_REACH_M) + " m: keep " + m(NODE_WALL_M) + " m");
+                        + "'; a chair turning on the spot there reaches " + m(TURN_REACH_M) + " m: keep " + m(NODE_WALL_M) + " m"
+                        + n.orOneLane());
             }
         }
         for (Edge e : map.edges()) {
@@ -171,7 +172,7 @@ final class Drivability {
             double dist = sweep.applyAsDouble(n.at());
             if (dist < TURN_REACH_M) {
                 out.add(n + (dist == 0 ? " is in " : " is " + m(dist) + " m from ") + what
-                        + "; a chair there would meet the leaf: keep " + m(TURN_REACH_M) + " m out of it");
+                        + "; a chair there would meet the leaf: keep " + m(TURN_REACH_M) + " m out of it" + n.orOneLane());
             }
         }
         for (Edge e : map.edges()) {
@@ -211,10 +212,15 @@ final class Drivability {
     }
 
     /** Where a chair may stand and turn: a node, or a lane's point at a node with lanes. */
-    private record Place(String what, Point at) {
+    private record Place(String what, Point at, boolean lane) {
         @Override
         public String toString() {
             return what + " at " + at;
+        }
+
+        /** What else to do when a lane's point breaks a rule: the corridor may carry one lane there. */
+        String orOneLane() {
+            return lane ? "; or give the corridor's edges at that node one lane (leave out \"lanes\")" : "";
         }
     }
 
@@ -222,12 +228,12 @@ final class Drivability {
     private static List<Place> places(HospitalMap map) {
         List<Place> out = new ArrayList<>();
         for (Node n : map.nodes()) {
-            out.add(new Place("node " + n.id(), n.at()));
+            out.add(new Place("node " + n.id(), n.at(), false));
         }
         for (Node n : map.nodes()) {
             if (map.laned(n.id())) {
                 for (int lane = 0; lane < 2; lane++) {
-                    out.add(new Place("lane " + lane + " of node " + n.id(), map.lanePoint(n.id(), lane)));
+                    out.add(new Place("lane " + lane + " of node " + n.id(), map.lanePoint(n.id(), lane), true));
                 }
             }
         }
@@ -284,7 +290,7 @@ final class Drivability {
             if (dist < r + TURN_REACH_M) {
                 out.add(n + " is " + m(dist) + " m from the pivot of revolving door '" + d.id()
                         + "'; its leaf sweeps " + m(r) + " m round it and a chair turning there reaches " + m(TURN_REACH_M)
-                        + " m: keep " + m(r + TURN_REACH_M) + " m");
+                        + " m: keep " + m(r + TURN_REACH_M) + " m" + n.orOneLane());
             }
         }
         for (Edge e : map.edges()) {

@@ -272,13 +272,13 @@ final class MapReader {
             int lanes = 1;
             if (l != null) {
                 if (!l.isIntegralNumber() || (l.asInt() != 1 && l.asInt() != 2)) {
-                    problem(what + ": \"lanes\" must be 1 or 2 (2: a corridor two chairs can pass each other in)");
+                    problem(what + " (" + a.asInt() + "-" + b.asInt() + "): \"lanes\" must be 1 or 2 (2: a corridor two chairs can pass each other in)");
                     continue;
                 }
                 lanes = l.asInt();
             }
             if (lanes == 2 && door != null) {
-                problem(what + ": a door's opening passes one chair at a time; give an edge through door '" + door
+                problem(what + " (" + a.asInt() + "-" + b.asInt() + "): a door's opening passes one chair at a time; give an edge through door '" + door
                         + "' one lane (leave out \"lanes\")");
                 continue;
             }

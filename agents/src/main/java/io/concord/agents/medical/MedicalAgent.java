@@ -367,7 +367,7 @@ public class MedicalAgent extends Agent {
         cfp.setConversationId(id + "-" + attempt);
         cfp.setReplyByEpochMs(currentTimeMillis() + settings.auctionMs());
         cfp.setContent(new TransportCall(id, from, to, tp, unload).encode());
-        log.accept(getLocalName() + ": CFP " + id + (attempt > 1 ? " (auction " + attempt + ")" : "") + " to " + chairs.size() + " chairs");
+        log.accept(getLocalName() + ": CFP " + id + (attempt > 1 ? " (auction " + attempt + ")" : "") + " to " + chairs.size() + (chairs.size() == 1 ? " chair" : " chairs"));
         ContractNetInitiator cn = new ContractNetInitiator(this, cfp) {
             private AclMessage winner;
             private double winnerCost;

@@ -498,7 +498,8 @@ public final class HospitalPicture {
         g.drawString("collision", x + 16, y + 1);
         if (world != null) {
             g.setColor(Color.DARK_GRAY);
-            g.drawString(String.format(Locale.ROOT, "%d chairs, %d collisions, %d steps at %.0f Hz", world.chairs().size(),
+            g.drawString(String.format(Locale.ROOT, "%d chair%s, %d collisions, %d steps at %.0f Hz", world.chairs().size(),
+                    world.chairs().size() == 1 ? "" : "s",
                     world.collisionCount(), world.stepCount(), world.stepHz()), margin, y + 20);
         }
     }
