@@ -51,9 +51,9 @@ public class ParallelBehaviour extends CompositeBehaviour {
         if (currentDone) {
             Behaviour b = (Behaviour) children.remove(index);
             terminated.add(b);
-            if (index >= children.size()) {
-                index = 0;
-            }
+            // As JADE's round list: the turn goes back to the child before the one that ended, which runs next.
+            int n = children.size();
+            index = n == 0 ? 0 : (index - 1 + n) % n;
         }
         if (whenToStop == WHEN_ALL) {
             return children.isEmpty();

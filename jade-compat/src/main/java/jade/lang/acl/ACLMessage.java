@@ -372,7 +372,8 @@ public class ACLMessage implements Cloneable, jade.util.leap.Serializable {
     /**
      * A reply, as JADE makes it: the same performative (set the one you mean), receivers from
      * {@code :reply-to} if there are any, else the sender; the same conversation-id, protocol,
-     * language, ontology and encoding; {@code :in-reply-to} this message's {@code :reply-with};
+     * language and ontology (not the encoding, nor user-defined parameters, as in JADE 4.3);
+     * {@code :in-reply-to} this message's {@code :reply-with};
      * and a new {@code :reply-with} of the sender's name and a number.
      */
     public ACLMessage createReply() {
@@ -387,7 +388,6 @@ public class ACLMessage implements Cloneable, jade.util.leap.Serializable {
         m.language = language;
         m.ontology = ontology;
         m.protocol = protocol;
-        m.encoding = encoding;
         m.conversationId = conversationId;
         m.inReplyTo = replyWith;
         long stamp = postTimeStamp >= 0 ? postTimeStamp : nextReplyNumber();
