@@ -18,7 +18,8 @@ import java.util.Vector;
  * {@link #handleFailure} for each answer, {@link #handleAllResponses(Vector, Vector)} once all
  * have answered (or the CFP's {@code :reply-by} time has passed), sends the acceptances and
  * rejections that handler put in its second vector, then calls {@link #handleInform} /
- * {@link #handleFailure} for each result and {@link #handleAllResultNotifications} at the end.
+ * {@link #handleFailure} for each result and {@link #handleAllResultNotifications} at the end
+ * (not at all when no proposal was accepted, as in JADE 4.3).
  */
 @SuppressWarnings({"rawtypes", "unchecked"})
 public class ContractNetInitiator extends SimpleBehaviour {
@@ -228,6 +229,11 @@ public class ContractNetInitiator extends SimpleBehaviour {
                 }
             }
             myAgent.send(m);
+        }
+        if (sessions.isEmpty()) {
+            // Nothing accepted: JADE 4.3 ends the protocol here, without handleAllResultNotifications.
+            finished = true;
+            return;
         }
         checkProgress();
     }
