@@ -12,7 +12,7 @@ import jade.lang.acl.MessageTemplate;
 
 /**
  * JADE's responder of FIPA-request-like protocols: for each message the template matches, it
- * calls {@link #prepareResponse} (by default {@link #handleRequest}) and sends what it returns
+ * calls {@link #handleRequest} (by default {@link #prepareResponse}) and sends what it returns
  * (AGREE, REFUSE, NOT_UNDERSTOOD; exceptions become REFUSE or NOT_UNDERSTOOD); after an AGREE,
  * or when it returned null, it calls {@link #prepareResultNotification} and sends its INFORM or
  * FAILURE (a {@link FailureException} becomes a FAILURE). It never ends.
@@ -63,7 +63,7 @@ public class AchieveREResponder extends SimpleBehaviour implements FIPANames.Int
         getDataStore().put(REQUEST_KEY, request);
         ACLMessage response;
         try {
-            response = prepareResponse(request);
+            response = handleRequest(request);
         } catch (NotUnderstoodException e) {
             response = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, request);
         } catch (RefuseException e) {
@@ -95,19 +95,27 @@ public class AchieveREResponder extends SimpleBehaviour implements FIPANames.Int
 
     /**
      * The answer to a request: AGREE, REFUSE, NOT_UNDERSTOOD, or null to go straight to the
-     * result. By default {@link #handleRequest}'s.
+     * result. Override this one. If it is not overridden, it prints
+     * {@code prepareResponse() method not re-defined} on standard output, as JADE 4.3 does, and
+     * returns null.
      */
     protected ACLMessage prepareResponse(ACLMessage request) throws NotUnderstoodException, RefuseException {
-        return handleRequest(request);
-    }
-
-    /** JADE's older name for {@link #prepareResponse}; by default no answer (null). */
-    protected ACLMessage handleRequest(ACLMessage request) throws NotUnderstoodException, RefuseException {
+        System.out.println("prepareResponse() method not re-defined");
         return null;
     }
 
-    /** The result after an AGREE (or no answer): INFORM or FAILURE; by default none (null). */
+    /** JADE's older name for {@link #prepareResponse}: what the responder calls; by default {@link #prepareResponse}'s answer. */
+    protected ACLMessage handleRequest(ACLMessage request) throws NotUnderstoodException, RefuseException {
+        return prepareResponse(request);
+    }
+
+    /**
+     * The result after an AGREE (or no answer): INFORM or FAILURE, or null to send none. If it is
+     * not overridden, it prints {@code prepareResultNotification() method not re-defined}, as
+     * JADE 4.3 does, and returns null.
+     */
     protected ACLMessage prepareResultNotification(ACLMessage request, ACLMessage response) throws FailureException {
+        System.out.println("prepareResultNotification() method not re-defined");
         return null;
     }
 
