@@ -11,15 +11,11 @@ import javax.tools.StandardJavaFileManager;
 import javax.tools.ToolProvider;
 import java.io.File;
 import java.io.IOException;
-import java.net.DatagramSocket;
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -160,23 +156,7 @@ class CorpusTest {
         return String.join(File.pathSeparator, l);
     }
 
-    /** A base port with room for the platform's range (JADE takes the base, Concord 200 ports from it). */
-    private static int freePort() throws IOException {
-        for (int attempt = 0; attempt < 50; attempt++) {
-            int base = 30_000 + 200 * ThreadLocalRandom.current().nextInt(150);
-            if (free(base) && free(base + 1) && free(base + 2)) {
-                return base;
-            }
-        }
-        throw new IOException("no free port range found");
-    }
-
-    private static boolean free(int port) {
-        InetAddress lo = InetAddress.getLoopbackAddress();
-        try (ServerSocket s = new ServerSocket(port, 1, lo); DatagramSocket d = new DatagramSocket(port, lo)) {
-            return s.getLocalPort() == port && d.getLocalPort() == port;
-        } catch (IOException e) {
-            return false;
-        }
+    private static int freePort() {
+        return CorpusPorts.freeBase();
     }
 }
