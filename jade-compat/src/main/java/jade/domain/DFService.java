@@ -18,10 +18,8 @@ import jade.util.leap.Iterator;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeoutException;
 import java.util.function.Function;
@@ -35,7 +33,8 @@ public class DFService {
     /** JADE's DF answers at most this many results when the search constraints give no limit. */
     static final int DEFAULT_MAX_RESULTS = 100;
 
-    private static final Set<String> REGISTERED = ConcurrentHashMap.newKeySet();
+    /** The agents (these objects, not their names: a new agent of the same name starts unregistered) that registered. */
+    private static final Map<Agent, Boolean> REGISTERED = java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
 
     public DFService() {
     }
@@ -49,13 +48,13 @@ public class DFService {
     public static DFAgentDescription register(Agent a, AID dfName, DFAgentDescription dfd) throws FIPAException {
         checkDf(a, dfName);
         AID who = ownName(a, dfd);
-        if (!REGISTERED.add(who.getName().toLowerCase(java.util.Locale.ROOT))) {
+        if (REGISTERED.putIfAbsent(a, Boolean.TRUE) != null) {
             throw new FailureException("(already-registered)");
         }
         try {
             call(a, ps -> ps.modify(toConcord(dfd).toArray(io.concord.layers.platform.ServiceDescription[]::new)));
         } catch (FIPAException e) {
-            REGISTERED.remove(who.getName().toLowerCase(java.util.Locale.ROOT));
+            REGISTERED.remove(a);
             throw e;
         }
         dfd.setName(who);
@@ -77,8 +76,10 @@ public class DFService {
     /** Removes the agent's registration; fails if it has none. */
     public static void deregister(Agent a, AID dfName, DFAgentDescription dfd) throws FIPAException {
         checkDf(a, dfName);
-        AID who = dfd == null ? a.getAID() : ownName(a, dfd);
-        if (!REGISTERED.remove(who.getName().toLowerCase(java.util.Locale.ROOT))) {
+        if (dfd != null) {
+            ownName(a, dfd);
+        }
+        if (REGISTERED.remove(a) == null) {
             throw new FailureException("(not-registered)");
         }
         call(a, PlatformServices::deregister);
@@ -92,7 +93,7 @@ public class DFService {
     public static DFAgentDescription modify(Agent a, AID dfName, DFAgentDescription dfd) throws FIPAException {
         checkDf(a, dfName);
         AID who = ownName(a, dfd);
-        if (!REGISTERED.contains(who.getName().toLowerCase(java.util.Locale.ROOT))) {
+        if (!REGISTERED.containsKey(a)) {
             throw new FailureException("(not-registered)");
         }
         call(a, ps -> ps.modify(toConcord(dfd).toArray(io.concord.layers.platform.ServiceDescription[]::new)));
