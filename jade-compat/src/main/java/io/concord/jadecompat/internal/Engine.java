@@ -6,7 +6,6 @@ import io.concord.core.agent.PortRange;
 import io.concord.core.time.Clock;
 import io.concord.layers.Platform;
 import io.concord.layers.PlatformServices;
-import io.concord.layers.security.PlatformKey;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -53,8 +52,9 @@ public final class Engine {
         }
         PortRange ports = firstPort > 0 ? new PortRange(firstPort, PortRange.DEFAULT_COUNT, PortRange.DEFAULT_WINDOW)
                 : PortRange.defaults();
-        Platform p = Platform.builder().name(platformName).host(host).ports(ports).network(null)
-                .platformKey(PlatformKey.random()).build();
+        // The user's platform key (Concord's zero-configuration default), so that containers of other
+        // JVMs of this user that name the same platform and ports join it, as JADE's peripheral containers do.
+        Platform p = Platform.builder().name(platformName).host(host).ports(ports).network(null).build();
         LOG.info("concord-jade: JADE's API over Concord, platform {} on {} ports {}-{}, agents on {} threads",
                 platformName, host, ports.base(), ports.base() + ports.count() - 1, virtualThreads() ? "virtual" : "platform");
         current = new Engine(p);
