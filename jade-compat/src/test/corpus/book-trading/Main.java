@@ -17,8 +17,8 @@ public class Main {
         p.setParameter(Profile.NO_MTP, "true");
         p.setParameter(Profile.DETECT_MAIN, "false");
         AgentContainer c = Runtime.instance().createMainContainer(p);
+        c.createNewAgent("buyer", "BookBuyerAgent", new Object[] {"Dune", "2"}).start();
         c.createNewAgent("seller-a", "BookSellerAgent", new Object[] {"Dune=30", "Emma=12"}).start();
         c.createNewAgent("seller-b", "BookSellerAgent", new Object[] {"Dune=25"}).start();
-        c.createNewAgent("buyer", "BookBuyerAgent", new Object[] {"Dune", "2"}).start();
     }
 }

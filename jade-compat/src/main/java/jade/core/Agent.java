@@ -213,9 +213,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                     b.onEnd();
                     removeBehaviour(b);
                 }
-            } catch (RuntimeException ex) {
-                LOG.error("behaviour {} of {} threw; it is removed, the agent goes on", b.getBehaviourName(), getName(), ex);
+            } catch (RuntimeException | Error ex) {
+                // As in JADE: an exception no behaviour caught ends the agent (takeDown still runs).
+                LOG.error("behaviour {} of {} threw; the agent is deleted, as JADE does", b.getBehaviourName(), getName(), ex);
                 removeBehaviour(b);
+                deleteRequested = true;
             }
         }
     }

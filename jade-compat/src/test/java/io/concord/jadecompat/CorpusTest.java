@@ -58,13 +58,14 @@ class CorpusTest {
 
         int port = freePort();
         Run jade = run(work.resolve("jade-run"), jadeClasses + File.pathSeparator + jadeJar, port);
-        assertEquals(0, jade.exit, "on JADE the program must end by itself with status 0; stderr:\n" + jade.errTail());
-        assertFalse(jade.out.isEmpty(), "the program printed nothing on JADE");
+        String name = program.getFileName().toString();
+        assertEquals(0, jade.exit, name + ": on JADE the program must end by itself with status 0; stderr:\n" + jade.errTail());
+        assertFalse(jade.out.isEmpty(), name + ": the program printed nothing on JADE");
 
         Run concord = run(work.resolve("concord-run"), concordClasses + File.pathSeparator + concordClassPath(), freePort());
         assertEquals(String.join("\n", jade.out), String.join("\n", concord.out),
-                "standard output differs between JADE (expected) and Concord (actual); Concord's stderr:\n" + concord.errTail());
-        assertEquals(0, concord.exit, "on Concord the program must end by itself with status 0; stderr:\n" + concord.errTail());
+                name + ": standard output differs between JADE (expected) and Concord (actual); Concord's stderr:\n" + concord.errTail());
+        assertEquals(0, concord.exit, name + ": on Concord the program must end by itself with status 0; stderr:\n" + concord.errTail());
     }
 
     private record Run(int exit, List<String> out, List<String> err) {
@@ -89,7 +90,7 @@ class CorpusTest {
         }
         List<String> printed = new ArrayList<>();
         for (String line : Files.readAllLines(out, StandardCharsets.UTF_8)) {
-            if (!isJadeShutdownNoise(line)) {
+            if (!isJadeRuntimeNoise(line)) {
                 printed.add(line);
             }
         }
@@ -98,12 +99,13 @@ class CorpusTest {
 
     /**
      * JADE's own lines on standard output: when a program calls System.exit, JADE's shutdown hook
-     * may print that an agent did not stop at once. They are JADE's runtime talking, not the
-     * program; they come and go from run to run.
+     * may print that an agent did not stop at once; an agent woken from doWait may print its
+     * state; an agent killed by an exception is announced. They are JADE's runtime talking, not the program; they come and go from run to run.
      */
-    static boolean isJadeShutdownNoise(String line) {
+    static boolean isJadeRuntimeNoise(String line) {
         return line.startsWith("*** Warning: Agent ") && line.endsWith(" did not terminate when requested to do so.")
-                || line.equals("*** Second interrupt issued.");
+                || line.equals("*** Second interrupt issued.") || line.matches("State was \\d+")
+                || line.startsWith("ERROR: Agent ") && line.endsWith(" died without being properly terminated !!!");
     }
 
     private static String tail(List<String> lines) {
