@@ -91,6 +91,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             public Engine engine(Agent a) {
                 return a.engine;
             }
+
+            @Override
+            public boolean onOwnThread(Agent a) {
+                return Thread.currentThread() == a.thread;
+            }
         });
     }
 

@@ -66,17 +66,27 @@ public class ContainerController {
         return c;
     }
 
-    /** Kills every agent of this container. */
+    /**
+     * Kills every agent of this container and returns once their {@code takeDown()} has run (as
+     * JADE's does), waiting up to 30 s an agent; an agent that kills its own container is not
+     * waited for.
+     */
     public void kill() throws StaleProxyException {
         killed = true;
         for (LocalAgentController c : agents.values()) {
-            try {
-                c.kill();
-            } catch (StaleProxyException e) {
-                // already gone
+            c.requestEnd();
+        }
+        try {
+            for (LocalAgentController c : agents.values()) {
+                c.killAndWait(KILL_WAIT_MS);
             }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new StaleProxyException(e);
         }
     }
+
+    private static final long KILL_WAIT_MS = 30_000;
 
     /** The platform's name. */
     public String getPlatformName() {

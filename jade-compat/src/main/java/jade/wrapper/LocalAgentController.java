@@ -38,6 +38,24 @@ final class LocalAgentController implements AgentController {
         }
     }
 
+    /** Asks the agent to end, without waiting. */
+    void requestEnd() {
+        if (agent.getState() != Agent.AP_DELETED) {
+            agent.doDelete();
+        }
+    }
+
+    /** Deletes the agent and waits (up to {@code timeoutMs}) until its takeDown has run, unless called from its own thread. */
+    void killAndWait(long timeoutMs) throws InterruptedException {
+        if (agent.getState() == Agent.AP_DELETED) {
+            return;
+        }
+        agent.doDelete();
+        if (startedOnce && !AgentAccess.get().onOwnThread(agent)) {
+            AgentAccess.get().awaitEnd(agent, timeoutMs);
+        }
+    }
+
     @Override
     public void suspend() throws StaleProxyException {
         throw new StaleProxyException("suspending agents is not supported by concord-jade yet");

@@ -39,4 +39,7 @@ public abstract class AgentAccess {
 
     /** The engine a JADE agent runs on, or null before it starts. */
     public abstract Engine engine(Agent a);
+
+    /** True if the caller runs on the agent's own thread. */
+    public abstract boolean onOwnThread(Agent a);
 }
