@@ -7,7 +7,7 @@ import jade.proto.AchieveREInitiator;
 import java.util.Date;
 import java.util.Vector;
 
-/** A request with a reply-by 300 ms ahead to one agent that answers and one that never does. */
+/** A request with a reply-by a second ahead to one agent that answers and one that never does. */
 public class Asker extends Agent {
     @Override
     protected void setup() {
@@ -15,7 +15,7 @@ public class Asker extends Agent {
         req.addReceiver(new AID("quick", AID.ISLOCALNAME));
         req.addReceiver(new AID("silent", AID.ISLOCALNAME));
         req.setProtocol(FIPANames.InteractionProtocol.FIPA_REQUEST);
-        req.setReplyByDate(new Date(System.currentTimeMillis() + 300));
+        req.setReplyByDate(new Date(System.currentTimeMillis() + 1000));
         req.setContent("anyone?");
         addBehaviour(new AchieveREInitiator(this, req) {
             @Override

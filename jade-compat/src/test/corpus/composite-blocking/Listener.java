@@ -7,7 +7,7 @@ import jade.core.behaviours.SimpleBehaviour;
 import jade.lang.acl.ACLMessage;
 import jade.lang.acl.MessageTemplate;
 
-/** Children that block inside a sequence inside a parallel inside an FSM: a message restarts them where they are. */
+/** Children that block (each acknowledges what it heard) inside a sequence inside a parallel inside an FSM: a message restarts them where they are. */
 public class Listener extends Agent {
     private Behaviour waitFor(final String word) {
         return new SimpleBehaviour(this) {
@@ -22,6 +22,9 @@ public class Listener extends Agent {
                 }
                 heard = true;
                 System.out.println("heard " + word);
+                ACLMessage ack = m.createReply();
+                ack.setContent("ack " + word);
+                myAgent.send(ack);
             }
 
             @Override

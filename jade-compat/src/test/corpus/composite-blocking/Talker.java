@@ -1,22 +1,22 @@
 import jade.core.AID;
 import jade.core.Agent;
-import jade.core.behaviours.TickerBehaviour;
+import jade.core.behaviours.OneShotBehaviour;
 import jade.lang.acl.ACLMessage;
+import jade.lang.acl.MessageTemplate;
 
-/** Sends "one", "two", "three" to the listener, one a tick. */
+/** Sends "one", "two", "three" to the listener, each after the listener acknowledged the one before. */
 public class Talker extends Agent {
     @Override
     protected void setup() {
-        addBehaviour(new TickerBehaviour(this, 30) {
+        addBehaviour(new OneShotBehaviour(this) {
             @Override
-            protected void onTick() {
-                String[] words = {"one", "two", "three"};
-                ACLMessage m = new ACLMessage(ACLMessage.INFORM);
-                m.addReceiver(new AID("listener", AID.ISLOCALNAME));
-                m.setContent(words[getTickCount() - 1]);
-                myAgent.send(m);
-                if (getTickCount() == 3) {
-                    stop();
+            public void action() {
+                for (String word : new String[] {"one", "two", "three"}) {
+                    ACLMessage m = new ACLMessage(ACLMessage.INFORM);
+                    m.addReceiver(new AID("listener", AID.ISLOCALNAME));
+                    m.setContent(word);
+                    myAgent.send(m);
+                    myAgent.blockingReceive(MessageTemplate.MatchContent("ack " + word));
                 }
             }
         });

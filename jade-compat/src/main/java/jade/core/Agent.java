@@ -19,6 +19,8 @@ import java.util.LinkedList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
 
 /**
  * JADE's agent, over Concord. Each agent has a thread of its own (virtual on Java 21 and later),
@@ -47,7 +49,12 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     public static final int D_MAX = 41;
     public static final String MSG_QUEUE_CLASS = "jade_core_Agent_msgQueueClass";
 
-    private final transient Object lock = new Object();
+    /**
+     * Guards the queue, the behaviours, the timers and the wake-up count: a lock, not a monitor, so
+     * that a virtual thread waiting on it does not hold on to its carrier thread.
+     */
+    private final transient ReentrantLock lock = new ReentrantLock();
+    private final transient Condition changed = lock.newCondition();
     private final transient ArrayDeque<ACLMessage> queue = new ArrayDeque<>();
     private final transient List<Behaviour> behaviours = new ArrayList<>();
     private final transient Map<Behaviour, Long> timers = new IdentityHashMap<>();
@@ -186,7 +193,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             long seen;
             boolean restart;
             List<Behaviour> due = new ArrayList<>();
-            synchronized (lock) {
+            lock.lock();
+            try {
                 seen = wakeups;
                 restart = restartAll;
                 restartAll = false;
@@ -198,6 +206,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                         it.remove();
                     }
                 }
+            } finally {
+                lock.unlock();
             }
             if (restart) {
                 for (Behaviour b : snapshot()) {
@@ -228,13 +238,17 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     }
 
     private List<Behaviour> snapshot() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             return new ArrayList<>(behaviours);
+        } finally {
+            lock.unlock();
         }
     }
 
     private Behaviour nextRunnable() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             int n = behaviours.size();
             for (int i = 0; i < n; i++) {
                 int j = (next + i) % n;
@@ -245,12 +259,15 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                 }
             }
             return null;
+        } finally {
+            lock.unlock();
         }
     }
 
     /** Waits until something happened since {@code seen}, or the next timer is due. */
     private void idle(long seen) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             while (wakeups == seen && !deleteRequested) {
                 long wait = 0;
                 if (!timers.isEmpty()) {
@@ -265,19 +282,33 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                     wait = Math.max(1, (leftNs + 999_999) / 1_000_000);
                 }
                 try {
-                    lock.wait(wait);
+                    awaitMs(wait);
                 } catch (InterruptedException ex) {
                     Thread.currentThread().interrupt();
                     return;
                 }
             }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Waits on the agent's condition for up to {@code ms} milliseconds (0 or less: until signalled). Lock held. */
+    private void awaitMs(long ms) throws InterruptedException {
+        if (ms <= 0) {
+            changed.await();
+        } else {
+            changed.await(ms, java.util.concurrent.TimeUnit.MILLISECONDS);
         }
     }
 
     private void wake() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             wakeups++;
-            lock.notifyAll();
+            changed.signalAll();
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -285,14 +316,17 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     private void deliver(AclMessage m) {
         ACLMessage j = Convert.toJade(m);
         j.setPostTimeStamp();
-        synchronized (lock) {
+        lock.lock();
+        try {
             if (queueSize > 0 && queue.size() >= queueSize) {
                 queue.poll();
             }
             queue.add(j);
             restartAll = true;
             wakeups++;
-            lock.notifyAll();
+            changed.signalAll();
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -315,7 +349,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     /** Blocks the agent's thread until {@link #doWake()}, a message, or {@code millis} pass (0: no limit). */
     public void doWait(long millis) {
         long deadline = millis > 0 ? Engine.nowNs() + millis * 1_000_000L : Long.MAX_VALUE;
-        synchronized (lock) {
+        lock.lock();
+        try {
             long seen = wakeups;
             state = AP_WAITING;
             try {
@@ -324,7 +359,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                     if (deadline != Long.MAX_VALUE && left <= 0) {
                         break;
                     }
-                    lock.wait(deadline == Long.MAX_VALUE ? 0 : Math.max(1, left / 1_000_000));
+                    awaitMs(deadline == Long.MAX_VALUE ? 0 : Math.max(1, left / 1_000_000));
                 }
             } catch (InterruptedException ex) {
                 Thread.currentThread().interrupt();
@@ -333,6 +368,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                     state = AP_ACTIVE;
                 }
             }
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -424,15 +461,19 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     /** Schedules a behaviour (from any thread). */
     public void addBehaviour(Behaviour b) {
         b.setAgent(this);
-        synchronized (lock) {
+        lock.lock();
+        try {
             behaviours.add(b);
+        } finally {
+            lock.unlock();
         }
         b.restart();
     }
 
     /** Takes a behaviour out of the schedule. */
     public void removeBehaviour(Behaviour b) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             int i = indexOf(b);
             if (i >= 0) {
                 behaviours.remove(i);
@@ -441,6 +482,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                 }
             }
             timers.remove(b);
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -455,16 +498,22 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
 
     /** Restarts a blocked behaviour after {@code millis} (what {@code Behaviour.block(millis)} asks for). */
     public void restartLater(Behaviour b, long millis) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             timers.put(b, Engine.nowNs() + millis * 1_000_000L);
-            lock.notifyAll();
+            changed.signalAll();
+        } finally {
+            lock.unlock();
         }
     }
 
     /** Forgets a behaviour's pending timed restart. */
     public void removeTimer(Behaviour b) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             timers.remove(b);
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -487,15 +536,21 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
 
     /** The first message in the queue, or null. Never blocks. */
     public final ACLMessage receive() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             return queue.poll();
+        } finally {
+            lock.unlock();
         }
     }
 
     /** The first message the template matches, or null. Never blocks. */
     public final ACLMessage receive(MessageTemplate pattern) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             return take(pattern);
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -528,7 +583,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     /** Waits for a message the template matches, for at most {@code millis} (0: no limit); null on timeout. */
     public final ACLMessage blockingReceive(MessageTemplate pattern, long millis) {
         long deadline = millis > 0 ? Engine.nowNs() + millis * 1_000_000L : Long.MAX_VALUE;
-        synchronized (lock) {
+        lock.lock();
+        try {
             while (true) {
                 ACLMessage m = take(pattern);
                 if (m != null) {
@@ -542,39 +598,50 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
                     return null;
                 }
                 try {
-                    lock.wait(deadline == Long.MAX_VALUE ? 0 : Math.max(1, left / 1_000_000));
+                    awaitMs(deadline == Long.MAX_VALUE ? 0 : Math.max(1, left / 1_000_000));
                 } catch (InterruptedException ex) {
                     Thread.currentThread().interrupt();
                     return null;
                 }
             }
+        } finally {
+            lock.unlock();
         }
     }
 
     /** Puts a message back at the head of the queue. */
     public final void putBack(ACLMessage msg) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             queue.addFirst(msg);
             restartAll = true;
             wakeups++;
-            lock.notifyAll();
+            changed.signalAll();
+        } finally {
+            lock.unlock();
         }
     }
 
     /** Hands a message to this agent as if it had arrived. */
     public final void postMessage(ACLMessage msg) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             queue.add(msg);
             restartAll = true;
             wakeups++;
-            lock.notifyAll();
+            changed.signalAll();
+        } finally {
+            lock.unlock();
         }
     }
 
     /** Messages waiting. */
     public int getCurQueueSize() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             return queue.size();
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -583,14 +650,20 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         if (newSize < 0) {
             throw new IllegalArgumentException("Invalid MsgQueue size");
         }
-        synchronized (lock) {
+        lock.lock();
+        try {
             queueSize = newSize;
+        } finally {
+            lock.unlock();
         }
     }
 
     public int getQueueSize() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             return queueSize;
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -598,7 +671,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
 
     /** Lets other threads hand objects to this agent ({@link #putO2AObject}); {@code queueSize} 0 means no limit. */
     public void setEnabledO2ACommunication(boolean enabled, int queueSize) {
-        synchronized (lock) {
+        lock.lock();
+        try {
             if (enabled) {
                 if (o2aQueue == null) {
                     o2aQueue = new LinkedList<>();
@@ -607,6 +681,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             } else {
                 o2aQueue = null;
             }
+        } finally {
+            lock.unlock();
         }
     }
 
@@ -616,7 +692,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
      * agent has taken it.
      */
     public void putO2AObject(Object o, boolean blocking) throws InterruptedException {
-        synchronized (lock) {
+        lock.lock();
+        try {
             if (o2aQueue == null) {
                 LOG.warn("{}: O2A object dropped, O2A communication is not enabled", getName());
                 return;
@@ -627,24 +704,29 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             o2aQueue.add(o);
             restartAll = true;
             wakeups++;
-            lock.notifyAll();
+            changed.signalAll();
             if (blocking) {
                 while (o2aQueue != null && o2aQueue.contains(o) && !deleteRequested) {
-                    lock.wait();
+                    changed.await();
                 }
             }
+        } finally {
+            lock.unlock();
         }
     }
 
     /** The first object handed to this agent by another thread, or null. */
     public Object getO2AObject() {
-        synchronized (lock) {
+        lock.lock();
+        try {
             if (o2aQueue == null || o2aQueue.isEmpty()) {
                 return null;
             }
             Object o = o2aQueue.removeFirst();
-            lock.notifyAll();
+            changed.signalAll();
             return o;
+        } finally {
+            lock.unlock();
         }
     }
 
