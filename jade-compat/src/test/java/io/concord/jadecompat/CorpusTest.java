@@ -66,6 +66,15 @@ class CorpusTest {
         assertEquals(String.join("\n", jade.out), String.join("\n", concord.out),
                 name + ": standard output differs between JADE (expected) and Concord (actual); Concord's stderr:\n" + concord.errTail());
         assertEquals(0, concord.exit, name + ": on Concord the program must end by itself with status 0; stderr:\n" + concord.errTail());
+        deleteTree(work); // kept when the program fails, to look at
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        try (Stream<Path> s = Files.walk(dir)) {
+            for (Path p : s.sorted(java.util.Comparator.reverseOrder()).collect(Collectors.toList())) {
+                Files.deleteIfExists(p);
+            }
+        }
     }
 
     private record Run(int exit, List<String> out, List<String> err) {
