@@ -1,0 +1,164 @@
+package io.concord.jadecompat.internal;
+
+import io.concord.core.acl.AID;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.PortRange;
+import io.concord.core.time.Clock;
+import io.concord.layers.Platform;
+import io.concord.layers.PlatformServices;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+import java.lang.reflect.Method;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.function.Function;
+
+/**
+ * The Concord platform under JADE's API in this JVM: one {@link Platform} (no main container;
+ * the agents elect their container), started by the first {@code createMainContainer} or
+ * {@code createAgentContainer}, and the threads JADE agents run on.
+ */
+public final class Engine {
+    private static final Logger LOG = LoggerFactory.getLogger(Engine.class);
+    /** How long a synchronous DF call waits for the DF's answer. */
+    public static final long DF_TIMEOUT_MS = 30_000;
+    /** JADE classes that concord-jade does not have: if one loads, JADE's own jar is on the class path. */
+    static final String[] JADE_ONLY_CLASSES = {"jade.core.AgentContainerImpl", "jade.core.MainContainerImpl", "jade.Boot"};
+
+    private static final Clock CLOCK = Clock.system();
+    private static Engine current;
+
+    private final Platform platform;
+
+    private Engine(Platform platform) {
+        this.platform = platform;
+    }
+
+    /**
+     * The engine of this JVM, started on first use with this platform name, host and first port.
+     * Later calls return the same engine (JADE's containers of one JVM share one platform here).
+     */
+    public static synchronized Engine start(String platformName, String host, int firstPort) {
+        if (current != null) {
+            return current;
+        }
+        String jadeToo = jadeOnTheClassPath();
+        if (jadeToo != null) {
+            LOG.warn("JADE's own jar is on the class path too ({} loads): concord-jade replaces jade.jar and must not "
+                    + "be used with it; remove jade.jar from the class path", jadeToo);
+        }
+        PortRange ports = firstPort > 0 ? new PortRange(firstPort, PortRange.DEFAULT_COUNT, PortRange.DEFAULT_WINDOW)
+                : PortRange.defaults();
+        // The user's platform key (Concord's zero-configuration default), so that containers of other
+        // JVMs of this user that name the same platform and ports join it, as JADE's peripheral containers do.
+        Platform p = Platform.builder().name(platformName).host(host).ports(ports).network(null).build();
+        LOG.info("concord-jade: JADE's API over Concord, platform {} on {} ports {}-{}, agents on {} threads",
+                platformName, host, ports.base(), ports.base() + ports.count() - 1, virtualThreads() ? "virtual" : "platform");
+        current = new Engine(p);
+        return current;
+    }
+
+    /** The running engine, or null. */
+    public static synchronized Engine current() {
+        return current;
+    }
+
+    /** Stops the platform. */
+    public static synchronized void shutDown() {
+        if (current != null) {
+            current.platform.close();
+            current = null;
+        }
+    }
+
+    /** The name of a JADE-only class that loads, or null if JADE's jar is not on the class path. */
+    public static String jadeOnTheClassPath() {
+        for (String c : JADE_ONLY_CLASSES) {
+            try {
+                Class.forName(c, false, Engine.class.getClassLoader());
+                return c;
+            } catch (ClassNotFoundException | LinkageError e) {
+                // not there: as it should be
+            }
+        }
+        return null;
+    }
+
+    /** The platform's name. */
+    public String platformName() {
+        return platform.name();
+    }
+
+    /** Starts a Concord agent for a JADE agent; returns its AID. */
+    public AID startHost(String localName, Host host, Object[] args) {
+        return platform.startAgent(localName, host, args == null ? new Object[0] : args);
+    }
+
+    /** True if a Concord agent of this name runs here. */
+    public boolean hosts(String localName) {
+        AID a = AID.local(localName, platform.name());
+        return platform.runtime().agents().contains(a);
+    }
+
+    /**
+     * Asks the platform's services for an agent and waits for the answer, off the loop (a JADE
+     * agent's own thread), as JADE's synchronous DF calls do.
+     */
+    public <T> T call(Agent host, Function<PlatformServices, CompletableFuture<T>> request)
+            throws ExecutionException, TimeoutException, InterruptedException {
+        CompletableFuture<T> f = new CompletableFuture<>();
+        platform.runtime().execute(() -> {
+            try {
+                request.apply(Platform.of(host)).whenComplete((v, e) -> {
+                    if (e != null) {
+                        f.completeExceptionally(e);
+                    } else {
+                        f.complete(v);
+                    }
+                });
+            } catch (RuntimeException e) {
+                f.completeExceptionally(e);
+            }
+        });
+        return f.get(DF_TIMEOUT_MS, TimeUnit.MILLISECONDS);
+    }
+
+    /** Wall-clock time in epoch milliseconds (Concord's clock). */
+    public static long nowMs() {
+        return CLOCK.epochMillis();
+    }
+
+    /** Monotonic time in nanoseconds (Concord's clock). */
+    public static long nowNs() {
+        return CLOCK.nanoTime();
+    }
+
+    /** True if JADE agents get virtual threads here (Java 21 and later). */
+    public static boolean virtualThreads() {
+        return Runtime.version().feature() >= 21;
+    }
+
+    /**
+     * A new thread for a JADE agent: a virtual thread on Java 21 and later (found by reflection,
+     * so that this compiles for Java 17), else a platform thread. Not started.
+     */
+    public static Thread newAgentThread(String name, Runnable body) {
+        if (virtualThreads()) {
+            try {
+                Object builder = Thread.class.getMethod("ofVirtual").invoke(null);
+                Class<?> builderType = Class.forName("java.lang.Thread$Builder");
+                builder = builderType.getMethod("name", String.class).invoke(builder, name);
+                Method unstarted = builderType.getMethod("unstarted", Runnable.class);
+                return (Thread) unstarted.invoke(builder, body);
+            } catch (ReflectiveOperationException | RuntimeException e) {
+                LOG.debug("no virtual threads ({}); a platform thread instead", e.toString());
+            }
+        }
+        Thread t = new Thread(body, name);
+        t.setDaemon(false);
+        return t;
+    }
+}

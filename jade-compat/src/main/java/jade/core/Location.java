@@ -1,0 +1,12 @@
+package jade.core;
+
+/** Where an agent can be: a container. */
+public interface Location extends jade.util.leap.Serializable {
+    String getID();
+
+    String getName();
+
+    String getProtocol();
+
+    String getAddress();
+}

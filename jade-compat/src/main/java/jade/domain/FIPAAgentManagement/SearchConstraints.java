@@ -1,0 +1,45 @@
+package jade.domain.FIPAAgentManagement;
+
+/** Limits on a DF search: how many results (-1: all), how deep, and a search id. */
+public class SearchConstraints implements jade.util.leap.Serializable {
+    private static final long serialVersionUID = 1L;
+    private static long ids;
+    private Long maxDepth;
+    private Long maxResults;
+    private String searchId;
+
+    public SearchConstraints() {
+        renewSearchId();
+    }
+
+    /** A new unique search id. */
+    public void renewSearchId() {
+        synchronized (SearchConstraints.class) {
+            searchId = "s" + (++ids);
+        }
+    }
+
+    public void setSearchId(String id) {
+        searchId = id;
+    }
+
+    public String getSearchId() {
+        return searchId;
+    }
+
+    public void setMaxDepth(Long d) {
+        maxDepth = d;
+    }
+
+    public Long getMaxDepth() {
+        return maxDepth;
+    }
+
+    public void setMaxResults(Long r) {
+        maxResults = r;
+    }
+
+    public Long getMaxResults() {
+        return maxResults;
+    }
+}

@@ -1,0 +1,132 @@
+package jade.proto;
+
+import jade.core.Agent;
+import jade.core.behaviours.DataStore;
+import jade.core.behaviours.SimpleBehaviour;
+import jade.domain.FIPAAgentManagement.FailureException;
+import jade.domain.FIPAAgentManagement.NotUnderstoodException;
+import jade.domain.FIPAAgentManagement.RefuseException;
+import jade.domain.FIPANames;
+import jade.lang.acl.ACLMessage;
+import jade.lang.acl.MessageTemplate;
+
+/**
+ * JADE's responder of FIPA-request-like protocols: for each message the template matches, it
+ * calls {@link #handleRequest} (by default {@link #prepareResponse}) and sends what it returns
+ * (AGREE, REFUSE, NOT_UNDERSTOOD; exceptions become REFUSE or NOT_UNDERSTOOD); after an AGREE,
+ * or when it returned null, it calls {@link #prepareResultNotification} and sends its INFORM or
+ * FAILURE (a {@link FailureException} becomes a FAILURE). It never ends.
+ */
+public class AchieveREResponder extends SimpleBehaviour implements FIPANames.InteractionProtocol {
+    private static final long serialVersionUID = 1L;
+
+    /** Data store keys, as JADE names them. */
+    public final String REQUEST_KEY = "__request" + hashCode();
+    public final String RESPONSE_KEY = "__response" + hashCode();
+    public final String RESULT_NOTIFICATION_KEY = "__result-notification" + hashCode();
+
+    private MessageTemplate template;
+
+    /** A template for the requests of a protocol: its name and its first performative(s). */
+    public static MessageTemplate createMessageTemplate(String iprotocol) {
+        MessageTemplate proto = MessageTemplate.MatchProtocol(iprotocol);
+        if (FIPA_QUERY.equals(iprotocol)) {
+            return MessageTemplate.and(proto, MessageTemplate.or(MessageTemplate.MatchPerformative(ACLMessage.QUERY_IF),
+                    MessageTemplate.MatchPerformative(ACLMessage.QUERY_REF)));
+        }
+        if (FIPA_REQUEST_WHEN.equals(iprotocol)) {
+            return MessageTemplate.and(proto, MessageTemplate.MatchPerformative(ACLMessage.REQUEST_WHEN));
+        }
+        if (FIPA_REQUEST.equals(iprotocol)) {
+            return MessageTemplate.and(proto, MessageTemplate.MatchPerformative(ACLMessage.REQUEST));
+        }
+        return proto;
+    }
+
+    public AchieveREResponder(Agent a, MessageTemplate mt) {
+        this(a, mt, new DataStore());
+    }
+
+    public AchieveREResponder(Agent a, MessageTemplate mt, DataStore store) {
+        super(a);
+        this.template = mt;
+        setDataStore(store);
+    }
+
+    @Override
+    public void action() {
+        ACLMessage request = myAgent.receive(template);
+        if (request == null) {
+            block();
+            return;
+        }
+        getDataStore().put(REQUEST_KEY, request);
+        ACLMessage response;
+        try {
+            response = handleRequest(request);
+        } catch (NotUnderstoodException e) {
+            response = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, request);
+        } catch (RefuseException e) {
+            response = Replies.fromException(e, ACLMessage.REFUSE, request);
+        }
+        getDataStore().put(RESPONSE_KEY, response);
+        if (response != null) {
+            myAgent.send(Replies.complete(response, request));
+        }
+        if (response == null || response.getPerformative() == ACLMessage.AGREE) {
+            ACLMessage result;
+            try {
+                result = prepareResultNotification(request, response);
+            } catch (FailureException e) {
+                result = Replies.fromException(e, ACLMessage.FAILURE, request);
+            }
+            getDataStore().put(RESULT_NOTIFICATION_KEY, result);
+            if (result != null) {
+                myAgent.send(Replies.complete(result, request));
+            }
+        }
+    }
+
+    /** Never ends. */
+    @Override
+    public boolean done() {
+        return false;
+    }
+
+    /**
+     * The answer to a request: AGREE, REFUSE, NOT_UNDERSTOOD, or null to go straight to the
+     * result. Override this one. If it is not overridden, it prints
+     * {@code prepareResponse() method not re-defined} on standard output, as JADE 4.3 does, and
+     * returns null.
+     */
+    protected ACLMessage prepareResponse(ACLMessage request) throws NotUnderstoodException, RefuseException {
+        System.out.println("prepareResponse() method not re-defined");
+        return null;
+    }
+
+    /** JADE's older name for {@link #prepareResponse}: what the responder calls; by default {@link #prepareResponse}'s answer. */
+    protected ACLMessage handleRequest(ACLMessage request) throws NotUnderstoodException, RefuseException {
+        return prepareResponse(request);
+    }
+
+    /**
+     * The result after an AGREE (or no answer): INFORM or FAILURE, or null to send none. If it is
+     * not overridden, it prints {@code prepareResultNotification() method not re-defined}, as
+     * JADE 4.3 does, and returns null.
+     */
+    protected ACLMessage prepareResultNotification(ACLMessage request, ACLMessage response) throws FailureException {
+        System.out.println("prepareResultNotification() method not re-defined");
+        return null;
+    }
+
+    /** Serves another template from now on. */
+    public void reset(MessageTemplate mt) {
+        this.template = mt;
+        reset();
+    }
+
+    @Override
+    public void reset() {
+        super.reset();
+    }
+}

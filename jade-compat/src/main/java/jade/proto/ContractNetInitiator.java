@@ -1,0 +1,310 @@
+package jade.proto;
+
+import io.concord.jadecompat.internal.Engine;
+import jade.core.AID;
+import jade.core.Agent;
+import jade.core.behaviours.DataStore;
+import jade.core.behaviours.SimpleBehaviour;
+import jade.lang.acl.ACLMessage;
+import jade.lang.acl.MessageTemplate;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Vector;
+
+/**
+ * JADE's initiator of the FIPA contract net: sends the CFP to each receiver, calls
+ * {@link #handlePropose}, {@link #handleRefuse}, {@link #handleNotUnderstood},
+ * {@link #handleFailure} for each answer, {@link #handleAllResponses(Vector, Vector)} once all
+ * have answered (or the CFP's {@code :reply-by} time has passed), sends the acceptances and
+ * rejections that handler put in its second vector, then calls {@link #handleInform} /
+ * {@link #handleFailure} for each result and {@link #handleAllResultNotifications} at the end
+ * (not at all when no proposal was accepted, as in JADE 4.3).
+ */
+@SuppressWarnings({"rawtypes", "unchecked"})
+public class ContractNetInitiator extends SimpleBehaviour {
+    private static final long serialVersionUID = 1L;
+
+    public final String CFP_KEY = "__cfp" + hashCode();
+    public final String ALL_CFPS_KEY = "__all-cfps" + hashCode();
+    public final String REPLY_KEY = "__reply" + hashCode();
+    public final String ALL_RESPONSES_KEY = "__all-responses" + hashCode();
+    public final String ALL_ACCEPTANCES_KEY = "__all-acceptances" + hashCode();
+    public final String ALL_RESULT_NOTIFICATIONS_KEY = "__all-result-notifications" + hashCode();
+
+    private static final int SEND_CFPS = 0;
+    private static final int COLLECT_RESPONSES = 1;
+    private static final int COLLECT_RESULTS = 2;
+
+    private ACLMessage cfp;
+    private final Map<String, Session> sessions = new LinkedHashMap<>();
+    private Vector responses = new Vector();
+    private Vector acceptances = new Vector();
+    private Vector resultNotifications = new Vector();
+    private MessageTemplate template;
+    private String convId;
+    private long deadlineMs = -1;
+    private int phase = SEND_CFPS;
+    private boolean finished;
+
+    public ContractNetInitiator(Agent a, ACLMessage cfp) {
+        this(a, cfp, new DataStore());
+    }
+
+    public ContractNetInitiator(Agent a, ACLMessage cfp, DataStore store) {
+        super(a);
+        setDataStore(store);
+        this.cfp = cfp;
+    }
+
+    @Override
+    public void action() {
+        if (phase == SEND_CFPS) {
+            sendCfps();
+            return;
+        }
+        ACLMessage reply = myAgent.receive(template);
+        if (reply != null) {
+            getDataStore().put(REPLY_KEY, reply);
+            if (phase == COLLECT_RESPONSES) {
+                onResponse(reply);
+            } else {
+                onResult(reply);
+            }
+            checkProgress();
+            return;
+        }
+        if (phase == COLLECT_RESPONSES && deadlineMs >= 0) {
+            long left = deadlineMs - Engine.nowMs();
+            if (left <= 0) {
+                endResponses();
+                return;
+            }
+            block(left);
+        } else {
+            block();
+        }
+    }
+
+    @Override
+    public boolean done() {
+        return finished;
+    }
+
+    private void sendCfps() {
+        phase = COLLECT_RESPONSES;
+        Vector toSend = prepareCfps(cfp);
+        getDataStore().put(CFP_KEY, cfp);
+        getDataStore().put(ALL_CFPS_KEY, toSend);
+        getDataStore().put(ALL_RESPONSES_KEY, responses);
+        getDataStore().put(ALL_ACCEPTANCES_KEY, acceptances);
+        getDataStore().put(ALL_RESULT_NOTIFICATIONS_KEY, resultNotifications);
+        int n = 0;
+        for (Object o : toSend == null ? new Vector() : toSend) {
+            ACLMessage m = (ACLMessage) o;
+            if (convId == null) {
+                convId = m.getConversationId() != null ? m.getConversationId() : "C" + hashCode() + "_" + Engine.nowMs();
+            }
+            if (m.getReplyByDate() != null) {
+                deadlineMs = deadlineMs < 0 ? m.getReplyByDate().getTime() : Math.min(deadlineMs, m.getReplyByDate().getTime());
+            }
+            for (jade.util.leap.Iterator it = m.getAllReceiver(); it.hasNext(); ) {
+                AID r = (AID) it.next();
+                ACLMessage copy = (ACLMessage) m.clone();
+                copy.clearAllReceiver();
+                copy.addReceiver(r);
+                copy.setConversationId(convId);
+                String key = "R" + hashCode() + "_" + (n++);
+                copy.setReplyWith(key);
+                sessions.put(key, new Session(key, r));
+                myAgent.send(copy);
+            }
+        }
+        String cid = convId;
+        template = new MessageTemplate(msg -> cid != null && cid.equals(msg.getConversationId()));
+        checkProgress();
+    }
+
+    private Session sessionOf(ACLMessage reply) {
+        Session s = reply.getInReplyTo() == null ? null : sessions.get(reply.getInReplyTo());
+        if (s == null || s.state == Session.DONE) {
+            for (Session x : sessions.values()) {
+                if (x.state != Session.DONE && x.receiver.equals(reply.getSender())) {
+                    return x;
+                }
+            }
+        }
+        return s;
+    }
+
+    private void onResponse(ACLMessage reply) {
+        Session s = sessionOf(reply);
+        if (s == null || s.state != Session.SENT) {
+            handleOutOfSequence(reply);
+            return;
+        }
+        switch (reply.getPerformative()) {
+            case ACLMessage.PROPOSE -> {
+                s.state = Session.RESPONDED;
+                responses.add(reply);
+                handlePropose(reply, acceptances);
+            }
+            case ACLMessage.REFUSE -> {
+                s.state = Session.RESPONDED;
+                responses.add(reply);
+                handleRefuse(reply);
+            }
+            case ACLMessage.NOT_UNDERSTOOD -> {
+                s.state = Session.RESPONDED;
+                responses.add(reply);
+                handleNotUnderstood(reply);
+            }
+            case ACLMessage.FAILURE -> {
+                s.state = Session.RESPONDED;
+                responses.add(reply);
+                handleFailure(reply);
+            }
+            default -> handleOutOfSequence(reply);
+        }
+    }
+
+    private void onResult(ACLMessage reply) {
+        Session s = sessionOf(reply);
+        if (s == null || s.state != Session.SENT) {
+            handleOutOfSequence(reply);
+            return;
+        }
+        if (reply.getPerformative() == ACLMessage.INFORM) {
+            s.state = Session.DONE;
+            resultNotifications.add(reply);
+            handleInform(reply);
+        } else if (reply.getPerformative() == ACLMessage.FAILURE) {
+            s.state = Session.DONE;
+            resultNotifications.add(reply);
+            handleFailure(reply);
+        } else {
+            handleOutOfSequence(reply);
+        }
+    }
+
+    private void checkProgress() {
+        if (phase == COLLECT_RESPONSES) {
+            for (Session s : sessions.values()) {
+                if (s.state == Session.SENT) {
+                    return;
+                }
+            }
+            endResponses();
+        } else if (phase == COLLECT_RESULTS) {
+            for (Session s : sessions.values()) {
+                if (s.state == Session.SENT) {
+                    return;
+                }
+            }
+            finished = true;
+            handleAllResultNotifications(resultNotifications);
+        }
+    }
+
+    /** All answered (or time is up): the user picks, the acceptances go out, results are awaited. */
+    private void endResponses() {
+        handleAllResponses(responses, acceptances);
+        sessions.clear();
+        phase = COLLECT_RESULTS;
+        int n = 0;
+        for (Object o : acceptances) {
+            ACLMessage m = (ACLMessage) o;
+            if (m.getConversationId() == null) {
+                m.setConversationId(convId);
+            }
+            if (m.getProtocol() == null) {
+                m.setProtocol(cfp.getProtocol());
+            }
+            if (m.getPerformative() == ACLMessage.ACCEPT_PROPOSAL) {
+                for (jade.util.leap.Iterator it = m.getAllReceiver(); it.hasNext(); ) {
+                    AID r = (AID) it.next();
+                    String key = m.getReplyWith() != null ? m.getReplyWith() : "A" + hashCode() + "_" + (n++);
+                    m.setReplyWith(key);
+                    sessions.put(key, new Session(key, r));
+                }
+            }
+            myAgent.send(m);
+        }
+        if (sessions.isEmpty()) {
+            // Nothing accepted: JADE 4.3 ends the protocol here, without handleAllResultNotifications.
+            finished = true;
+            return;
+        }
+        checkProgress();
+    }
+
+    /** The CFPs to send; by default the message given to the constructor. */
+    protected Vector prepareCfps(ACLMessage cfp) {
+        Vector v = new Vector(1);
+        v.add(cfp);
+        return v;
+    }
+
+    /** A responder proposed; {@code acceptances} is the vector {@link #handleAllResponses} gets too. */
+    protected void handlePropose(ACLMessage propose, Vector acceptances) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A responder refused. */
+    protected void handleRefuse(ACLMessage refuse) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A responder did not understand. */
+    protected void handleNotUnderstood(ACLMessage notUnderstood) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A responder failed (to answer, or to carry out an accepted proposal). */
+    protected void handleFailure(ACLMessage failure) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A responder whose proposal was accepted sent its result. */
+    protected void handleInform(ACLMessage inform) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A message of this conversation that does not fit where it is. */
+    protected void handleOutOfSequence(ACLMessage msg) {
+        // JADE's documented default: nothing.
+    }
+
+    /**
+     * Every responder answered (or time is up): put ACCEPT_PROPOSAL and REJECT_PROPOSAL replies in
+     * {@code acceptances}; they are sent when this returns.
+     */
+    protected void handleAllResponses(Vector responses, Vector acceptances) {
+        // JADE's documented default: nothing (no acceptance is sent).
+    }
+
+    /** Every accepted responder sent its result. */
+    protected void handleAllResultNotifications(Vector resultNotifications) {
+        // JADE's documented default: nothing.
+    }
+
+    /** Starts over with a new CFP. */
+    public void reset(ACLMessage msg) {
+        this.cfp = msg;
+        reset();
+    }
+
+    @Override
+    public void reset() {
+        super.reset();
+        sessions.clear();
+        responses = new Vector();
+        acceptances = new Vector();
+        resultNotifications = new Vector();
+        template = null;
+        convId = null;
+        deadlineMs = -1;
+        phase = SEND_CFPS;
+        finished = false;
+    }
+}

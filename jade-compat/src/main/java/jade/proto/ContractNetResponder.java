@@ -1,0 +1,178 @@
+package jade.proto;
+
+import jade.core.Agent;
+import jade.core.behaviours.DataStore;
+import jade.core.behaviours.SimpleBehaviour;
+import jade.domain.FIPAAgentManagement.FailureException;
+import jade.domain.FIPAAgentManagement.NotUnderstoodException;
+import jade.domain.FIPAAgentManagement.RefuseException;
+import jade.lang.acl.ACLMessage;
+import jade.lang.acl.MessageTemplate;
+
+/**
+ * JADE's responder of the FIPA contract net, one CFP after the other: {@link #handleCfp} (by
+ * default {@link #prepareResponse}) answers each CFP (PROPOSE, REFUSE, NOT_UNDERSTOOD; exceptions
+ * become REFUSE, FAILURE, NOT_UNDERSTOOD); after a PROPOSE it waits for the initiator's decision
+ * and calls {@link #handleAcceptProposal} (by default {@link #prepareResultNotification}), whose
+ * INFORM or FAILURE it sends, or {@link #handleRejectProposal}. It never ends.
+ */
+public class ContractNetResponder extends SimpleBehaviour {
+    private static final long serialVersionUID = 1L;
+
+    public final String CFP_KEY = "__cfp" + hashCode();
+    public final String PROPOSE_KEY = "__propose" + hashCode();
+    public final String ACCEPT_PROPOSAL_KEY = "__accept-proposal" + hashCode();
+    public final String REJECT_PROPOSAL_KEY = "__reject-proposal" + hashCode();
+    public final String REPLY_KEY = "__reply" + hashCode();
+
+    private MessageTemplate template;
+    private ACLMessage cfp;
+    private ACLMessage propose;
+    private MessageTemplate decision;
+
+    /** A template for the CFPs of a protocol. */
+    public static MessageTemplate createMessageTemplate(String iprotocol) {
+        return MessageTemplate.and(MessageTemplate.MatchProtocol(iprotocol), MessageTemplate.MatchPerformative(ACLMessage.CFP));
+    }
+
+    public ContractNetResponder(Agent a, MessageTemplate mt) {
+        this(a, mt, new DataStore());
+    }
+
+    public ContractNetResponder(Agent a, MessageTemplate mt, DataStore store) {
+        super(a);
+        this.template = mt;
+        setDataStore(store);
+    }
+
+    @Override
+    public void action() {
+        if (decision == null) {
+            ACLMessage m = myAgent.receive(template);
+            if (m == null) {
+                block();
+                return;
+            }
+            onCfp(m);
+        } else {
+            ACLMessage m = myAgent.receive(decision);
+            if (m == null) {
+                block();
+                return;
+            }
+            onDecision(m);
+        }
+    }
+
+    private void onCfp(ACLMessage m) {
+        cfp = m;
+        getDataStore().put(CFP_KEY, m);
+        ACLMessage reply;
+        try {
+            reply = handleCfp(m);
+        } catch (RefuseException e) {
+            reply = Replies.fromException(e, ACLMessage.REFUSE, m);
+        } catch (FailureException e) {
+            reply = Replies.fromException(e, ACLMessage.FAILURE, m);
+        } catch (NotUnderstoodException e) {
+            reply = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, m);
+        }
+        if (reply != null) {
+            Replies.complete(reply, m);
+            getDataStore().put(PROPOSE_KEY, reply);
+            myAgent.send(reply);
+        }
+        if (reply != null && reply.getPerformative() == ACLMessage.PROPOSE) {
+            propose = reply;
+            String conv = m.getConversationId();
+            jade.core.AID from = m.getSender();
+            decision = new MessageTemplate(x -> java.util.Objects.equals(conv, x.getConversationId())
+                    && (from == null || from.equals(x.getSender())));
+        } else {
+            end();
+        }
+    }
+
+    private void onDecision(ACLMessage m) {
+        getDataStore().put(REPLY_KEY, m);
+        if (m.getPerformative() == ACLMessage.ACCEPT_PROPOSAL) {
+            getDataStore().put(ACCEPT_PROPOSAL_KEY, m);
+            ACLMessage result;
+            try {
+                result = handleAcceptProposal(cfp, propose, m);
+            } catch (FailureException e) {
+                result = Replies.fromException(e, ACLMessage.FAILURE, m);
+            }
+            if (result != null) {
+                myAgent.send(Replies.complete(result, m));
+            }
+        } else if (m.getPerformative() == ACLMessage.REJECT_PROPOSAL) {
+            getDataStore().put(REJECT_PROPOSAL_KEY, m);
+            handleRejectProposal(cfp, propose, m);
+        } else {
+            handleOutOfSequence(cfp, propose, m);
+        }
+        end();
+    }
+
+    private void end() {
+        cfp = null;
+        propose = null;
+        decision = null;
+        sessionTerminated();
+    }
+
+    /** Never ends. */
+    @Override
+    public boolean done() {
+        return false;
+    }
+
+    /** The answer to a CFP: PROPOSE, REFUSE or NOT_UNDERSTOOD; by default {@link #prepareResponse}'s. */
+    protected ACLMessage handleCfp(ACLMessage cfp) throws RefuseException, FailureException, NotUnderstoodException {
+        return prepareResponse(cfp);
+    }
+
+    /** JADE's older name for {@link #handleCfp}; by default no answer (null). */
+    protected ACLMessage prepareResponse(ACLMessage cfp) throws NotUnderstoodException, RefuseException {
+        return null;
+    }
+
+    /** The proposal was accepted: the result, INFORM or FAILURE; by default {@link #prepareResultNotification}'s. */
+    protected ACLMessage handleAcceptProposal(ACLMessage cfp, ACLMessage propose, ACLMessage accept) throws FailureException {
+        return prepareResultNotification(cfp, propose, accept);
+    }
+
+    /** JADE's older name for {@link #handleAcceptProposal}; by default no result (null). */
+    protected ACLMessage prepareResultNotification(ACLMessage cfp, ACLMessage propose, ACLMessage accept)
+            throws FailureException {
+        return null;
+    }
+
+    /** The proposal was rejected. */
+    protected void handleRejectProposal(ACLMessage cfp, ACLMessage propose, ACLMessage reject) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A message of the conversation that is neither an acceptance nor a rejection. */
+    protected void handleOutOfSequence(ACLMessage cfp, ACLMessage propose, ACLMessage msg) {
+        // JADE's documented default: nothing.
+    }
+
+    /** A conversation ended (after a result, a rejection, or an answer other than PROPOSE). */
+    protected void sessionTerminated() {
+        // JADE's documented default: nothing.
+    }
+
+    /** Serves another template. */
+    public void reset(MessageTemplate mt) {
+        this.template = mt;
+        reset();
+    }
+
+    @Override
+    public void reset() {
+        super.reset();
+        end();
+    }
+}

@@ -1,0 +1,5 @@
+package jade.util.leap;
+
+/** JADE's set interface. */
+public interface Set extends Collection {
+}

@@ -1,0 +1,49 @@
+import jade.core.AID;
+import jade.core.Agent;
+import jade.domain.FIPANames;
+import jade.lang.acl.ACLMessage;
+import jade.proto.ContractNetInitiator;
+
+import java.util.Vector;
+
+/** Every responder refuses: what the initiator's handlers see, and whether the protocol ends. */
+public class Manager extends Agent {
+    @Override
+    protected void setup() {
+        ACLMessage cfp = new ACLMessage(ACLMessage.CFP);
+        cfp.addReceiver(new AID("s1", AID.ISLOCALNAME));
+        cfp.addReceiver(new AID("s2", AID.ISLOCALNAME));
+        cfp.setProtocol(FIPANames.InteractionProtocol.FIPA_CONTRACT_NET);
+        cfp.setContent("task");
+        addBehaviour(new ContractNetInitiator(this, cfp) {
+            private int refusals;
+
+            @Override
+            protected void handleRefuse(ACLMessage refuse) {
+                refusals++;
+            }
+
+            @Override
+            protected void handleAllResponses(Vector responses, Vector acceptances) {
+                System.out.println("refusals " + refusals + " responses " + responses.size() + " acceptances " + acceptances.size());
+            }
+
+            @Override
+            protected void handleAllResultNotifications(Vector notifications) {
+                System.out.println("result notifications " + notifications.size());
+            }
+
+            @Override
+            public int onEnd() {
+                System.out.println("contract net over");
+                myAgent.doDelete();
+                return 0;
+            }
+        });
+    }
+
+    @Override
+    protected void takeDown() {
+        System.exit(0);
+    }
+}
