@@ -489,13 +489,21 @@ public final class HospitalPicture {
         x += 115;
         g.setStroke(new BasicStroke(1.4f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10, new float[] {6, 4}, 0));
         g.drawLine(x, y - 3, x + 24, y - 3);
-        g.drawString("raw odometry (corrected at floor markers)", x + 28, y + 1);
-        x += 265;
+        g.drawString("raw odometry (before the markers correct it)", x + 28, y + 1);
+        x += 290;
         g.setColor(new Color(0xd50000));
         g.setStroke(new BasicStroke(2f));
         g.drawLine(x, y - 8, x + 10, y + 2);
         g.drawLine(x, y + 2, x + 10, y - 8);
         g.drawString("collision", x + 16, y + 1);
+        x += 75;
+        // Two lanes: a thin line each side of the edge's own, as the edges are drawn.
+        g.setColor(EDGE);
+        g.setStroke(new BasicStroke(1f));
+        g.drawLine(x, y - 6, x + 24, y - 6);
+        g.drawLine(x, y, x + 24, y);
+        g.setColor(Color.DARK_GRAY);
+        g.drawString("two lanes", x + 28, y + 1);
         if (world != null) {
             g.setColor(Color.DARK_GRAY);
             g.drawString(String.format(Locale.ROOT, "%d chair%s, %d collisions, %d steps at %.0f Hz", world.chairs().size(),

@@ -83,8 +83,8 @@ class CorridorTest {
                 if (!seen[0] && bothDriveDownTheCorridor(r)) {
                     seen[0] = true;
                     HospitalPicture.write(r.world, Path.of("target", "pictures", "corridor-" + rules + ".png"),
-                            "two chairs down ward A's corridor, " + rules + String.format(java.util.Locale.ROOT, ", t = %.1f s",
-                                    r.world.worldTimeNs() / 1e9), r.hospital.traffic().holders());
+                            "two chairs down ward A's corridor, " + (rules == TrafficRules.IN_ORDER ? "rules in order" : "whole routes") + String.format(java.util.Locale.ROOT, ", t = %.1f s",
+                                    r.world.worldTimeNs() / 1e9), r.hospital.traffic().holders(), r.hospital.traffic().lanes());
                 }
             });
             CompletableFuture<MedicalAgent.Outcome> first = r.medical.transport(20, 17, 3, 10);
@@ -106,7 +106,7 @@ class CorridorTest {
      * Head-on in two lanes: one chair takes a patient from room A6 (south of node 2) to room A7
      * (south of node 4), the other from A3 (north of 4) to A2 (north of 2). Each enters the
      * corridor from a room on its right and leaves it to one on its right, so each keeps its lane
-     * (lane 0 east, 0.6 m south of the line; lane 1 west, north of it): the two are on the edge
+     * (lane 0 east, 0.8 m south of the line; lane 1 west, north of it): the two are on the edge
      * 2-4 at once, driving opposite ways, and pass each other. The picture shows the lanes and the
      * traffic agent's queues in them (target/pictures/corridor-lanes.png).
      */
