@@ -107,7 +107,7 @@ class HospitalDemoTest {
     void withTheConsoleTheMedicalAgentStaysAndSigtermLeavesNoJvmBehind() throws Exception {
         List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), Demo.class.getName(), "hospital",
-                "--console", "127.0.0.1:0", "--speed", "20", "--tasks", "3-14:0:5"));
+                "--console", "127.0.0.1:0", "--speed", "20", "--tasks", "3-14:0:5", "--picture", "target/pictures/hospital-console-demo.png"));
         Process launcher = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         java.util.concurrent.BlockingQueue<String> lines = new java.util.concurrent.LinkedBlockingQueue<>();
         List<String> all = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
