@@ -174,6 +174,13 @@ class ConsoleBrowserTest {
         browser.until(d -> (Boolean) ((org.openqa.selenium.JavascriptExecutor) d).executeScript(
                 "const w = document.getElementById('diagram-wrap'); return w.scrollHeight > w.clientHeight"
                         + " && w.scrollTop + w.clientHeight >= w.scrollHeight - 30;"));
+        // Scrolled down, the lifelines' names are still in sight at the top of the diagram.
+        assertEquals(Boolean.TRUE, ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const w = document.getElementById('diagram-wrap').getBoundingClientRect();"
+                        + " const h = document.getElementById('diagram-head-wrap').getBoundingClientRect();"
+                        + " return document.getElementById('diagram-wrap').scrollTop > 0 && h.top >= w.top - 1 && h.bottom <= w.top + 60;"));
+        assertTrue(browser.driver.findElements(By.cssSelector("#diagram-head text.lifeline")).stream()
+                .anyMatch(t -> t.getText().equals("buyer")), "the buyer's lifeline is named");
         browser.screenshot("console-sniffer");
     }
 

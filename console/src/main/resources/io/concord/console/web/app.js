@@ -266,15 +266,22 @@
     const lanes = [];
     for (const a of [...state.picked]) if (!lanes.includes(a)) lanes.push(a);
     for (const m of msgs) for (const a of [m.from, m.to]) if (!lanes.includes(a)) lanes.push(a);
-    const W = 170, top = 40, step = 28, T = 90;
+    // The lifelines' names in a header of their own, which stays at the top as the story scrolls.
+    const W = 170, head = 34, top = 6, step = 28, T = 90;
     const height = top + 20 + msgs.length * step;
-    d.setAttribute('width', Math.max(400, T + lanes.length * W + 40));
-    d.setAttribute('height', Math.max(120, height));
+    const width = Math.max(400, T + lanes.length * W + 40);
+    const h = $('diagram-head');
+    h.replaceChildren();
+    h.setAttribute('width', width);
+    h.setAttribute('height', head);
+    d.setAttribute('width', width);
+    d.setAttribute('height', Math.max(86, height));
     lanes.forEach((a, i) => {
       const x = T + 20 + i * W + W / 2;
-      d.appendChild(svg('rect', { x: x - 75, y: 5, width: 150, height: 24, rx: 4, fill: '#e3effd', stroke: '#7aa7d6' }));
-      d.appendChild(svg('text', { x: x, y: 21, 'text-anchor': 'middle' }, a.split('@')[0]));
-      d.appendChild(svg('line', { x1: x, y1: 29, x2: x, y2: Math.max(120, height), stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
+      h.appendChild(svg('rect', { x: x - 75, y: 5, width: 150, height: 24, rx: 4, fill: '#e3effd', stroke: '#7aa7d6' }));
+      h.appendChild(svg('text', { x: x, y: 21, 'text-anchor': 'middle', class: 'lifeline' }, a.split('@')[0]));
+      h.appendChild(svg('line', { x1: x, y1: 29, x2: x, y2: head, stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
+      d.appendChild(svg('line', { x1: x, y1: 0, x2: x, y2: Math.max(86, height), stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
     });
     msgs.forEach((m, i) => {
       const y = top + 10 + i * step;
