@@ -263,7 +263,7 @@ public final class HospitalView implements ConsoleView {
 
     /**
      * A chair's colour, the same for its body, its route and its reservations: the picture's
-     * palette by the chair's number (none of the doors' red, orange or green).
+     * palette ({@link io.concord.sim.render.HospitalPicture#chairColour}) by the chair's number.
      */
     static String colour(String chair) {
         int n = 0;
@@ -271,11 +271,9 @@ public final class HospitalView implements ConsoleView {
         if (m.find()) {
             n = Integer.parseInt(m.group(1)) - 1;
         }
-        return CHAIR_COLOURS[Math.floorMod(n, CHAIR_COLOURS.length)];
+        return io.concord.sim.render.HospitalPicture.chairColour(n);
     }
 
-    private static final String[] CHAIR_COLOURS = {"#1f77b4", "#9467bd", "#e6ab02", "#17becf", "#e377c2", "#8c564b", "#393b79",
-        "#bcbd22", "#7b4173", "#000000"};
 
     /** A queue's rings at a point (a node, or a lane's point at a node with lanes), titled with the queue. */
     private static void rings(ArrayNode shapes, Point at, String where, String id, List<String> queue) {

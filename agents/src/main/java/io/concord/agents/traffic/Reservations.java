@@ -83,7 +83,8 @@ final class Reservations<T> {
     public record Note<T>(String text) implements Outcome<T> {
     }
 
-    private record Wait<T>(String chair, List<Integer> path, T ticket, long since, boolean aside) {
+    /** A route waiting for its grant; {@code keys}: what it takes at each node, worked out once (see {@link #keys}). */
+    private record Wait<T>(String chair, List<Integer> path, List<long[]> keys, T ticket, long since, boolean aside) {
     }
 
     /**
@@ -266,7 +267,7 @@ final class Reservations<T> {
         hold(chair, keep);
         standing.put(chair, new ArrayList<>(at));
         idle.remove(chair);
-        Wait<T> w = new Wait<>(chair, List.copyOf(path), ticket, nowMs, asked);
+        Wait<T> w = new Wait<>(chair, List.copyOf(path), keys(path), ticket, nowMs, asked);
         if (rules == TrafficRules.NONE || blockers(w).isEmpty()) {
             grant(w, out);
         } else {
@@ -447,7 +448,7 @@ final class Reservations<T> {
 
     private void grant(Wait<T> w, List<Outcome<T>> out) {
         waiting.remove(w.chair());
-        List<long[]> keys = keys(w.path());
+        List<long[]> keys = w.keys();
         hold(w.chair(), flat(keys));
         goals.put(w.chair(), w.path().get(w.path().size() - 1));
         grants++;
@@ -493,7 +494,7 @@ final class Reservations<T> {
     private List<String> blockers(Wait<T> w) {
         List<String> out = new ArrayList<>();
         Set<String> behind = rules == TrafficRules.IN_ORDER ? behind(w.chair()) : Set.of();
-        for (long n : flat(keys(w.path()))) {
+        for (long n : flat(w.keys())) {
             for (String h : holders.getOrDefault(n, Set.of())) {
                 if (!h.equals(w.chair()) && !out.contains(h)
                         && (rules != TrafficRules.IN_ORDER || !passes(h, n) || behind.contains(h))) {

@@ -45,10 +45,14 @@ import java.util.Locale;
  */
 public final class HospitalPicture {
     /** Chairs' colours: none of them a door's (red, green, orange, grey). */
-    private static final Color[] CHAIR_COLOURS = {
-        new Color(0x1f77b4), new Color(0x9467bd), new Color(0xe6ab02), new Color(0x17becf), new Color(0xe377c2),
-        new Color(0x8c564b), new Color(0x393b79), new Color(0xbcbd22), new Color(0x7b4173), new Color(0x000000)
-    };
+    /** The chairs' colours, by chair number, none of the doors' red, orange or green; the console's map uses the same. */
+    private static final int[] CHAIR_RGB = {0x1f77b4, 0x9467bd, 0xe6ab02, 0x17becf, 0xe377c2, 0x8c564b, 0x393b79, 0xbcbd22, 0x7b4173, 0x000000};
+    private static final Color[] CHAIR_COLOURS = java.util.Arrays.stream(CHAIR_RGB).mapToObj(Color::new).toArray(Color[]::new);
+
+    /** The colour of the chair at {@code index} (0 for chair1), as #rrggbb. */
+    public static String chairColour(int index) {
+        return String.format(Locale.ROOT, "#%06x", CHAIR_RGB[Math.floorMod(index, CHAIR_RGB.length)]);
+    }
     private static final Color WALL = new Color(0x3a3a3a);
     private static final Color EDGE = new Color(0xb8c4d0);
     private static final Color NODE = new Color(0x2b4a6b);
