@@ -10,6 +10,14 @@ public class Quiet extends Agent {
         final boolean silent = "silent".equals(getArguments()[0]);
         addBehaviour(new AchieveREResponder(this, AchieveREResponder.createMessageTemplate(FIPANames.InteractionProtocol.FIPA_REQUEST)) {
             @Override
+            protected ACLMessage prepareResponse(ACLMessage request) throws jade.domain.FIPAAgentManagement.NotUnderstoodException,
+                    jade.domain.FIPAAgentManagement.RefuseException {
+                // The silent one says nothing at all, so that what is printed does not depend on which
+                // responder runs first; the quick one keeps the default, which prints before it answers.
+                return silent ? null : super.prepareResponse(request);
+            }
+
+            @Override
             protected ACLMessage prepareResultNotification(ACLMessage request, ACLMessage response) {
                 if (silent) {
                     return null;
