@@ -538,6 +538,9 @@ public final class ContainerLayer extends Layer {
     }
 
     private void publish() {
+        if (roles.current() instanceof ContainerRole) {
+            directory.listChanged();
+        }
         requests.release();
         registrations.reconcile();
         if (st.container != null) {

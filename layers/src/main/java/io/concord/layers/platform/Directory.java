@@ -23,6 +23,7 @@ final class Directory {
                 case "deregister" -> new Deregister();
                 case "search" -> new Search(Lines.parseService(c.params().getOrDefault("template", "*")));
                 case "agents" -> new Agents(c.params().get("name"));
+                case "subscribe" -> new Subscribe(Lines.parseService(c.params().getOrDefault("template", "*")));
                 default -> null;
             };
         }
@@ -38,12 +39,17 @@ final class Directory {
     record Search(ServiceDescription template) implements Action {
     }
 
+    /** Tell the sender of the agents whose services match the template, now and on every change (FIPA subscribe). */
+    record Subscribe(ServiceDescription template) implements Action {
+    }
+
     /** The white pages: every agent of the host, or the one of that name. */
     record Agents(String name) implements Action {
     }
 
     private final PlatformContext ctx;
     private final Roles roles;
+    private final DfSubscriptions subscriptions = new DfSubscriptions();
 
     Directory(PlatformContext ctx, Roles roles) {
         this.ctx = ctx;
@@ -52,9 +58,13 @@ final class Directory {
 
     void serve(AclMessage m) {
         Performative act = m.getPerformative();
-        if (act != Performative.REQUEST && act != Performative.QUERY_REF) {
-            if (act == Performative.CFP || act == Performative.QUERY_IF || act == Performative.SUBSCRIBE
-                    || act == Performative.PROPOSE) {
+        if (act == Performative.CANCEL) {
+            // FIPA's subscribe protocol ends with a cancel in the subscription's conversation; nothing answers it.
+            subscriptions.cancel(m.getSender().name(), m.getConversationId());
+            return;
+        }
+        if (act != Performative.REQUEST && act != Performative.QUERY_REF && act != Performative.SUBSCRIBE) {
+            if (act == Performative.CFP || act == Performative.QUERY_IF || act == Performative.PROPOSE) {
                 ctx.sendQuietly(reply(m, Performative.NOT_UNDERSTOOD, "(unsupported-act " + act.wireName() + ")"));
             }
             return;
@@ -76,6 +86,20 @@ final class Directory {
         }
         String from = m.getSender().name();
         AgentEntry entry = st.lists.lal.get(from);
+        if ((act == Performative.SUBSCRIBE) != (a instanceof Subscribe)) {
+            ctx.sendQuietly(reply(m, Performative.NOT_UNDERSTOOD, "(unsupported-act " + act.wireName() + " "
+                    + Lines.escape(c.command()) + ")"));
+            return;
+        }
+        if (a instanceof Subscribe s) {
+            // As JADE's DF: no agree; the entries that match now at once, if any, then every change.
+            List<AgentEntry> now = subscriptions.add(ContainerLayer.stamped(m, ctx.epochMillis()), s.template(),
+                    t -> st.lists.search(List.of(t)));
+            if (!now.isEmpty()) {
+                ctx.sendQuietly(notification(m, now));
+            }
+            return;
+        }
         if (a instanceof Register r) {
             if (entry == null) {
                 ctx.sendQuietly(reply(m, Performative.REFUSE, "(not-registered " + Lines.escape(from) + ")"));
@@ -113,6 +137,28 @@ final class Directory {
         } else {
             ctx.sendQuietly(reply(m, Performative.NOT_UNDERSTOOD, "(unknown-action " + Lines.escape(c.command()) + ")"));
         }
+    }
+
+    /**
+     * The container's list changed: each subscriber whose matches changed is told (called by the
+     * layer after every change, while this agent is the container).
+     */
+    void listChanged() {
+        if (subscriptions.size() == 0) {
+            return;
+        }
+        PlatformState st = roles.st;
+        subscriptions.changed(st.lists.lal::containsKey, t -> st.lists.search(List.of(t)),
+                (request, changed) -> ctx.sendQuietly(notification(request, changed)));
+    }
+
+    /** The subscriptions held (for tests). */
+    int subscriptions() {
+        return subscriptions.size();
+    }
+
+    private AclMessage notification(AclMessage subscribe, List<AgentEntry> entries) {
+        return reply(subscribe, Performative.INFORM, Lines.content("result", Lines.params("count", entries.size()), entries));
     }
 
     private AclMessage reply(AclMessage m, Performative p, String content) {

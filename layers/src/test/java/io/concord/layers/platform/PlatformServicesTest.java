@@ -222,6 +222,55 @@ class PlatformServicesTest {
     }
 
     @Test
+    void aSubscriberIsToldOfEachRegistrationAndDeregistrationThatMatchesUntilItCancels() {
+        try (PlatformWorld w = world(Profile.CLASS_3)) {
+            Inbox watcher = new Inbox();
+            w.start("early");
+            w.start("late");
+            w.everStarted.add("watcher@sim");
+            w.live.put("watcher", w.platform.startAgent("watcher", watcher));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            PlatformServices early = Platform.of(w.rt.agent(w.live.get("early")));
+            PlatformServices late = Platform.of(w.rt.agent(w.live.get("late")));
+            await(w, early.register(ServiceDescription.of("weather", "forecast")));
+            Agent a = w.rt.agent(w.live.get("watcher"));
+
+            AclMessage sub = new AclMessage(Performative.SUBSCRIBE);
+            sub.addReceiver(AID.local("df", "sim"));
+            sub.setContent("subscribe template=t=weather");
+            sub.setConversationId("c1");
+            a.send(sub);
+            assertTrue(w.sim.runUntil(() -> watcher.got.size() == 1, 2_000), "told at once of what matches already");
+            assertTrue(watcher.got.get(0).getContent().startsWith("result count=1\nearly@sim "), watcher.got.get(0).getContent());
+            assertEquals("c1", watcher.got.get(0).getConversationId());
+
+            await(w, late.register(ServiceDescription.of("weather", "radar")));
+            assertTrue(w.sim.runUntil(() -> watcher.got.size() == 2, 2_000), "told of a registration made later");
+            String registered = watcher.got.get(1).getContent();
+            assertTrue(registered.startsWith("result count=1\nlate@sim ") && registered.contains("radar"), registered);
+
+            await(w, Platform.of(a).register(ServiceDescription.of("news", "daily")));
+            w.sim.runUntil(w::converged, 2_000);
+            assertEquals(2, watcher.got.size(), "a registration that does not match is not told");
+
+            await(w, late.deregister());
+            assertTrue(w.sim.runUntil(() -> watcher.got.size() == 3, 2_000), "told of a deregistration");
+            String gone = watcher.got.get(2).getContent();
+            assertTrue(gone.startsWith("result count=1\nlate@sim ") && !gone.contains("radar"), gone);
+            assertEquals(Performative.INFORM, watcher.got.get(2).getPerformative());
+
+            AclMessage cancel = new AclMessage(Performative.CANCEL);
+            cancel.addReceiver(AID.local("df", "sim"));
+            cancel.setConversationId("c1");
+            a.send(cancel);
+            w.sim.runUntil(w::converged, 2_000);
+            await(w, late.register(ServiceDescription.of("weather", "radar")));
+            w.sim.runUntil(w::converged, 2_000);
+            assertEquals(3, watcher.got.size(), "nothing after the cancel");
+        }
+    }
+
+    @Test
     void anUnknownNameGetsTheFipaFailure() {
         try (PlatformWorld w = world(Profile.CLOSED)) {
             Inbox a = new Inbox();
