@@ -2,6 +2,7 @@ package jade.core;
 
 import io.concord.core.acl.AclMessage;
 import io.concord.jadecompat.internal.Convert;
+import io.concord.jadecompat.internal.DfLink;
 import io.concord.jadecompat.internal.Engine;
 import io.concord.jadecompat.internal.Host;
 import jade.core.behaviours.Behaviour;
@@ -73,6 +74,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     private AID aid;
     private Object[] arguments;
     private transient Host host;
+    /** This agent's DF subscriptions, translated between JADE's SL and Concord's DF. */
+    private final transient DfLink dfLink = new DfLink();
     private transient Engine engine;
     private transient AgentContainer container;
     private transient Thread thread;
@@ -314,7 +317,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
 
     /** A message arrived (on Concord's loop): queue it, restart every behaviour, wake the thread. */
     private void deliver(AclMessage m) {
-        ACLMessage j = Convert.toJade(m);
+        ACLMessage j = dfLink.incoming(Convert.toJade(m), getDefaultDF());
         j.setPostTimeStamp();
         lock.lock();
         try {
@@ -531,7 +534,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             m = (ACLMessage) msg.clone();
             m.setSender(aid);
         }
-        host.send(Convert.toConcord(m));
+        host.send(Convert.toConcord(dfLink.outgoing(m, getDefaultDF())));
     }
 
     /** The first message in the queue, or null. Never blocks. */

@@ -1,24 +1,22 @@
 package jade.domain;
 
 import io.concord.jadecompat.internal.AgentAccess;
+import io.concord.jadecompat.internal.DfSl;
 import io.concord.jadecompat.internal.Engine;
 import io.concord.jadecompat.internal.Host;
 import io.concord.layers.PlatformServices;
 import io.concord.layers.platform.AgentEntry;
 import jade.core.AID;
 import jade.core.Agent;
+import jade.lang.acl.ACLMessage;
 import jade.domain.FIPAAgentManagement.DFAgentDescription;
 import jade.domain.FIPAAgentManagement.FailureException;
-import jade.domain.FIPAAgentManagement.Property;
 import jade.domain.FIPAAgentManagement.RefuseException;
 import jade.domain.FIPAAgentManagement.SearchConstraints;
-import jade.domain.FIPAAgentManagement.ServiceDescription;
-import jade.util.leap.Iterator;
 
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeoutException;
@@ -35,6 +33,8 @@ public class DFService {
 
     /** The agents (these objects, not their names: a new agent of the same name starts unregistered) that registered. */
     private static final Map<Agent, Boolean> REGISTERED = java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
+
+    private static final java.util.concurrent.atomic.AtomicLong SUBSCRIPTIONS = new java.util.concurrent.atomic.AtomicLong();
 
     public DFService() {
     }
@@ -196,46 +196,43 @@ public class DFService {
     }
 
     static List<io.concord.layers.platform.ServiceDescription> toConcord(DFAgentDescription dfd) {
-        List<io.concord.layers.platform.ServiceDescription> r = new ArrayList<>();
-        if (dfd == null) {
-            return r;
-        }
-        for (Iterator it = dfd.getAllServices(); it.hasNext(); ) {
-            ServiceDescription s = (ServiceDescription) it.next();
-            Map<String, String> props = new TreeMap<>();
-            for (Iterator p = s.getAllProperties(); p.hasNext(); ) {
-                Property x = (Property) p.next();
-                props.put(x.getName(), String.valueOf(x.getValue()));
-            }
-            r.add(new io.concord.layers.platform.ServiceDescription(s.getType(), s.getName(), props,
-                    strings(s.getAllOntologies()), strings(s.getAllLanguages()), strings(s.getAllProtocols())));
-        }
-        return r;
-    }
-
-    private static List<String> strings(Iterator it) {
-        List<String> l = new ArrayList<>();
-        while (it.hasNext()) {
-            l.add((String) it.next());
-        }
-        return l;
+        return DfSl.toConcord(dfd);
     }
 
     static DFAgentDescription toJade(AgentEntry e) {
-        DFAgentDescription d = new DFAgentDescription();
-        d.setName(new AID(e.name(), AID.ISGUID));
-        for (io.concord.layers.platform.ServiceDescription s : e.services()) {
-            ServiceDescription j = new ServiceDescription();
-            j.setType(s.type());
-            j.setName(s.name());
-            for (Map.Entry<String, String> p : s.properties().entrySet()) {
-                j.addProperties(new Property(p.getKey(), p.getValue()));
-            }
-            s.ontologies().forEach(j::addOntologies);
-            s.languages().forEach(j::addLanguages);
-            s.protocols().forEach(j::addProtocols);
-            d.addServices(j);
+        return DfSl.toJade(e);
+    }
+
+    /**
+     * A SUBSCRIBE to the DF for the agents matching the template, as JADE writes it (FIPA-subscribe,
+     * {@code fipa-sl}, FIPA-Agent-Management, a conversation id of its own): send it, or give it to a
+     * {@link jade.proto.SubscriptionInitiator}. The DF answers at once with the registrations that
+     * match, if any, then with an INFORM at each registration, change or deregistration among them
+     * (a deregistered agent comes with no services); {@link #decodeNotification} reads them. Here
+     * the DF matches on the template's first service.
+     */
+    public static ACLMessage createSubscriptionMessage(Agent a, AID dfName, DFAgentDescription template,
+                                                       SearchConstraints constraints) {
+        AID df = dfName == null ? a.getDefaultDF() : dfName;
+        ACLMessage m = new ACLMessage(ACLMessage.SUBSCRIBE);
+        m.setSender(a.getAID());
+        m.addReceiver(df);
+        m.setProtocol(FIPANames.InteractionProtocol.FIPA_SUBSCRIBE);
+        m.setLanguage(FIPANames.ContentLanguage.FIPA_SL);
+        m.setOntology(FIPANames.Ontology.SL0_ONTOLOGY);
+        long n = SUBSCRIPTIONS.incrementAndGet();
+        m.setReplyWith("rw-" + a.getName() + Engine.nowMs() + "-" + n);
+        m.setConversationId("conv-" + a.getName() + Engine.nowMs() + "-" + n);
+        m.setContent(DfSl.subscription(df, template == null ? new DFAgentDescription() : template, constraints));
+        return m;
+    }
+
+    /** The descriptions a DF notification carries (its content); a deregistered agent's has no services. */
+    public static DFAgentDescription[] decodeNotification(String content) throws FIPAException {
+        try {
+            return DfSl.descriptions(content);
+        } catch (RuntimeException e) {
+            throw new FIPAException("not a DF notification: " + e.getMessage());
         }
-        return d;
     }
 }

@@ -36,7 +36,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * built to reach each of them; the calls are recorded by overrides and compared with that list.
  */
 class ProtocolHandlersTest {
-    private static final Set<String> CALLED = new ConcurrentSkipListSet<>();
+    static final Set<String> CALLED = new ConcurrentSkipListSet<>();
     private static AgentContainer container;
 
     @BeforeAll
@@ -49,7 +49,7 @@ class ProtocolHandlersTest {
     }
 
     /** The handlers a user may override in a protocol class: what this test must see called. */
-    private static Set<String> documentedHandlers(Class<?> type) {
+    static Set<String> documentedHandlers(Class<?> type) {
         Set<String> names = new TreeSet<>();
         for (Method m : type.getDeclaredMethods()) {
             int mod = m.getModifiers();
@@ -62,7 +62,7 @@ class ProtocolHandlersTest {
         return names;
     }
 
-    private static void called(Class<?> type, String method) {
+    static void called(Class<?> type, String method) {
         CALLED.add(type.getSimpleName() + "." + method);
     }
 
@@ -370,10 +370,10 @@ class ProtocolHandlersTest {
         }
     }
 
-    private static void assertAllCalled(Class<?> type) {
+    static void assertAllCalled(Class<?> type) {
         Set<String> missing = new TreeSet<>(documentedHandlers(type));
         missing.removeAll(CALLED);
-        assertTrue(documentedHandlers(type).size() >= 3, "found no handlers of " + type.getSimpleName() + " by reflection");
+        assertTrue(!documentedHandlers(type).isEmpty(), "found no handlers of " + type.getSimpleName() + " by reflection");
         assertEquals(Set.of(), missing, "handlers of " + type.getSimpleName() + " the engine never called");
     }
 }

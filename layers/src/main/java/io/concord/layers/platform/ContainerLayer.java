@@ -486,6 +486,28 @@ public final class ContainerLayer extends Layer {
      * reply's reply-with is made from it (without it, from a counter shared by the whole JVM, which
      * made two runs of one seed in one JVM differ).
      */
+    /**
+     * The content of a subscription to this platform's DF (a SUBSCRIBE to {@code df@platform}):
+     * the subscriber is told at once of the agents whose services match the template, if any,
+     * then of each change among them (INFORM in the subscription's conversation; an agent that
+     * stopped matching comes with no services); a CANCEL in that conversation ends it.
+     */
+    public static String subscriptionContent(ServiceDescription template) {
+        StringBuilder b = new StringBuilder();
+        Lines.appendService(b, template);
+        return Lines.content("subscribe", Lines.params("template", b.toString()), List.of());
+    }
+
+    /** The entries a DF answer or subscription notification ({@code result ...}) carries. */
+    public static List<AgentEntry> resultEntries(String content) {
+        return Lines.parse(content).entries();
+    }
+
+    /** The content language of the platform's own messages, its DF's answers and notifications included. */
+    public static String contentLanguage() {
+        return Protocol.LANGUAGE;
+    }
+
     static AclMessage stamped(AclMessage m, long epochMillis) {
         if (m.getReceivedAtEpochMs() == Long.MIN_VALUE) {
             m.setReceivedAtEpochMs(epochMillis);
