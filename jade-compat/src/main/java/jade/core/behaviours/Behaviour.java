@@ -22,6 +22,8 @@ public abstract class Behaviour implements jade.util.leap.Serializable {
 
     /** The agent this behaviour belongs to. */
     protected Agent myAgent;
+    /** Set on a behaviour that runs on a thread of its own: wakes that thread when the behaviour is restarted. */
+    transient Runnable wakeUp;
     /** The composite behaviour this one is a child of, or null. */
     protected CompositeBehaviour parent;
 
@@ -136,6 +138,11 @@ public abstract class Behaviour implements jade.util.leap.Serializable {
 
     /** Puts the behaviour back into the schedule, and its parents with it. */
     public void restart() {
+        Behaviour top = root();
+        if (top.wakeUp != null) {
+            // A threaded behaviour (ThreadedBehaviourFactory): its own thread looks again.
+            top.wakeUp.run();
+        }
         if (myAgent != null) {
             myAgent.removeTimer(this);
         }
