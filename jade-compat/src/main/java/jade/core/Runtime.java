@@ -44,7 +44,8 @@ public class Runtime {
         int port = portText == null ? 0 : Integer.parseInt(portText.trim());
         String platformName = p.getParameter(Profile.PLATFORM_ID,
                 host + ":" + (port > 0 ? port : Profile.DEFAULT_PORT) + "/JADE");
-        Engine e = Engine.start(platformName, host, port);
+        boolean gui = "true".equalsIgnoreCase(p.getParameter(Profile.GUI, "false").trim());
+        Engine e = Engine.start(platformName, host, port, gui);
         AID.platformId = e.platformName();
         String name = p.getParameter(Profile.CONTAINER_NAME, defaultName);
         return new AgentContainer(e, name == null ? "Container-" + nextContainer() : name);

@@ -26,7 +26,10 @@ public final class Engine {
     /** How long a synchronous DF call waits for the DF's answer. */
     public static final long DF_TIMEOUT_MS = 30_000;
     /** JADE classes that concord-jade does not have: if one loads, JADE's own jar is on the class path. */
-    static final String[] JADE_ONLY_CLASSES = {"jade.core.AgentContainerImpl", "jade.core.MainContainerImpl", "jade.Boot"};
+    static final String[] JADE_ONLY_CLASSES = {"jade.core.AgentContainerImpl", "jade.core.MainContainerImpl",
+            "jade.core.BaseService"};
+    /** Where JADE's {@code -gui} (Profile.GUI) opens Concord's console. */
+    public static final String CONSOLE_ADDRESS = "127.0.0.1:7070";
 
     private static final Clock CLOCK = Clock.system();
     private static Engine current;
@@ -42,6 +45,14 @@ public final class Engine {
      * Later calls return the same engine (JADE's containers of one JVM share one platform here).
      */
     public static synchronized Engine start(String platformName, String host, int firstPort) {
+        return start(platformName, host, firstPort, false);
+    }
+
+    /**
+     * As {@link #start(String, String, int)}; with {@code gui}, Concord's web console opens on
+     * {@link #CONSOLE_ADDRESS} if {@code concord-console} is on the class path (else a line says it is not).
+     */
+    public static synchronized Engine start(String platformName, String host, int firstPort, boolean gui) {
         if (current != null) {
             return current;
         }
@@ -54,11 +65,25 @@ public final class Engine {
                 : PortRange.defaults();
         // The user's platform key (Concord's zero-configuration default), so that containers of other
         // JVMs of this user that name the same platform and ports join it, as JADE's peripheral containers do.
-        Platform p = Platform.builder().name(platformName).host(host).ports(ports).network(null).build();
+        Platform.Builder b = Platform.builder().name(platformName).host(host).ports(ports).network(null);
+        if (gui) {
+            if (consoleAvailable()) {
+                b.console(CONSOLE_ADDRESS).consoleOut(System.out);
+            } else {
+                System.out.println("concord-jade: -gui: Concord's console is not on the class path (add io.concord:concord-console "
+                        + "to open it); going on without it");
+            }
+        }
+        Platform p = b.build();
         LOG.info("concord-jade: JADE's API over Concord, platform {} on {} ports {}-{}, agents on {} threads",
                 platformName, host, ports.base(), ports.base() + ports.count() - 1, virtualThreads() ? "virtual" : "platform");
         current = new Engine(p);
         return current;
+    }
+
+    /** True if Concord's web console (concord-console) is on the class path. */
+    public static boolean consoleAvailable() {
+        return java.util.ServiceLoader.load(io.concord.layers.ConsoleProvider.class).findFirst().isPresent();
     }
 
     /** The running engine, or null. */
