@@ -208,7 +208,7 @@ public class Boot {
         System.out.println("  -port, -local-port    the first of the 200 ports the agents take one each");
         System.out.println("  -container            a container joining the platform of that name and ports");
         System.out.println("  -container-name <n>   the container's name");
-        System.out.println("  -gui                  Concord's web console on " + io.concord.jadecompat.internal.Engine.CONSOLE_ADDRESS + ", if concord-console is on the class path");
+        System.out.println("  -gui                  Concord's web console (its address printed), if concord-console is on the class path");
         System.out.println("  -agents <list>        agents to start, ';'-separated");
         System.out.println("  ignored here, with a line saying so: -services, -mtps, -mtp, -nomtp, -detect-main, -conf, -backupmain");
     }

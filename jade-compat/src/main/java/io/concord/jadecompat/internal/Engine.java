@@ -28,8 +28,8 @@ public final class Engine {
     /** JADE classes that concord-jade does not have: if one loads, JADE's own jar is on the class path. */
     static final String[] JADE_ONLY_CLASSES = {"jade.core.AgentContainerImpl", "jade.core.MainContainerImpl",
             "jade.core.BaseService"};
-    /** Where JADE's {@code -gui} (Profile.GUI) opens Concord's console. */
-    public static final String CONSOLE_ADDRESS = "127.0.0.1:7070";
+    /** Where JADE's {@code -gui} (Profile.GUI) opens Concord's console: any free port of loopback (it prints its address; a fixed one may be taken). */
+    public static final String CONSOLE_ADDRESS = "127.0.0.1:0";
 
     private static final Clock CLOCK = Clock.system();
     private static Engine current;
