@@ -5,6 +5,7 @@ import io.concord.bench.child.Children;
 import io.concord.bench.child.IdlePlatform;
 import io.concord.bench.child.LoadChild;
 import io.concord.bench.harness.AttackHarness;
+import io.concord.bench.harness.BlockingBeside;
 import io.concord.bench.harness.ConsoleCost;
 import io.concord.bench.harness.FleetHarness;
 import io.concord.bench.harness.HeartbeatBench;
@@ -65,7 +66,7 @@ import java.util.function.ToDoubleFunction;
  */
 public final class BenchMain {
     static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
-            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load", "fleet");
+            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load", "blocking", "fleet");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -149,6 +150,7 @@ public final class BenchMain {
                     case "throughput" -> b.throughput();
                     case "scale" -> b.scale();
                     case "load" -> b.load();
+                    case "blocking" -> b.blocking();
                     case "fleet" -> b.fleet();
                     default -> throw new IllegalStateException(name);
                 }
@@ -1028,6 +1030,28 @@ public final class BenchMain {
                 FleetHarness.series(all, FleetHarness.Outcome::waitP95S), true);
         md.append("\n![transports per hour](fleet.png)\n\n![patients' wait p95](fleet-wait.png)\n");
         Files.writeString(reportDir.resolve("fleet.md"), md.toString());
+    }
+
+    private void blocking() throws IOException {
+        BlockingBeside.Outcome o;
+        try {
+            o = BlockingBeside.run(full);
+        } catch (IOException | RuntimeException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IllegalStateException("the blocking benchmark failed", e);
+        }
+        System.out.printf(Locale.ROOT, "RESULT blocking echoes=%d without_us=%.1f blocking_us=%.1f ratio=%.2f%s%n",
+                o.echoes(), o.withoutUs(), o.blockingUs(), o.ratio(), hogsTag());
+        StringBuilder md = new StringBuilder(header("A blocking agent beside 100 non-blocking ones", "A prober pings "
+                + o.echoes() + " echo agents one after the other on a class-7 Platform, in batches of 100 pings (one "
+                + "sweep), median per ping; phases alternate (" + o.phases() + " of each): the echoes alone, and the "
+                + "echoes beside one more agent that blocks (its behaviour, on a thread of its own, sleeps 50 ms then "
+                + "waits 50 ms in blockingReceive, again and again). Target (issue 32): the others' latency unchanged, a "
+                + "ratio near 1.", "Wall clock"));
+        md.append(String.format(Locale.ROOT, "| phase | µs per ping | ratio |%n|---|---|---|%n| echoes alone | %.1f | |%n"
+                + "| beside a blocking agent | %.1f | %.2f |%n", o.withoutUs(), o.blockingUs(), o.ratio()));
+        Files.writeString(reportDir.resolve("blocking.md"), md.toString());
     }
 
     private void console() throws IOException {

@@ -1,0 +1,186 @@
+package io.concord.bench.harness;
+
+import io.concord.bench.support.Platforms;
+import io.concord.bench.support.Rounds;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import io.concord.core.agent.Agent;
+import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.PortRange;
+import io.concord.core.agent.ThreadedBehaviourFactory;
+import io.concord.layers.Platform;
+import io.concord.layers.platform.ContainerLayer;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * A blocking agent beside 100 non-blocking ones (issue 32): a prober pings each of 100 echo agents
+ * in turn on a class-7 {@link Platform}, and the median time of a ping is taken with no other agent,
+ * then with one more agent that blocks: its behaviour (on a thread of its own, as a blocking
+ * behaviour must ask for) spends its time in {@code Thread.sleep} and {@code blockingReceive}. The
+ * phases alternate, so that the machine's drift falls on both; the result is the ratio of the two
+ * medians (1.0: unchanged). Timing, so here and never in a test.
+ */
+public final class BlockingBeside {
+    /** Median µs per ping without and with the blocking agent. */
+    public record Outcome(int echoes, double withoutUs, double blockingUs, int phases) {
+        public double ratio() {
+            return blockingUs / withoutUs;
+        }
+    }
+
+    private BlockingBeside() {
+    }
+
+    /** Answers every ping at once. */
+    static final class Echo extends Agent {
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour(this) {
+                @Override
+                public void action() {
+                    AclMessage m = receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    AclMessage r = m.createReply();
+                    r.setPerformative(Performative.INFORM);
+                    send(r);
+                }
+            });
+        }
+    }
+
+    /** Pings the echoes one after the other, a batch at a time (see {@link Rounds}). */
+    static final class Prober extends Agent {
+        private final Rounds rounds;
+        volatile List<AID> echoes = List.of();
+        private int next;
+
+        Prober(Rounds rounds) {
+            this.rounds = rounds;
+        }
+
+        /** Starts a batch; call on the runtime's loop. */
+        void start() {
+            ping();
+        }
+
+        private void ping() {
+            AID to = echoes.get(next);
+            next = (next + 1) % echoes.size();
+            send(new AclMessage(Performative.REQUEST).addReceiver(to).setContent("ping"));
+        }
+
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour(this) {
+                @Override
+                public void action() {
+                    AclMessage m = receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    if (rounds.roundDone()) {
+                        ping();
+                    }
+                }
+            });
+        }
+    }
+
+    /** Blocks, as JADE code does: sleeps, then waits in blockingReceive, again and again, on a thread of its own. */
+    static final class Blocker extends Agent {
+        @Override
+        protected void setup() {
+            addBehaviour(new ThreadedBehaviourFactory().wrap(new CyclicBehaviour(this) {
+                @Override
+                public void action() {
+                    try {
+                        Thread.sleep(50);
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                        return;
+                    }
+                    myAgent.blockingReceive(null, 50);
+                }
+            }));
+        }
+    }
+
+    public static Outcome run(boolean full) throws Exception {
+        int echoes = 100;
+        int phases = full ? 8 : 4;
+        long phaseMs = full ? 3_000 : 1_500;
+        Rounds rounds = new Rounds();
+        try (Platform p = Platform.builder().name("bench-blocking").ports(new PortRange(8101, echoes + 30, 10))
+                .platformKey(Platforms.KEY).build()) {
+            Prober prober = new Prober(rounds);
+            AID proberId = p.startAgent("prober", prober);
+            List<AID> ids = new ArrayList<>();
+            for (int i = 0; i < echoes; i++) {
+                ids.add(p.startAgent("echo" + i, new Echo()));
+            }
+            prober.echoes = List.copyOf(ids);
+            awaitListed(p, proberId, echoes + 1);
+            roundsFor(p, prober, rounds, phaseMs);   // warm-up
+            double[] without = new double[phases];
+            double[] blocking = new double[phases];
+            for (int k = 0; k < phases; k++) {
+                without[k] = roundsFor(p, prober, rounds, phaseMs);
+                Blocker b = new Blocker();
+                p.startAgent("blocker" + k, b);
+                awaitListed(p, proberId, echoes + 2);
+                Thread.sleep(200); // the blocker's thread is in its sleep and its blockingReceive by now
+                blocking[k] = roundsFor(p, prober, rounds, phaseMs);
+                p.runtime().execute(b::doDelete);
+                awaitListed(p, proberId, echoes + 1);
+            }
+            return new Outcome(echoes, median(without), median(blocking), phases);
+        }
+    }
+
+    /** Waits until the prober's lists hold that many agents. */
+    private static void awaitListed(Platform p, AID who, int agents) throws Exception {
+        long until = System.nanoTime() + 60_000_000_000L;
+        while (System.nanoTime() < until) {
+            CompletableFuture<Integer> k = new CompletableFuture<>();
+            p.runtime().execute(() -> {
+                ContainerLayer c = Platform.containerLayer(p.runtime(), who);
+                k.complete(c == null || c.containerName() == null ? -1 : c.agents().size());
+            });
+            if (k.get(10, TimeUnit.SECONDS) == agents) {
+                return;
+            }
+            Thread.sleep(20);
+        }
+        throw new IllegalStateException("the platform's lists never held " + agents + " agents");
+    }
+
+    /** Pings for about that long; the median µs per ping over batches of 100 (one sweep of the echoes). */
+    private static double roundsFor(Platform p, Prober prober, Rounds rounds, long ms) throws Exception {
+        List<Double> perPing = new ArrayList<>();
+        long end = System.nanoTime() + ms * 1_000_000;
+        while (System.nanoTime() < end) {
+            rounds.arm(100);
+            long t0 = System.nanoTime();
+            p.runtime().execute(prober::start);
+            rounds.await();
+            perPing.add((System.nanoTime() - t0) / 1e3 / 100);
+        }
+        return median(perPing.stream().mapToDouble(Double::doubleValue).toArray());
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+}
