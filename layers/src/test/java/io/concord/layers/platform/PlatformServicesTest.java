@@ -271,6 +271,32 @@ class PlatformServicesTest {
     }
 
     @Test
+    void aSubscriberIsToldWhenARegisteredAgentLeavesThePlatform() {
+        try (PlatformWorld w = world(Profile.CLASS_3)) {
+            Inbox watcher = new Inbox();
+            w.start("a1");
+            w.start("seller");
+            w.everStarted.add("watcher@sim");
+            w.live.put("watcher", w.platform.startAgent("watcher", watcher));
+            assertTrue(w.sim.runUntil(w::converged, 5_000), w.describe());
+            String container = w.containers().get(0);
+            String seller = container.equals("seller") ? "a1" : "seller";
+            await(w, Platform.of(w.rt.agent(w.live.get(seller))).register(ServiceDescription.ofType("weather")));
+            AclMessage sub = new AclMessage(Performative.SUBSCRIBE);
+            sub.addReceiver(AID.local("df", "sim"));
+            sub.setContent("subscribe template=t=weather");
+            sub.setConversationId("c2");
+            w.rt.agent(w.live.get("watcher")).send(sub);
+            assertTrue(w.sim.runUntil(() -> watcher.got.size() == 1, 2_000), "told at once of the registered agent");
+
+            w.stop(seller);
+            assertTrue(w.sim.runUntil(() -> watcher.got.size() == 2, 5_000), "told when it left");
+            String gone = watcher.got.get(1).getContent();
+            assertTrue(gone.startsWith("result count=1\n" + seller + "@sim ") && !gone.contains("weather"), gone);
+        }
+    }
+
+    @Test
     void anUnknownNameGetsTheFipaFailure() {
         try (PlatformWorld w = world(Profile.CLOSED)) {
             Inbox a = new Inbox();
