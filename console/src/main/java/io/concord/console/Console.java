@@ -154,6 +154,11 @@ public final class Console implements AutoCloseable {
         return this;
     }
 
+    /** An operator's action on the agents (start, kill, send); on the loop. */
+    String agentAction(String action, Map<String, String> params) {
+        return agent.act(action, params, platform);
+    }
+
     List<ConsoleView> views() {
         return views;
     }

@@ -32,13 +32,13 @@ import java.util.concurrent.atomic.LongAdder;
 /**
  * The console's HTTP side, on the JDK's server with a fixed pool of threads: one per open event
  * stream (at most the hub's limit) and four for everything else. No handler touches an agent:
- * reads come from the hub's last events, the one write (a view's action) is handed to the loop.
+ * reads come from the hub's last events, the writes (a view's action, start, kill, send) are handed to the loop.
  */
 final class ConsoleServer {
     static final int MAX_URI = 2_048;
     static final int MAX_BODY = 4_096;
     static final long KEEPALIVE_MS = 2_000;
-    private static final Set<String> TOPICS = Set.of("platform", "safety", "sniff");
+    private static final Set<String> TOPICS = Set.of("platform", "safety", "sniff", "mail");
 
     private final HttpServer http;
     private final ExecutorService pool;
@@ -125,8 +125,11 @@ final class ConsoleServer {
         if (method.equals("POST")) {
             if (path.startsWith("/api/views/")) {
                 act(x, path.substring("/api/views/".length()));
+            } else if (path.startsWith("/api/agents/")) {
+                agentAction(x, path.substring("/api/agents/".length()));
             } else {
-                refuse(x, 405, "only a view's action may be posted, at /api/views/{view}/{action}");
+                refuse(x, 405, "only an action may be posted: a view's at /api/views/{view}/{action}, "
+                        + "the console's at /api/agents/start, /api/agents/kill and /api/agents/send");
             }
             return;
         }
@@ -139,7 +142,7 @@ final class ConsoleServer {
             case "/app.js" -> resource(x, "app.js", "text/javascript; charset=utf-8", q);
             case "/style.css" -> resource(x, "style.css", "text/css; charset=utf-8", q);
             case "/api/events" -> events(x, q);
-            case "/api/platform", "/api/safety" -> last(x, path.substring(5));
+            case "/api/platform", "/api/safety", "/api/mail" -> last(x, path.substring(5));
             case "/api/views" -> views(x);
             case "/api/bench" -> benchList(x);
             case "/api/drops" -> answer(x, 200, "application/json", json.writeValueAsString(console.drops()));
@@ -229,7 +232,7 @@ final class ConsoleServer {
             }
             boolean view = s.startsWith("view-") && console.views().stream().anyMatch(v -> ("view-" + v.id()).equals(s));
             if (!TOPICS.contains(s) && !view) {
-                refuse(x, 400, "no such topic '" + s + "'; topics are platform, safety, sniff and view-{id} of /api/views");
+                refuse(x, 400, "no such topic '" + s + "'; topics are platform, safety, sniff, mail and view-{id} of /api/views");
                 return;
             }
             topics.add(s);
@@ -276,8 +279,7 @@ final class ConsoleServer {
     }
 
     private void act(HttpExchange x, String rest) throws IOException {
-        if (!"1".equals(x.getRequestHeaders().getFirst("X-Concord-Console"))) {
-            refuse(x, 403, "a view's action must carry the header X-Concord-Console: 1 (the page sends it; another site's form cannot)");
+        if (!fromThePage(x)) {
             return;
         }
         int slash = rest.indexOf('/');
@@ -292,9 +294,35 @@ final class ConsoleServer {
             refuse(x, 404, "no such action: " + rest + "; see /api/views");
             return;
         }
+        ConsoleView v = view;
+        onLoop(x, params -> v.act(action, params));
+    }
+
+    /** Starting, killing and messaging agents (JADE's RMA and DummyAgent): the same guards as a view's action. */
+    private void agentAction(HttpExchange x, String action) throws IOException {
+        if (!fromThePage(x)) {
+            return;
+        }
+        if (!ConsoleAgent.ACTIONS.contains(action)) {
+            refuse(x, 404, "no such action: " + action + "; the console's are " + ConsoleAgent.ACTIONS);
+            return;
+        }
+        onLoop(x, params -> console.agentAction(action, params));
+    }
+
+    private boolean fromThePage(HttpExchange x) throws IOException {
+        if (!"1".equals(x.getRequestHeaders().getFirst("X-Concord-Console"))) {
+            refuse(x, 403, "an action must carry the header X-Concord-Console: 1 (the page sends it; another site's form cannot)");
+            return false;
+        }
+        return true;
+    }
+
+    /** Reads the form, runs the action on the agents' loop, answers what it said (or 400 with why). */
+    private void onLoop(HttpExchange x, java.util.function.Function<Map<String, String>, String> action) throws IOException {
         byte[] body = readBody(x);
         if (body == null) {
-            refuse(x, 413, "a view's action takes at most " + MAX_BODY + " bytes of form parameters");
+            refuse(x, 413, "an action takes at most " + MAX_BODY + " bytes of form parameters");
             return;
         }
         Map<String, String> params;
@@ -304,11 +332,10 @@ final class ConsoleServer {
             refuse(x, 400, "malformed form parameters: " + e.getMessage());
             return;
         }
-        ConsoleView v = view;
         CompletableFuture<String> done = new CompletableFuture<>();
         console.platform().runtime().execute(() -> {
             try {
-                done.complete(v.act(action, params));
+                done.complete(action.apply(params));
             } catch (RuntimeException e) {
                 done.completeExceptionally(e);
             }

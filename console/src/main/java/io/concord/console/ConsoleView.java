@@ -6,7 +6,7 @@ import java.util.Map;
 /**
  * A view an application adds to the console (the hospital adds its map). Its snapshot is taken on
  * the agents' loop every {@link #periodMs()} while a browser shows it, and sent as one event; its
- * actions are the console's only writes, allowed on loopback or with the token.
+ * actions, with the console's own (start, kill, send), are its only writes, allowed on loopback or with the token.
  */
 public interface ConsoleView {
 

@@ -47,6 +47,16 @@ class ConsoleBrowserTest {
     static final class Buyer extends Agent {
     }
 
+    /** An agent an operator starts from the console: answers a request with what it was started with. */
+    public static final class Echo extends Agent {
+        @Override
+        protected void setup() {
+            String said = getArguments().length == 0 ? "nothing" : String.join("+", java.util.Arrays.stream(getArguments()).map(String::valueOf).toList());
+            Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST),
+                    m -> send(m.createReply().setPerformative(Performative.INFORM).setContent("echo " + said + ": " + m.getContent())));
+        }
+    }
+
     @BeforeAll
     static void start() {
         platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build();
@@ -66,8 +76,9 @@ class ConsoleBrowserTest {
         platform.close();
     }
 
+    /** The agents the platform view lists, in its order (its group rows left out). */
     private static List<String> rows(String table) {
-        return browser.driver.findElements(By.cssSelector("#" + table + " tbody tr")).stream()
+        return browser.driver.findElements(By.cssSelector("#" + table + " tbody tr[data-agent]")).stream()
                 .map(r -> r.getAttribute("data-agent")).collect(Collectors.toList());
     }
 
@@ -79,19 +90,108 @@ class ConsoleBrowserTest {
     void thePlatformViewListsTheAgentsAndFollowsAKilledOne() {
         browser.driver.get(console.uri());
         tab("platform");
-        browser.until(d -> rows("lal").containsAll(List.of("seller1@console-ui", "seller2@console-ui", "buyer@console-ui",
+        browser.until(d -> rows("agents").containsAll(List.of("seller1@console-ui", "seller2@console-ui", "buyer@console-ui",
                 "console@console-ui")));
         String box = browser.driver.findElement(By.id("container-box")).getText();
         assertTrue(box.startsWith("Container: ") && box.contains("term"), box);
         // The yellow pages' search box.
         browser.driver.findElement(By.id("search")).sendKeys("book-selling");
-        browser.until(d -> rows("lal").equals(List.of("seller1@console-ui", "seller2@console-ui")));
+        browser.until(d -> rows("agents").equals(List.of("seller1@console-ui", "seller2@console-ui")));
+        browser.until(d -> !d.findElements(By.cssSelector("#agents tr.group[data-group^='host ']")).isEmpty());
         browser.screenshot("console-platform");
         browser.driver.findElement(By.id("search")).clear();
         browser.driver.findElement(By.id("search")).sendKeys(" ");
         // Killed: it leaves the list.
         platform.runtime().crashAgent(new AID("seller2@console-ui"));
-        browser.until(d -> !rows("lal").contains("seller2@console-ui") && rows("lal").contains("seller1@console-ui"));
+        browser.until(d -> !rows("agents").contains("seller2@console-ui") && rows("agents").contains("seller1@console-ui"));
+    }
+
+    /**
+     * As JADE's RMA groups its tree by container, the view groups agents by host and JVM, from each
+     * agent's own report, with its messages in and out, its mailbox and its loop's lag.
+     */
+    @Test
+    void thePlatformViewGroupsAgentsByJvmWithTheirFigures() {
+        browser.driver.get(console.uri());
+        tab("platform");
+        String group = "host 127.0.0.1 · JVM " + ProcessHandle.current().pid();
+        browser.until(d -> d.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui']")).stream()
+                .anyMatch(r -> group.equals(r.getAttribute("data-group"))));
+        WebElement head = browser.driver.findElement(By.cssSelector("#agents tr.group[data-group='" + group + "']"));
+        assertTrue(head.getText().startsWith(group + " — "), head.getText());
+        List<WebElement> cells = browser.driver.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui'] td"));
+        assertTrue(cells.get(4).getText().matches("\\d+ / \\d+"), "in / out: " + cells.get(4).getText());
+        assertTrue(cells.get(5).getText().matches("\\d+"), "mailbox: " + cells.get(5).getText());
+        assertTrue(cells.get(6).getText().matches("\\d+ ms"), "lag: " + cells.get(6).getText());
+    }
+
+    /** Clicks what the selector finds, again if the page drew it anew meanwhile. */
+    private static void click(String css) {
+        browser.until(d -> {
+            try {
+                d.findElement(By.cssSelector(css)).click();
+                return true;
+            } catch (org.openqa.selenium.StaleElementReferenceException | org.openqa.selenium.NoSuchElementException e) {
+                return false;
+            }
+        });
+    }
+
+    private static void fill(String form, String field, String value) {
+        WebElement e = browser.driver.findElement(By.cssSelector("#" + form + " [name='" + field + "']"));
+        e.clear();
+        e.sendKeys(value);
+    }
+
+    /**
+     * JADE's RMA and DummyAgent in the page: an operator starts an agent from its class with
+     * arguments, sends it a request and reads its answer, then kills it, and it is gone from the
+     * view and from the platform.
+     */
+    @Test
+    void anOperatorStartsMessagesAndKillsAnAgent() {
+        browser.driver.get(console.uri());
+        tab("platform");
+        browser.until(d -> rows("agents").contains("seller1@console-ui"));
+        fill("start-form", "name", "echo1");
+        fill("start-form", "class", "no.such.Agent");
+        browser.driver.findElement(By.id("start-agent")).click();
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("no class no.such.Agent on this JVM's class path"));
+        fill("start-form", "class", Echo.class.getName());
+        fill("start-form", "arguments", "red, blue");
+        browser.driver.findElement(By.id("start-agent")).click();
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("started echo1@console-ui"));
+        browser.until(d -> rows("agents").contains("echo1@console-ui"));
+        assertTrue(platform.runtime().agents().contains(new AID("echo1@console-ui")), "started in the console's JVM");
+
+        click("#agents tr[data-agent='echo1@console-ui'] button.message");
+        assertEquals("echo1@console-ui", browser.driver.findElement(By.id("send-to")).getAttribute("value"));
+        fill("send-form", "content", "hello");
+        browser.driver.findElement(By.id("send-message")).click();
+        browser.until(d -> d.findElements(By.cssSelector("#mail tbody tr[data-dir='received'][data-performative='INFORM']")).stream()
+                .anyMatch(r -> r.getText().contains("echo red+blue: hello")));
+        browser.screenshot("console-platform-actions");
+
+        click("#agents tr[data-agent='echo1@console-ui'] button.kill");
+        browser.driver.switchTo().alert().accept();
+        browser.until(d -> !rows("agents").contains("echo1@console-ui"));
+        assertTrue(!platform.runtime().agents().contains(new AID("echo1@console-ui")), "gone from the platform");
+    }
+
+    /** An agent in another JVM (here: another runtime, over real sockets) is asked to leave through its observation service. */
+    @Test
+    void anAgentOfAnotherRuntimeIsKilledThroughItsObservationService() {
+        try (Platform far = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build()) {
+            far.startAgent("far1", new Buyer());
+            browser.driver.get(console.uri());
+            tab("platform");
+            browser.until(d -> rows("agents").contains("far1@console-ui"));
+            click("#agents tr[data-agent='far1@console-ui'] button.kill");
+            browser.driver.switchTo().alert().accept();
+            browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("asked far1@console-ui to leave"));
+            browser.until(d -> !far.runtime().agents().contains(new AID("far1@console-ui")));
+            browser.until(d -> !rows("agents").contains("far1@console-ui"));
+        }
     }
 
     /** Shows the sniffer and picks the buyer, once the picker lists it. */
@@ -181,6 +281,10 @@ class ConsoleBrowserTest {
                         + " return document.getElementById('diagram-wrap').scrollTop > 0 && h.top >= w.top - 1 && h.bottom <= w.top + 60;"));
         assertTrue(browser.driver.findElements(By.cssSelector("#diagram-head text.lifeline")).stream()
                 .anyMatch(t -> t.getText().equals("buyer")), "the buyer's lifeline is named");
+        // The seller is not picked: it is on the one lifeline of everybody the buyer talks to.
+        assertEquals(List.of("buyer", "other agents"), browser.driver.findElements(By.cssSelector("#diagram-head text.lifeline"))
+                .stream().map(WebElement::getText).toList());
+        browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow")).get(0).getText().contains("to seller1"));
         browser.screenshot("console-sniffer");
     }
 

@@ -43,7 +43,7 @@
   // A tab switch neither reconnects nor clears: what the sniffer saw while another tab was shown
   // is there when it is shown again. Only a new choice of agents or conversation starts a new story.
   function topics() {
-    return ['platform', 'safety', 'sniff'].concat(state.views.map((v) => 'view-' + v.id)).join(',');
+    return ['platform', 'safety', 'sniff', 'mail'].concat(state.views.map((v) => 'view-' + v.id)).join(',');
   }
   function connect(fresh) {
     if (state.source) state.source.close();
@@ -62,7 +62,9 @@
       if (src.readyState === EventSource.CLOSED && state.source === src) setTimeout(() => { if (state.source === src) connect(); }, 1000);
     };
     src.addEventListener('platform', (e) => { state.platform = JSON.parse(e.data); drawPlatform(); });
-    src.addEventListener('safety', (e) => { state.safety = JSON.parse(e.data); drawSafety(); });
+    src.addEventListener('safety', (e) => { state.safety = JSON.parse(e.data); drawSafety(); drawPlatform(); });
+    src.addEventListener('mail', (e) => drawMail(JSON.parse(e.data)));
+    drawMail([]);
     src.addEventListener('sniff', (e) => {
       state.sniffed.push(JSON.parse(e.data));
       if (state.sniffed.length > 500) state.sniffed.shift();
@@ -92,27 +94,120 @@
     q = q.toLowerCase();
     return a.services.some((s) => (s.type || '').toLowerCase().includes(q) || (s.name || '').toLowerCase().includes(q));
   }
-  function fillAgents(tbody, list, q, container) {
-    tbody.replaceChildren();
+  // Where an agent runs and how it is doing, from its own last report (the safety event).
+  function figures(name) {
+    const s = state.safety;
+    return s ? s.agents.find((x) => x.agent === name) : null;
+  }
+  function act(action, params, said) {
+    const body = new URLSearchParams(params);
+    return fetch(url('api/agents/' + action), { method: 'POST', body: body, headers: { 'X-Concord-Console': '1' } })
+      .then((r) => r.text().then((t) => { $(said || 'agent-said').textContent = r.ok ? JSON.parse(t).message : t; return r.ok; }));
+  }
+  // One table, grouped as JADE's RMA groups its tree: by host, then by JVM (process id).
+  function drawAgents(p, q) {
+    const tbody = $('agents').tBodies[0];
+    const groups = new Map();
     let n = 0;
-    for (const a of list) {
+    for (const [a, where] of p.lal.map((a) => [a, 'local']).concat(p.gal.map((a) => [a, 'global']))) {
       if (!matches(a, q)) continue;
       n++;
-      const tr = el('tr');
-      tr.dataset.agent = a.name;
-      const name = el('td', a.name);
-      if (a.name === container) name.appendChild(el('span', 'container', 'container-tag'));
-      tr.appendChild(name);
-      tr.appendChild(el('td', a.address));
-      const s = el('td');
-      for (const d of a.services) s.appendChild(el('span', d.type + (d.name ? ': ' + d.name : ''), 'svc'));
-      tr.appendChild(s);
-      const since = el('td');
-      since.appendChild(agoEl(a.startMs));
-      tr.appendChild(since);
-      tbody.appendChild(tr);
+      const f = figures(a.name);
+      const key = f && f.host ? 'host ' + f.host + ' · JVM ' + f.pid : 'where it runs not reported yet';
+      if (!groups.has(key)) groups.set(key, []);
+      groups.get(key).push([a, where, f]);
+    }
+    const sorted = [...groups.entries()].sort((x, y) => x[0].localeCompare(y[0]));
+    // Only the figures changed (every two seconds): they are written in place, so that a button the
+    // operator is about to click is not replaced under the pointer.
+    const shape = JSON.stringify(sorted.map(([k, l]) => [k, l.map(([a, w]) => [a.name, w, a.address, a.startMs, a.services, a.name === p.container])]));
+    if (tbody.dataset.shape === shape) {
+      for (const [, list] of sorted) {
+        for (const [a, , f] of list) {
+          const tr = [...tbody.rows].find((r) => r.dataset.agent === a.name);
+          if (!tr || !f) continue;
+          tr.cells[4].textContent = f.received + ' / ' + f.sent;
+          tr.cells[5].textContent = f.mailbox >= 0 ? String(f.mailbox) : '';
+          tr.cells[6].textContent = f.lagMs + ' ms';
+        }
+      }
+      return n;
+    }
+    tbody.dataset.shape = shape;
+    tbody.replaceChildren();
+    for (const [key, list] of sorted) {
+      const g = el('tr', null, 'group');
+      const td = el('td', key + ' — ' + list.length + (list.length === 1 ? ' agent' : ' agents'));
+      td.colSpan = 8;
+      g.appendChild(td);
+      g.dataset.group = key;
+      tbody.appendChild(g);
+      for (const [a, where, f] of list) {
+        const tr = el('tr');
+        tr.dataset.agent = a.name;
+        tr.dataset.list = where;
+        tr.dataset.group = key;
+        const name = el('td', a.name);
+        if (a.name === p.container) name.appendChild(el('span', 'container', 'container-tag'));
+        tr.appendChild(name);
+        tr.appendChild(el('td', a.address));
+        const s = el('td');
+        for (const d of a.services) s.appendChild(el('span', d.type + (d.name ? ': ' + d.name : ''), 'svc'));
+        tr.appendChild(s);
+        const since = el('td');
+        since.appendChild(agoEl(a.startMs));
+        tr.appendChild(since);
+        tr.appendChild(el('td', f ? f.received + ' / ' + f.sent : '', 'num'));
+        tr.appendChild(el('td', f && f.mailbox >= 0 ? String(f.mailbox) : '', 'num'));
+        tr.appendChild(el('td', f ? f.lagMs + ' ms' : '', 'num'));
+        const acts = el('td');
+        if (a.name !== p.console) {
+          const k = el('button', 'Kill', 'kill');
+          k.type = 'button';
+          k.addEventListener('click', () => {
+            if (confirm('Kill ' + a.name + '? Its takeDown() runs and it leaves the platform.')) act('kill', { agent: a.name });
+          });
+          const m = el('button', 'Message', 'message');
+          m.type = 'button';
+          m.addEventListener('click', () => { $('send-to').value = a.name; $('send-to').focus(); });
+          acts.appendChild(k);
+          acts.appendChild(m);
+        }
+        tr.appendChild(acts);
+        tbody.appendChild(tr);
+      }
     }
     return n;
+  }
+  function formParams(form) {
+    const o = {};
+    for (const e of form.elements) if (e.name) o[e.name] = e.value;
+    return o;
+  }
+  $('start-agent').addEventListener('click', () => act('start', formParams($('start-form'))));
+  $('send-message').addEventListener('click', () => act('send', formParams($('send-form'))));
+  function drawMail(list) {
+    const tbody = $('mail').tBodies[0];
+    tbody.replaceChildren();
+    if (!list.length) {
+      const td = el('td', 'Nothing yet: send a message above, and its answers come here.', 'hint');
+      td.colSpan = 6;
+      tbody.appendChild(el('tr')).appendChild(td);
+    }
+    for (const m of list.slice().reverse()) {
+      const tr = el('tr', null, 'pick');
+      tr.dataset.dir = m.dir;
+      tr.dataset.performative = m.performative;
+      tr.appendChild(el('td', clock(m.atMs)));
+      tr.appendChild(el('td', m.dir));
+      tr.appendChild(el('td', m.performative));
+      tr.appendChild(el('td', m.from));
+      tr.appendChild(el('td', m.conversation));
+      const c = /:content\s+"((?:[^"\\]|\\.)*)"/.exec(m.message);
+      tr.appendChild(el('td', c ? c[1] : ''));
+      tr.title = m.message;
+      tbody.appendChild(tr);
+    }
   }
   function drawPlatform() {
     const p = state.platform;
@@ -127,7 +222,9 @@
     }
     box.appendChild(el('div', 'This console is ' + p.console + ' (' + p.role.toLowerCase() + ').', 'hint'));
     const q = $('search').value.trim();
-    const n = fillAgents($('lal').tBodies[0], p.lal, q, p.container) + fillAgents($('gal').tBodies[0], p.gal, q, p.container);
+    const n = drawAgents(p, q);
+    $('lal-count').textContent = p.lal.length;
+    $('gal-count').textContent = p.gal.length;
     $('search-count').textContent = q ? n + ' agents offer a matching service' : (p.lal.length + p.gal.length) + ' agents';
     const f = $('facilitators');
     f.replaceChildren();
@@ -263,9 +360,14 @@
     d.replaceChildren();
     const msgs = visible().filter((m, i, all) => m.dir === 'sent' || !all.some((o) => o.dir === 'sent'
       && o.from === m.from && o.to === m.to && o.message === m.message));
+    // The agents picked have a lifeline each; everybody they talk to shares one, "other agents"
+    // (JADE's sniffer does the same), so that a busy agent's story stays as wide as the page.
+    const OTHERS = 'other agents';
+    const grouped = state.picked.size > 0 && !state.conversation;
+    const lane = (a) => (grouped && !state.picked.has(a) ? OTHERS : a);
     const lanes = [];
     for (const a of [...state.picked]) if (!lanes.includes(a)) lanes.push(a);
-    for (const m of msgs) for (const a of [m.from, m.to]) if (!lanes.includes(a)) lanes.push(a);
+    for (const m of msgs) for (const a of [m.from, m.to]) if (!lanes.includes(lane(a))) lanes.push(lane(a));
     // The lifelines' names in a header of their own, which stays at the top as the story scrolls.
     const W = 170, head = 34, top = 6, step = 28, T = 90;
     const height = top + 20 + msgs.length * step;
@@ -279,14 +381,15 @@
     lanes.forEach((a, i) => {
       const x = T + 20 + i * W + W / 2;
       h.appendChild(svg('rect', { x: x - 75, y: 5, width: 150, height: 24, rx: 4, fill: '#e3effd', stroke: '#7aa7d6' }));
-      h.appendChild(svg('text', { x: x, y: 21, 'text-anchor': 'middle', class: 'lifeline' }, a.split('@')[0]));
+      h.appendChild(svg('text', { x: x, y: 21, 'text-anchor': 'middle', class: 'lifeline', 'data-agent': a }, a === OTHERS ? a : a.split('@')[0]));
       h.appendChild(svg('line', { x1: x, y1: 29, x2: x, y2: head, stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
       d.appendChild(svg('line', { x1: x, y1: 0, x2: x, y2: Math.max(86, height), stroke: '#b9c2d0', 'stroke-dasharray': '4 3' }));
     });
     msgs.forEach((m, i) => {
       const y = top + 10 + i * step;
-      const x1 = T + 20 + lanes.indexOf(m.from) * W + W / 2;
-      const x2 = T + 20 + lanes.indexOf(m.to) * W + W / 2;
+      const x1 = T + 20 + lanes.indexOf(lane(m.from)) * W + W / 2;
+      const x2 = T + 20 + lanes.indexOf(lane(m.to)) * W + W / 2;
+      const other = lane(m.from) === OTHERS ? m.from : lane(m.to) === OTHERS ? m.to : null;
       const g = svg('g', { class: 'arrow', 'data-performative': m.performative, 'data-at': clock(m.atMs) });
       g.appendChild(svg('text', { x: 6, y: y + 4, fill: '#7b8494', class: 'at' }, clock(m.atMs)));
       const color = /FAILURE|REFUSE|NOT-UNDERSTOOD/.test(m.performative) ? '#c0392b' : '#2d6cb5';
@@ -294,7 +397,8 @@
       const dir = x2 > x1 ? -1 : 1;
       g.appendChild(svg('polygon', { points: `${x2},${y} ${x2 + dir * 8},${y - 4} ${x2 + dir * 8},${y + 4}`, fill: color }));
       g.appendChild(svg('text', { x: (x1 + x2) / 2, y: y - 4, 'text-anchor': 'middle', fill: color },
-        m.performative + (m.conversation ? ' · ' + m.conversation : '') + (m.missed ? ' (+' + m.missed + ' missed)' : '')));
+        m.performative + (m.conversation ? ' · ' + m.conversation : '') + (other ? ' · ' + (lane(m.from) === OTHERS ? 'from ' : 'to ')
+          + other.split('@')[0] : '') + (m.missed ? ' (+' + m.missed + ' missed)' : '')));
       g.addEventListener('click', () => { $('message').textContent = clock(m.atMs) + '  ' + m.dir + ' by ' + m.by + '\n' + m.message; });
       d.appendChild(g);
     });

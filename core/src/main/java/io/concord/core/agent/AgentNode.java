@@ -174,6 +174,16 @@ final class AgentNode implements StackHost {
     }
 
     @Override
+    public int mailboxSize() {
+        return agent.mailboxSize();
+    }
+
+    @Override
+    public void deleteAgent() {
+        agent.doDelete();
+    }
+
+    @Override
     public void backpressure(boolean on) {
         runtime.backpressure(this, on);
     }

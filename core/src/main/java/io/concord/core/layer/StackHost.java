@@ -52,6 +52,19 @@ public interface StackHost {
         return false;
     }
 
+    /** Messages waiting in the node's agent's mailbox, or -1 if the node has no mailbox. */
+    default int mailboxSize() {
+        return -1;
+    }
+
+    /**
+     * Deletes the node's agent after its current step, as {@code doDelete()} does: its
+     * {@code takeDown()} runs and it leaves the platform (the observation service's {@code kill}).
+     * Nothing by default.
+     */
+    default void deleteAgent() {
+    }
+
     /** The event type fired down the stack when a full mailbox has been taken down again. */
     String INBOX_DRAINED = "inbox-drained";
 
