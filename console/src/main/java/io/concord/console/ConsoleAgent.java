@@ -140,8 +140,8 @@ final class ConsoleAgent extends Agent {
 
     private void tick() {
         platform();
-        if (hub.open() == 0 && sniffing.isEmpty()) {
-            return;   // nobody watches: nothing to ask the agents
+        if (hub.open() == 0 && sniffing.isEmpty() && !hub.recording()) {
+            return;   // nobody watches or records: nothing to ask the agents
         }
         long now = currentTimeMillis();
         Set<String> known = known();

@@ -127,9 +127,11 @@ final class ConsoleServer {
                 act(x, path.substring("/api/views/".length()));
             } else if (path.startsWith("/api/agents/")) {
                 agentAction(x, path.substring("/api/agents/".length()));
+            } else if (path.equals("/api/record/start") || path.equals("/api/record/stop")) {
+                record(x, path.endsWith("start"));
             } else {
                 refuse(x, 405, "only an action may be posted: a view's at /api/views/{view}/{action}, "
-                        + "the console's at /api/agents/start, /api/agents/kill and /api/agents/send");
+                        + "the console's at /api/agents/start, /api/agents/kill, /api/agents/send, /api/record/start and /api/record/stop");
             }
             return;
         }
@@ -146,12 +148,15 @@ final class ConsoleServer {
             case "/api/views" -> views(x);
             case "/api/bench" -> benchList(x);
             case "/api/drops" -> answer(x, 200, "application/json", json.writeValueAsString(console.drops()));
+            case "/api/recordings" -> recordings(x);
             default -> {
-                if (path.startsWith("/api/bench/")) {
+                if (path.startsWith("/api/recordings/")) {
+                    recordingFile(x, path.substring("/api/recordings/".length()));
+                } else if (path.startsWith("/api/bench/")) {
                     benchFile(x, path.substring("/api/bench/".length()));
                 } else {
                     refuse(x, 404, "no such page: " + path + "; the console serves /, /api/events, /api/platform, "
-                            + "/api/safety, /api/views, /api/bench");
+                            + "/api/safety, /api/mail, /api/views, /api/bench, /api/recordings");
                 }
             }
         }
@@ -378,6 +383,63 @@ final class ConsoleServer {
             }
         }
         return b.toByteArray();
+    }
+
+    /** Starts or stops a recording: the same guards as an action; {@code name} names the file. */
+    private void record(HttpExchange x, boolean start) throws IOException {
+        if (!fromThePage(x)) {
+            return;
+        }
+        byte[] body = readBody(x);
+        Map<String, String> params;
+        try {
+            params = body == null ? null : query(new String(body, StandardCharsets.UTF_8));
+        } catch (IllegalArgumentException e) {
+            params = null;
+        }
+        if (params == null) {
+            refuse(x, 400, "malformed form parameters (at most " + MAX_BODY + " bytes)");
+            return;
+        }
+        try {
+            String said = start ? "recording to " + console.startRecording(params.get("name")).getFileName() : console.stopRecording();
+            answer(x, 200, "application/json", json.createObjectNode().put("ok", true)
+                    .put("message", said == null ? "no recording was under way" : start ? said : "recorded " + said).toString());
+        } catch (IllegalArgumentException e) {
+            refuse(x, 400, e.getMessage());
+        }
+    }
+
+    private void recordings(HttpExchange x) throws IOException {
+        Path dir = console.config().recordings();
+        ObjectNode o = json.createObjectNode();
+        Path now = console.recording();
+        o.put("recording", now == null ? null : now.getFileName().toString());
+        ArrayNode a = o.putArray("files");
+        if (Files.isDirectory(dir)) {
+            try (var s = Files.list(dir)) {
+                for (Path p : s.sorted().toList()) {
+                    String n = p.getFileName().toString();
+                    if (Console.recordingName(n) && Files.isRegularFile(p)) {
+                        a.addObject().put("name", n).put("bytes", Files.size(p));
+                    }
+                }
+            }
+        }
+        answer(x, 200, "application/json", o.toString());
+    }
+
+    private void recordingFile(HttpExchange x, String name) throws IOException {
+        if (!Console.recordingName(name)) {
+            refuse(x, 400, "a recording is named by its file name (letters, digits, . _ -, ending in .jsonl), got '" + name + "'");
+            return;
+        }
+        Path p = console.config().recordings().resolve(name);
+        if (!Files.isRegularFile(p)) {
+            refuse(x, 404, "no such recording: " + name + "; see /api/recordings");
+            return;
+        }
+        answer(x, 200, "application/x-ndjson; charset=utf-8", Files.readAllBytes(p));
     }
 
     private void benchList(HttpExchange x) throws IOException {

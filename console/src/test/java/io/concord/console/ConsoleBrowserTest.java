@@ -57,13 +57,44 @@ class ConsoleBrowserTest {
         }
     }
 
+    /** A view whose one dot moves a metre to the right at each snapshot: where it is says which snapshot is drawn. */
+    static final class Dots implements ConsoleView {
+        final java.util.concurrent.atomic.AtomicInteger snapshots = new java.util.concurrent.atomic.AtomicInteger();
+
+        @Override
+        public String id() {
+            return "dots";
+        }
+
+        @Override
+        public String title() {
+            return "Dots";
+        }
+
+        @Override
+        public long periodMs() {
+            return 100;
+        }
+
+        @Override
+        public String snapshot() {
+            int n = snapshots.incrementAndGet();
+            return "{\"bounds\":[0,0,1000,10],\"shapes\":[{\"type\":\"circle\",\"id\":\"dot\",\"x\":" + n
+                    + ",\"y\":5,\"r\":1}],\"tables\":[]}";
+        }
+    }
+
+    static final Dots DOTS = new Dots();
+
     @BeforeAll
     static void start() {
         platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build();
         platform.startAgent("seller1", new Seller());
         platform.startAgent("seller2", new Seller());
         platform.startAgent("buyer", new Buyer());
-        console = Console.start(platform, Console.Config.port(0).withReports(java.nio.file.Path.of("..", "bench", "report")));
+        console = Console.start(platform, Console.Config.port(0).withReports(java.nio.file.Path.of("..", "bench", "report"))
+                .withRecordings(java.nio.file.Path.of("target", "recordings")));
+        console.addView(DOTS);
         browser = new Browser();
     }
 
@@ -192,6 +223,83 @@ class ConsoleBrowserTest {
             browser.until(d -> !far.runtime().agents().contains(new AID("far1@console-ui")));
             browser.until(d -> !rows("agents").contains("far1@console-ui"));
         }
+    }
+
+    /**
+     * Replay, which neither JADE nor a fleet manager has: a run recorded from the page, played
+     * back with the slider, shows each view as it was at that time (the dot where the recorded
+     * snapshot had it), and the page goes back to live.
+     */
+    @Test
+    void aRecordingIsPlayedBackWithTheSlider() throws Exception {
+        browser.driver.get(console.uri());
+        browser.until(d -> !d.findElements(By.cssSelector("nav button[data-view='dots']")).isEmpty());
+        tab("replay");
+        String name = "dots-" + System.nanoTime() + ".jsonl";
+        fill("record-form", "name", name);
+        click("#record-start");
+        browser.until(d -> d.findElement(By.id("record-said")).getText().equals("recording to " + name));
+        int from = DOTS.snapshots.get();
+        browser.until(d -> DOTS.snapshots.get() >= from + 12);
+        click("#record-stop");
+        browser.until(d -> d.findElement(By.id("record-said")).getText().startsWith("recorded " + name + ": "));
+        browser.until(d -> !d.findElements(By.cssSelector("#recordings a[data-recording='" + name + "']")).isEmpty());
+
+        // What the file says the dot was at, some way into the run.
+        List<com.fasterxml.jackson.databind.JsonNode> lines = new java.util.ArrayList<>();
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        for (String l : java.nio.file.Files.readAllLines(java.nio.file.Path.of("target", "recordings", name))) {
+            lines.add(json.readTree(l));
+        }
+        long t0 = lines.get(0).get("t").asLong();
+        List<com.fasterxml.jackson.databind.JsonNode> dots = lines.stream().filter(l -> l.get("topic").asText().equals("view-dots")).toList();
+        assertTrue(dots.size() >= 10, "snapshots recorded: " + dots.size());
+        int k = dots.size() / 2;
+        while (k + 1 < dots.size() && dots.get(k + 1).get("t").asLong() == dots.get(k).get("t").asLong()) {
+            k++;   // the last of those recorded in the same millisecond is the one shown then
+        }
+        long at = dots.get(k).get("t").asLong();
+        String x = dots.get(k).get("data").get("shapes").get(0).get("x").asText();
+
+        click("#recordings a[data-recording='" + name + "']");
+        browser.until(d -> d.findElement(By.id("replay-bar")).isDisplayed());
+        click("nav button[data-view='dots']");
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const s = document.getElementById('replay-slider'); s.value = arguments[0]; s.dispatchEvent(new Event('input'));", at - t0);
+        browser.until(d -> String.valueOf(at).equals(d.findElement(By.id("replay-time")).getAttribute("data-t")));
+        assertEquals(x, browser.driver.findElement(By.id("dot")).getAttribute("cx"), "the dot where the recording had it at that time");
+        browser.screenshot("console-replay");
+        // Live again: the dot moves on past anything recorded.
+        click("#replay-live");
+        browser.until(d -> !d.findElement(By.id("replay-bar")).isDisplayed());
+        int last = dots.get(dots.size() - 1).get("data").get("shapes").get(0).get("x").asInt();
+        browser.until(d -> Integer.parseInt(d.findElement(By.id("dot")).getAttribute("cx")) > last);
+    }
+
+    /**
+     * A recording of a view this console has not got (the demo's {@code --virtual --record}, opened
+     * in any console): played back, the view gets a tab of its own, and its snapshot is drawn.
+     */
+    @Test
+    void aRecordingOfAnotherRunsViewGetsATab() throws Exception {
+        String name = "ward-" + System.nanoTime() + ".jsonl";
+        java.nio.file.Path f = java.nio.file.Path.of("target", "recordings", name);
+        java.nio.file.Files.createDirectories(f.getParent());
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < 5; i++) {
+            b.append("{\"t\":").append(1000 + 250 * i).append(",\"topic\":\"view-ward\",\"data\":{\"bounds\":[0,0,10,10],\"shapes\":[")
+                    .append("{\"type\":\"circle\",\"id\":\"bed\",\"x\":").append(i).append(",\"y\":2,\"r\":0.5}],\"tables\":[]}}\n");
+        }
+        java.nio.file.Files.writeString(f, b);
+        browser.driver.get(console.uri());
+        tab("replay");
+        click("#recordings a[data-recording='" + name + "']");
+        browser.until(d -> d.findElement(By.id("replay-bar")).isDisplayed());
+        click("nav button[data-view='ward']");
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const s = document.getElementById('replay-slider'); s.value = 500; s.dispatchEvent(new Event('input'));");
+        browser.until(d -> "2".equals(d.findElement(By.id("bed")).getAttribute("cx")));
+        assertEquals("0.5 s of 1.0 s", browser.driver.findElement(By.id("replay-time")).getText());
     }
 
     /** Shows the sniffer and picks the buyer, once the picker lists it. */

@@ -113,6 +113,7 @@ public final class HospitalView implements ConsoleView {
         }
     }
 
+    /** The view of a ward; {@code desk} asks for transports, or {@code null} for a view without the form's desk (a recording). */
     public HospitalView(HospitalWorld world, Hospital hospital, FrontDesk desk) {
         this.world = world;
         this.hospital = hospital;
@@ -162,6 +163,9 @@ public final class HospitalView implements ConsoleView {
         }
         if (priority < 0 || priority > 3 || unload < 0 || unload > 3_600) {
             throw new IllegalArgumentException("priority is 0 to 3 and unload 0 to 3600 s");
+        }
+        if (desk == null) {
+            throw new IllegalArgumentException("this view has no front desk (a recording of a run): nothing to ask");
         }
         return desk.ask(from, to, priority, unload);
     }
@@ -461,7 +465,7 @@ public final class HospitalView implements ConsoleView {
         table(tables, "chairs", "Chairs at " + String.format(Locale.ROOT, "t = %.0f s", world.worldTimeNs() / 1e9),
                 List.of("chair", "pose", "speed", "task", "safety"), chairs);
         ArrayNode asked = json.createArrayNode();
-        for (FrontDesk.Asked a : List.copyOf(desk.asked)) {
+        for (FrontDesk.Asked a : desk == null ? List.<FrontDesk.Asked>of() : List.copyOf(desk.asked)) {
             asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
         }
         table(tables, "transports", "Transports asked here", List.of("id", "from → to", "state", "detail"), asked);

@@ -83,6 +83,8 @@
       b.dataset.tab === tab && (!view || b.dataset.view === view.id)));
     document.querySelectorAll('.tab').forEach((s) => s.classList.toggle('active', s.id === tab));
     if (tab === 'bench') loadBench();
+    if (tab === 'replay') loadRecordings();
+    if (state.replay) replayAt(state.replay.at);
     if (tab === 'view') drawForm();
     if (tab === 'sniffer') drawDiagram();
   }
@@ -581,6 +583,102 @@
       }
     });
   }
+
+  // ---- replay: a recording played back in the same views, with a time slider ------------------
+  function loadRecordings() {
+    fetch(url('api/recordings')).then((r) => r.json()).then((o) => {
+      $('record-said').textContent = o.recording ? 'recording to ' + o.recording : '';
+      const l = $('recordings');
+      l.replaceChildren();
+      if (!o.files.length) l.appendChild(el('li', 'None yet: Record above, or start the demo with --record FILE.', 'hint'));
+      for (const f of o.files) {
+        const li = el('li');
+        const a = el('a', f.name);
+        a.href = '#';
+        a.dataset.recording = f.name;
+        a.addEventListener('click', (e) => { e.preventDefault(); openRecording(f.name); });
+        li.appendChild(a);
+        li.appendChild(el('span', ' ' + Math.max(1, Math.round(f.bytes / 1024)) + ' KiB', 'hint'));
+        l.appendChild(li);
+      }
+    });
+  }
+  function recordAction(what) {
+    const body = new URLSearchParams(formParams($('record-form')));
+    fetch(url('api/record/' + what), { method: 'POST', body: body, headers: { 'X-Concord-Console': '1' } })
+      .then((r) => r.text().then((t) => { $('record-said').textContent = r.ok ? JSON.parse(t).message : t; loadRecordings(); }));
+  }
+  $('record-start').addEventListener('click', () => recordAction('start'));
+  $('record-stop').addEventListener('click', () => recordAction('stop'));
+  function openRecording(name) {
+    fetch(url('api/recordings/' + name)).then((r) => r.text()).then((text) => {
+      const events = text.split('\n').filter((l) => l.trim()).map((l) => JSON.parse(l));
+      if (!events.length) { $('record-said').textContent = name + ' holds nothing yet'; return; }
+      if (state.source) { state.source.close(); state.source = null; }
+      $('status').textContent = 'replay';
+      $('status').className = 'status down';
+      // A view the recording has and this console has not (a recording of another run) gets a tab.
+      for (const e of events) {
+        if (e.topic.startsWith('view-') && !state.views.some((v) => 'view-' + v.id === e.topic)) {
+          const v = { id: e.topic.slice(5), title: e.topic.slice(5), actions: [] };
+          state.views.push(v);
+          const b = el('button', v.title);
+          b.dataset.tab = 'view';
+          b.dataset.view = v.id;
+          b.addEventListener('click', () => show('view', v));
+          $('view-tabs').appendChild(b);
+        }
+      }
+      const t0 = events[0].t, t1 = events[events.length - 1].t;
+      state.replay = { name: name, events: events, t0: t0, t1: t1, at: t0 };
+      $('replay-name').textContent = name;
+      $('replay-slider').max = t1 - t0;
+      $('replay-slider').value = 0;
+      $('replay-bar').hidden = false;
+      replayAt(t0);
+    });
+  }
+  // Every tab drawn as it was at time T: the last event of each topic until then, the messages sniffed until then.
+  function replayAt(T) {
+    const r = state.replay;
+    if (!r) return;
+    r.at = T;
+    const last = {};
+    const sniffed = [];
+    for (const e of r.events) {
+      if (e.t > T) break;
+      if (e.topic === 'sniff') sniffed.push(e.data); else last[e.topic] = e.data;
+    }
+    state.sniffed = sniffed.slice(-500);
+    if (last.platform) { state.platform = last.platform; drawPlatform(); }
+    if (last.safety) { state.safety = last.safety; drawSafety(); drawPlatform(); }
+    drawMail(last.mail || []);
+    drawDiagram();
+    if (state.view && last['view-' + state.view.id]) drawScene(last['view-' + state.view.id]);
+    $('replay-time').textContent = ((T - r.t0) / 1000).toFixed(1) + ' s of ' + ((r.t1 - r.t0) / 1000).toFixed(1) + ' s';
+    $('replay-time').dataset.t = T;
+  }
+  $('replay-slider').addEventListener('input', () => { stopPlaying(); replayAt(state.replay.t0 + Number($('replay-slider').value)); });
+  function stopPlaying() {
+    if (state.playing) { clearInterval(state.playing); state.playing = null; $('replay-play').textContent = 'Play'; }
+  }
+  $('replay-play').addEventListener('click', () => {
+    if (state.playing) { stopPlaying(); return; }
+    $('replay-play').textContent = 'Pause';
+    state.playing = setInterval(() => {
+      const r = state.replay;
+      const T = Math.min(r.t1, r.at + 100);
+      $('replay-slider').value = T - r.t0;
+      replayAt(T);
+      if (T >= r.t1) stopPlaying();
+    }, 100);
+  });
+  $('replay-live').addEventListener('click', () => {
+    stopPlaying();
+    state.replay = null;
+    $('replay-bar').hidden = true;
+    connect(true);
+  });
 
   loadViews();
 })();
