@@ -337,6 +337,8 @@ final class ConsoleServer {
             refuse(x, 400, "malformed form parameters: " + e.getMessage());
             return;
         }
+        java.net.InetSocketAddress client = x.getRemoteAddress();
+        params.put(ConsoleView.CLIENT, client == null ? "" : client.getAddress().getHostAddress() + ":" + client.getPort());
         CompletableFuture<String> done = new CompletableFuture<>();
         console.platform().runtime().execute(() -> {
             try {

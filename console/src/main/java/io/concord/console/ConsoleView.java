@@ -24,6 +24,12 @@ public interface ConsoleView {
     /** The state to draw, as one JSON object. Called on the agents' loop. */
     String snapshot();
 
+    /**
+     * The parameter the console adds to every action's: the address of the browser that asked
+     * ({@code 127.0.0.1:53122}), for an audit trail. A browser's own value for it is replaced.
+     */
+    String CLIENT = "console.client";
+
     /** The actions a browser may ask for ({@code "transport"}); none by default. */
     default List<String> actions() {
         return List.of();

@@ -98,9 +98,55 @@ class HospitalConsoleTest {
                 browser.until(d -> d.findElement(By.id("view-said")).getText().contains("chair1 is not held: it is armed"));
                 browser.screenshot("hospital-console");
                 assertTrue(browser.driver.findElement(By.id("bids")).getText().contains("chair1"));
+                theAuditTrailAndATransportsStory(browser);
                 replayShowsTheChairWhereItWas(console, browser, recording);
             }
         }
+    }
+
+    /**
+     * The audit trail: the transport asked on the page is there with who asked and from where (the
+     * page's own address), its chair and its phases; filtered, the CSV export holds what is kept;
+     * a click on it shows its story, from the call for proposals on.
+     */
+    private static void theAuditTrailAndATransportsStory(Browser browser) {
+        browser.until(d -> {
+            try {
+                String row = d.findElement(By.cssSelector("#audit tr[data-key='T1']")).getText();
+                return row.contains("desk@hospital-ui (desk-1), console client 127.0.0.1:") && row.contains("control-chair1");
+            } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        WebElement filter = browser.driver.findElement(By.cssSelector("#tw-audit .table-filter"));
+        filter.sendKeys("T9");
+        browser.until(d -> d.findElements(By.cssSelector("#audit tr[data-key]")).isEmpty());
+        filter.clear();
+        filter.sendKeys("T1");
+        browser.until(d -> !d.findElements(By.cssSelector("#audit tr[data-key='T1']")).isEmpty());
+        String csv = java.net.URLDecoder.decode(browser.driver.findElement(By.cssSelector("#tw-audit .table-csv")).getAttribute("href")
+                .substring("data:text/csv;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(csv.startsWith("task,asked_by,conversation,origin,asked_at,from,to,priority,chair,auctions,awarded,")
+                && csv.contains("\r\nT1,desk@hospital-ui,desk-1,127.0.0.1:") && csv.contains(",3,9,3,control-chair1,"), csv
+                + "\ntable: " + browser.driver.findElement(By.id("audit")).getText());
+        browser.until(d -> {
+            try {
+                d.findElement(By.cssSelector("#audit tr[data-key='T1']")).click();
+                return true;
+            } catch (org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        browser.until(d -> {
+            try {
+                String story = d.findElement(By.id("story")).getText();
+                return story.contains("CFP T1") && story.contains("ACCEPT control-chair1 for T1");
+            } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript("document.getElementById('tw-audit').scrollIntoView()");
+        browser.screenshot("hospital-audit");
     }
 
     /**

@@ -490,23 +490,69 @@
       if (sh.title) e.appendChild(svg('title', {}, sh.title));
       s.appendChild(e);
     }
-    const t = $('view-tables');
-    t.replaceChildren();
-    for (const tb of scene.tables || []) {
-      t.appendChild(el('h3', tb.title));
-      const table = el('table');
-      table.id = tb.id || '';
+    drawTables(scene.tables || []);
+  }
+  // A view's tables: each with a filter (rows holding the text) and an export as CSV; a table
+  // that names an action makes its rows clickable (the hospital's audit trail asks for a story).
+  // Each table's frame is made once, so the filter being typed in is not replaced by the next snapshot.
+  function csvCell(v) {
+    const t = v == null ? '' : String(v);
+    return /[",\n\r]/.test(t) ? '"' + t.replace(/"/g, '""') + '"' : t;
+  }
+  function drawTables(tables) {
+    const ids = new Set(tables.map((tb, i) => 'tw-' + (tb.id || i)));
+    for (const box of [$('view-tables'), $('view-side-tables')]) for (const w of [...box.children]) if (!ids.has(w.id)) w.remove();
+    tables.forEach((tb, i) => {
+      const wid = 'tw-' + (tb.id || i);
+      let w = $(wid);
+      if (!w) {
+        w = el('div', null, 'table-wrap');
+        w.id = wid;
+        const h = el('h3');
+        const f = el('input', null, 'table-filter');
+        f.type = 'search';
+        f.placeholder = 'filter';
+        f.addEventListener('input', () => drawTables(state.lastTables || []));
+        const x = el('a', 'CSV', 'table-csv');
+        x.download = (tb.id || 'table') + '.csv';
+        const table = el('table');
+        table.id = tb.id || '';
+        w.append(h, f, x, table);
+        (tb.wide ? $('view-tables') : $('view-side-tables')).appendChild(w);
+      }
+      w.querySelector('h3').textContent = tb.title;
+      const q = w.querySelector('.table-filter').value.trim().toLowerCase();
+      const keep = (r) => !q || r.some((c) => String(c).toLowerCase().includes(q));
+      const table = w.querySelector('table');
+      table.replaceChildren();
       const hr = el('tr');
       tb.columns.forEach((c) => hr.appendChild(el('th', c)));
       table.appendChild(hr);
-      for (const r of tb.rows) {
+      const rows = tb.rows.filter(keep);
+      for (const r of rows) {
         const tr = el('tr');
         r.forEach((c) => tr.appendChild(el('td', c)));
+        if (tb.click) {
+          tr.className = 'pick';
+          tr.dataset.key = r[tb.click.column];
+          tr.addEventListener('click', () => viewAction(tb.click.action, { [tb.click.param]: r[tb.click.column] }));
+        }
         table.appendChild(tr);
       }
-      if (!tb.rows.length) { const tr = el('tr'); const td = el('td', 'none', 'hint'); td.colSpan = tb.columns.length; tr.appendChild(td); table.appendChild(tr); }
-      t.appendChild(table);
-    }
+      if (!rows.length) { const tr = el('tr'); const td = el('td', tb.rows.length ? 'none matches' : 'none', 'hint'); td.colSpan = tb.columns.length; tr.appendChild(td); table.appendChild(tr); }
+      // The export: what the filter keeps, in the table's own CSV form if it gives one (full times, more columns).
+      const cols = tb.csv ? tb.csv.columns : tb.columns;
+      const all = tb.csv ? tb.csv.rows : tb.rows;
+      const kept = all.filter((r, k) => keep(tb.rows[k] || r));
+      w.querySelector('.table-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(
+        [cols].concat(kept).map((r) => r.map(csvCell).join(',')).join('\r\n') + '\r\n');
+    });
+    state.lastTables = tables;
+  }
+  function viewAction(action, params) {
+    fetch(url('api/views/' + state.view.id + '/' + action), { method: 'POST', body: new URLSearchParams(params),
+      headers: { 'X-Concord-Console': '1' } })
+      .then((r) => r.text().then((t) => { $('view-said').textContent = r.ok ? JSON.parse(t).message : t; }));
   }
 
   // ---- bench ----------------------------------------------------------------------------------
