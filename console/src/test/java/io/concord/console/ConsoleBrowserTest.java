@@ -430,6 +430,11 @@ class ConsoleBrowserTest {
         String export = java.net.URLDecoder.decode(browser.driver.findElement(By.id("sniff-export")).getAttribute("href")
                 .substring("data:text/plain;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
         assertTrue(export.contains("(AGREE") && export.contains("while-away") && !export.contains("(REQUEST"), export);
+        // And as a picture: an SVG of the lifelines and the arrows shown.
+        String picture = java.net.URLDecoder.decode(browser.driver.findElement(By.id("sniff-export-svg")).getAttribute("href")
+                .substring("data:image/svg+xml;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(picture.startsWith("<svg xmlns=\"http://www.w3.org/2000/svg\"") && picture.contains(">buyer</text>")
+                && picture.contains("AGREE · while-away") && !picture.contains("REQUEST ·"), picture);
         browser.driver.findElement(By.id("sniff-filter")).clear();
         browser.driver.findElement(By.id("sniff-filter")).sendKeys(" ");
         browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow[data-performative='REQUEST']")).size() >= 2);

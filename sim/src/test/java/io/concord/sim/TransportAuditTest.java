@@ -53,6 +53,9 @@ class TransportAuditTest {
             }
             assertTrue(times.get(times.size() - 1) > times.get(0), "the transport took time: " + e);
             String story = String.join("\n", e.story().stream().map(TransportAudit.Line::text).toList());
+            // Its way node by node, and what it waited for on it (a door on the way to room A2: A2).
+            assertTrue(story.contains(": to-pickup at node 2") && story.contains(": to-dropoff at node 10"), "the route in the story:\n" + story);
+            assertTrue(story.contains("waiting for door"), "the doors in the story:\n" + story);
             for (String said : List.of("transport T1 from node 3 to node 9", "CFP T1", "proposes cost", "ACCEPT " + e.chair() + " for T1",
                     "T1 on " + e.chair() + ": loading", "reports T1 done")) {
                 assertTrue(story.contains(said), "the story lacks '" + said + "':\n" + story);

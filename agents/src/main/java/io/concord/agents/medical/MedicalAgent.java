@@ -296,6 +296,11 @@ public class MedicalAgent extends Agent {
         if (before == null || !before.phase().equals(p.phase())) {
             log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
                     + (p.patientOnBoard() ? " (the patient is on board)" : ""));
+        } else if (before.node() != p.node() || !java.util.Objects.equals(before.waits(), p.waits())) {
+            // The way it goes, node by node, and what it waits for (its route, a door): the story
+            // has it; the log keeps to the phases.
+            audit.logged(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
+                    + (p.waits() == null ? "" : ", waiting for " + p.waits()), currentTimeMillis());
         }
         if (awaitedAboard.containsKey(p.task())) {
             log.accept(getLocalName() + ": " + m.getSender().localName() + " is heard again with " + p.task() + "'s patient at node " + p.node());

@@ -405,6 +405,19 @@
       d.appendChild(g);
     });
     if (follow) wrap.scrollTop = wrap.scrollHeight;
+    // What is drawn, as a picture: the lifelines' header over the diagram, in one SVG file.
+    const pic = document.createElementNS(SVG, 'svg');
+    pic.setAttribute('xmlns', SVG);
+    pic.setAttribute('width', width);
+    pic.setAttribute('height', head + Math.max(86, height));
+    pic.appendChild(svg('style', {}, 'text { font: 12px sans-serif; }'));
+    pic.appendChild(svg('rect', { width: '100%', height: '100%', fill: '#ffffff' }));
+    const top1 = svg('g', {});
+    for (const c of h.childNodes) top1.appendChild(c.cloneNode(true));
+    const body = svg('g', { transform: 'translate(0,' + head + ')' });
+    for (const c of d.childNodes) body.appendChild(c.cloneNode(true));
+    pic.append(top1, body);
+    $('sniff-export-svg').href = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(pic));
     // What is drawn, as text: each message's time, who saw it, and the message in FIPA's string form.
     $('sniff-export').href = 'data:text/plain;charset=utf-8,' + encodeURIComponent(msgs.map((m) => clock(m.atMs) + '  '
       + m.dir + ' by ' + m.by + '\n' + m.message).join('\n\n') + '\n');
