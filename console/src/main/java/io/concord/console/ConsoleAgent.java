@@ -398,6 +398,8 @@ final class ConsoleAgent extends Agent {
         o.put("atMs", now);
         ArrayNode threats = o.putArray("threats");
         Threats.ORDER.forEach(threats::add);
+        ArrayNode expected = o.putArray("expected");
+        Threats.EXPECTED.forEach(expected::add);
         ArrayNode agents = o.putArray("agents");
         for (Map.Entry<String, JsonNode> e : status.entrySet()) {
             JsonNode s = e.getValue();

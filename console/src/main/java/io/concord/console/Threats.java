@@ -11,8 +11,12 @@ import java.util.List;
 final class Threats {
     /** The column of copies sent on purpose: not a threat. */
     static final String COPIES = "copies (expected)";
-    static final List<String> ORDER = List.of(COPIES, "repetition", "deletion", "insertion", "resequence", "corruption", "delay",
-            "masquerade", "flooding", "other");
+    /** The column of frames sealed under another platform's key (one sharing the port range), skipped: not a threat. */
+    static final String OTHER_PLATFORMS = "other platforms (skipped)";
+    static final List<String> ORDER = List.of(COPIES, OTHER_PLATFORMS, "repetition", "deletion", "insertion", "resequence", "corruption",
+            "delay", "masquerade", "flooding", "other");
+    /** The columns that are no threat: shown grey, never counted towards the alarm. */
+    static final List<String> EXPECTED = List.of(COPIES, OTHER_PLATFORMS);
 
     private Threats() {
     }
@@ -22,6 +26,9 @@ final class Threats {
         switch (reason) {
             case "copy" -> {
                 return COPIES;
+            }
+            case "foreign-key" -> {
+                return OTHER_PLATFORMS;
             }
             case "repeated", "replayed-handshake" -> {
                 return "repetition";

@@ -85,10 +85,14 @@ class ConsoleBrowserTest {
     }
 
     static final Dots DOTS = new Dots();
+    /** The test platform's key (the wire format's test key, key id 19), and another platform's (another id). */
+    static final io.concord.layers.security.PlatformKey KEY = io.concord.layers.security.PlatformKey.ofHex(
+            "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f");
+    static final io.concord.layers.security.PlatformKey OTHER_KEY = io.concord.layers.security.PlatformKey.ofHex("11".repeat(32));
 
     @BeforeAll
     static void start() {
-        platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build();
+        platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).platformKey(KEY).build();
         platform.startAgent("seller1", new Seller());
         platform.startAgent("seller2", new Seller());
         platform.startAgent("buyer", new Buyer());
@@ -212,7 +216,7 @@ class ConsoleBrowserTest {
     /** An agent in another JVM (here: another runtime, over real sockets) is asked to leave through its observation service. */
     @Test
     void anAgentOfAnotherRuntimeIsKilledThroughItsObservationService() {
-        try (Platform far = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build()) {
+        try (Platform far = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).platformKey(KEY).build()) {
             far.startAgent("far1", new Buyer());
             browser.driver.get(console.uri());
             tab("platform");
@@ -480,6 +484,40 @@ class ConsoleBrowserTest {
         browser.driver.findElement(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).click();
         browser.until(d -> d.findElement(By.id("safety-detail")).getText().contains("seller1@console-ui"));
         browser.screenshot("console-safety");
+    }
+
+    /**
+     * Another platform on the same machine and port range, with a key of its own: its discovery
+     * reaches this platform's agents, whose safety rows count its frames in the grey column of
+     * other platforms, not as corruption, and raise no alarm.
+     */
+    @Test
+    void anotherPlatformsFramesAreShownApartFromTheThreats() {
+        java.util.Map<AID, Long> badTags = new java.util.HashMap<>();
+        for (AID a : platform.runtime().agents()) {
+            badTags.put(a, platform.runtime().drops(a).getOrDefault("bad-tag", 0L));
+        }
+        try (Platform neighbour = Platform.builder().name("neighbour").ports(new PortRange(7471, 40, 10)).platformKey(OTHER_KEY).build()) {
+            neighbour.startAgent("n1", new Buyer());
+            browser.driver.get(console.uri());
+            browser.until(d -> {
+                tab("safety");
+                return d.findElement(By.id("safety")).isDisplayed();
+            });
+            String cell = "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.OTHER_PLATFORMS + "']";
+            browser.until(d -> {
+                try {
+                    WebElement td = d.findElement(By.cssSelector(cell));
+                    return Long.parseLong(td.getAttribute("textContent").split(" ")[0]) > 0 && td.getAttribute("class").contains("expected");
+                } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException | NumberFormatException e) {
+                    return false;
+                }
+            });
+            // Not one of them counted as a failed tag (a forgery's count) at any agent of this platform.
+            for (AID a : platform.runtime().agents()) {
+                assertEquals(badTags.getOrDefault(a, 0L), platform.runtime().drops(a).getOrDefault("bad-tag", 0L), a.name());
+            }
+        }
     }
 
     private static long total(String agent) {

@@ -257,8 +257,8 @@
       for (const t of s.threats) {
         const td = el('td', a.threats[t] + (a.perMinute[t] ? ' (+' + a.perMinute[t] + ' in the last minute)' : ''), 'num');
         td.dataset.threat = t;
-        // Copies the stack sends on purpose are shown apart, in grey: never an alarm.
-        if (t === s.threats[0]) td.classList.add('expected');
+        // Copies the stack sends on purpose, and another platform's frames skipped, are shown apart, in grey: never an alarm.
+        if ((s.expected || [s.threats[0]]).includes(t)) td.classList.add('expected');
         else if (a.perMinute[t] > 0) td.classList.add('hot');
         tr.appendChild(td);
       }
@@ -277,8 +277,8 @@
     const byThreat = {};
     let now = 0;
     for (const a of s.agents) {
-      for (const t of s.threats.slice(1)) {
-        if (t === 'other') continue;
+      for (const t of s.threats) {
+        if (t === 'other' || (s.expected || [s.threats[0]]).includes(t)) continue;
         now += a.perMinute[t] || 0;
         byThreat[t] = (byThreat[t] || 0) + (a.perMinute[t] || 0);
       }
