@@ -89,8 +89,8 @@ class SecurityLayerTest {
     @Test
     void aWrongPlatformKeyIsAnotherPlatformsFrameAndWithThisKeysIdFailsAuthentication() {
         PlatformKey other = PlatformKey.ofHex("11".repeat(32));
-        int ours = FrameSealer.keyBitsOf(Stacks.KEY.bytes());
-        assertTrue(FrameSealer.keyBitsOf(other.bytes()) != ours, "the test's two keys have ids of their own");
+        int ours = Stacks.KEY.frameKeyBits();
+        assertTrue(other.frameKeyBits() != ours, "the test's two keys have ids of their own");
         for (SecurityLayer.Protection p : List.of(SecurityLayer.Protection.HMAC, SecurityLayer.Protection.GCM_PLATFORM)) {
             LayerHarness a = agent("a@p", layer(p, other));
             LayerHarness b = agent("b@p", layer(p, Stacks.KEY));
@@ -206,7 +206,7 @@ class SecurityLayerTest {
         byte[] f = new byte[48];
         Frames.putShort(f, 0, Frames.MAGIC);
         f[2] = (byte) Frames.VERSION;
-        f[3] = (byte) (Frames.PROTECTION_GCM_PAIR | FrameSealer.keyBitsOf(Stacks.KEY.bytes())); // the key's id is public
+        f[3] = (byte) (Frames.PROTECTION_GCM_PAIR | Stacks.KEY.frameKeyBits()); // the key's id is public
         Frames.putLong(f, 4, src);
         Frames.putLong(f, 12, Frames.id(to));
         Frames.putLong(f, 20, ctr);
