@@ -156,8 +156,17 @@ class ConsoleBrowserTest {
                 .anyMatch(r -> group.equals(r.getAttribute("data-group"))));
         WebElement head = browser.driver.findElement(By.cssSelector("#agents tr.group[data-group='" + group + "']"));
         assertTrue(head.getText().startsWith(group + " — "), head.getText());
+        // A request from the buyer (handed over in memory, in the same JVM) counts in the seller's "in".
+        platform.runtime().agent(new AID("buyer@console-ui")).send(request("counted-" + System.nanoTime()));
+        browser.until(d -> {
+            try {
+                String io = d.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui'] td")).get(4).getText();
+                return io.matches("[1-9]\\d* / [1-9]\\d*");
+            } catch (org.openqa.selenium.StaleElementReferenceException | IndexOutOfBoundsException e) {
+                return false;
+            }
+        });
         List<WebElement> cells = browser.driver.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui'] td"));
-        assertTrue(cells.get(4).getText().matches("\\d+ / \\d+"), "in / out: " + cells.get(4).getText());
         assertTrue(cells.get(5).getText().matches("\\d+"), "mailbox: " + cells.get(5).getText());
         assertTrue(cells.get(6).getText().matches("\\d+ ms"), "lag: " + cells.get(6).getText());
     }

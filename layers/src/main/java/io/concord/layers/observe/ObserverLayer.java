@@ -31,7 +31,7 @@ import java.util.Map;
  * {@code missed} in the next event.</li>
  * <li>{@code QUERY-REF}, ontology {@value #ONTOLOGY}, content {@code status}: INFORM with this
  * agent's role, container and term, platform clock offset, its drops by layer and reason, where it
- * runs (host and process id), the application messages it sent and received, its mailbox and its
+ * runs (host and process id), the messages it sent and got in its mailbox, its mailbox and its
  * loop's lag (how long a task due now waited for the loop when the question came).</li>
  * <li>{@code REQUEST}, ontology {@value #ONTOLOGY}, content {@code kill}: AGREE, then the agent is
  * deleted as its own {@code doDelete()} would (its {@code takeDown()} runs, it leaves the
@@ -72,9 +72,6 @@ public final class ObserverLayer extends Layer {
     }
     private LayerContext ctx;
     private AID self;
-    /** Application messages (not this service's) sent and received. */
-    private long sent;
-    private long received;
     private static final long PID = ProcessHandle.current().pid();
 
     @Override
@@ -102,11 +99,8 @@ public final class ObserverLayer extends Layer {
     @Override
     public void onDown(LayerContext c, Envelope env) {
         AclMessage m = env.message();
-        if (m != null && !ONTOLOGY.equals(m.getOntology())) {
-            sent++;
-            if (!sniffers.isEmpty()) {
-                event("sent", m, env.receiver());
-            }
+        if (!sniffers.isEmpty() && m != null && !ONTOLOGY.equals(m.getOntology())) {
+            event("sent", m, env.receiver());
         }
         c.passDown(env);
     }
@@ -125,11 +119,8 @@ public final class ObserverLayer extends Layer {
                 }
             }
         }
-        if (m != null && !ONTOLOGY.equals(m.getOntology())) {
-            received++;
-            if (!sniffers.isEmpty()) {
-                event("received", m, self);
-            }
+        if (!sniffers.isEmpty() && m != null && !ONTOLOGY.equals(m.getOntology())) {
+            event("received", m, self);
         }
         c.passUp(env);
     }
@@ -182,7 +173,9 @@ public final class ObserverLayer extends Layer {
         Json.field(b, "agent", self.name()).append(',');
         io.concord.core.net.Address at = ctx.host().localAddress();
         Json.field(b, "host", at == null ? null : at.host()).append(',');
-        b.append("\"pid\":").append(PID).append(",\"sent\":").append(sent).append(",\"received\":").append(received)
+        // Counted by the node, so that messages handed over in memory (which skip the stacks) count too.
+        b.append("\"pid\":").append(PID).append(",\"sent\":").append(ctx.host().messagesSent())
+                .append(",\"received\":").append(ctx.host().messagesReceived())
                 .append(",\"mailbox\":").append(ctx.host().mailboxSize()).append(",\"lagMs\":").append(lagMs).append(',');
         ContainerLayer c = ctx.find(ContainerLayer.class);
         if (c != null) {
