@@ -261,8 +261,8 @@ public final class Console implements AutoCloseable {
             return null;
         }
         r.close();
-        return r.file().getFileName() + ": " + r.events() + " events, " + (r.bytes() >> 10) + " KiB"
-                + (r.dropped() > 0 ? ", " + r.dropped() + " dropped (the disk was slower than the events)" : "")
+        return r.file().getFileName() + ": " + r.events() + " events, " + (r.bytes() >> 10) + " KiB, " + r.dropped() + " dropped"
+                + (r.dropped() > 0 ? " (the disk was slower than the events)" : "")
                 + (r.failure() != null ? "; " + r.failure() : "");
     }
 

@@ -149,6 +149,7 @@ final class ConsoleServer {
             case "/api/bench" -> benchList(x);
             case "/api/drops" -> answer(x, 200, "application/json", json.writeValueAsString(console.drops()));
             case "/api/recordings" -> recordings(x);
+            case "/favicon.ico" -> answer(x, 204, "image/x-icon", new byte[0]);   // none: not a 404 each page load
             default -> {
                 if (path.startsWith("/api/recordings/")) {
                     recordingFile(x, path.substring("/api/recordings/".length()));

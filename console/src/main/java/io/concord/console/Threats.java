@@ -11,7 +11,10 @@ import java.util.List;
 final class Threats {
     /** The column of copies sent on purpose: not a threat. */
     static final String COPIES = "copies (expected)";
-    /** The column of frames sealed under another platform's key (one sharing the port range), skipped: not a threat. */
+    /**
+     * The column of another platform's frames (one sharing the port range: under another key, or
+     * under the same key with another name), skipped: not a threat.
+     */
     static final String OTHER_PLATFORMS = "other platforms (skipped)";
     static final List<String> ORDER = List.of(COPIES, OTHER_PLATFORMS, "repetition", "deletion", "insertion", "resequence", "corruption",
             "delay", "masquerade", "flooding", "other");
@@ -27,7 +30,7 @@ final class Threats {
             case "copy" -> {
                 return COPIES;
             }
-            case "foreign-key" -> {
+            case "foreign-key", "foreign-platform" -> {
                 return OTHER_PLATFORMS;
             }
             case "repeated", "replayed-handshake" -> {
@@ -49,7 +52,7 @@ final class Threats {
             case "stale", "from-future", "expired", "unexpected-time" -> {
                 return "delay";
             }
-            case "masquerade", "identification", "bad-secret", "unauthenticated", "foreign-platform", "unprotected",
+            case "masquerade", "identification", "bad-secret", "unauthenticated", "unprotected",
                  "crossed-handshake" -> {
                 return "masquerade";
             }

@@ -561,11 +561,18 @@ class ConsoleBrowserTest {
         browser.until(d -> d.findElement(By.id("safety-alarm")).isDisplayed()
                 && d.findElement(By.id("safety-alarm")).getText().matches("Alarm: \\d+ threats in the last minute \\(.*corruption \\d+.*"));
         // The copies the stack sends on purpose have a grey column of their own, never an alarm.
-        WebElement copies = browser.driver.findElement(By.cssSelector(
-                "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.COPIES + "']"));
-        assertTrue(copies.getAttribute("class").contains("expected") && !copies.getAttribute("class").contains("hot"),
-                copies.getAttribute("class"));
-        browser.driver.findElement(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).click();
+        // (Read again if the table was drawn anew meanwhile: it is, every two seconds.)
+        String copies = "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.COPIES + "']";
+        browser.until(d -> {
+            try {
+                String cls = d.findElement(By.cssSelector(copies)).getAttribute("class");
+                assertTrue(cls.contains("expected") && !cls.contains("hot"), cls);
+                return true;
+            } catch (org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        click("#safety-table tbody tr[data-agent='seller1@console-ui']");
         browser.until(d -> d.findElement(By.id("safety-detail")).getText().contains("seller1@console-ui"));
         browser.screenshot("console-safety");
     }
@@ -604,13 +611,19 @@ class ConsoleBrowserTest {
         }
     }
 
+    /** The agent's drops in the safety table, read again if the table is drawn anew meanwhile (every two seconds). */
     private static long total(String agent) {
-        List<WebElement> row = browser.driver.findElements(By.cssSelector("#safety-table tbody tr[data-agent='" + agent + "'] td[data-threat]"));
-        long t = 0;
-        for (WebElement td : row) {
-            t += Long.parseLong(td.getAttribute("textContent").split(" ")[0]);
-        }
-        return t;
+        return browser.until(d -> {
+            try {
+                long t = 0;
+                for (WebElement td : d.findElements(By.cssSelector("#safety-table tbody tr[data-agent='" + agent + "'] td[data-threat]"))) {
+                    t += Long.parseLong(td.getAttribute("textContent").split(" ")[0]);
+                }
+                return t;
+            } catch (org.openqa.selenium.StaleElementReferenceException e) {
+                return null;
+            }
+        });
     }
 
     @Test

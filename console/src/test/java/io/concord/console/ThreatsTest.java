@@ -16,6 +16,7 @@ class ThreatsTest {
         assertEquals("repetition", Threats.of("replayed-handshake"));
         assertEquals("corruption", Threats.of("bad-tag"));
         assertEquals(Threats.OTHER_PLATFORMS, Threats.of("foreign-key"), "another platform's frame, skipped by its key's id");
+        assertEquals(Threats.OTHER_PLATFORMS, Threats.of("foreign-platform"), "another platform of the same key, skipped by its name");
         assertEquals(List.of(Threats.COPIES, Threats.OTHER_PLATFORMS), Threats.EXPECTED, "no threat: grey, never the alarm");
         assertEquals("flooding", Threats.of("handshake-limit"));
         assertEquals("other", Threats.of("something-new"));

@@ -118,9 +118,10 @@ public final class HospitalView implements ConsoleView {
             try {
                 com.fasterxml.jackson.databind.JsonNode n = JSON.readTree(m.getContent());
                 com.fasterxml.jackson.databind.JsonNode ts = n.path("transports");
-                if (ts.size() == 1 && ts.get(0).has("story")) {
-                    if (ts.get(0).path("task").asText().equals(storyOf)) {
-                        story = ts.get(0);
+                if (n.has("task")) {
+                    // One transport's story (or that the Medical agent has none of that id).
+                    if (n.path("task").asText().equals(storyOf)) {
+                        story = n.path("unknown").asBoolean() ? n : ts.get(0);
                     }
                 } else {
                     audit = ts;
@@ -641,7 +642,8 @@ public final class HospitalView implements ConsoleView {
                     lines.addArray().add(clock(l.path("atMs").asLong())).add(l.path("text").asText());
                 }
             }
-            table(tables, "story", "The story of " + desk.storyOf + (st == null ? " (asked)" : st.path("storyCut").asInt() > 0
+            table(tables, "story", "The story of " + desk.storyOf + (st == null ? " (asked)" : st.path("unknown").asBoolean()
+                    ? ": the Medical agent has no transport of that id" : st.path("storyCut").asInt() > 0
                     ? " (" + st.path("storyCut").asInt() + " later lines left out)" : ""), List.of("time", "what happened"), lines)
                     .put("wide", true);
         }

@@ -71,6 +71,13 @@ class TransportAuditTest {
             desk.askStory("T1");
             h.sim.runFor(1_000);
             assertEquals(e.story().size(), desk.story().path("story").size());
+            // A transport the Medical agent never had: it says so, and the trail stays as it was.
+            desk.askStory("T99");
+            h.sim.runFor(1_000);
+            desk.refreshAudit();
+            h.sim.runFor(3_000);
+            assertTrue(desk.story().path("unknown").asBoolean(), desk.story().toString());
+            assertEquals("T1", desk.audit().get(0).path("task").asText(), "the trail is still there");
         }
     }
 }

@@ -23,7 +23,11 @@ final class AuditJson {
         ArrayNode a = o.putArray("transports");
         String task = query.length() > "audit".length() ? query.substring("audit".length()).trim() : "";
         if (!task.isEmpty()) {
+            o.put("task", task);   // the answer to one transport's question, even when it is unknown
             TransportAudit.Entry e = audit.entry(task);
+            if (e == null) {
+                o.put("unknown", true);
+            }
             if (e != null) {
                 ObjectNode n = entry(a, e);
                 ArrayNode story = n.putArray("story");

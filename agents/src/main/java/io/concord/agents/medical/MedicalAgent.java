@@ -164,8 +164,9 @@ public class MedicalAgent extends Agent {
                 });
         // The audit trail, for the front desk and any member of the platform: QUERY-REF "audit" (the
         // latest transports) or "audit T3" (one, with its story), answered with JSON.
-        Inbox.each(this, MessageTemplate.matchPerformative(Performative.QUERY_REF).and(MessageTemplate.matchOntology(Services.ONTOLOGY))
-                .and(m -> m.getContent() != null && m.getContent().trim().startsWith("audit")), m -> send(m.createReply()
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.QUERY_REF)
+                .and(m -> m.getOntology() == null || Services.ONTOLOGY.equals(m.getOntology()))
+                .and(m -> m.getContent() != null && m.getContent().trim().matches("audit( T\\d{1,9})?")), m -> send(m.createReply()
                 .setPerformative(Performative.INFORM).setLanguage("application/json").setContent(AuditJson.answer(audit, m.getContent().trim()))));
         MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST).and(WheelchairMessage.matching(TransportRequest.class));
         Inbox.each(this, requests, m -> {

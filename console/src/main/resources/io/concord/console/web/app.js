@@ -26,9 +26,13 @@
     if (text != null) e.textContent = text;
     return e;
   }
+  // Now, or while a recording is played back, the time the slider says.
+  function now() {
+    return state.replay ? state.replay.at : Date.now();
+  }
   function ago(ms) {
     if (!ms) return '';
-    const s = Math.max(0, Math.round((Date.now() - ms) / 1000));
+    const s = Math.max(0, Math.round((now() - ms) / 1000));
     return s < 120 ? s + ' s ago' : Math.round(s / 60) + ' min ago';
   }
   // A time since, that goes on ticking between the platform's events.
@@ -206,7 +210,9 @@
       tr.appendChild(el('td', m.from));
       tr.appendChild(el('td', m.conversation));
       const c = /:content\s+"((?:[^"\\]|\\.)*)"/.exec(m.message);
-      tr.appendChild(el('td', c ? c[1] : ''));
+      // The content as its sender meant it (escapes undone), cut to a line; the whole message in the row's title.
+      const text = c ? c[1].replace(/\\(.)/g, '$1') : '';
+      tr.appendChild(el('td', text.length > 120 ? text.slice(0, 117) + '…' : text, 'content'));
       tr.title = m.message;
       tbody.appendChild(tr);
     }
@@ -255,14 +261,19 @@
       tr.appendChild(el('td', a.role.toLowerCase()));
       tr.appendChild(el('td', a.clockSynced ? (a.clockOffsetUs / 1000).toFixed(1) + ' ms' : 'own clock', 'num'));
       for (const t of s.threats) {
-        const td = el('td', a.threats[t] + (a.perMinute[t] ? ' (+' + a.perMinute[t] + ' in the last minute)' : ''), 'num');
+        const td = el('td', a.threats[t] + (a.perMinute[t] ? ' (+' + a.perMinute[t] + ' /min)' : ''), 'num');
+        if (a.perMinute[t]) td.title = a.perMinute[t] + ' in the last minute';
         td.dataset.threat = t;
         // Copies the stack sends on purpose, and another platform's frames skipped, are shown apart, in grey: never an alarm.
         if ((s.expected || [s.threats[0]]).includes(t)) td.classList.add('expected');
         else if (a.perMinute[t] > 0) td.classList.add('hot');
         tr.appendChild(td);
       }
-      tr.addEventListener('click', () => { state.safetyPick = a.agent; drawSafetyDetail(); });
+      tr.addEventListener('click', () => {
+        state.safetyPick = a.agent;
+        drawSafetyDetail();
+        $('safety-detail').scrollIntoView({ block: 'nearest' });
+      });
       body.appendChild(tr);
     }
     drawSafetyDetail();
@@ -646,7 +657,8 @@
   // ---- replay: a recording played back in the same views, with a time slider ------------------
   function loadRecordings() {
     fetch(url('api/recordings')).then((r) => r.json()).then((o) => {
-      $('record-said').textContent = o.recording ? 'recording to ' + o.recording : '';
+      // Says a recording is under way; what an action said stays otherwise.
+      if (o.recording) $('record-said').textContent = 'recording to ' + o.recording;
       const l = $('recordings');
       l.replaceChildren();
       if (!o.files.length) l.appendChild(el('li', 'None yet: Record above, or start the demo with --record FILE.', 'hint'));
@@ -690,6 +702,8 @@
       }
       const t0 = events[0].t, t1 = events[events.length - 1].t;
       state.replay = { name: name, events: events, t0: t0, t1: t1, at: t0 };
+      // What acts on the live platform (start, kill, send, a view's forms) is put away while replaying.
+      document.body.classList.add('replaying');
       $('replay-name').textContent = name;
       $('replay-slider').max = t1 - t0;
       $('replay-slider').value = 0;
@@ -735,6 +749,7 @@
   $('replay-live').addEventListener('click', () => {
     stopPlaying();
     state.replay = null;
+    document.body.classList.remove('replaying');
     $('replay-bar').hidden = true;
     connect(true);
   });

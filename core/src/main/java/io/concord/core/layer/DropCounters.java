@@ -45,9 +45,10 @@ public final class DropCounters {
     private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy");
     /**
      * Reasons warned about once per process, not once per agent: frames of another platform
-     * sharing the port range reach every agent of this one alike ({@code foreign-key}).
+     * sharing the port range reach every agent of this one alike ({@code foreign-key} under
+     * another key, {@code foreign-platform} under the same key and another name).
      */
-    private static final java.util.Set<String> ONCE_PER_PROCESS = java.util.Set.of("foreign-key");
+    private static final java.util.Set<String> ONCE_PER_PROCESS = java.util.Set.of("foreign-key", "foreign-platform");
     private static final java.util.Set<String> WARNED_IN_PROCESS = ConcurrentHashMap.newKeySet();
 
     /** Counts one drop, and logs it if it is the first of its reason for this node. */
