@@ -42,8 +42,9 @@ public final class Console implements AutoCloseable {
      * @param keep        sniffed messages kept for browsers that open later
      * @param maxBrowsers event streams open at once
      * @param agentName   the console agent's local name
+     * @param recordings  where recordings are written and read ({@code recordings} in the working directory by default)
      */
-    public record Config(String host, int port, String token, Path reports, int keep, int maxBrowsers, String agentName) {
+    public record Config(String host, int port, String token, Path reports, int keep, int maxBrowsers, String agentName, Path recordings) {
         public Config {
             Objects.requireNonNull(host, "host");
             if (port < 0 || port > 65535) {
@@ -55,12 +56,13 @@ public final class Console implements AutoCloseable {
             if (token != null && token.length() < 16) {
                 throw new IllegalArgumentException("a console token must have at least 16 characters");
             }
+            Objects.requireNonNull(recordings, "recordings");
         }
 
         /** Loopback, this port, the defaults. */
         public static Config port(int port) {
             Path reports = Path.of("bench", "report");
-            return new Config("127.0.0.1", port, null, Files.isDirectory(reports) ? reports : null, 1_000, 16, "console");
+            return new Config("127.0.0.1", port, null, Files.isDirectory(reports) ? reports : null, 1_000, 16, "console", Path.of("recordings"));
         }
 
         /**
@@ -78,23 +80,27 @@ public final class Console implements AutoCloseable {
         }
 
         public Config withHost(String h) {
-            return new Config(h, port, token, reports, keep, maxBrowsers, agentName);
+            return new Config(h, port, token, reports, keep, maxBrowsers, agentName, recordings);
         }
 
         public Config withToken(String t) {
-            return new Config(host, port, t, reports, keep, maxBrowsers, agentName);
+            return new Config(host, port, t, reports, keep, maxBrowsers, agentName, recordings);
         }
 
         public Config withReports(Path r) {
-            return new Config(host, port, token, r, keep, maxBrowsers, agentName);
+            return new Config(host, port, token, r, keep, maxBrowsers, agentName, recordings);
         }
 
         public Config withKeep(int k) {
-            return new Config(host, port, token, reports, k, maxBrowsers, agentName);
+            return new Config(host, port, token, reports, k, maxBrowsers, agentName, recordings);
+        }
+
+        public Config withRecordings(Path dir) {
+            return new Config(host, port, token, reports, keep, maxBrowsers, agentName, dir);
         }
 
         public Config withAgentName(String n) {
-            return new Config(host, port, token, reports, keep, maxBrowsers, n);
+            return new Config(host, port, token, reports, keep, maxBrowsers, n, recordings);
         }
     }
 
@@ -154,6 +160,11 @@ public final class Console implements AutoCloseable {
         return this;
     }
 
+    /** An operator's action on the agents (start, kill, send); on the loop. */
+    String agentAction(String action, Map<String, String> params) {
+        return agent.act(action, params, platform);
+    }
+
     List<ConsoleView> views() {
         return views;
     }
@@ -204,6 +215,63 @@ public final class Console implements AutoCloseable {
         return m;
     }
 
+    /** A recording's file name: letters, digits, '.', '_', '-', ending in .jsonl. */
+    static boolean recordingName(String n) {
+        return n.matches("[A-Za-z0-9][A-Za-z0-9._-]{0,100}\\.jsonl") && !n.contains("..");
+    }
+
+    /**
+     * Records from now on everything the console shows (the platform's lists, the safety counters,
+     * the sniffed messages, every view: the hospital's poses) into {@code recordings/name}, to be
+     * played back in the page with a time slider. Thread-safe.
+     *
+     * @param name the file's name ({@code run-1.jsonl}), or {@code null} for one made from the time
+     * @return the file
+     * @throws IllegalArgumentException if the name is not a recording's, the file exists, or a recording is under way
+     */
+    public synchronized Path startRecording(String name) {
+        if (hub.recording()) {
+            throw new IllegalArgumentException("a recording is under way (" + hub.recorder().file().getFileName() + "); stop it first");
+        }
+        String n = name == null || name.isBlank()
+                ? "run-" + java.time.LocalDateTime.now().format(java.time.format.DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")) + ".jsonl"
+                : name.trim();
+        if (!recordingName(n)) {
+            throw new IllegalArgumentException("a recording is named with letters, digits, '.', '_' and '-', ending in .jsonl; got '" + n + "'");
+        }
+        Path f = config.recordings().resolve(n);
+        if (Files.exists(f)) {
+            throw new IllegalArgumentException("there is a recording " + n + " already; give another name");
+        }
+        try {
+            Recorder old = hub.record(new Recorder(f));
+            if (old != null) {
+                old.close();   // one that stopped by itself (full, or its disk failed)
+            }
+        } catch (IOException e) {
+            throw new IllegalArgumentException("cannot write " + f + ": " + e.getMessage() + " (Console.Config.withRecordings sets the directory)");
+        }
+        return f;
+    }
+
+    /** Stops the recording under way and says what it holds; {@code null} if there was none. */
+    public synchronized String stopRecording() {
+        Recorder r = hub.record(null);
+        if (r == null) {
+            return null;
+        }
+        r.close();
+        return r.file().getFileName() + ": " + r.events() + " events, " + (r.bytes() >> 10) + " KiB, " + r.dropped() + " dropped"
+                + (r.dropped() > 0 ? " (the disk was slower than the events)" : "")
+                + (r.failure() != null ? "; " + r.failure() : "");
+    }
+
+    /** The recording under way, or {@code null}. */
+    public Path recording() {
+        Recorder r = hub.recorder();
+        return r == null ? null : r.file();
+    }
+
     /** Browsers with an event stream open. */
     public int browsers() {
         return hub.open();
@@ -211,6 +279,7 @@ public final class Console implements AutoCloseable {
 
     @Override
     public void close() {
+        stopRecording();
         server.stop();
         agent.doDelete();   // it leaves the platform cleanly (from any thread)
     }

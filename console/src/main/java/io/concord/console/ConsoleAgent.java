@@ -71,6 +71,8 @@ final class ConsoleAgent extends Agent {
     @Override
     protected void setup() {
         Inbox.each(this, MessageTemplate.matchOntology(ObserverLayer.ONTOLOGY), this::take);
+        // Anything else is an answer to a message an operator sent from the console (JADE's DummyAgent).
+        Inbox.each(this, MessageTemplate.not(MessageTemplate.matchOntology(ObserverLayer.ONTOLOGY)), m -> mail("received", m));
         addBehaviour(new TickerBehaviour(this, TICK_MS) {
             @Override
             protected void onTick() {
@@ -138,8 +140,8 @@ final class ConsoleAgent extends Agent {
 
     private void tick() {
         platform();
-        if (hub.open() == 0 && sniffing.isEmpty()) {
-            return;   // nobody watches: nothing to ask the agents
+        if (hub.open() == 0 && sniffing.isEmpty() && !hub.recording()) {
+            return;   // nobody watches or records: nothing to ask the agents
         }
         long now = currentTimeMillis();
         Set<String> known = known();
@@ -260,11 +262,144 @@ final class ConsoleAgent extends Agent {
         }
     }
 
+    // ---- an operator's actions (JADE's RMA and DummyAgent); each runs on the loop ----------------
+
+    /** The console's own actions, at {@code /api/agents/{action}}. */
+    static final List<String> ACTIONS = List.of("start", "kill", "send");
+    /** Messages the console sent and received, kept for the page. */
+    static final int MAIL_KEPT = 100;
+    private final Deque<ObjectNode> mail = new ArrayDeque<>();
+
+    String act(String action, Map<String, String> p, io.concord.layers.Platform platform) {
+        return switch (action) {
+            case "start" -> start(platform, p.getOrDefault("name", "").trim(), p.getOrDefault("class", "").trim(),
+                    p.getOrDefault("arguments", ""));
+            case "kill" -> kill(p.getOrDefault("agent", "").trim());
+            case "send" -> sendFor(p);
+            default -> throw new IllegalArgumentException("the console's actions are " + ACTIONS + ", not " + action);
+        };
+    }
+
+    private String start(io.concord.layers.Platform platform, String name, String cls, String arguments) {
+        if (!name.matches("[A-Za-z0-9][A-Za-z0-9._-]{0,63}")) {
+            throw new IllegalArgumentException("an agent's name is 1 to 64 of letters, digits, '.', '_' and '-', got '" + name + "'");
+        }
+        Class<?> c;
+        try {
+            c = Class.forName(cls, false, ConsoleAgent.class.getClassLoader());
+        } catch (ClassNotFoundException | LinkageError e) {
+            throw new IllegalArgumentException("no class " + cls + " on this JVM's class path (give its full name, e.g. io.concord.examples.BookSeller)");
+        }
+        if (!Agent.class.isAssignableFrom(c) || java.lang.reflect.Modifier.isAbstract(c.getModifiers())) {
+            throw new IllegalArgumentException(cls + " is not an agent: it must be a concrete subclass of " + Agent.class.getName());
+        }
+        Agent a;
+        try {
+            a = (Agent) c.getConstructor().newInstance();
+        } catch (NoSuchMethodException e) {
+            throw new IllegalArgumentException(cls + " has no public constructor without parameters; its arguments come from the form");
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalArgumentException(cls + " could not be made: " + (e.getCause() == null ? e : e.getCause()));
+        }
+        Object[] args = arguments.isBlank() ? new Object[0] : java.util.Arrays.stream(arguments.split(",")).map(String::trim).toArray();
+        AID aid;
+        try {
+            aid = platform.startAgent(name, a, args);
+        } catch (IllegalArgumentException | IllegalStateException e) {
+            throw new IllegalArgumentException("could not start " + name + ": " + e.getMessage());
+        }
+        return "started " + aid.name() + " (" + cls + ") in the console's JVM";
+    }
+
+    private String kill(String name) {
+        if (name.isEmpty()) {
+            throw new IllegalArgumentException("say which agent to kill");
+        }
+        if (name.equals(getAID().name()) || name.equals(getAID().localName())) {
+            throw new IllegalArgumentException("the console does not kill itself; close it instead");
+        }
+        Set<String> known = known();
+        String full = known.contains(name) ? name : known.stream().filter(k -> k.startsWith(name + "@")).findFirst().orElse(null);
+        if (full == null) {
+            throw new IllegalArgumentException("no agent " + name + " in the platform's lists");
+        }
+        for (AID here : runtime().agents()) {
+            if (here.name().equals(full)) {
+                runtime().agent(here).doDelete();
+                return "killed " + full + " (in the console's JVM): its takeDown() runs and it leaves the lists";
+            }
+        }
+        send(observe(Performative.REQUEST, full, "kill", "kill-" + (++conversations)));
+        return "asked " + full + " to leave the platform (it runs in another JVM); it goes from the lists when it has";
+    }
+
+    private String sendFor(Map<String, String> p) {
+        Performative perf = Performative.fromWireName(p.getOrDefault("performative", "").trim());
+        if (perf == null) {
+            throw new IllegalArgumentException("no performative '" + p.get("performative") + "'; FIPA's are INFORM, REQUEST, QUERY-REF, CFP, ...");
+        }
+        AclMessage m = new AclMessage(perf);
+        Set<String> known = known();
+        for (String r : p.getOrDefault("receivers", "").split(",")) {
+            String n = r.trim();
+            if (n.isEmpty()) {
+                continue;
+            }
+            String full = known.contains(n) ? n : known.stream().filter(k -> k.startsWith(n + "@")).findFirst().orElse(null);
+            if (full == null) {
+                throw new IllegalArgumentException("no agent " + n + " in the platform's lists");
+            }
+            m.addReceiver(new AID(full));
+        }
+        if (m.getReceivers().isEmpty()) {
+            throw new IllegalArgumentException("say who receives it: one or more agents' names, separated by commas");
+        }
+        m.setContent(p.getOrDefault("content", ""));
+        String conv = p.getOrDefault("conversation", "").trim();
+        m.setConversationId(conv.isEmpty() ? "console-" + (++conversations) : conv);
+        for (String[] f : new String[][] {{"language", "l"}, {"ontology", "o"}, {"protocol", "p"}}) {
+            String v = p.getOrDefault(f[0], "").trim();
+            if (!v.isEmpty()) {
+                switch (f[1]) {
+                    case "l" -> m.setLanguage(v);
+                    case "o" -> m.setOntology(v);
+                    default -> m.setProtocol(v);
+                }
+            }
+        }
+        if (ObserverLayer.ONTOLOGY.equals(m.getOntology())) {
+            throw new IllegalArgumentException("the ontology " + ObserverLayer.ONTOLOGY + " is the console's own; kill and sniff have their buttons");
+        }
+        m.setReplyWith("console-r" + (++conversations));
+        send(m);
+        mail("sent", m);
+        return "sent " + perf.wireName() + " to " + p.get("receivers").trim() + " (conversation " + m.getConversationId() + ")";
+    }
+
+    private void mail(String dir, AclMessage m) {
+        ObjectNode e = json.createObjectNode();
+        e.put("dir", dir);
+        e.put("atMs", currentTimeMillis());
+        e.put("performative", m.getPerformative().wireName());
+        e.put("from", m.getSender() == null ? "" : m.getSender().name());
+        e.put("conversation", m.getConversationId() == null ? "" : m.getConversationId());
+        e.put("message", m.toString());
+        mail.addLast(e);
+        while (mail.size() > MAIL_KEPT) {
+            mail.removeFirst();
+        }
+        ArrayNode a = json.createArrayNode();
+        mail.forEach(a::add);
+        hub.publish("mail", a.toString());
+    }
+
     private void publishSafety(long now) {
         ObjectNode o = json.createObjectNode();
         o.put("atMs", now);
         ArrayNode threats = o.putArray("threats");
         Threats.ORDER.forEach(threats::add);
+        ArrayNode expected = o.putArray("expected");
+        Threats.EXPECTED.forEach(expected::add);
         ArrayNode agents = o.putArray("agents");
         for (Map.Entry<String, JsonNode> e : status.entrySet()) {
             JsonNode s = e.getValue();
@@ -276,6 +411,13 @@ final class ConsoleAgent extends Agent {
             a.put("role", s.path("role").asText(""));
             a.put("clockOffsetUs", s.path("clockOffsetUs").asLong());
             a.put("clockSynced", s.path("clockSynced").asBoolean());
+            // Where it runs and how it is doing: the platform view groups and shows these.
+            a.put("host", s.path("host").asText(""));
+            a.put("pid", s.path("pid").asLong());
+            a.put("sent", s.path("sent").asLong());
+            a.put("received", s.path("received").asLong());
+            a.put("mailbox", s.path("mailbox").asLong());
+            a.put("lagMs", s.path("lagMs").asLong());
             Map<String, Long> byThreat = new LinkedHashMap<>();
             Threats.ORDER.forEach(t -> byThreat.put(t, 0L));
             ObjectNode layers = a.putObject("layers");

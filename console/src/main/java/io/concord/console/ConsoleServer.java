@@ -32,13 +32,13 @@ import java.util.concurrent.atomic.LongAdder;
 /**
  * The console's HTTP side, on the JDK's server with a fixed pool of threads: one per open event
  * stream (at most the hub's limit) and four for everything else. No handler touches an agent:
- * reads come from the hub's last events, the one write (a view's action) is handed to the loop.
+ * reads come from the hub's last events, the writes (a view's action, start, kill, send) are handed to the loop.
  */
 final class ConsoleServer {
     static final int MAX_URI = 2_048;
     static final int MAX_BODY = 4_096;
     static final long KEEPALIVE_MS = 2_000;
-    private static final Set<String> TOPICS = Set.of("platform", "safety", "sniff");
+    private static final Set<String> TOPICS = Set.of("platform", "safety", "sniff", "mail");
 
     private final HttpServer http;
     private final ExecutorService pool;
@@ -125,8 +125,13 @@ final class ConsoleServer {
         if (method.equals("POST")) {
             if (path.startsWith("/api/views/")) {
                 act(x, path.substring("/api/views/".length()));
+            } else if (path.startsWith("/api/agents/")) {
+                agentAction(x, path.substring("/api/agents/".length()));
+            } else if (path.equals("/api/record/start") || path.equals("/api/record/stop")) {
+                record(x, path.endsWith("start"));
             } else {
-                refuse(x, 405, "only a view's action may be posted, at /api/views/{view}/{action}");
+                refuse(x, 405, "only an action may be posted: a view's at /api/views/{view}/{action}, "
+                        + "the console's at /api/agents/start, /api/agents/kill, /api/agents/send, /api/record/start and /api/record/stop");
             }
             return;
         }
@@ -139,16 +144,20 @@ final class ConsoleServer {
             case "/app.js" -> resource(x, "app.js", "text/javascript; charset=utf-8", q);
             case "/style.css" -> resource(x, "style.css", "text/css; charset=utf-8", q);
             case "/api/events" -> events(x, q);
-            case "/api/platform", "/api/safety" -> last(x, path.substring(5));
+            case "/api/platform", "/api/safety", "/api/mail" -> last(x, path.substring(5));
             case "/api/views" -> views(x);
             case "/api/bench" -> benchList(x);
             case "/api/drops" -> answer(x, 200, "application/json", json.writeValueAsString(console.drops()));
+            case "/api/recordings" -> recordings(x);
+            case "/favicon.ico" -> answer(x, 204, "image/x-icon", new byte[0]);   // none: not a 404 each page load
             default -> {
-                if (path.startsWith("/api/bench/")) {
+                if (path.startsWith("/api/recordings/")) {
+                    recordingFile(x, path.substring("/api/recordings/".length()));
+                } else if (path.startsWith("/api/bench/")) {
                     benchFile(x, path.substring("/api/bench/".length()));
                 } else {
                     refuse(x, 404, "no such page: " + path + "; the console serves /, /api/events, /api/platform, "
-                            + "/api/safety, /api/views, /api/bench");
+                            + "/api/safety, /api/mail, /api/views, /api/bench, /api/recordings");
                 }
             }
         }
@@ -229,7 +238,7 @@ final class ConsoleServer {
             }
             boolean view = s.startsWith("view-") && console.views().stream().anyMatch(v -> ("view-" + v.id()).equals(s));
             if (!TOPICS.contains(s) && !view) {
-                refuse(x, 400, "no such topic '" + s + "'; topics are platform, safety, sniff and view-{id} of /api/views");
+                refuse(x, 400, "no such topic '" + s + "'; topics are platform, safety, sniff, mail and view-{id} of /api/views");
                 return;
             }
             topics.add(s);
@@ -276,8 +285,7 @@ final class ConsoleServer {
     }
 
     private void act(HttpExchange x, String rest) throws IOException {
-        if (!"1".equals(x.getRequestHeaders().getFirst("X-Concord-Console"))) {
-            refuse(x, 403, "a view's action must carry the header X-Concord-Console: 1 (the page sends it; another site's form cannot)");
+        if (!fromThePage(x)) {
             return;
         }
         int slash = rest.indexOf('/');
@@ -292,9 +300,35 @@ final class ConsoleServer {
             refuse(x, 404, "no such action: " + rest + "; see /api/views");
             return;
         }
+        ConsoleView v = view;
+        onLoop(x, params -> v.act(action, params));
+    }
+
+    /** Starting, killing and messaging agents (JADE's RMA and DummyAgent): the same guards as a view's action. */
+    private void agentAction(HttpExchange x, String action) throws IOException {
+        if (!fromThePage(x)) {
+            return;
+        }
+        if (!ConsoleAgent.ACTIONS.contains(action)) {
+            refuse(x, 404, "no such action: " + action + "; the console's are " + ConsoleAgent.ACTIONS);
+            return;
+        }
+        onLoop(x, params -> console.agentAction(action, params));
+    }
+
+    private boolean fromThePage(HttpExchange x) throws IOException {
+        if (!"1".equals(x.getRequestHeaders().getFirst("X-Concord-Console"))) {
+            refuse(x, 403, "an action must carry the header X-Concord-Console: 1 (the page sends it; another site's form cannot)");
+            return false;
+        }
+        return true;
+    }
+
+    /** Reads the form, runs the action on the agents' loop, answers what it said (or 400 with why). */
+    private void onLoop(HttpExchange x, java.util.function.Function<Map<String, String>, String> action) throws IOException {
         byte[] body = readBody(x);
         if (body == null) {
-            refuse(x, 413, "a view's action takes at most " + MAX_BODY + " bytes of form parameters");
+            refuse(x, 413, "an action takes at most " + MAX_BODY + " bytes of form parameters");
             return;
         }
         Map<String, String> params;
@@ -304,11 +338,12 @@ final class ConsoleServer {
             refuse(x, 400, "malformed form parameters: " + e.getMessage());
             return;
         }
-        ConsoleView v = view;
+        java.net.InetSocketAddress client = x.getRemoteAddress();
+        params.put(ConsoleView.CLIENT, client == null ? "" : client.getAddress().getHostAddress() + ":" + client.getPort());
         CompletableFuture<String> done = new CompletableFuture<>();
         console.platform().runtime().execute(() -> {
             try {
-                done.complete(v.act(action, params));
+                done.complete(action.apply(params));
             } catch (RuntimeException e) {
                 done.completeExceptionally(e);
             }
@@ -351,6 +386,63 @@ final class ConsoleServer {
             }
         }
         return b.toByteArray();
+    }
+
+    /** Starts or stops a recording: the same guards as an action; {@code name} names the file. */
+    private void record(HttpExchange x, boolean start) throws IOException {
+        if (!fromThePage(x)) {
+            return;
+        }
+        byte[] body = readBody(x);
+        Map<String, String> params;
+        try {
+            params = body == null ? null : query(new String(body, StandardCharsets.UTF_8));
+        } catch (IllegalArgumentException e) {
+            params = null;
+        }
+        if (params == null) {
+            refuse(x, 400, "malformed form parameters (at most " + MAX_BODY + " bytes)");
+            return;
+        }
+        try {
+            String said = start ? "recording to " + console.startRecording(params.get("name")).getFileName() : console.stopRecording();
+            answer(x, 200, "application/json", json.createObjectNode().put("ok", true)
+                    .put("message", said == null ? "no recording was under way" : start ? said : "recorded " + said).toString());
+        } catch (IllegalArgumentException e) {
+            refuse(x, 400, e.getMessage());
+        }
+    }
+
+    private void recordings(HttpExchange x) throws IOException {
+        Path dir = console.config().recordings();
+        ObjectNode o = json.createObjectNode();
+        Path now = console.recording();
+        o.put("recording", now == null ? null : now.getFileName().toString());
+        ArrayNode a = o.putArray("files");
+        if (Files.isDirectory(dir)) {
+            try (var s = Files.list(dir)) {
+                for (Path p : s.sorted().toList()) {
+                    String n = p.getFileName().toString();
+                    if (Console.recordingName(n) && Files.isRegularFile(p)) {
+                        a.addObject().put("name", n).put("bytes", Files.size(p));
+                    }
+                }
+            }
+        }
+        answer(x, 200, "application/json", o.toString());
+    }
+
+    private void recordingFile(HttpExchange x, String name) throws IOException {
+        if (!Console.recordingName(name)) {
+            refuse(x, 400, "a recording is named by its file name (letters, digits, . _ -, ending in .jsonl), got '" + name + "'");
+            return;
+        }
+        Path p = console.config().recordings().resolve(name);
+        if (!Files.isRegularFile(p)) {
+            refuse(x, 404, "no such recording: " + name + "; see /api/recordings");
+            return;
+        }
+        answer(x, 200, "application/x-ndjson; charset=utf-8", Files.readAllBytes(p));
     }
 
     private void benchList(HttpExchange x) throws IOException {

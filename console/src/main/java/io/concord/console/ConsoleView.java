@@ -6,7 +6,7 @@ import java.util.Map;
 /**
  * A view an application adds to the console (the hospital adds its map). Its snapshot is taken on
  * the agents' loop every {@link #periodMs()} while a browser shows it, and sent as one event; its
- * actions are the console's only writes, allowed on loopback or with the token.
+ * actions, with the console's own (start, kill, send), are its only writes, allowed on loopback or with the token.
  */
 public interface ConsoleView {
 
@@ -23,6 +23,12 @@ public interface ConsoleView {
 
     /** The state to draw, as one JSON object. Called on the agents' loop. */
     String snapshot();
+
+    /**
+     * The parameter the console adds to every action's: the address of the browser that asked
+     * ({@code 127.0.0.1:53122}), for an audit trail. A browser's own value for it is replaced.
+     */
+    String CLIENT = "console.client";
 
     /** The actions a browser may ask for ({@code "transport"}); none by default. */
     default List<String> actions() {

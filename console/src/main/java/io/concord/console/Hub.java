@@ -63,6 +63,8 @@ final class Hub {
     private final int keep;
     private final int maxClients;
     final AtomicLong slowDrops = new AtomicLong();
+    /** The recording under way, or {@code null}. */
+    private volatile Recorder recorder;
     final AtomicLong refused = new AtomicLong();
 
     Hub(int keep, int maxClients) {
@@ -108,8 +110,33 @@ final class Hub {
         return clients.size();
     }
 
-    /** True if an open stream listens to the topic. */
+    /** Records every event from now on into {@code r} (or stops, with {@code null}); returns the one it replaces. */
+    Recorder record(Recorder r) {
+        if (r != null) {
+            // A recording starts with where things stand: the last event of each topic.
+            long now = System.currentTimeMillis();
+            last.forEach((topic, json) -> r.record(now, topic, json));
+        }
+        Recorder old = recorder;
+        recorder = r;
+        return old;
+    }
+
+    Recorder recorder() {
+        return recorder;
+    }
+
+    /** True while a recording is under way: every topic is then made as if a browser watched it. */
+    boolean recording() {
+        Recorder r = recorder;
+        return r != null && r.recording();
+    }
+
+    /** True if an open stream listens to the topic, or a recording is under way. */
     boolean wants(String topic) {
+        if (recording()) {
+            return true;
+        }
         for (Client c : clients) {
             if (c.topics.contains(topic)) {
                 return true;
@@ -141,6 +168,10 @@ final class Hub {
 
     /** Sends an event of a topic to every stream that listens to it; kept for streams opened later. */
     void publish(String topic, String json) {
+        Recorder r = recorder;
+        if (r != null) {
+            r.record(System.currentTimeMillis(), topic, json);
+        }
         String event = frame(topic, json);
         last.put(topic, json);
         for (Client c : clients) {
@@ -152,6 +183,10 @@ final class Hub {
 
     /** A sniffed message, to the streams that selected one of its agents or its conversation; the last {@code keep} are kept. */
     void sniff(String by, String from, String to, String conversation, String json) {
+        Recorder r = recorder;
+        if (r != null) {
+            r.record(System.currentTimeMillis(), "sniff", json);
+        }
         String event = frame("sniff", json);
         synchronized (sniffed) {
             sniffed.addLast(new String[] {by, from, to, conversation, event});

@@ -11,8 +11,15 @@ import java.util.List;
 final class Threats {
     /** The column of copies sent on purpose: not a threat. */
     static final String COPIES = "copies (expected)";
-    static final List<String> ORDER = List.of(COPIES, "repetition", "deletion", "insertion", "resequence", "corruption", "delay",
-            "masquerade", "flooding", "other");
+    /**
+     * The column of another platform's frames (one sharing the port range: under another key, or
+     * under the same key with another name), skipped: not a threat.
+     */
+    static final String OTHER_PLATFORMS = "other platforms (skipped)";
+    static final List<String> ORDER = List.of(COPIES, OTHER_PLATFORMS, "repetition", "deletion", "insertion", "resequence", "corruption",
+            "delay", "masquerade", "flooding", "other");
+    /** The columns that are no threat: shown grey, never counted towards the alarm. */
+    static final List<String> EXPECTED = List.of(COPIES, OTHER_PLATFORMS);
 
     private Threats() {
     }
@@ -22,6 +29,9 @@ final class Threats {
         switch (reason) {
             case "copy" -> {
                 return COPIES;
+            }
+            case "foreign-key", "foreign-platform" -> {
+                return OTHER_PLATFORMS;
             }
             case "repeated", "replayed-handshake" -> {
                 return "repetition";
@@ -42,7 +52,7 @@ final class Threats {
             case "stale", "from-future", "expired", "unexpected-time" -> {
                 return "delay";
             }
-            case "masquerade", "identification", "bad-secret", "unauthenticated", "foreign-platform", "unprotected",
+            case "masquerade", "identification", "bad-secret", "unauthenticated", "unprotected",
                  "crossed-handshake" -> {
                 return "masquerade";
             }

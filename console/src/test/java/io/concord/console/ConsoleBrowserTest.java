@@ -40,6 +40,9 @@ class ConsoleBrowserTest {
             Platform.of(this).register(ServiceDescription.of("book-selling", getLocalName()));
             Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST),
                     m -> send(m.createReply().setPerformative(Performative.AGREE).setContent("agreed: " + m.getContent())));
+            // An auction: a price for every call for proposals.
+            Inbox.each(this, MessageTemplate.matchPerformative(Performative.CFP),
+                    m -> send(m.createReply().setPerformative(Performative.PROPOSE).setContent(getLocalName().endsWith("1") ? "12" : "15")));
         }
     }
 
@@ -47,13 +50,57 @@ class ConsoleBrowserTest {
     static final class Buyer extends Agent {
     }
 
+    /** An agent an operator starts from the console: answers a request with what it was started with. */
+    public static final class Echo extends Agent {
+        @Override
+        protected void setup() {
+            String said = getArguments().length == 0 ? "nothing" : String.join("+", java.util.Arrays.stream(getArguments()).map(String::valueOf).toList());
+            Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST),
+                    m -> send(m.createReply().setPerformative(Performative.INFORM).setContent("echo " + said + ": " + m.getContent())));
+        }
+    }
+
+    /** A view whose one dot moves a metre to the right at each snapshot: where it is says which snapshot is drawn. */
+    static final class Dots implements ConsoleView {
+        final java.util.concurrent.atomic.AtomicInteger snapshots = new java.util.concurrent.atomic.AtomicInteger();
+
+        @Override
+        public String id() {
+            return "dots";
+        }
+
+        @Override
+        public String title() {
+            return "Dots";
+        }
+
+        @Override
+        public long periodMs() {
+            return 100;
+        }
+
+        @Override
+        public String snapshot() {
+            int n = snapshots.incrementAndGet();
+            return "{\"bounds\":[0,0,1000,10],\"shapes\":[{\"type\":\"circle\",\"id\":\"dot\",\"x\":" + n
+                    + ",\"y\":5,\"r\":1}],\"tables\":[]}";
+        }
+    }
+
+    static final Dots DOTS = new Dots();
+    /** The test platform's key (the wire format's test key, key id 19), and another platform's (another id). */
+    static final io.concord.layers.security.PlatformKey KEY = io.concord.layers.security.PlatformKey.ofHex(
+            "000102030405060708090a0b0c0d0e0f101112131415161718191a1b1c1d1e1f");
+    static final io.concord.layers.security.PlatformKey OTHER_KEY = io.concord.layers.security.PlatformKey.ofHex("11".repeat(32));
+
     @BeforeAll
     static void start() {
-        platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).build();
+        platform = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).platformKey(KEY).build();
         platform.startAgent("seller1", new Seller());
         platform.startAgent("seller2", new Seller());
         platform.startAgent("buyer", new Buyer());
-        console = Console.start(platform, Console.Config.port(0).withReports(java.nio.file.Path.of("..", "bench", "report")));
+        console = Console.start(platform, Console.Config.port(0).withReports(java.nio.file.Path.of("..", "bench", "report"))
+                .withRecordings(java.nio.file.Path.of("target", "recordings")));
         browser = new Browser();
     }
 
@@ -66,8 +113,9 @@ class ConsoleBrowserTest {
         platform.close();
     }
 
+    /** The agents the platform view lists, in its order (its group rows left out). */
     private static List<String> rows(String table) {
-        return browser.driver.findElements(By.cssSelector("#" + table + " tbody tr")).stream()
+        return browser.driver.findElements(By.cssSelector("#" + table + " tbody tr[data-agent]")).stream()
                 .map(r -> r.getAttribute("data-agent")).collect(Collectors.toList());
     }
 
@@ -79,19 +127,203 @@ class ConsoleBrowserTest {
     void thePlatformViewListsTheAgentsAndFollowsAKilledOne() {
         browser.driver.get(console.uri());
         tab("platform");
-        browser.until(d -> rows("lal").containsAll(List.of("seller1@console-ui", "seller2@console-ui", "buyer@console-ui",
+        browser.until(d -> rows("agents").containsAll(List.of("seller1@console-ui", "seller2@console-ui", "buyer@console-ui",
                 "console@console-ui")));
         String box = browser.driver.findElement(By.id("container-box")).getText();
         assertTrue(box.startsWith("Container: ") && box.contains("term"), box);
         // The yellow pages' search box.
         browser.driver.findElement(By.id("search")).sendKeys("book-selling");
-        browser.until(d -> rows("lal").equals(List.of("seller1@console-ui", "seller2@console-ui")));
+        browser.until(d -> rows("agents").equals(List.of("seller1@console-ui", "seller2@console-ui")));
+        browser.until(d -> !d.findElements(By.cssSelector("#agents tr.group[data-group^='host ']")).isEmpty());
         browser.screenshot("console-platform");
         browser.driver.findElement(By.id("search")).clear();
         browser.driver.findElement(By.id("search")).sendKeys(" ");
         // Killed: it leaves the list.
         platform.runtime().crashAgent(new AID("seller2@console-ui"));
-        browser.until(d -> !rows("lal").contains("seller2@console-ui") && rows("lal").contains("seller1@console-ui"));
+        browser.until(d -> !rows("agents").contains("seller2@console-ui") && rows("agents").contains("seller1@console-ui"));
+    }
+
+    /**
+     * As JADE's RMA groups its tree by container, the view groups agents by host and JVM, from each
+     * agent's own report, with its messages in and out, its mailbox and its loop's lag.
+     */
+    @Test
+    void thePlatformViewGroupsAgentsByJvmWithTheirFigures() {
+        browser.driver.get(console.uri());
+        tab("platform");
+        String group = "host 127.0.0.1 · JVM " + ProcessHandle.current().pid();
+        browser.until(d -> d.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui']")).stream()
+                .anyMatch(r -> group.equals(r.getAttribute("data-group"))));
+        WebElement head = browser.driver.findElement(By.cssSelector("#agents tr.group[data-group='" + group + "']"));
+        assertTrue(head.getText().startsWith(group + " — "), head.getText());
+        // A request from the buyer (handed over in memory, in the same JVM) counts in the seller's "in".
+        platform.runtime().agent(new AID("buyer@console-ui")).send(request("counted-" + System.nanoTime()));
+        browser.until(d -> {
+            try {
+                String io = d.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui'] td")).get(4).getText();
+                return io.matches("[1-9]\\d* / [1-9]\\d*");
+            } catch (org.openqa.selenium.StaleElementReferenceException | IndexOutOfBoundsException e) {
+                return false;
+            }
+        });
+        List<WebElement> cells = browser.driver.findElements(By.cssSelector("#agents tr[data-agent='seller1@console-ui'] td"));
+        assertTrue(cells.get(5).getText().matches("\\d+"), "mailbox: " + cells.get(5).getText());
+        assertTrue(cells.get(6).getText().matches("\\d+ ms"), "lag: " + cells.get(6).getText());
+    }
+
+    /** Clicks what the selector finds, again if the page drew it anew meanwhile. */
+    private static void click(String css) {
+        browser.until(d -> {
+            try {
+                d.findElement(By.cssSelector(css)).click();
+                return true;
+            } catch (org.openqa.selenium.StaleElementReferenceException | org.openqa.selenium.NoSuchElementException e) {
+                return false;
+            }
+        });
+    }
+
+    private static void fill(String form, String field, String value) {
+        WebElement e = browser.driver.findElement(By.cssSelector("#" + form + " [name='" + field + "']"));
+        e.clear();
+        e.sendKeys(value);
+    }
+
+    /**
+     * JADE's RMA and DummyAgent in the page: an operator starts an agent from its class with
+     * arguments, sends it a request and reads its answer, then kills it, and it is gone from the
+     * view and from the platform.
+     */
+    @Test
+    void anOperatorStartsMessagesAndKillsAnAgent() {
+        browser.driver.get(console.uri());
+        tab("platform");
+        browser.until(d -> rows("agents").contains("seller1@console-ui"));
+        fill("start-form", "name", "echo1");
+        fill("start-form", "class", "no.such.Agent");
+        browser.driver.findElement(By.id("start-agent")).click();
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("no class no.such.Agent on this JVM's class path"));
+        fill("start-form", "class", Echo.class.getName());
+        fill("start-form", "arguments", "red, blue");
+        browser.driver.findElement(By.id("start-agent")).click();
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("started echo1@console-ui"));
+        browser.until(d -> rows("agents").contains("echo1@console-ui"));
+        assertTrue(platform.runtime().agents().contains(new AID("echo1@console-ui")), "started in the console's JVM");
+
+        click("#agents tr[data-agent='echo1@console-ui'] button.message");
+        assertEquals("echo1@console-ui", browser.driver.findElement(By.id("send-to")).getAttribute("value"));
+        fill("send-form", "content", "hello");
+        browser.driver.findElement(By.id("send-message")).click();
+        browser.until(d -> d.findElements(By.cssSelector("#mail tbody tr[data-dir='received'][data-performative='INFORM']")).stream()
+                .anyMatch(r -> r.getText().contains("echo red+blue: hello")));
+        browser.screenshot("console-platform-actions");
+
+        click("#agents tr[data-agent='echo1@console-ui'] button.kill");
+        browser.driver.switchTo().alert().accept();
+        browser.until(d -> !rows("agents").contains("echo1@console-ui"));
+        assertTrue(!platform.runtime().agents().contains(new AID("echo1@console-ui")), "gone from the platform");
+    }
+
+    /** An agent in another JVM (here: another runtime, over real sockets) is asked to leave through its observation service. */
+    @Test
+    void anAgentOfAnotherRuntimeIsKilledThroughItsObservationService() {
+        try (Platform far = Platform.builder().name("console-ui").ports(new PortRange(7471, 40, 10)).platformKey(KEY).build()) {
+            far.startAgent("far1", new Buyer());
+            browser.driver.get(console.uri());
+            tab("platform");
+            browser.until(d -> rows("agents").contains("far1@console-ui"));
+            click("#agents tr[data-agent='far1@console-ui'] button.kill");
+            browser.driver.switchTo().alert().accept();
+            browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("asked far1@console-ui to leave"));
+            browser.until(d -> !far.runtime().agents().contains(new AID("far1@console-ui")));
+            browser.until(d -> !rows("agents").contains("far1@console-ui"));
+        }
+    }
+
+    /**
+     * Replay, which neither JADE nor a fleet manager has: a run recorded from the page, played
+     * back with the slider, shows each view as it was at that time (the dot where the recorded
+     * snapshot had it), and the page goes back to live.
+     */
+    @Test
+    void aRecordingIsPlayedBackWithTheSlider() throws Exception {
+        // A console of its own, with the dot's view (the other tests' console has no view).
+        try (Console console = Console.start(platform, Console.Config.port(0).withAgentName("console-replay")
+                .withRecordings(java.nio.file.Path.of("target", "recordings")))) {
+            console.addView(DOTS);
+            playBack(console);
+        }
+    }
+
+    private static void playBack(Console console) throws Exception {
+        browser.driver.get(console.uri());
+        browser.until(d -> !d.findElements(By.cssSelector("nav button[data-view='dots']")).isEmpty());
+        tab("replay");
+        String name = "dots-" + System.nanoTime() + ".jsonl";
+        fill("record-form", "name", name);
+        click("#record-start");
+        browser.until(d -> d.findElement(By.id("record-said")).getText().equals("recording to " + name));
+        int from = DOTS.snapshots.get();
+        browser.until(d -> DOTS.snapshots.get() >= from + 12);
+        click("#record-stop");
+        browser.until(d -> d.findElement(By.id("record-said")).getText().startsWith("recorded " + name + ": "));
+        browser.until(d -> !d.findElements(By.cssSelector("#recordings a[data-recording='" + name + "']")).isEmpty());
+
+        // What the file says the dot was at, some way into the run.
+        List<com.fasterxml.jackson.databind.JsonNode> lines = new java.util.ArrayList<>();
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        for (String l : java.nio.file.Files.readAllLines(java.nio.file.Path.of("target", "recordings", name))) {
+            lines.add(json.readTree(l));
+        }
+        long t0 = lines.get(0).get("t").asLong();
+        List<com.fasterxml.jackson.databind.JsonNode> dots = lines.stream().filter(l -> l.get("topic").asText().equals("view-dots")).toList();
+        assertTrue(dots.size() >= 10, "snapshots recorded: " + dots.size());
+        int k = dots.size() / 2;
+        while (k + 1 < dots.size() && dots.get(k + 1).get("t").asLong() == dots.get(k).get("t").asLong()) {
+            k++;   // the last of those recorded in the same millisecond is the one shown then
+        }
+        long at = dots.get(k).get("t").asLong();
+        String x = dots.get(k).get("data").get("shapes").get(0).get("x").asText();
+
+        click("#recordings a[data-recording='" + name + "']");
+        browser.until(d -> d.findElement(By.id("replay-bar")).isDisplayed());
+        click("nav button[data-view='dots']");
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const s = document.getElementById('replay-slider'); s.value = arguments[0]; s.dispatchEvent(new Event('input'));", at - t0);
+        browser.until(d -> String.valueOf(at).equals(d.findElement(By.id("replay-time")).getAttribute("data-t")));
+        assertEquals(x, browser.driver.findElement(By.id("dot")).getAttribute("cx"), "the dot where the recording had it at that time");
+        browser.screenshot("console-replay");
+        // Live again: the dot moves on past anything recorded.
+        click("#replay-live");
+        browser.until(d -> !d.findElement(By.id("replay-bar")).isDisplayed());
+        int last = dots.get(dots.size() - 1).get("data").get("shapes").get(0).get("x").asInt();
+        browser.until(d -> Integer.parseInt(d.findElement(By.id("dot")).getAttribute("cx")) > last);
+    }
+
+    /**
+     * A recording of a view this console has not got (the demo's {@code --virtual --record}, opened
+     * in any console): played back, the view gets a tab of its own, and its snapshot is drawn.
+     */
+    @Test
+    void aRecordingOfAnotherRunsViewGetsATab() throws Exception {
+        String name = "ward-" + System.nanoTime() + ".jsonl";
+        java.nio.file.Path f = java.nio.file.Path.of("target", "recordings", name);
+        java.nio.file.Files.createDirectories(f.getParent());
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < 5; i++) {
+            b.append("{\"t\":").append(1000 + 250 * i).append(",\"topic\":\"view-ward\",\"data\":{\"bounds\":[0,0,10,10],\"shapes\":[")
+                    .append("{\"type\":\"circle\",\"id\":\"bed\",\"x\":").append(i).append(",\"y\":2,\"r\":0.5}],\"tables\":[]}}\n");
+        }
+        java.nio.file.Files.writeString(f, b);
+        browser.driver.get(console.uri());
+        tab("replay");
+        click("#recordings a[data-recording='" + name + "']");
+        browser.until(d -> d.findElement(By.id("replay-bar")).isDisplayed());
+        click("nav button[data-view='ward']");
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const s = document.getElementById('replay-slider'); s.value = 500; s.dispatchEvent(new Event('input'));");
+        browser.until(d -> "2".equals(d.findElement(By.id("bed")).getAttribute("cx")));
+        assertEquals("0.5 s of 1.0 s", browser.driver.findElement(By.id("replay-time")).getText());
     }
 
     /** Shows the sniffer and picks the buyer, once the picker lists it. */
@@ -134,10 +366,14 @@ class ConsoleBrowserTest {
     void theContainersSinceTicksBetweenEvents() {
         browser.driver.get(console.uri());
         tab("platform");
-        browser.until(d -> d.findElement(By.id("container-box")).getText().matches("(?s).*since \\d+ s ago.*"));
+        // "N s ago", or "N min ago" once the suite has run two minutes.
+        browser.until(d -> d.findElement(By.id("container-box")).getText().matches("(?s).*since \\d+ (s|min) ago.*"));
         ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
                 "const real = Date.now.bind(Date); Date.now = () => real() + 3600000;");
-        browser.until(d -> d.findElement(By.id("container-box")).getText().matches("(?s).*since 60 min ago.*"));
+        browser.until(d -> {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("since (\\d+) min ago").matcher(d.findElement(By.id("container-box")).getText());
+            return m.find() && Integer.parseInt(m.group(1)) >= 60;
+        });
     }
 
     @Test
@@ -181,6 +417,10 @@ class ConsoleBrowserTest {
                         + " return document.getElementById('diagram-wrap').scrollTop > 0 && h.top >= w.top - 1 && h.bottom <= w.top + 60;"));
         assertTrue(browser.driver.findElements(By.cssSelector("#diagram-head text.lifeline")).stream()
                 .anyMatch(t -> t.getText().equals("buyer")), "the buyer's lifeline is named");
+        // The seller is not picked: it is on the one lifeline of everybody the buyer talks to.
+        assertEquals(List.of("buyer", "other agents"), browser.driver.findElements(By.cssSelector("#diagram-head text.lifeline"))
+                .stream().map(WebElement::getText).toList());
+        browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow")).get(0).getText().contains("to seller1"));
         browser.screenshot("console-sniffer");
     }
 
@@ -218,9 +458,74 @@ class ConsoleBrowserTest {
         String export = java.net.URLDecoder.decode(browser.driver.findElement(By.id("sniff-export")).getAttribute("href")
                 .substring("data:text/plain;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
         assertTrue(export.contains("(AGREE") && export.contains("while-away") && !export.contains("(REQUEST"), export);
+        // And as a picture: an SVG of the lifelines and the arrows shown.
+        String picture = java.net.URLDecoder.decode(browser.driver.findElement(By.id("sniff-export-svg")).getAttribute("href")
+                .substring("data:image/svg+xml;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(picture.startsWith("<svg xmlns=\"http://www.w3.org/2000/svg\"") && picture.contains(">buyer</text>")
+                && picture.contains("AGREE · while-away") && !picture.contains("REQUEST ·"), picture);
         browser.driver.findElement(By.id("sniff-filter")).clear();
         browser.driver.findElement(By.id("sniff-filter")).sendKeys(" ");
         browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow[data-performative='REQUEST']")).size() >= 2);
+    }
+
+    /**
+     * An auction held while another tab is shown (a CFP to two sellers, their proposals, an accept
+     * and a reject) is there whole, in order, when the sniffer is shown again.
+     */
+    @Test
+    void anAuctionHeldWhileAnotherTabIsShownIsSeenWhole() {
+        browser.driver.get(console.uri());
+        sniffBuyer();
+        Agent buyer = platform.runtime().agent(new AID("buyer@console-ui"));
+        // Sniffing has begun once the buyer's own messages are drawn.
+        browser.until(d -> {
+            if (!d.findElements(By.cssSelector("#diagram g.arrow")).isEmpty()) {
+                return true;
+            }
+            buyer.send(request("warm-up-" + System.nanoTime()));
+            return false;
+        });
+        tab("platform");
+        // Two bidders of their own (another test kills a seller).
+        String n = Long.toString(System.nanoTime() % 100_000);
+        AID b1 = platform.startAgent("bidder" + n + "-1", new Seller());
+        AID b2 = platform.startAgent("bidder" + n + "-2", new Seller());
+        String auction = "auction-" + System.nanoTime();
+        AclMessage cfp = new AclMessage(Performative.CFP);
+        cfp.addReceiver(b1);
+        cfp.addReceiver(b2);
+        cfp.setConversationId(auction);
+        cfp.setContent("(book :title \"Dune\")");
+        buyer.send(cfp);
+        List<AclMessage> proposals = new java.util.ArrayList<>();
+        browser.until(d -> {
+            AclMessage m;
+            while ((m = buyer.receive()) != null) {
+                if (m.getPerformative() == Performative.PROPOSE && auction.equals(m.getConversationId())) {
+                    proposals.add(m);
+                }
+            }
+            return proposals.size() == 2;
+        });
+        for (AclMessage p : proposals) {
+            boolean best = p.getContent().equals("12");
+            buyer.send(p.createReply().setPerformative(best ? Performative.ACCEPT_PROPOSAL : Performative.REJECT_PROPOSAL));
+        }
+        try {
+            browser.until(d -> d.findElements(By.cssSelector("#diagram g.arrow")).stream()
+                    .filter(a -> a.getAttribute("textContent").contains(auction)).count() == 6);
+        } catch (org.openqa.selenium.TimeoutException e) {
+            throw new AssertionError("the auction's arrows: " + browser.driver.findElements(By.cssSelector("#diagram g.arrow")).stream()
+                    .map(a -> a.getAttribute("data-performative") + " " + a.getAttribute("textContent")).toList(), e);
+        }
+        tab("sniffer");
+        List<String> story = browser.driver.findElements(By.cssSelector("#diagram g.arrow")).stream()
+                .filter(a -> a.getAttribute("textContent").contains(auction))
+                .map(a -> a.getAttribute("data-performative")).toList();
+        assertEquals(List.of("CFP", "CFP", "PROPOSE", "PROPOSE"), story.subList(0, 4), story.toString());
+        assertEquals(java.util.Set.of("ACCEPT-PROPOSAL", "REJECT-PROPOSAL"), java.util.Set.copyOf(story.subList(4, 6)), story.toString());
+        platform.runtime().agent(b1).doDelete();
+        platform.runtime().agent(b2).doDelete();
     }
 
     private static AclMessage request(String conversation) {
@@ -256,22 +561,69 @@ class ConsoleBrowserTest {
         browser.until(d -> d.findElement(By.id("safety-alarm")).isDisplayed()
                 && d.findElement(By.id("safety-alarm")).getText().matches("Alarm: \\d+ threats in the last minute \\(.*corruption \\d+.*"));
         // The copies the stack sends on purpose have a grey column of their own, never an alarm.
-        WebElement copies = browser.driver.findElement(By.cssSelector(
-                "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.COPIES + "']"));
-        assertTrue(copies.getAttribute("class").contains("expected") && !copies.getAttribute("class").contains("hot"),
-                copies.getAttribute("class"));
-        browser.driver.findElement(By.cssSelector("#safety-table tbody tr[data-agent='seller1@console-ui']")).click();
+        // (Read again if the table was drawn anew meanwhile: it is, every two seconds.)
+        String copies = "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.COPIES + "']";
+        browser.until(d -> {
+            try {
+                String cls = d.findElement(By.cssSelector(copies)).getAttribute("class");
+                assertTrue(cls.contains("expected") && !cls.contains("hot"), cls);
+                return true;
+            } catch (org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        click("#safety-table tbody tr[data-agent='seller1@console-ui']");
         browser.until(d -> d.findElement(By.id("safety-detail")).getText().contains("seller1@console-ui"));
         browser.screenshot("console-safety");
     }
 
-    private static long total(String agent) {
-        List<WebElement> row = browser.driver.findElements(By.cssSelector("#safety-table tbody tr[data-agent='" + agent + "'] td[data-threat]"));
-        long t = 0;
-        for (WebElement td : row) {
-            t += Long.parseLong(td.getAttribute("textContent").split(" ")[0]);
+    /**
+     * Another platform on the same machine and port range, with a key of its own: its discovery
+     * reaches this platform's agents, whose safety rows count its frames in the grey column of
+     * other platforms, not as corruption, and raise no alarm.
+     */
+    @Test
+    void anotherPlatformsFramesAreShownApartFromTheThreats() {
+        java.util.Map<AID, Long> badTags = new java.util.HashMap<>();
+        for (AID a : platform.runtime().agents()) {
+            badTags.put(a, platform.runtime().drops(a).getOrDefault("bad-tag", 0L));
         }
-        return t;
+        try (Platform neighbour = Platform.builder().name("neighbour").ports(new PortRange(7471, 40, 10)).platformKey(OTHER_KEY).build()) {
+            neighbour.startAgent("n1", new Buyer());
+            browser.driver.get(console.uri());
+            browser.until(d -> {
+                tab("safety");
+                return d.findElement(By.id("safety")).isDisplayed();
+            });
+            String cell = "#safety-table tbody tr[data-agent='seller1@console-ui'] td[data-threat='" + Threats.OTHER_PLATFORMS + "']";
+            browser.until(d -> {
+                try {
+                    WebElement td = d.findElement(By.cssSelector(cell));
+                    return Long.parseLong(td.getAttribute("textContent").split(" ")[0]) > 0 && td.getAttribute("class").contains("expected");
+                } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException | NumberFormatException e) {
+                    return false;
+                }
+            });
+            // Not one of them counted as a failed tag (a forgery's count) at any agent of this platform.
+            for (AID a : platform.runtime().agents()) {
+                assertEquals(badTags.getOrDefault(a, 0L), platform.runtime().drops(a).getOrDefault("bad-tag", 0L), a.name());
+            }
+        }
+    }
+
+    /** The agent's drops in the safety table, read again if the table is drawn anew meanwhile (every two seconds). */
+    private static long total(String agent) {
+        return browser.until(d -> {
+            try {
+                long t = 0;
+                for (WebElement td : d.findElements(By.cssSelector("#safety-table tbody tr[data-agent='" + agent + "'] td[data-threat]"))) {
+                    t += Long.parseLong(td.getAttribute("textContent").split(" ")[0]);
+                }
+                return t;
+            } catch (org.openqa.selenium.StaleElementReferenceException e) {
+                return null;
+            }
+        });
     }
 
     @Test

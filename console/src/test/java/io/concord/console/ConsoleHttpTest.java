@@ -117,6 +117,33 @@ class ConsoleHttpTest {
                 .header("X-Concord-Console", "1").POST(HttpRequest.BodyPublishers.ofString("a=1")).build(), HttpResponse.BodyHandlers.ofString());
         assertEquals(404, post.statusCode());
         assertTrue(console.drops().get("http-404") >= 2, console.drops().toString());
+        // The console's own writes: the same header; a start, kill or recording that cannot be says why.
+        assertEquals(403, post("/api/agents/kill", "agent=x", false).statusCode());
+        assertEquals(403, post("/api/record/start", "", false).statusCode());
+        r = post("/api/agents/kill", "agent=nobody", true);
+        assertEquals(400, r.statusCode());
+        assertTrue(r.body().contains("no agent nobody in the platform's lists"), r.body());
+        r = post("/api/agents/start", "name=x&class=java.lang.String", true);
+        assertEquals(400, r.statusCode());
+        assertTrue(r.body().contains("java.lang.String is not an agent"), r.body());
+        r = post("/api/agents/send", "performative=SHOUT&receivers=x", true);
+        assertEquals(400, r.statusCode());
+        assertTrue(r.body().contains("no performative 'SHOUT'"), r.body());
+        r = post("/api/record/start", "name=../../etc/passwd.jsonl", true);
+        assertEquals(400, r.statusCode());
+        assertTrue(r.body().contains("ending in .jsonl"), r.body());
+        assertEquals(400, get("/api/recordings/..%2Fpom.xml").statusCode());
+        assertEquals(404, get("/api/recordings/none.jsonl").statusCode());
+        assertEquals(404, post("/api/agents/explode", "", true).statusCode());
+    }
+
+    private static HttpResponse<String> post(String path, String form, boolean header) throws Exception {
+        HttpRequest.Builder b = HttpRequest.newBuilder(URI.create("http://127.0.0.1:" + console.port() + path))
+                .POST(HttpRequest.BodyPublishers.ofString(form));
+        if (header) {
+            b.header("X-Concord-Console", "1");
+        }
+        return HTTP.send(b.build(), HttpResponse.BodyHandlers.ofString());
     }
 
     /** Sends a request as written; returns the status line. */

@@ -336,7 +336,8 @@ class ThreatsTest {
                     .addReceiver(w.receiverDirect()).setContent("forged by an outsider")));
 
             w.awaitDrops(() -> count(w.receiverDrops(), "identification") > 0
-                    && count(w.receiverDrops(), "masquerade") > 0 && count(w.receiverDrops(), "bad-tag") > 0);
+                    && count(w.receiverDrops(), "masquerade") > 0
+                    && count(w.receiverDrops(), "bad-tag") + count(w.receiverDrops(), "foreign-key") > 0);
             w.send(w.sender, w.receiverAsSeenByA(), ThreatWorld.contents(N));
             assertTrue(w.awaitReceived(N + 1));
             w.settle(100);
@@ -346,7 +347,8 @@ class ThreatsTest {
             Map<String, Long> drops = w.receiverDrops();
             assertTrue(count(drops, "identification") > 0, "the member's forged sender was refused: " + drops);
             assertTrue(count(drops, "masquerade") > 0, "the impostor's handshake was refused: " + drops);
-            assertTrue(count(drops, "bad-tag") > 0, "the outsider's frames failed authentication: " + drops);
+            // Its key's id is not the platform's: skipped as another platform's frames (or, 1 key in 32, failing the tag).
+            assertTrue(count(drops, "bad-tag") + count(drops, "foreign-key") > 0, "the outsider's frames were refused: " + drops);
         }
     }
 

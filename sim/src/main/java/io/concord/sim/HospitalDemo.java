@@ -28,6 +28,7 @@ import java.io.InputStreamReader;
 import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -98,8 +99,9 @@ public final class HospitalDemo {
 
     /** Settings of a run. */
     record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
-                   double maxSeconds, String serial, boolean augmented, String console, Path pairKey) {
-        List<String> childArgs() {
+                   double maxSeconds, String serial, boolean augmented, String console, Path pairKey, Path record) {
+        /** The options a child JVM of the demo gets: the ward alone records (its console does). */
+        List<String> childArgs(String role) {
             List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
                     "--chairs", Integer.toString(chairs), "--picture", picture.toAbsolutePath().toString(),
                     "--max-seconds", Double.toString(maxSeconds), "--tasks", String.join(",", tasks.stream().map(TaskSpec::toString).toList())));
@@ -118,13 +120,16 @@ public final class HospitalDemo {
             if (console != null) {
                 a.addAll(List.of("--console", console));
             }
+            if (record != null && role.equals("ward")) {
+                a.addAll(List.of("--record", record.toAbsolutePath().toString()));
+            }
             return a;
         }
     }
 
     static final String USAGE = "usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
             + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]"
-            + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port]\n"
+            + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port] [--record FILE.jsonl]\n"
             + "(each option with its default: README.md, \"The two commands\")";
 
     /** True if the arguments ask for the usage ({@code --help}, {@code -h}). */
@@ -194,6 +199,7 @@ public final class HospitalDemo {
         boolean augmented = false;
         String console = null;
         Path pairKey = null;
+        Path record = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--virtual")) {
@@ -216,6 +222,7 @@ public final class HospitalDemo {
                     case "--serial" -> serial = value(a, v);
                     case "--console" -> console = value(a, v);
                     case "--pair-key" -> pairKey = Path.of(value(a, v));
+                    case "--record" -> record = Path.of(value(a, v));
                     case "--tasks" -> {
                         tasks = new ArrayList<>();
                         for (String t : value(a, v).split(",")) {
@@ -261,7 +268,20 @@ public final class HospitalDemo {
                 throw new IllegalArgumentException("--console: " + e.getMessage());
             }
         }
-        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey);
+        if (record != null) {
+            String n = record.getFileName().toString();
+            if (!n.matches("[A-Za-z0-9][A-Za-z0-9._-]{0,100}\\.jsonl")) {
+                throw new IllegalArgumentException("--record names a file of letters, digits, '.', '_' and '-' ending in .jsonl "
+                        + "(the console lists it from its directory), got '" + n + "'");
+            }
+            if (!virtual && console == null) {
+                throw new IllegalArgumentException("--record writes what the console shows: it needs --console [host:]port, or --virtual");
+            }
+            if (Files.exists(record)) {
+                throw new IllegalArgumentException("--record: " + record + " exists already; give another file");
+            }
+        }
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey, record);
     }
 
     /** The map has a parking place for each chair: where it starts, in the map's order. */
@@ -341,7 +361,11 @@ public final class HospitalDemo {
                 fs.add(medical.transport(t.from(), t.to(), t.priority(), t.unloadS()));
             }
             long t0 = System.nanoTime(); // wall time, printed beside the hospital's: the demo's own figure, not the platform's clock
-            sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), (long) (o.maxSeconds() * 1000));
+            if (o.record() == null) {
+                sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), (long) (o.maxSeconds() * 1000));
+            } else {
+                record(h, o, () -> fs.stream().allMatch(CompletableFuture::isDone));
+            }
             double wall = (System.nanoTime() - t0) / 1e9;
             writePicture(world, o);
             OUT.printf(Locale.ROOT, "%n%.1f s of hospital in %.1f s of wall time; %d collisions.%n", world.worldTimeNs() / 1e9, wall,
@@ -349,6 +373,31 @@ public final class HospitalDemo {
             return report(fs);
         }
     }
+
+    /**
+     * Runs the virtual hospital, writing the console's hospital view every {@link #RECORD_STEP_MS}
+     * of hospital time, as the console records it ({@code {"t":ms,"topic":"view-hospital","data":...}}):
+     * the console plays the file back with its slider. The same seed writes the same file.
+     */
+    private static void record(VirtualHospital h, Options o, java.util.function.BooleanSupplier done) {
+        HospitalView view = new HospitalView(h.world, h.hospital, null);
+        long end = (long) (o.maxSeconds() * 1000);
+        try (java.io.BufferedWriter out = Files.newBufferedWriter(o.record(), StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.CREATE_NEW)) {
+            for (long ms = 0; ms <= end; ms += RECORD_STEP_MS) {
+                out.write("{\"t\":" + h.world.worldTimeNs() / 1_000_000 + ",\"topic\":\"view-hospital\",\"data\":" + view.snapshot() + "}\n");
+                if (done.getAsBoolean()) {
+                    break;
+                }
+                h.sim.runFor(RECORD_STEP_MS);
+            }
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException("--record: cannot write " + o.record() + ": " + e.getMessage(), e);
+        }
+        OUT.println("Recording: " + o.record().toAbsolutePath() + " (open it in the console's Replay tab from its directory)");
+    }
+
+    /** How often a virtual run's recording takes the hospital view, in hospital time. */
+    static final long RECORD_STEP_MS = 250;
 
     static HospitalWorld world(HospitalMap map, Options o) {
         HospitalWorld world = HospitalWorld.builder(map).seed(o.seed()).build();
@@ -469,7 +518,7 @@ public final class HospitalDemo {
             }
         }
         cmd.addAll(List.of(Demo.class.getName(), role));
-        cmd.addAll(o.childArgs());
+        cmd.addAll(o.childArgs(role));
         return new ProcessBuilder(cmd).redirectErrorStream(true).start();
     }
 
@@ -499,12 +548,22 @@ public final class HospitalDemo {
         Consumer<String> log = line -> OUT.printf(Locale.ROOT, "t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
         Hospital hospital = Hospital.start(platform, world, log);
         world.attach(rt, o.speed());
+        AtomicReference<Console> console = new AtomicReference<>();
         if (o.console() != null) {
             HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
             platform.startAgent("desk", desk);
-            Console c = Console.start(platform, Console.Config.parse(o.console()));
+            Console.Config cc = Console.Config.parse(o.console());
+            if (o.record() != null) {
+                cc = cc.withRecordings(o.record().toAbsolutePath().getParent());
+            }
+            Console c = Console.start(platform, cc);
             c.addView(new HospitalView(world, hospital, desk));
             OUT.println("console: " + c.uri() + "  (the hospital, the platform, the safety counters and the sniffer)");
+            if (o.record() != null) {
+                OUT.println("recording to " + c.startRecording(o.record().getFileName().toString()).toAbsolutePath()
+                        + " (the console's Replay tab plays it back)");
+                console.set(c);
+            }
         }
         AtomicReference<SerialChair> serialChair = new AtomicReference<>();
         if (o.serial() != null) {
@@ -519,6 +578,10 @@ public final class HospitalDemo {
         }
         CountDownLatch stopped = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            Console recording = console.get();
+            if (recording != null) {
+                OUT.println("recorded " + recording.stopRecording());
+            }
             CountDownLatch drawn = new CountDownLatch(1);
             rt.execute(() -> {
                 try {

@@ -55,10 +55,95 @@ public final class HospitalView implements ConsoleView {
         }
 
         private final List<Asked> asked = new ArrayList<>();
+        /** desk id -> where the request came from (the console's client), for the audit trail. */
+        private final Map<String, String> origins = new java.util.HashMap<>();
+        /** The Medical agent's last audit answer: its transports, newest first. */
+        private volatile com.fasterxml.jackson.databind.JsonNode audit;
+        /** The transport whose story was asked for, and the story as the Medical agent answered it. */
+        private volatile String storyOf;
+        private volatile com.fasterxml.jackson.databind.JsonNode story;
+        private long auditDueMs;
+        private long queries;
+        private static final long AUDIT_MS = 2_000;
+        private static final com.fasterxml.jackson.databind.ObjectMapper JSON = new com.fasterxml.jackson.databind.ObjectMapper();
 
         @Override
         protected void setup() {
-            Inbox.each(this, MessageTemplate.matchAll(), this::answered);
+            Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchConversationId("audit")), this::audited);
+            Inbox.each(this, MessageTemplate.not(MessageTemplate.matchConversationId("audit")), this::answered);
+        }
+
+        /** Asks the Medical agent for its audit trail, at most every two seconds (while the view is drawn). Loop thread. */
+        void refreshAudit() {
+            long now = currentTimeMillis();
+            if (now < auditDueMs) {
+                return;
+            }
+            auditDueMs = now + AUDIT_MS;
+            query("audit");
+            if (storyOf != null) {
+                query("audit " + storyOf);
+            }
+        }
+
+        private boolean query(String what) {
+            List<AgentEntry> medical = Platform.of(this).searchCopy(ServiceDescription.ofType(Services.MEDICAL));
+            if (medical.isEmpty()) {
+                return false;
+            }
+            AclMessage q = new AclMessage(Performative.QUERY_REF);
+            q.addReceiver(medical.get(0).aid());
+            q.setOntology(Services.ONTOLOGY);
+            q.setConversationId("audit");
+            q.setReplyWith("audit-" + (++queries));
+            q.setContent(what);
+            send(q);
+            return true;
+        }
+
+        /** The story of one transport: asked now, shown when the Medical agent answers. Loop thread. */
+        String askStory(String task) {
+            if (!task.matches("T\\d{1,9}")) {
+                throw new IllegalArgumentException("a transport is named by the Medical agent's id, T and a number; got '" + task + "'");
+            }
+            storyOf = task;
+            story = null;
+            if (!query("audit " + task)) {
+                throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
+            }
+            return "asked the Medical agent for the story of " + task;
+        }
+
+        private void audited(AclMessage m) {
+            try {
+                com.fasterxml.jackson.databind.JsonNode n = JSON.readTree(m.getContent());
+                com.fasterxml.jackson.databind.JsonNode ts = n.path("transports");
+                if (n.has("task")) {
+                    // One transport's story (or that the Medical agent has none of that id).
+                    if (n.path("task").asText().equals(storyOf)) {
+                        story = n.path("unknown").asBoolean() ? n : ts.get(0);
+                    }
+                } else {
+                    audit = ts;
+                }
+            } catch (java.io.IOException | RuntimeException e) {
+                // an answer that is not the audit's JSON: nothing to show
+            }
+        }
+
+        /** The Medical agent's last audit answer (its transports, newest first), or {@code null}. */
+        com.fasterxml.jackson.databind.JsonNode audit() {
+            return audit;
+        }
+
+        /** The story last asked for, as answered, or {@code null}. */
+        com.fasterxml.jackson.databind.JsonNode story() {
+            return story;
+        }
+
+        /** Where the desk's request came from, or empty. */
+        String origin(String deskId) {
+            return origins.getOrDefault(deskId, "");
         }
 
         /** The Medical agent's AGREE, INFORM, FAILURE or REFUSE to one of the desk's requests. */
@@ -95,6 +180,11 @@ public final class HospitalView implements ConsoleView {
 
         /** Sends the request; returns what to tell the user. Loop thread. */
         String ask(int from, int to, double priority, double unloadS) {
+            return ask(from, to, priority, unloadS, "");
+        }
+
+        /** As {@link #ask(int, int, double, double)}, noting where the request came from (the console's client). */
+        String ask(int from, int to, double priority, double unloadS, String origin) {
             List<AgentEntry> medical = Platform.of(this).searchCopy(ServiceDescription.ofType(Services.MEDICAL));
             if (medical.isEmpty()) {
                 throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
@@ -106,6 +196,8 @@ public final class HospitalView implements ConsoleView {
             m.setContent(new TransportRequest(from, to, priority, unloadS).encode());
             send(m);
             asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.get(0).aid().localName()));
+            origins.put(id, origin);
+            auditDueMs = 0;   // the new transport shows in the audit at the next snapshot
             if (asked.size() > 200) {
                 asked.remove(0);
             }
@@ -113,6 +205,7 @@ public final class HospitalView implements ConsoleView {
         }
     }
 
+    /** The view of a ward; {@code desk} asks for transports, or {@code null} for a view without the form's desk (a recording). */
     public HospitalView(HospitalWorld world, Hospital hospital, FrontDesk desk) {
         this.world = world;
         this.hospital = hospital;
@@ -144,13 +237,19 @@ public final class HospitalView implements ConsoleView {
 
     @Override
     public List<String> actions() {
-        return List.of("transport", "resume");
+        return List.of("transport", "resume", "story");
     }
 
     @Override
     public String act(String action, Map<String, String> p) {
         if (action.equals("resume")) {
             return resume(p.getOrDefault("chair", "").trim());
+        }
+        if (action.equals("story")) {
+            if (desk == null) {
+                throw new IllegalArgumentException("this view has no front desk (a recording of a run): no story to ask for");
+            }
+            return desk.askStory(p.getOrDefault("task", "").trim());
         }
         int from = integer(p, "from");
         int to = integer(p, "to");
@@ -163,7 +262,10 @@ public final class HospitalView implements ConsoleView {
         if (priority < 0 || priority > 3 || unload < 0 || unload > 3_600) {
             throw new IllegalArgumentException("priority is 0 to 3 and unload 0 to 3600 s");
         }
-        return desk.ask(from, to, priority, unload);
+        if (desk == null) {
+            throw new IllegalArgumentException("this view has no front desk (a recording of a run): nothing to ask");
+        }
+        return desk.ask(from, to, priority, unload, p.getOrDefault(io.concord.console.ConsoleView.CLIENT, ""));
     }
 
     /** An operator's decision that a held chair may drive again (its supervisor re-arms it; docs/chair-safety.md). */
@@ -461,11 +563,15 @@ public final class HospitalView implements ConsoleView {
         table(tables, "chairs", "Chairs at " + String.format(Locale.ROOT, "t = %.0f s", world.worldTimeNs() / 1e9),
                 List.of("chair", "pose", "speed", "task", "safety"), chairs);
         ArrayNode asked = json.createArrayNode();
-        for (FrontDesk.Asked a : List.copyOf(desk.asked)) {
+        for (FrontDesk.Asked a : desk == null ? List.<FrontDesk.Asked>of() : List.copyOf(desk.asked)) {
             asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
         }
         table(tables, "transports", "Transports asked here", List.of("id", "from → to", "state", "detail"), asked);
         table(tables, "bids", "The chairs' tasks and bids (the Medical agent's auctions)", List.of("chair", "task", "from → to", "state", "cost", "reason"), tasks);
+        if (desk != null) {
+            desk.refreshAudit();
+            auditTable(tables);
+        }
         ArrayNode forms = o.putArray("forms");
         ObjectNode f = forms.addObject().put("title", "Ask for a transport").put("action", "transport").put("button", "Ask the Medical agent");
         ArrayNode fields = f.putArray("fields");
@@ -478,6 +584,73 @@ public final class HospitalView implements ConsoleView {
         r.putArray("fields").addObject().put("name", "chair").put("label", "chair").put("value",
                 hospital.controls().isEmpty() ? "chair1" : hospital.controls().get(0).supervisor().name());
         return o.toString();
+    }
+
+    private static final java.time.format.DateTimeFormatter CLOCK = java.time.format.DateTimeFormatter.ofPattern("HH:mm:ss")
+            .withZone(java.time.ZoneOffset.UTC);
+
+    private static String clock(long ms) {
+        return ms <= 0 ? "" : CLOCK.format(java.time.Instant.ofEpochMilli(ms));
+    }
+
+    /**
+     * The Medical agent's audit trail (who asked, from where, when; the chair; when each phase
+     * began; how it ended and why), a row a transport, newest first; a click on a row asks for its
+     * story, shown in a table of its own. Times are the platform's clock, UTC; the CSV the page
+     * exports has them in full (ISO 8601).
+     */
+    private void auditTable(ArrayNode tables) {
+        ArrayNode rows = json.createArrayNode();
+        ArrayNode csv = json.createArrayNode();
+        com.fasterxml.jackson.databind.JsonNode a = desk.audit;
+        if (a != null) {
+            for (com.fasterxml.jackson.databind.JsonNode t : a) {
+                String by = t.path("askedBy").asText();
+                String conv = t.path("conversation").asText();
+                String origin = desk.origin(conv);
+                String asker = by + (conv.isEmpty() ? "" : " (" + conv + ")") + (origin.isEmpty() ? "" : ", console client " + origin);
+                ArrayNode r = rows.addArray().add(t.path("task").asText()).add(asker).add(clock(t.path("askedAtMs").asLong()))
+                        .add(t.path("from").asInt() + " → " + t.path("to").asInt()).add(t.path("chair").asText());
+                ArrayNode c = csv.addArray().add(t.path("task").asText()).add(by).add(conv).add(origin).add(iso(t.path("askedAtMs").asLong()))
+                        .add(t.path("from").asInt()).add(t.path("to").asInt()).add(t.path("priority").asDouble()).add(t.path("chair").asText())
+                        .add(t.path("auctions").asInt());
+                for (String ph : io.concord.agents.medical.TransportAudit.PHASES) {
+                    long at = t.path("phases").path(ph).asLong(0);
+                    r.add(clock(at));
+                    c.add(iso(at));
+                }
+                long end = t.path("endedAtMs").asLong(-1);
+                r.add(clock(end)).add(t.path("outcome").asText()).add(t.path("reason").asText());
+                c.add(iso(end)).add(t.path("outcome").asText()).add(t.path("reason").asText());
+            }
+        }
+        ObjectNode t = table(tables, "audit", "Audit trail (the Medical agent's; click a transport for its story)",
+                List.of("task", "asked by", "asked at", "from → to", "chair", "awarded", "to pick-up", "loading", "to drop-off", "unloading",
+                        "ended", "outcome", "reason"), rows);
+        t.putObject("click").put("action", "story").put("param", "task").put("column", 0);
+        t.put("wide", true);
+        ObjectNode x = t.putObject("csv");
+        ArrayNode cols = x.putArray("columns");
+        List.of("task", "asked_by", "conversation", "origin", "asked_at", "from", "to", "priority", "chair", "auctions", "awarded",
+                "to_pickup", "loading", "to_dropoff", "unloading", "ended", "outcome", "reason").forEach(cols::add);
+        x.set("rows", csv);
+        com.fasterxml.jackson.databind.JsonNode st = desk.story;
+        if (desk.storyOf != null) {
+            ArrayNode lines = json.createArrayNode();
+            if (st != null) {
+                for (com.fasterxml.jackson.databind.JsonNode l : st.path("story")) {
+                    lines.addArray().add(clock(l.path("atMs").asLong())).add(l.path("text").asText());
+                }
+            }
+            table(tables, "story", "The story of " + desk.storyOf + (st == null ? " (asked)" : st.path("unknown").asBoolean()
+                    ? ": the Medical agent has no transport of that id" : st.path("storyCut").asInt() > 0
+                    ? " (" + st.path("storyCut").asInt() + " later lines left out)" : ""), List.of("time", "what happened"), lines)
+                    .put("wide", true);
+        }
+    }
+
+    private static String iso(long ms) {
+        return ms <= 0 ? "" : java.time.Instant.ofEpochMilli(ms).toString();
     }
 
     /** What the chair's safety supervisor says: armed, or held and why, with who may resume it. */
@@ -516,10 +689,11 @@ public final class HospitalView implements ConsoleView {
         return s;
     }
 
-    private void table(ArrayNode tables, String id, String title, List<String> columns, ArrayNode rows) {
+    private ObjectNode table(ArrayNode tables, String id, String title, List<String> columns, ArrayNode rows) {
         ObjectNode t = tables.addObject().put("id", id).put("title", title);
         ArrayNode c = t.putArray("columns");
         columns.forEach(c::add);
         t.set("rows", rows);
+        return t;
     }
 }

@@ -35,9 +35,11 @@ class HospitalConsoleTest {
             platform.startAgent("medical", new MedicalAgent(line -> { }));
             HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
             platform.startAgent("desk", desk);
-            try (Console console = Console.start(platform, Console.Config.port(0));
+            try (Console console = Console.start(platform, Console.Config.port(0).withRecordings(java.nio.file.Path.of("target", "recordings")));
                  Browser browser = new Browser()) {
                 console.addView(new HospitalView(world, hospital, desk));
+                String recording = "hospital-" + System.nanoTime() + ".jsonl";
+                console.startRecording(recording);
                 // The ward is ready when every planner knows every door (asked on the loop).
                 while (true) {
                     CompletableFuture<Boolean> ready = new CompletableFuture<>();
@@ -96,8 +98,104 @@ class HospitalConsoleTest {
                 browser.until(d -> d.findElement(By.id("view-said")).getText().contains("chair1 is not held: it is armed"));
                 browser.screenshot("hospital-console");
                 assertTrue(browser.driver.findElement(By.id("bids")).getText().contains("chair1"));
+                theAuditTrailAndATransportsStory(browser);
+                replayShowsTheChairWhereItWas(console, browser, recording);
             }
         }
+    }
+
+    /**
+     * The audit trail: the transport asked on the page is there with who asked and from where (the
+     * page's own address), its chair and its phases; filtered, the CSV export holds what is kept;
+     * a click on it shows its story, from the call for proposals on.
+     */
+    private static void theAuditTrailAndATransportsStory(Browser browser) {
+        browser.until(d -> {
+            try {
+                String row = d.findElement(By.cssSelector("#audit tr[data-key='T1']")).getText();
+                return row.contains("desk@hospital-ui (desk-1), console client 127.0.0.1:") && row.contains("control-chair1");
+            } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        WebElement filter = browser.driver.findElement(By.cssSelector("#tw-audit .table-filter"));
+        filter.sendKeys("T9");
+        browser.until(d -> d.findElements(By.cssSelector("#audit tr[data-key]")).isEmpty());
+        filter.clear();
+        filter.sendKeys("T1");
+        browser.until(d -> !d.findElements(By.cssSelector("#audit tr[data-key='T1']")).isEmpty());
+        String csv = java.net.URLDecoder.decode(browser.driver.findElement(By.cssSelector("#tw-audit .table-csv")).getAttribute("href")
+                .substring("data:text/csv;charset=utf-8,".length()), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(csv.startsWith("task,asked_by,conversation,origin,asked_at,from,to,priority,chair,auctions,awarded,")
+                && csv.contains("\r\nT1,desk@hospital-ui,desk-1,127.0.0.1:") && csv.contains(",3,9,3,control-chair1,"), csv
+                + "\ntable: " + browser.driver.findElement(By.id("audit")).getText());
+        browser.until(d -> {
+            try {
+                d.findElement(By.cssSelector("#audit tr[data-key='T1']")).click();
+                return true;
+            } catch (org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        browser.until(d -> {
+            try {
+                String story = d.findElement(By.id("story")).getText();
+                return story.contains("CFP T1") && story.contains("ACCEPT control-chair1 for T1");
+            } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                return false;
+            }
+        });
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript("document.getElementById('tw-audit').scrollIntoView()");
+        browser.screenshot("hospital-audit");
+    }
+
+    /**
+     * The run so far, recorded from its start, played back: with the slider at a time when the
+     * chair was under way, the page shows it where the recorded snapshot had it, and its door as it was.
+     */
+    private static void replayShowsTheChairWhereItWas(Console console, Browser browser, String recording) throws Exception {
+        assertTrue(console.stopRecording().startsWith(recording + ": "));
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        java.util.List<com.fasterxml.jackson.databind.JsonNode> views = new java.util.ArrayList<>();
+        long t0 = -1;
+        for (String l : java.nio.file.Files.readAllLines(java.nio.file.Path.of("target", "recordings", recording))) {
+            com.fasterxml.jackson.databind.JsonNode n = json.readTree(l);
+            t0 = t0 < 0 ? n.get("t").asLong() : t0;
+            if (n.get("topic").asText().equals("view-hospital")) {
+                views.add(n);
+            }
+        }
+        // A snapshot with the chair away from where it started, the last of its millisecond.
+        com.fasterxml.jackson.databind.JsonNode first = chair(views.get(0));
+        int k = views.size() * 2 / 3;
+        while (k > 0 && (chair(views.get(k)).get("data").get("x").equals(first.get("data").get("x"))
+                || k + 1 < views.size() && views.get(k + 1).get("t").asLong() == views.get(k).get("t").asLong())) {
+            k--;
+        }
+        com.fasterxml.jackson.databind.JsonNode want = chair(views.get(k));
+        long at = views.get(k).get("t").asLong();
+        browser.driver.findElement(By.cssSelector("nav button[data-tab='replay']")).click();
+        browser.until(d -> d.findElement(By.cssSelector("#recordings a[data-recording='" + recording + "']"))).click();
+        browser.until(d -> d.findElement(By.id("replay-bar")).isDisplayed());
+        browser.driver.findElement(By.cssSelector("nav button[data-view='hospital']")).click();
+        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
+                "const s = document.getElementById('replay-slider'); s.value = arguments[0]; s.dispatchEvent(new Event('input'));", at - t0);
+        browser.until(d -> String.valueOf(at).equals(d.findElement(By.id("replay-time")).getAttribute("data-t")));
+        WebElement c = browser.driver.findElement(By.id("chair-chair1"));
+        assertTrue(want.get("data").get("x").asText().equals(c.getAttribute("data-x"))
+                && want.get("data").get("y").asText().equals(c.getAttribute("data-y")),
+                "replayed at " + (at - t0) + " ms: the chair at (" + c.getAttribute("data-x") + ", " + c.getAttribute("data-y")
+                        + "), recorded at " + want.get("data"));
+        browser.screenshot("hospital-replay");
+    }
+
+    private static com.fasterxml.jackson.databind.JsonNode chair(com.fasterxml.jackson.databind.JsonNode view) {
+        for (com.fasterxml.jackson.databind.JsonNode s : view.get("data").get("shapes")) {
+            if ("chair-chair1".equals(s.path("id").asText())) {
+                return s;
+            }
+        }
+        throw new AssertionError("no chair1 in a recorded snapshot");
     }
 
     /**

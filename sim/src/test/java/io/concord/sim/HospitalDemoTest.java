@@ -24,6 +24,41 @@ class HospitalDemoTest {
         assertTrue(Files.size(png) > 10_000);
     }
 
+    /**
+     * A virtual run recorded with {@code --record}: the console's hospital view every 250 ms of
+     * hospital time, which the console's Replay tab plays back; the same seed writes the same
+     * file, so a run seen to fail can be watched again as it was.
+     */
+    @Test
+    void aVirtualRunsRecordingIsTheSameForTheSameSeed() throws Exception {
+        List<List<String>> runs = new java.util.ArrayList<>();
+        for (int i = 0; i < 2; i++) {
+            Path file = Path.of("target", "recordings", "virtual-" + i + "-" + System.nanoTime() + ".jsonl");
+            Files.createDirectories(file.getParent());
+            HospitalDemo.Options o = HospitalDemo.parse(new String[] {"--virtual", "--seed", "7", "--tasks", "3-4:0:5",
+                    "--picture", "target/pictures/hospital-recorded.png", "--record", file.toString()});
+            assertTrue(HospitalDemo.runVirtual(HospitalMap.defaultHospital(), o));
+            runs.add(Files.readAllLines(file));
+        }
+        assertEquals(runs.get(0), runs.get(1), "the same seed, the same recording");
+        List<String> lines = runs.get(0);
+        assertTrue(lines.size() > 20 && lines.stream().allMatch(l -> l.matches("\\{\"t\":\\d+,\"topic\":\"view-hospital\",\"data\":\\{.*\\}\\}")),
+                lines.size() + " lines, the first: " + lines.get(0));
+        java.util.regex.Pattern chair = java.util.regex.Pattern.compile("\"id\":\"chair-chair1\".*?\"x\":\"([-0-9.]+)\",\"y\":\"([-0-9.]+)\"");
+        java.util.Set<String> places = new java.util.HashSet<>();
+        for (String l : lines) {
+            java.util.regex.Matcher m = chair.matcher(l);
+            assertTrue(m.find(), "chair1 in every snapshot");
+            places.add(m.group(1) + "," + m.group(2));
+        }
+        assertTrue(places.size() > 10, "the chair moves through the recording: " + places.size() + " places");
+        // An existing file is never written over.
+        IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(
+                new String[] {"--virtual", "--record", Path.of("target", "recordings").resolve(Files.list(Path.of("target", "recordings"))
+                        .filter(f -> f.getFileName().toString().startsWith("virtual-")).findFirst().orElseThrow().getFileName()).toString()}));
+        assertTrue(e.getMessage().contains("exists already"), e.getMessage());
+    }
+
     /** The demo's agents across two JVMs on loopback (real sockets, class 7), the world 20 times faster. */
     @Test
     void theScenarioRunsAcrossTwoJvmsOnRealSockets() throws Exception {
@@ -55,6 +90,10 @@ class HospitalDemoTest {
                 .getMessage().contains("from-to"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "0"}))
                 .getMessage().contains("1 or more"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--record", "run.jsonl"}))
+                .getMessage().contains("it needs --console [host:]port, or --virtual"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--virtual", "--record", "run.txt"}))
+                .getMessage().contains("ending in .jsonl"));
         assertEquals(new HospitalDemo.TaskSpec(3, 9, 0, 60), HospitalDemo.parse(new String[] {"--tasks", "3-9"}).tasks().get(0),
                 "the short form: priority 0, 60 s to load and unload");
         assertEquals("task '3-9:7': its priority is 0 to 3 (the dissertation's TP: 0, 1.5 or 3)",
@@ -105,9 +144,12 @@ class HospitalDemoTest {
      */
     @Test
     void withTheConsoleTheMedicalAgentStaysAndSigtermLeavesNoJvmBehind() throws Exception {
+        Path recording = Path.of("target", "recordings", "demo-" + System.nanoTime() + ".jsonl");
+        Files.createDirectories(recording.getParent());
         List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), Demo.class.getName(), "hospital",
-                "--console", "127.0.0.1:0", "--speed", "20", "--tasks", "3-14:0:5", "--picture", "target/pictures/hospital-console-demo.png"));
+                "--console", "127.0.0.1:0", "--speed", "20", "--tasks", "3-14:0:5", "--picture", "target/pictures/hospital-console-demo.png",
+                "--record", recording.toString()));
         Process launcher = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         java.util.concurrent.BlockingQueue<String> lines = new java.util.concurrent.LinkedBlockingQueue<>();
         List<String> all = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
@@ -143,6 +185,10 @@ class HospitalDemoTest {
                 child.onExit().get(60, java.util.concurrent.TimeUnit.SECONDS);
                 assertTrue(!child.isAlive(), "a JVM of the demo was left running: " + child.info());
             }
+            // --record: the ward's console recorded the run from its start until SIGTERM, the second transport too.
+            List<String> recorded = Files.readAllLines(recording);
+            assertTrue(recorded.stream().anyMatch(l -> l.contains("\"topic\":\"view-hospital\"") && l.contains("desk-1")),
+                    recorded.size() + " lines recorded, none with the transport asked at the console");
         } finally {
             launcher.descendants().forEach(ProcessHandle::destroyForcibly);
             launcher.destroyForcibly();

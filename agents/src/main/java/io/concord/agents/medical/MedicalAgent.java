@@ -125,8 +125,22 @@ public class MedicalAgent extends Agent {
 
     public MedicalAgent(Settings settings, Consumer<String> log) {
         this.settings = settings;
-        this.log = log;
+        // Every line about a transport goes into its story too (the audit trail).
+        this.log = line -> {
+            log.accept(line);
+            audit.logged(line, currentTimeMillis());
+        };
     }
+
+    private final TransportAudit audit = new TransportAudit();
+
+    /** The audit trail of the transports this agent was asked for. Thread-safe. */
+    public TransportAudit audit() {
+        return audit;
+    }
+
+    /** What an audit answer holds at most, in characters (it travels in one datagram). */
+    static final int AUDIT_CHARS = 40_000;
 
     /** The utility of a proposal (the dissertation's equation 6.1). */
     public static double utility(double cost, double path, double unload, double priority) {
@@ -148,13 +162,19 @@ public class MedicalAgent extends Agent {
                         resultAfterSilence(m, w);
                     }
                 });
+        // The audit trail, for the front desk and any member of the platform: QUERY-REF "audit" (the
+        // latest transports) or "audit T3" (one, with its story), answered with JSON.
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.QUERY_REF)
+                .and(m -> m.getOntology() == null || Services.ONTOLOGY.equals(m.getOntology()))
+                .and(m -> m.getContent() != null && m.getContent().trim().matches("audit( T\\d{1,9})?")), m -> send(m.createReply()
+                .setPerformative(Performative.INFORM).setLanguage("application/json").setContent(AuditJson.answer(audit, m.getContent().trim()))));
         MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST).and(WheelchairMessage.matching(TransportRequest.class));
         Inbox.each(this, requests, m -> {
             try {
                 TransportRequest r = WheelchairMessage.decode(m, TransportRequest.class);
                 // The AGREE is the request's own text.
                 send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));
-                transportOnLoop(r.from(), r.to(), r.priority(), r.unload()).thenAccept(o -> send(m.createReply()
+                transportOnLoop(r.from(), r.to(), r.priority(), r.unload(), m.getSender().name(), m.getConversationId()).thenAccept(o -> send(m.createReply()
                         .setPerformative(o.done() ? Performative.INFORM : Performative.FAILURE).setContent(answer(o))));
             } catch (IllegalArgumentException e) {
                 send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
@@ -178,10 +198,10 @@ public class MedicalAgent extends Agent {
      */
     public CompletableFuture<Outcome> transport(int from, int to, double priority, double unloadS) {
         if (runtime().inLoop()) {
-            return transportOnLoop(from, to, priority, unloadS);
+            return transportOnLoop(from, to, priority, unloadS, getAID().name(), null);
         }
         CompletableFuture<Outcome> f = new CompletableFuture<>();
-        runtime().execute(() -> transportOnLoop(from, to, priority, unloadS).whenComplete((o, e) -> {
+        runtime().execute(() -> transportOnLoop(from, to, priority, unloadS, getAID().name(), null).whenComplete((o, e) -> {
             if (e != null) {
                 f.completeExceptionally(e);
             } else {
@@ -191,14 +211,18 @@ public class MedicalAgent extends Agent {
         return f;
     }
 
-    private CompletableFuture<Outcome> transportOnLoop(int from, int to, double priority, double unloadS) {
+    private CompletableFuture<Outcome> transportOnLoop(int from, int to, double priority, double unloadS, String askedBy, String conversation) {
         if (priority < 0) {
             throw new IllegalArgumentException("priority must be 0 or more (0, 1.5 or 3), got " + priority);
         }
         String id = "T" + (++next);
         CompletableFuture<Outcome> f = new CompletableFuture<>();
         open.put(id, f);
+        audit.asked(id, askedBy, conversation, currentTimeMillis(), from, to, priority);
         f.whenComplete((o, e) -> {
+            if (o != null) {
+                audit.ended(id, o.done(), o.chair(), o.reason(), currentTimeMillis());
+            }
             open.remove(id);
             awarded.remove(id);
             running.remove(id);
@@ -259,6 +283,7 @@ public class MedicalAgent extends Agent {
             return; // not a task of this agent's, or not that chair's any more
         }
         Progress before = progress.put(p.task(), p);
+        audit.phase(p.task(), m.getSender().localName(), p.phase(), currentTimeMillis());
         if (settings.progressMs() > 0) {
             // The chair's other tasks wait in its queue behind this one: they get the same time (a
             // queue of three behind a chair held up is not three silent tasks; 20 chairs, 50 tasks).
@@ -272,6 +297,11 @@ public class MedicalAgent extends Agent {
         if (before == null || !before.phase().equals(p.phase())) {
             log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
                     + (p.patientOnBoard() ? " (the patient is on board)" : ""));
+        } else if (before.node() != p.node() || !java.util.Objects.equals(before.waits(), p.waits())) {
+            // The way it goes, node by node, and what it waits for (its route, a door): the story
+            // has it; the log keeps to the phases.
+            audit.logged(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
+                    + (p.waits() == null ? "" : ", waiting for " + p.waits()), currentTimeMillis());
         }
         if (awaitedAboard.containsKey(p.task())) {
             log.accept(getLocalName() + ": " + m.getSender().localName() + " is heard again with " + p.task() + "'s patient at node " + p.node());
@@ -351,6 +381,7 @@ public class MedicalAgent extends Agent {
             return;
         }
         int attempt = auctionsHeld.merge(id, 1, Integer::sum);
+        audit.auction(id);
         List<AID> chairs = new ArrayList<>();
         for (AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.ofType(Services.TRANSPORT))) {
             chairs.add(e.aid());
@@ -381,8 +412,8 @@ public class MedicalAgent extends Agent {
                             Proposal p = WheelchairMessage.decode(r, Proposal.class);
                             double cost = p.cost() - lostElsewhere(p, r.getSender().localName());
                             double u = utility(cost, p.path(), p.unload(), tp);
-                            log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f, path %.1f: U = %.3f",
-                                    getLocalName(), r.getSender().localName(), cost, p.path(), u));
+                            log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f, path %.1f for %s: U = %.3f",
+                                    getLocalName(), r.getSender().localName(), cost, p.path(), id, u));
                             if (u > best) {
                                 best = u;
                                 winner = r;
@@ -404,6 +435,7 @@ public class MedicalAgent extends Agent {
                         reply.setPerformative(Performative.ACCEPT_PROPOSAL).setContent(new Award(id).encode());
                         awarded.put(id, r);
                         winners.put(id, r.getSender().localName());
+                        audit.awarded(id, r.getSender().localName(), currentTimeMillis());
                         reply.setReplyByEpochMs(currentTimeMillis() + (long) (winnerCost * 3_000) + 120_000);
                         log.accept(getLocalName() + ": ACCEPT " + r.getSender().localName() + " for " + id);
                     } else {

@@ -61,7 +61,7 @@ public final class AttackChild {
         Thread flood = new Thread(() -> {
             try {
                 switch (kind) {
-                    case "forged" -> forged(targets, at, running, sent);
+                    case "forged" -> forged(targets, at, key.frameKeyBits(), running, sent);
                     case "handshake" -> handshakes(platform, key, targets, running, sent);
                     case "tcp" -> tcp(at, running, sent);
                     case "cpu" -> {
@@ -92,7 +92,7 @@ public final class AttackChild {
         System.out.flush();
     }
 
-    private static void forged(List<AID> targets, List<InetSocketAddress> at, AtomicBoolean running, AtomicLong sent)
+    private static void forged(List<AID> targets, List<InetSocketAddress> at, int keyBits, AtomicBoolean running, AtomicLong sent)
             throws IOException {
         SplittableRandom r = new SplittableRandom(17);
         long[] ids = new long[targets.size()];
@@ -111,7 +111,8 @@ public final class AttackChild {
                 if (shape > 0) {
                     ByteBuffer h = ByteBuffer.wrap(b);
                     h.putShort((short) Frames.MAGIC).put((byte) Frames.VERSION)
-                            .put((byte) (shape == 1 ? Frames.PROTECTION_GCM_PAIR : Frames.PROTECTION_GCM_PLATFORM))
+                            // The key's id is on every frame of the platform: an outsider copies it.
+                            .put((byte) ((shape == 1 ? Frames.PROTECTION_GCM_PAIR : Frames.PROTECTION_GCM_PLATFORM) | keyBits))
                             .putLong(r.nextLong()).putLong(shape == 1 ? ids[t] : Frames.ANY).putLong(r.nextLong());
                 }
                 ch.send(ByteBuffer.wrap(b, 0, len), at.get(t));

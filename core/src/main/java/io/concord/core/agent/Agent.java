@@ -171,6 +171,13 @@ public abstract class Agent {
         return inboxFull;
     }
 
+    /** Messages waiting in the mailbox now. */
+    final int mailboxSize() {
+        synchronized (mailboxLock) {
+            return mailbox.size();
+        }
+    }
+
     /** A message was taken from a full mailbox: at a quarter of its capacity, the senders are let go on. */
     private void taken() {
         int size;

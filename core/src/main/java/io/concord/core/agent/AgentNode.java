@@ -84,8 +84,10 @@ final class AgentNode implements StackHost {
             }
             AgentNode peer = runtime.handOverTarget(this, dst);
             if (peer != null && handOver(msg, peer)) {
+                sentCount++;
                 continue;
             }
+            sentCount++;
             stack.sendDown(Envelope.outgoing(msg, receiver, dst));
         }
     }
@@ -173,6 +175,30 @@ final class AgentNode implements StackHost {
         return agent.inboxFull();
     }
 
+    /** Messages the agent sent (one a receiver) and got into its mailbox, whichever way they went: on the loop. */
+    private long sentCount;
+    private long receivedCount;
+
+    @Override
+    public long messagesSent() {
+        return sentCount;
+    }
+
+    @Override
+    public long messagesReceived() {
+        return receivedCount;
+    }
+
+    @Override
+    public int mailboxSize() {
+        return agent.mailboxSize();
+    }
+
+    @Override
+    public void deleteAgent() {
+        agent.doDelete();
+    }
+
     @Override
     public void backpressure(boolean on) {
         runtime.backpressure(this, on);
@@ -203,6 +229,7 @@ final class AgentNode implements StackHost {
         if (!agent.postMessage(msg, runtime.mailboxCapacity())) {
             return false;
         }
+        receivedCount++;
         Tracer t = runtime.tracer();
         if (t.enabled()) {
             t.trace(runtime.nowNs(), aid.name(), "deliver", Tracer.describe(msg));

@@ -43,6 +43,13 @@ public final class DropCounters {
 
     /** Reasons that are part of normal operation (a copy sent on purpose against loss): never warned about. */
     private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy");
+    /**
+     * Reasons warned about once per process, not once per agent: frames of another platform
+     * sharing the port range reach every agent of this one alike ({@code foreign-key} under
+     * another key, {@code foreign-platform} under the same key and another name).
+     */
+    private static final java.util.Set<String> ONCE_PER_PROCESS = java.util.Set.of("foreign-key", "foreign-platform");
+    private static final java.util.Set<String> WARNED_IN_PROCESS = ConcurrentHashMap.newKeySet();
 
     /** Counts one drop, and logs it if it is the first of its reason for this node. */
     public void record(String node, String reason, String detail) {
@@ -63,8 +70,11 @@ public final class DropCounters {
                 if (layer != null) {
                     detail = layer + ": " + detail;
                 }
-                if (EXPECTED.contains(reason)) {
+                if (EXPECTED.contains(reason) || ONCE_PER_PROCESS.contains(reason) && !WARNED_IN_PROCESS.add(reason)) {
                     LOG.debug("{} dropped a message ({}): {}", node, reason, detail);
+                } else if (ONCE_PER_PROCESS.contains(reason)) {
+                    LOG.warn("{} dropped a message ({}): {}. Logged once for this process: every agent counts them, "
+                        + "see AgentRuntime.drops()", node, reason, detail);
                 } else {
                     LOG.warn("{} dropped a message ({}): {}. Further drops for this reason are only counted; "
                         + "see AgentRuntime.drops()", node, reason, detail);

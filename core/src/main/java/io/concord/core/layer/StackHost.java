@@ -52,6 +52,32 @@ public interface StackHost {
         return false;
     }
 
+    /**
+     * Messages the node's agent has sent (one a receiver), whichever way they went (through the
+     * stack, or handed over in memory to an agent of the same runtime); -1 if the node does not count.
+     */
+    default long messagesSent() {
+        return -1;
+    }
+
+    /** Messages put into the node's agent's mailbox, whichever way they came; -1 if the node does not count. */
+    default long messagesReceived() {
+        return -1;
+    }
+
+    /** Messages waiting in the node's agent's mailbox, or -1 if the node has no mailbox. */
+    default int mailboxSize() {
+        return -1;
+    }
+
+    /**
+     * Deletes the node's agent after its current step, as {@code doDelete()} does: its
+     * {@code takeDown()} runs and it leaves the platform (the observation service's {@code kill}).
+     * Nothing by default.
+     */
+    default void deleteAgent() {
+    }
+
     /** The event type fired down the stack when a full mailbox has been taken down again. */
     String INBOX_DRAINED = "inbox-drained";
 

@@ -36,6 +36,13 @@ public final class Frames {
     public static final int PROTECTION_MASK = 3;
     /** Flag bit 2: a handshake frame of the security layer. */
     public static final int FLAG_HANDSHAKE = 4;
+    /**
+     * Flag bits 3-7: the platform key's id (5 bits of HKDF-SHA256 of the key, info
+     * {@code concord key id v1}), 0 under CRC alone: a frame of another platform sharing the port
+     * range is told from a forged one before any MAC is computed, most of the time (1 in 32 keys
+     * share an id; their frames are then told apart by the tag, as {@code bad-tag}).
+     */
+    public static final int KEY_ID_MASK = 0xF8;
 
     /**
      * The destination id of a frame for whichever agent holds the port it is sent to: the

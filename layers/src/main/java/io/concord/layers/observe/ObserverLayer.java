@@ -30,7 +30,13 @@ import java.util.Map;
  * (burst {@link #EVENT_BURST}), the rest counted ({@code sniff-limit}) and reported as
  * {@code missed} in the next event.</li>
  * <li>{@code QUERY-REF}, ontology {@value #ONTOLOGY}, content {@code status}: INFORM with this
- * agent's role, container and term, platform clock offset, and its drops by layer and reason.</li>
+ * agent's role, container and term, platform clock offset, its drops by layer and reason, where it
+ * runs (host and process id), the messages it sent and got in its mailbox, its mailbox and its
+ * loop's lag (how long a task due now waited for the loop when the question came).</li>
+ * <li>{@code REQUEST}, ontology {@value #ONTOLOGY}, content {@code kill}: AGREE, then the agent is
+ * deleted as its own {@code doDelete()} would (its {@code takeDown()} runs, it leaves the
+ * platform's lists). JADE's AMS does the same for any agent of the platform; here, as everything
+ * above the container layer, only a member of the platform reaches it (class 7: a key holder).</li>
  * </ul>
  */
 public final class ObserverLayer extends Layer {
@@ -66,6 +72,7 @@ public final class ObserverLayer extends Layer {
     }
     private LayerContext ctx;
     private AID self;
+    private static final long PID = ProcessHandle.current().pid();
 
     @Override
     public String name() {
@@ -103,7 +110,7 @@ public final class ObserverLayer extends Layer {
         AclMessage m = env.message();
         if (m != null && ONTOLOGY.equals(m.getOntology()) && m.getSender() != null) {
             switch (m.getPerformative()) {
-                case SUBSCRIBE, QUERY_REF, CANCEL -> {
+                case SUBSCRIBE, QUERY_REF, CANCEL, REQUEST -> {
                     serve(m);
                     return;
                 }
@@ -143,16 +150,33 @@ public final class ObserverLayer extends Layer {
             return;
         }
         if (m.getPerformative() == Performative.QUERY_REF && content.equals("status")) {
-            answer(m, Performative.INFORM, status());
+            // The answer waits for the loop as a task due now does: how long it waited is the loop's lag.
+            long asked = ctx.nowNs();
+            ctx.host().schedule(asked, () -> answer(m, Performative.INFORM, status(Math.max(0, ctx.nowNs() - asked) / 1_000_000)));
             return;
         }
-        answer(m, Performative.NOT_UNDERSTOOD, "{\"reason\":\"" + ONTOLOGY + " knows SUBSCRIBE sniff, CANCEL and QUERY-REF status\"}");
+        if (m.getPerformative() == Performative.REQUEST && content.equals("kill")) {
+            answer(m, Performative.AGREE, "{\"kill\":\"" + self.name() + " leaves the platform\"}");
+            ctx.host().deleteAgent();
+            return;
+        }
+        answer(m, Performative.NOT_UNDERSTOOD, "{\"reason\":\"" + ONTOLOGY + " knows SUBSCRIBE sniff, CANCEL, QUERY-REF status and REQUEST kill\"}");
     }
 
-    /** This agent's status as JSON. */
+    /** This agent's status as JSON (its loop's lag not measured: 0). */
     public String status() {
+        return status(0);
+    }
+
+    private String status(long lagMs) {
         StringBuilder b = new StringBuilder(256).append('{');
         Json.field(b, "agent", self.name()).append(',');
+        io.concord.core.net.Address at = ctx.host().localAddress();
+        Json.field(b, "host", at == null ? null : at.host()).append(',');
+        // Counted by the node, so that messages handed over in memory (which skip the stacks) count too.
+        b.append("\"pid\":").append(PID).append(",\"sent\":").append(ctx.host().messagesSent())
+                .append(",\"received\":").append(ctx.host().messagesReceived())
+                .append(",\"mailbox\":").append(ctx.host().mailboxSize()).append(",\"lagMs\":").append(lagMs).append(',');
         ContainerLayer c = ctx.find(ContainerLayer.class);
         if (c != null) {
             Json.field(b, "role", c.role().name()).append(',');

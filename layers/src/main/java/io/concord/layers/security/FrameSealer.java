@@ -57,6 +57,7 @@ final class FrameSealer {
         try {
             if (protection != Protection.CRC) {
                 platformKeyBytes = platformKey.bytes();
+                keyBits = keyBitsOf(platformKeyBytes);
                 platformAead = new SecretKeySpec(Crypto.hkdf(platformKeyBytes, null, "concord platform aead v1", 16), "AES");
                 platformEncrypt = Cipher.getInstance("AES/GCM/NoPadding");
                 platformDecrypt = Cipher.getInstance("AES/GCM/NoPadding");
@@ -68,6 +69,18 @@ final class FrameSealer {
         } catch (GeneralSecurityException e) {
             throw new IllegalStateException("this JVM lacks AES-GCM or HMAC-SHA256: " + e.getMessage(), e);
         }
+    }
+
+    /** The platform key's id in the flags' bits 3-7 (0 under CRC alone). */
+    private int keyBits;
+
+    int keyBits() {
+        return keyBits;
+    }
+
+    /** A platform key's id, where the flags carry it (bits 3-7): 5 bits of HKDF-SHA256 of the key, info {@code concord key id v1}. */
+    static int keyBitsOf(byte[] platformKey) {
+        return (Crypto.hkdf(platformKey, null, "concord key id v1", 1)[0] << 3) & Frames.KEY_ID_MASK;
     }
 
     /** The counter of the next frame (see {@link SecurityLayer#setNextCounter}). */
@@ -94,7 +107,7 @@ final class FrameSealer {
         byte[] d = env.data();
         Frames.putShort(d, h, Frames.MAGIC);
         d[h + 2] = (byte) Frames.VERSION;
-        d[h + 3] = (byte) (protection | flags);
+        d[h + 3] = (byte) (protection | flags | (protection == Frames.PROTECTION_CRC ? 0 : keyBits));
         Frames.putLong(d, h + 4, ownId);
         Frames.putLong(d, h + 12, env.peerId());
         long ctr = counter++;

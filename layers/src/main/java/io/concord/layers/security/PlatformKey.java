@@ -237,4 +237,13 @@ public final class PlatformKey {
     public int hashCode() {
         return Arrays.hashCode(key);
     }
+
+    /**
+     * The key's id as frames carry it in their flags (bits 3-7, docs/wire-format.md): 5 bits of
+     * HKDF-SHA256 of the key, info {@code concord key id v1}, shifted into place. No secret: it
+     * tells another platform's frames from this one's before any tag is computed.
+     */
+    public int frameKeyBits() {
+        return FrameSealer.keyBitsOf(bytes());
+    }
 }

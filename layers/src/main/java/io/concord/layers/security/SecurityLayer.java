@@ -199,11 +199,12 @@ public final class SecurityLayer extends Layer {
             return;
         }
         int flags = d[h + 3] & 0xFF;
-        if ((flags & ~(Frames.PROTECTION_MASK | Frames.FLAG_HANDSHAKE)) != 0) {
-            ctx.drop(env, "malformed-frame", "unknown flags " + Integer.toHexString(flags));
+        int keyBits = flags & Frames.KEY_ID_MASK;
+        int protection = flags & Frames.PROTECTION_MASK;
+        if (protection == Frames.PROTECTION_CRC && keyBits != 0) {
+            ctx.drop(env, "malformed-frame", "a key id on a frame without a key (flags " + Integer.toHexString(flags) + ")");
             return;
         }
-        int protection = flags & Frames.PROTECTION_MASK;
         boolean handshakeFrame = (flags & Frames.FLAG_HANDSHAKE) != 0;
         long src = Frames.getLong(d, h + 4);
         long dst = Frames.getLong(d, h + 12);
@@ -225,6 +226,13 @@ public final class SecurityLayer extends Layer {
                 ? Frames.PROTECTION_GCM_PLATFORM : config.protection().bits;
         if (protection != required) {
             ctx.drop(env, "unprotected", "protection " + protection + " where " + required + " is required");
+            return;
+        }
+        if (protection != Frames.PROTECTION_CRC && keyBits != sealer.keyBits()) {
+            // Sealed under another key: most often another platform sharing this port range on the
+            // machine (its discovery asks every port). Skipped before any MAC is computed.
+            ctx.drop(env, "foreign-key", "a frame sealed under another platform's key (key id " + (keyBits >> 3) + ", this platform's "
+                    + (sealer.keyBits() >> 3) + ") from " + env.source() + ": another platform shares this port range, or a forgery; skipped");
             return;
         }
         byte[] body;

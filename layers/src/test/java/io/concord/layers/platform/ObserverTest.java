@@ -106,10 +106,55 @@ class ObserverTest {
             w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "a", "status", "q1"));
             assertTrue(w.sim.runUntil(() -> !events(s).isEmpty(), 2_000));
             String st = events(s).get(0);
-            assertTrue(st.startsWith("{\"agent\":\"a@sim\",\"role\":\""), st);
+            assertTrue(st.startsWith("{\"agent\":\"a@sim\",") && st.contains(",\"role\":\""), st);
             assertTrue(st.contains("\"container\":\"") && st.contains("\"clockOffsetUs\":") && st.contains("\"drops\":{"), st);
+            // Where it runs (the console groups by it) and how it is doing.
+            assertTrue(st.contains("\"pid\":" + ProcessHandle.current().pid() + ",") && st.contains("\"host\":\""), st);
+            assertTrue(st.matches(".*\"sent\":\\d+,\"received\":\\d+,\"mailbox\":0,\"lagMs\":\\d+,.*"), st);
             w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "a", "what?", "q2"));
             assertTrue(w.sim.runUntil(() -> s.got.stream().anyMatch(m -> m.getPerformative() == Performative.NOT_UNDERSTOOD), 2_000));
+        }
+    }
+
+    @Test
+    void statusCountsTheApplicationsMessagesNotTheServicesOwn() {
+        try (PlatformWorld w = world()) {
+            PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+            PlatformServicesTest.Inbox b = new PlatformServicesTest.Inbox();
+            w.start("a");
+            join(w, "b", b);
+            join(w, "sniffer", s);
+            Agent a = w.rt.agent(w.live.get("a"));
+            for (int i = 0; i < 3; i++) {
+                AclMessage m = new AclMessage(Performative.INFORM);
+                m.addReceiver(AID.local("b", "sim"));
+                m.setContent("n" + i);
+                a.send(m);
+            }
+            assertTrue(w.sim.runUntil(() -> b.got.size() == 3, 2_000));
+            w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "a", "status", "q1"));
+            w.rt.agent(w.live.get("sniffer")).send(ask(Performative.QUERY_REF, "b", "status", "q2"));
+            assertTrue(w.sim.runUntil(() -> events(s).size() == 2, 2_000));
+            String ofA = events(s).stream().filter(e -> e.startsWith("{\"agent\":\"a@sim\"")).findFirst().orElseThrow();
+            String ofB = events(s).stream().filter(e -> e.startsWith("{\"agent\":\"b@sim\"")).findFirst().orElseThrow();
+            assertTrue(ofA.contains("\"sent\":3,\"received\":0,"), ofA);
+            assertTrue(ofB.contains("\"sent\":0,\"received\":3,"), ofB);
+        }
+    }
+
+    /** JADE's AMS kills any agent on request; here any member of the platform may ask an agent to leave. */
+    @Test
+    void anAgentAskedToLeaveAgreesAndLeavesTheLists() {
+        try (PlatformWorld w = world()) {
+            PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+            w.start("a");
+            join(w, "sniffer", s);
+            w.rt.agent(w.live.get("sniffer")).send(ask(Performative.REQUEST, "a", "kill", "k1"));
+            assertTrue(w.sim.runUntil(() -> s.got.stream().anyMatch(m -> m.getPerformative() == Performative.AGREE), 2_000));
+            assertTrue(w.sim.runUntil(() -> !w.rt.agents().contains(w.live.get("a")), 2_000), "a is deleted");
+            ContainerLayer c = io.concord.layers.Platform.containerLayer(w.rt, w.live.get("sniffer"));
+            assertTrue(w.sim.runUntil(() -> c.agents().stream().noneMatch(e -> e.name().equals("a@sim"))
+                    && c.globalAgents().stream().noneMatch(e -> e.name().equals("a@sim")), 5_000), "a left the lists");
         }
     }
 

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -80,14 +81,42 @@ class SecurityLayerTest {
         assertFalse(wire.contains("secret"));
     }
 
+    /**
+     * Another platform's frame (its key's id is not this platform's): skipped as such before any
+     * tag is computed, and told apart from a forgery; the same frame made to carry this platform's
+     * key id fails authentication.
+     */
     @Test
-    void aWrongPlatformKeyFailsAuthentication() {
-        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.GCM_PLATFORM, PlatformKey.ofHex("11".repeat(32))));
-        LayerHarness b = agent("b@p", layer(SecurityLayer.Protection.GCM_PLATFORM, Stacks.KEY));
+    void aWrongPlatformKeyIsAnotherPlatformsFrameAndWithThisKeysIdFailsAuthentication() {
+        PlatformKey other = PlatformKey.ofHex("11".repeat(32));
+        int ours = Stacks.KEY.frameKeyBits();
+        assertTrue(other.frameKeyBits() != ours, "the test's two keys have ids of their own");
+        for (SecurityLayer.Protection p : List.of(SecurityLayer.Protection.HMAC, SecurityLayer.Protection.GCM_PLATFORM)) {
+            LayerHarness a = agent("a@p", layer(p, other));
+            LayerHarness b = agent("b@p", layer(p, Stacks.KEY));
+            a.sendDown(body("x", "b@p"));
+            byte[] frame = a.pollDown().dataCopy();
+            deliver(frame, A_ADDR, b);
+            assertNull(b.pollUp());
+            assertEquals(Map.of("foreign-key", 1L), b.drops().snapshot(), p + ": skipped as another platform's");
+            frame[3] = (byte) ((frame[3] & ~Frames.KEY_ID_MASK) | ours);
+            deliver(frame, A_ADDR, b);
+            assertNull(b.pollUp());
+            assertEquals(1L, b.drops().get("bad-tag"), p + ": with this platform's key id, a forgery");
+        }
+    }
+
+    /** Under CRC alone there is no key: its frames carry no key id, and one with a key id is malformed. */
+    @Test
+    void aFrameWithoutAKeyCarriesNoKeyId() {
+        LayerHarness a = agent("a@p", layer(SecurityLayer.Protection.CRC, null));
+        LayerHarness b = agent("b@p", layer(SecurityLayer.Protection.CRC, null));
         a.sendDown(body("x", "b@p"));
-        carry(a, A_ADDR, b);
-        assertNull(b.pollUp());
-        assertEquals(1, b.drops().get("bad-tag"));
+        byte[] frame = a.pollDown().dataCopy();
+        assertEquals(0, frame[3] & Frames.KEY_ID_MASK);
+        frame[3] |= 0x08;
+        deliver(frame, A_ADDR, b);
+        assertEquals(1L, b.drops().get("malformed-frame"));
     }
 
     @Test
@@ -177,7 +206,7 @@ class SecurityLayerTest {
         byte[] f = new byte[48];
         Frames.putShort(f, 0, Frames.MAGIC);
         f[2] = (byte) Frames.VERSION;
-        f[3] = (byte) Frames.PROTECTION_GCM_PAIR;
+        f[3] = (byte) (Frames.PROTECTION_GCM_PAIR | Stacks.KEY.frameKeyBits()); // the key's id is public
         Frames.putLong(f, 4, src);
         Frames.putLong(f, 12, Frames.id(to));
         Frames.putLong(f, 20, ctr);
