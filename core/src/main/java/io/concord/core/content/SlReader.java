@@ -58,6 +58,10 @@ final class SlReader {
             case '#':
                 return byteString();
             case '?':
+                if (s.startsWith("??", pos)) {
+                    // JADE's writer leaves a string starting with "??" bare (SL's meta symbol)
+                    return new AbsPrimitive(token());
+                }
                 return variable();
             case ')':
                 throw error("unexpected ')'");
@@ -190,12 +194,13 @@ final class SlReader {
             throw error("expected a term");
         }
         char c = t.charAt(0);
-        boolean numeric = (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
+        // JADE's writer leaves strings that start with '+' or '.' bare, so only these start a number
+        boolean numeric = (c >= '0' && c <= '9') || c == '-';
         if (!numeric) {
-            if (t.equals("true")) {
+            if (t.equalsIgnoreCase("true")) {
                 return new AbsPrimitive(Boolean.TRUE);
             }
-            if (t.equals("false")) {
+            if (t.equalsIgnoreCase("false")) {
                 return new AbsPrimitive(Boolean.FALSE);
             }
             return new AbsPrimitive(t);

@@ -7,6 +7,8 @@ import java.util.List;
 
 /** The SL writer; see {@link SlCodec}. */
 final class SlWriter {
+    private static final java.util.regex.Pattern NUMBER = java.util.regex.Pattern.compile(
+            "[-+]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?");
     private final StringBuilder out = new StringBuilder();
     private final SlCodec codec;
 
@@ -85,7 +87,7 @@ final class SlWriter {
     }
 
     private void string(String s) throws ContentException {
-        if (isWord(s) && !s.equals("true") && !s.equals("false")) {
+        if (isWord(s)) {
             out.append(s);
             return;
         }
@@ -104,18 +106,20 @@ final class SlWriter {
         out.append('"');
     }
 
-    /** A word SL reads back as the same string: no space, parenthesis or quote, and no start that reads as something else. */
+    /**
+     * A string JADE's writer leaves bare: not empty; no character at or below U+0020, above
+     * U+007F, or among {@code "()}; a first character that is not one of {@code #-0123456789:?};
+     * not {@code true} or {@code false} in any case. One deviation from JADE: a string that reads as
+     * a number ({@code +1}, {@code .5}) is quoted, where JADE leaves it bare and then reads a number.
+     */
     static boolean isWord(String s) {
-        if (s.isEmpty()) {
-            return false;
-        }
-        char first = s.charAt(0);
-        if ("#0123456789-+.?:@".indexOf(first) >= 0) {
+        if (s.isEmpty() || "#-0123456789:?".indexOf(s.charAt(0)) >= 0 || NUMBER.matcher(s).matches()
+                || s.equalsIgnoreCase("true") || s.equalsIgnoreCase("false")) {
             return false;
         }
         for (int i = 0; i < s.length(); i++) {
             char c = s.charAt(i);
-            if (c <= ' ' || c == '(' || c == ')' || c == '"') {
+            if (c <= ' ' || c > 0x7f || c == '(' || c == ')' || c == '"') {
                 return false;
             }
         }
