@@ -63,7 +63,7 @@ final class SlWriter {
         if (depth + 1 > codec.maxDepth()) {
             throw new ContentException("content nested deeper than the limit of " + codec.maxDepth());
         }
-        if (!isWord(name)) {
+        if (!isSymbol(name)) {
             throw new ContentException("not an SL symbol: '" + name + "'");
         }
         out.append('(').append(name);
@@ -104,6 +104,20 @@ final class SlWriter {
             out.append(c);
         }
         out.append('"');
+    }
+
+    /** A name the reader takes as a compound's symbol. */
+    static boolean isSymbol(String s) {
+        if (s.isEmpty() || "#:?".indexOf(s.charAt(0)) >= 0) {
+            return false;
+        }
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            if (c <= ' ' || c == '(' || c == ')' || c == '"') {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
