@@ -16,11 +16,17 @@ import java.util.Objects;
  * NOT-UNDERSTOOD. Not thread-safe while registering; safe to share once set up.
  */
 public final class ContentManager {
-    private final Map<String, SlCodec> languages = new LinkedHashMap<>();
+    private final Map<String, Object> languages = new LinkedHashMap<>();
     private final Map<String, Ontology> ontologies = new LinkedHashMap<>();
 
     /** Registers a codec under its language name (such as {@code fipa-sl}). */
     public ContentManager register(SlCodec codec) {
+        languages.put(codec.languageName(), codec);
+        return this;
+    }
+
+    /** Registers the binary codec under {@value BinaryContentCodec#LANGUAGE}; its content travels as bytes. */
+    public ContentManager register(BinaryContentCodec codec) {
         languages.put(codec.languageName(), codec);
         return this;
     }
@@ -41,16 +47,22 @@ public final class ContentManager {
      */
     public void fill(AclMessage message, Object content) throws ContentException {
         Objects.requireNonNull(content, "content");
-        SlCodec codec = pick(languages, message.getLanguage(), "language");
+        Object codec = pick(languages, message.getLanguage(), "language");
         Ontology ontology = pick(ontologies, message.getOntology(), "ontology");
         if (!(content instanceof Predicate || content instanceof Action || content instanceof AbsCompound)) {
             throw new ContentException("a " + content.getClass().getSimpleName()
                     + " cannot be content on its own: wrap an action in Action, or send a predicate");
         }
-        String text = codec.write(ontology.toAbs(content));
-        message.setLanguage(codec.languageName());
+        AbsObject abs = ontology.toAbs(content);
+        if (codec instanceof SlCodec sl) {
+            message.setContent(sl.write(abs));
+            message.setLanguage(sl.languageName());
+        } else {
+            BinaryContentCodec binary = (BinaryContentCodec) codec;
+            message.setByteSequenceContent(binary.write(List.of(abs)));
+            message.setLanguage(binary.languageName());
+        }
         message.setOntology(ontology.name());
-        message.setContent(text);
     }
 
     /**
@@ -70,14 +82,9 @@ public final class ContentManager {
 
     /** Reads every element of the message's content; see {@link #extract(AclMessage)}. */
     public List<Object> extractAll(AclMessage message) throws ContentException {
-        SlCodec codec = named(languages, message.getLanguage(), "language");
         Ontology ontology = named(ontologies, message.getOntology(), "ontology");
-        String text = message.getContent();
-        if (text == null) {
-            throw new ContentException("the message has no content");
-        }
         List<Object> out = new ArrayList<>();
-        for (AbsObject abs : codec.read(text)) {
+        for (AbsObject abs : extractAbs(message)) {
             Schema schema = abs instanceof AbsCompound c ? ontology.schema(c.name()) : null;
             if (schema == null || !(schema.kind() == Schema.Kind.PREDICATE || schema.javaClass() == Action.class)) {
                 throw new ContentException("content element " + describe(abs) + " is neither a proposition nor an action");
@@ -93,11 +100,18 @@ public final class ContentManager {
      * no Java class.
      */
     public List<AbsObject> extractAbs(AclMessage message) throws ContentException {
-        SlCodec codec = named(languages, message.getLanguage(), "language");
+        Object codec = named(languages, message.getLanguage(), "language");
+        if (codec instanceof BinaryContentCodec binary) {
+            byte[] bytes = message.getByteSequenceContent();
+            if (bytes == null) {
+                throw new ContentException("the message has no content");
+            }
+            return binary.read(bytes);
+        }
         if (message.getContent() == null) {
             throw new ContentException("the message has no content");
         }
-        return codec.read(message.getContent());
+        return ((SlCodec) codec).read(message.getContent());
     }
 
     private static String describe(AbsObject abs) {

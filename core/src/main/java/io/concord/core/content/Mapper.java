@@ -163,8 +163,8 @@ final class Mapper {
         if (aggregate == null) {
             return fromAbs(abs, type, where);
         }
-        if (!(abs instanceof AbsAggregate a)) {
-            throw new ContentException(where + ": expected a " + aggregate);
+        if (!(abs instanceof AbsAggregate a) || !a.type().equals(aggregate)) {
+            throw new ContentException("slot :" + name + " of " + c.name() + " must be a " + aggregate);
         }
         List<Object> elements = new ArrayList<>();
         for (AbsObject e : a.elements()) {

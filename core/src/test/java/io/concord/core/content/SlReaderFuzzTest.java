@@ -107,7 +107,13 @@ class SlReaderFuzzTest {
         int edits = 1 + r.nextInt(4);
         for (int k = 0; k < edits && b.length() > 0; k++) {
             int at = r.nextInt(b.length());
-            switch (r.nextInt(4)) {
+            switch (r.nextInt(5)) {
+                case 4 -> {
+                    // a well-formed text of the wrong shape: a set where a sequence belongs, or the reverse
+                    String t = b.toString();
+                    b.setLength(0);
+                    b.append(r.nextBoolean() ? t.replaceFirst("\\(sequence", "(set") : t.replaceFirst("\\(set", "(sequence"));
+                }
                 case 0 -> b.insert(at, ALPHABET.charAt(r.nextInt(ALPHABET.length())));
                 case 1 -> b.deleteCharAt(at);
                 case 2 -> b.setCharAt(at, ALPHABET.charAt(r.nextInt(ALPHABET.length())));
