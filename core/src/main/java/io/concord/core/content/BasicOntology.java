@@ -15,7 +15,9 @@ import java.util.Set;
  * The basic ontology every other extends, as JADE's {@code BasicOntology}: primitives, aggregates,
  * {@code agent-identifier} ({@link AID}), {@code action} ({@link Action}), {@code done}
  * ({@link Done}), {@code result} ({@link Result}), {@code =} ({@link Equals}), {@code true}
- * ({@link TrueProposition}) and {@code false} ({@link FalseProposition}).
+ * ({@link TrueProposition}) and {@code false} ({@link FalseProposition}). The last two are written
+ * as SL's bare {@code true} and {@code false} (a boolean where a formula belongs); {@code (true)}
+ * is read as well.
  */
 public final class BasicOntology implements Ontology {
 
@@ -118,11 +120,12 @@ public final class BasicOntology implements Ontology {
             return AbsCompound.positional("=", m.toAbs(required(e.left(), "=", "left")),
                     m.toAbs(required(e.right(), "=", "right")));
         }
+        // SL's true and false are bare atomic formulas, as JADE writes them: (and true (not false))
         if (v instanceof TrueProposition) {
-            return AbsCompound.positional("true");
+            return new AbsPrimitive(Boolean.TRUE);
         }
         if (v instanceof FalseProposition) {
-            return AbsCompound.positional("false");
+            return new AbsPrimitive(Boolean.FALSE);
         }
         if (v instanceof Set<?> s) {
             return new AbsAggregate(AbsAggregate.SET, m.toAbsAll(s));

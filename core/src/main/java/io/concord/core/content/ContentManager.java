@@ -85,6 +85,10 @@ public final class ContentManager {
         Ontology ontology = named(ontologies, message.getOntology(), "ontology");
         List<Object> out = new ArrayList<>();
         for (AbsObject abs : extractAbs(message)) {
+            if (abs instanceof AbsPrimitive p && p.value() instanceof Boolean b) {
+                out.add(b ? new TrueProposition() : new FalseProposition());
+                continue;
+            }
             Schema schema = abs instanceof AbsCompound c ? ontology.schema(c.name()) : null;
             if (schema == null || !(schema.kind() == Schema.Kind.PREDICATE || schema.javaClass() == Action.class)) {
                 throw new ContentException("content element " + describe(abs) + " is neither a proposition nor an action");

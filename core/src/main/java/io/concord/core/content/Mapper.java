@@ -199,6 +199,13 @@ final class Mapper {
         if (expected == Object.class) {
             return v;
         }
+        if (v instanceof Boolean b && (expected == Predicate.class || expected == TrueProposition.class
+                || expected == FalseProposition.class)) {
+            Object proposition = b ? new TrueProposition() : new FalseProposition();
+            if (expected.isInstance(proposition)) {
+                return proposition;
+            }
+        }
         Class<?> e = box(expected);
         if (e == Long.class && (v instanceof Long || v instanceof Integer)) {
             return ((Number) v).longValue();

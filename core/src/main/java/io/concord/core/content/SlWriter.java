@@ -24,6 +24,10 @@ final class SlWriter {
         w.out.append('(');
         for (AbsObject e : elements) {
             w.term(e, 1);
+            // JADE writes a list of several elements with a space after each: (a b )
+            if (elements.size() > 1) {
+                w.out.append(' ');
+            }
         }
         w.out.append(')');
         return w.out.toString();
