@@ -42,6 +42,10 @@ final class Mapper {
         for (int i = 0; i < schema.slots().size(); i++) {
             Schema.SlotSchema s = schema.slots().get(i);
             Object value = bean.get(v, i);
+            if (value instanceof Collection<?> c && c.isEmpty() && !s.mandatory() && !positional && s.cardMin() == 0) {
+                // JADE leaves an empty aggregate out; it reads back as an absent slot
+                continue;
+            }
             if (value == null) {
                 if (s.mandatory() || positional) {
                     throw new ContentException("missing mandatory slot :" + s.name() + " of " + schema.name());

@@ -26,7 +26,11 @@ final class ContentGenerator {
     }
 
     Object contentElement() {
-        switch (random.nextInt(4)) {
+        switch (random.nextInt(6)) {
+            case 4:
+                return new Equals(book(1), random.nextBoolean() ? aid() : book(1));
+            case 5:
+                return random.nextBoolean() ? new TrueProposition() : new FalseProposition();
             case 0:
                 return new Owns(aid(), book(0));
             case 1:
@@ -145,7 +149,7 @@ final class ContentGenerator {
 
     <T> List<T> list(java.util.function.Supplier<T> element) {
         List<T> l = new ArrayList<>();
-        int n = 1 + random.nextInt(3);
+        int n = random.nextInt(10) == 0 ? 0 : 1 + random.nextInt(3);
         for (int i = 0; i < n; i++) {
             l.add(element.get());
         }

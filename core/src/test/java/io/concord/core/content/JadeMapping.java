@@ -35,6 +35,15 @@ final class JadeMapping {
         if (o instanceof Result r) {
             return new jade.content.onto.basic.Result((jade.content.Concept) toJade(r.action()), toJade(r.value()));
         }
+        if (o instanceof Equals e) {
+            return new jade.content.onto.basic.Equals(toJade(e.left()), toJade(e.right()));
+        }
+        if (o instanceof TrueProposition) {
+            return new jade.content.onto.basic.TrueProposition();
+        }
+        if (o instanceof FalseProposition) {
+            return new jade.content.onto.basic.FalseProposition();
+        }
         if (o instanceof AID aid) {
             jade.core.AID j = new jade.core.AID(aid.name(), jade.core.AID.ISGUID);
             aid.addresses().forEach(j::addAddresses);
@@ -96,6 +105,13 @@ final class JadeMapping {
         if (o instanceof byte[] b) {
             return "bytes:" + Base64.getEncoder().encodeToString(b);
         }
+        if (o instanceof java.util.Collection<?> c && c.isEmpty()) {
+            // an empty aggregate is not written (as JADE does), so it reads back as absent
+            return null;
+        }
+        if (o instanceof jade.util.leap.List l && l.isEmpty()) {
+            return null;
+        }
         if (o instanceof Set<?> s) {
             Set<Object> out = new java.util.HashSet<>();
             s.forEach(e -> out.add(canon(e)));
@@ -145,6 +161,18 @@ final class JadeMapping {
         }
         if (o instanceof jade.content.onto.basic.Result r) {
             return List.of("result", canon(r.getAction()), canon(r.getValue()));
+        }
+        if (o instanceof Equals e) {
+            return List.of("=", canon(e.left()), canon(e.right()));
+        }
+        if (o instanceof jade.content.onto.basic.Equals e) {
+            return List.of("=", canon(e.getLeft()), canon(e.getRight()));
+        }
+        if (o instanceof TrueProposition || o instanceof jade.content.onto.basic.TrueProposition) {
+            return "true";
+        }
+        if (o instanceof FalseProposition || o instanceof jade.content.onto.basic.FalseProposition) {
+            return "false";
         }
         if (o instanceof Owns w) {
             return listOf("Owns", canon(w.owner()), canon(w.book()));
