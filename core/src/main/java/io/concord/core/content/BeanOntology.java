@@ -1,6 +1,8 @@
 package io.concord.core.content;
 
 import java.lang.reflect.Constructor;
+import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
 import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
 import java.lang.reflect.Type;
@@ -16,10 +18,11 @@ import java.util.Objects;
 import java.util.Set;
 
 /**
- * An ontology built from Java records, as JADE's {@code BeanOntology} builds one from beans: each
- * record that implements {@link Concept}, {@link AgentAction} or {@link Predicate} gets a schema
- * named by its simple name (or {@link Element}), with one slot per component, named as the
- * component (or {@link Slot#name()}), in alphabetical order of slot names (JADE's order), an
+ * An ontology built from Java records or beans, as JADE's {@code BeanOntology} builds one from
+ * beans: each record or bean (a public getter {@code getX}/{@code isX} and setter {@code setX} per
+ * property, a no-argument constructor) that implements {@link Concept}, {@link AgentAction} or {@link Predicate} gets a schema
+ * named by its simple name (or {@link Element}), with one slot per component or property, named
+ * as it (or {@link Slot#name()}, on the component or the getter), in alphabetical order of slot names (JADE's order), an
  * aggregate for a {@link List} ({@code sequence}) or {@link Set} ({@code set}), mandatory when the
  * component's type is a Java primitive or {@link Slot#mandatory()} says so. Slot types: strings,
  * {@code int}/{@code long}, {@code float}/{@code double}, {@code boolean}, {@link Instant} or
@@ -36,7 +39,7 @@ public final class BeanOntology implements Ontology {
      * An ontology of these records.
      *
      * @param name    the ontology's name, for the {@code :ontology} slot
-     * @param records the element classes; each must be a record implementing {@link Concept},
+     * @param records the element classes; each a record or bean implementing {@link Concept},
      *                {@link AgentAction} or {@link Predicate}
      * @throws IllegalArgumentException naming the class and component that cannot be mapped
      */
@@ -78,34 +81,58 @@ public final class BeanOntology implements Ontology {
         return new Mapper(this, beans).fromAbs(abs, Object.class, "content");
     }
 
-    /** A record's schema, its components' accessors and its constructor. */
-    record Bean(Schema schema, List<RecordComponent> components, Constructor<?> constructor, int[] argumentOf) {
+    /** One Java property: a record component, or a bean's getter and setter. */
+    record Property(String name, Method getter, Method setter, Type genericType, Slot annotation) {
+        Class<?> type() {
+            return getter.getReturnType();
+        }
+    }
+
+    /**
+     * An element's schema, its properties in slot order, and how to build one: a record's
+     * canonical constructor (argument {@code argumentOf[slot]}), or a bean's no-argument
+     * constructor and setters.
+     */
+    record Bean(Schema schema, List<Property> properties, Constructor<?> constructor, int[] argumentOf, boolean record) {
         Object get(Object v, int slot) throws ContentException {
             try {
-                return components.get(slot).getAccessor().invoke(v);
+                return properties.get(slot).getter().invoke(v);
             } catch (ReflectiveOperationException e) {
                 throw new ContentException("cannot read slot :" + schema.slots().get(slot).name() + " of " + schema.name(), e);
             }
         }
 
         Object create(Object[] slotValues) throws ContentException {
-            Object[] args = new Object[slotValues.length];
             for (int i = 0; i < slotValues.length; i++) {
-                Object v = slotValues[i];
-                Class<?> t = components.get(i).getType();
-                if (v == null && t.isPrimitive()) {
+                if (slotValues[i] == null && properties.get(i).type().isPrimitive()) {
                     throw new ContentException("missing mandatory slot :" + schema.slots().get(i).name() + " of " + schema.name());
                 }
-                args[argumentOf[i]] = v;
             }
-            return Mapper.invoke(constructor, args, schema.name());
+            if (record) {
+                Object[] args = new Object[slotValues.length];
+                for (int i = 0; i < slotValues.length; i++) {
+                    args[argumentOf[i]] = slotValues[i];
+                }
+                return Mapper.invoke(constructor, args, schema.name());
+            }
+            Object bean = Mapper.invoke(constructor, new Object[0], schema.name());
+            for (int i = 0; i < slotValues.length; i++) {
+                if (slotValues[i] != null) {
+                    try {
+                        properties.get(i).setter().invoke(bean, slotValues[i]);
+                    } catch (java.lang.reflect.InvocationTargetException e) {
+                        throw new ContentException(schema.name() + " refused slot :" + schema.slots().get(i).name()
+                                + ": " + e.getCause().getMessage(), e.getCause());
+                    } catch (ReflectiveOperationException | IllegalArgumentException e) {
+                        throw new ContentException("cannot set slot :" + schema.slots().get(i).name() + " of " + schema.name(), e);
+                    }
+                }
+            }
+            return bean;
         }
     }
 
     private static Bean bean(Class<?> c) {
-        if (!c.isRecord()) {
-            throw new IllegalArgumentException(c.getName() + " is not a record");
-        }
         Schema.Kind kind;
         if (AgentAction.class.isAssignableFrom(c)) {
             kind = Schema.Kind.AGENT_ACTION;
@@ -118,68 +145,106 @@ public final class BeanOntology implements Ontology {
         }
         Element element = c.getAnnotation(Element.class);
         String schemaName = element != null ? element.name() : c.getSimpleName();
-        RecordComponent[] declared = c.getRecordComponents();
+        List<Property> declared = c.isRecord() ? recordProperties(c) : beanProperties(c);
         List<Integer> order = new ArrayList<>();
-        List<Schema.SlotSchema> slots = new ArrayList<>();
         Map<Integer, Schema.SlotSchema> byIndex = new LinkedHashMap<>();
-        for (int i = 0; i < declared.length; i++) {
-            byIndex.put(i, slot(c, declared[i]));
+        for (int i = 0; i < declared.size(); i++) {
+            byIndex.put(i, slot(c, declared.get(i)));
             order.add(i);
         }
         order.sort(Comparator.comparing(i -> byIndex.get(i).name()));
-        List<RecordComponent> components = new ArrayList<>();
-        int[] argumentOf = new int[declared.length];
+        List<Schema.SlotSchema> slots = new ArrayList<>();
+        List<Property> properties = new ArrayList<>();
+        int[] argumentOf = new int[declared.size()];
         for (int k = 0; k < order.size(); k++) {
             int i = order.get(k);
             slots.add(byIndex.get(i));
-            components.add(declared[i]);
+            properties.add(declared.get(i));
             argumentOf[k] = i;
         }
-        Class<?>[] types = new Class<?>[declared.length];
-        for (int i = 0; i < declared.length; i++) {
-            types[i] = declared[i].getType();
-        }
         try {
-            Constructor<?> ctor = c.getDeclaredConstructor(types);
+            Constructor<?> ctor;
+            if (c.isRecord()) {
+                ctor = c.getDeclaredConstructor(declared.stream().map(Property::type).toArray(Class<?>[]::new));
+            } else {
+                ctor = c.getDeclaredConstructor();
+            }
             ctor.setAccessible(true);
-            return new Bean(new Schema(schemaName, kind, c, slots), components, ctor, argumentOf);
+            return new Bean(new Schema(schemaName, kind, c, slots), properties, ctor, argumentOf, c.isRecord());
         } catch (ReflectiveOperationException | RuntimeException e) {
-            throw new IllegalArgumentException(c.getName() + ": no accessible canonical constructor", e);
+            throw new IllegalArgumentException(c.getName() + ": no accessible " + (c.isRecord() ? "canonical" : "no-argument")
+                    + " constructor", e);
         }
     }
 
-    private static Schema.SlotSchema slot(Class<?> owner, RecordComponent rc) {
-        Slot a = rc.getAnnotation(Slot.class);
-        String slotName = a != null && !a.name().isEmpty() ? a.name() : rc.getName();
-        Class<?> type = rc.getType();
+    private static List<Property> recordProperties(Class<?> c) {
+        List<Property> out = new ArrayList<>();
+        for (RecordComponent rc : c.getRecordComponents()) {
+            out.add(new Property(rc.getName(), rc.getAccessor(), null, rc.getGenericType(), rc.getAnnotation(Slot.class)));
+        }
+        return out;
+    }
+
+    /** A bean's properties, as JADE finds them: a public getter ({@code getX}, or {@code isX} for a boolean) with a matching setter. */
+    private static List<Property> beanProperties(Class<?> c) {
+        List<Property> out = new ArrayList<>();
+        for (Method m : c.getMethods()) {
+            String n = m.getName();
+            if (m.getParameterCount() != 0 || m.getDeclaringClass() == Object.class || Modifier.isStatic(m.getModifiers())) {
+                continue;
+            }
+            String base;
+            if (n.startsWith("get") && n.length() > 3) {
+                base = n.substring(3);
+            } else if (n.startsWith("is") && n.length() > 2 && (m.getReturnType() == boolean.class || m.getReturnType() == Boolean.class)) {
+                base = n.substring(2);
+            } else {
+                continue;
+            }
+            Method setter;
+            try {
+                setter = c.getMethod("set" + base, m.getReturnType());
+            } catch (NoSuchMethodException e) {
+                continue;
+            }
+            String name = Character.toLowerCase(base.charAt(0)) + base.substring(1);
+            out.add(new Property(name, m, setter, m.getGenericReturnType(), m.getAnnotation(Slot.class)));
+        }
+        return out;
+    }
+
+    private static Schema.SlotSchema slot(Class<?> owner, Property p) {
+        Slot a = p.annotation();
+        String slotName = a != null && !a.name().isEmpty() ? a.name() : p.name();
+        Class<?> type = p.type();
         String aggregate = null;
         if (List.class.isAssignableFrom(type) || Set.class.isAssignableFrom(type)) {
             aggregate = Set.class.isAssignableFrom(type) ? AbsAggregate.SET : AbsAggregate.SEQUENCE;
-            type = elementType(owner, rc);
+            type = elementType(owner, p);
         } else if (Collection.class.isAssignableFrom(type)) {
-            throw new IllegalArgumentException(owner.getName() + "." + rc.getName() + ": use a List or a Set");
+            throw new IllegalArgumentException(owner.getName() + "." + p.name() + ": use a List or a Set");
         }
         if (!mappable(type)) {
-            throw new IllegalArgumentException(owner.getName() + "." + rc.getName() + ": no SL type for " + type.getName());
+            throw new IllegalArgumentException(owner.getName() + "." + p.name() + ": no SL type for " + type.getName());
         }
-        boolean mandatory = rc.getType().isPrimitive() || (a != null && (a.mandatory() || a.cardMin() > 0));
+        boolean mandatory = p.type().isPrimitive() || (a != null && (a.mandatory() || a.cardMin() > 0));
         int cardMin = a != null ? a.cardMin() : 0;
         int cardMax = a != null ? a.cardMax() : -1;
         return new Schema.SlotSchema(slotName, type, aggregate, mandatory, cardMin, cardMax);
     }
 
-    private static Class<?> elementType(Class<?> owner, RecordComponent rc) {
-        Type t = rc.getGenericType();
-        if (t instanceof ParameterizedType p && p.getActualTypeArguments()[0] instanceof Class<?> e) {
+    private static Class<?> elementType(Class<?> owner, Property p) {
+        if (p.genericType() instanceof ParameterizedType t && t.getActualTypeArguments()[0] instanceof Class<?> e) {
             return e;
         }
-        throw new IllegalArgumentException(owner.getName() + "." + rc.getName() + ": an aggregate needs an element class");
+        throw new IllegalArgumentException(owner.getName() + "." + p.name() + ": an aggregate needs an element class");
     }
 
     private static boolean mappable(Class<?> t) {
         return t.isPrimitive() && t != char.class && t != short.class && t != byte.class && t != void.class
                 || t == String.class || t == Long.class || t == Integer.class || t == Double.class || t == Float.class
                 || t == Boolean.class || t == Instant.class || t == Date.class || t == byte[].class || t == Object.class
-                || t == io.concord.core.acl.AID.class || t.isRecord() || t.isInterface();
+                || t == io.concord.core.acl.AID.class || t.isRecord() || t.isInterface()
+                || Concept.class.isAssignableFrom(t) || Predicate.class.isAssignableFrom(t);
     }
 }
