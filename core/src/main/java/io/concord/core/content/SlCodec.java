@@ -20,8 +20,13 @@ import java.util.Set;
  * {@code true}/{@code false};</li>
  * <li>dates as {@code yyyyMMddTHHmmssSSSZ} in UTC (a date read without {@code Z} is taken as
  * UTC too);</li>
- * <li>byte strings as {@code #N"} followed by N characters of Base64.</li>
+ * <li>byte strings as {@code #N"} followed by N characters of Base64;</li>
+ * <li>{@code true} and {@code false} as bare atomic formulas ({@code (and true (not false))}, a
+ * content of just {@code (true)});</li>
+ * <li>a content of one element as {@code (e)}, of several as {@code (e1 e2 )} (a space after
+ * each).</li>
  * </ul>
+ * Dates are carried to the millisecond; finer parts of an {@link java.time.Instant} are dropped.
  *
  * <p>The profile ({@link Profile#SL0}, {@link Profile#SL1}, {@link Profile#SL2}) decides which
  * operators are accepted; the arity of each operator is checked. Limits: nesting depth
