@@ -83,7 +83,11 @@ final class ContentGenerator {
         return b.toString();
     }
 
-    /** Any string JADE can carry: all but a backslash at the end or before a quote (see SlCodec). */
+    /**
+     * Any string JADE can carry: all but a backslash at the end or before a quote (see SlCodec),
+     * and all but {@code "true"} and {@code "false"} with their quotes, which JADE's reader turns
+     * into {@code true} and {@code false} (docs/content.md).
+     */
     String string() {
         if (random.nextInt(4) == 0) {
             return word();
@@ -94,6 +98,9 @@ final class ContentGenerator {
             b.append(PIECES[random.nextInt(PIECES.length)]);
         }
         String s = b.toString();
+        if (s.equalsIgnoreCase("\"true\"") || s.equalsIgnoreCase("\"false\"")) {
+            s = s + "x";
+        }
         while (s.endsWith("\\") || s.contains("\\\"")) {
             s = s.replace("\\\"", "\\x\"");
             if (s.endsWith("\\")) {
