@@ -22,7 +22,8 @@ import java.util.Set;
  * beans: each record or bean (a public getter {@code getX}/{@code isX} and setter {@code setX} per
  * property, a no-argument constructor) that implements {@link Concept}, {@link AgentAction} or {@link Predicate} gets a schema
  * named by its simple name (or {@link Element}), with one slot per component or property, named
- * as it (or {@link Slot#name()}, on the component or the getter), in alphabetical order of slot names (JADE's order), an
+ * as it (or {@link Slot#name()}, on the component or the getter), in alphabetical order of slot names (JADE's order;
+ * or by {@link Slot#position()}, and then written by position), an
  * aggregate for a {@link List} ({@code sequence}) or {@link Set} ({@code set}), mandatory when the
  * component's type is a Java primitive or {@link Slot#mandatory()} says so. Slot types: strings,
  * {@code int}/{@code long}, {@code float}/{@code double}, {@code boolean}, {@link Instant} or
@@ -93,7 +94,8 @@ public final class BeanOntology implements Ontology {
      * canonical constructor (argument {@code argumentOf[slot]}), or a bean's no-argument
      * constructor and setters.
      */
-    record Bean(Schema schema, List<Property> properties, Constructor<?> constructor, int[] argumentOf, boolean record) {
+    record Bean(Schema schema, List<Property> properties, Constructor<?> constructor, int[] argumentOf, boolean record,
+                boolean positional) {
         Object get(Object v, int slot) throws ContentException {
             try {
                 return properties.get(slot).getter().invoke(v);
@@ -152,7 +154,20 @@ public final class BeanOntology implements Ontology {
             byIndex.put(i, slot(c, declared.get(i)));
             order.add(i);
         }
-        order.sort(Comparator.comparing(i -> byIndex.get(i).name()));
+        boolean positional = declared.stream().anyMatch(p -> p.annotation() != null && p.annotation().position() >= 0);
+        if (positional) {
+            java.util.Set<Integer> places = new java.util.HashSet<>();
+            for (Property p : declared) {
+                int at = p.annotation() == null ? -1 : p.annotation().position();
+                if (at < 0 || at >= declared.size() || !places.add(at)) {
+                    throw new IllegalArgumentException(c.getName() + "." + p.name() + ": every slot of a positional element needs "
+                            + "its own @Slot(position) from 0 to " + (declared.size() - 1));
+                }
+            }
+            order.sort(Comparator.comparingInt(i -> declared.get(i).annotation().position()));
+        } else {
+            order.sort(Comparator.comparing(i -> byIndex.get(i).name()));
+        }
         List<Schema.SlotSchema> slots = new ArrayList<>();
         List<Property> properties = new ArrayList<>();
         int[] argumentOf = new int[declared.size()];
@@ -170,7 +185,7 @@ public final class BeanOntology implements Ontology {
                 ctor = c.getDeclaredConstructor();
             }
             ctor.setAccessible(true);
-            return new Bean(new Schema(schemaName, kind, c, slots), properties, ctor, argumentOf, c.isRecord());
+            return new Bean(new Schema(schemaName, kind, c, slots), properties, ctor, argumentOf, c.isRecord(), positional);
         } catch (ReflectiveOperationException | RuntimeException e) {
             throw new IllegalArgumentException(c.getName() + ": no accessible " + (c.isRecord() ? "canonical" : "no-argument")
                     + " constructor", e);

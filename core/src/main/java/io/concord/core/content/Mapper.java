@@ -37,7 +37,7 @@ final class Mapper {
             throw new ContentException("no schema in ontology " + ontology.name() + " for " + v.getClass().getName());
         }
         Schema schema = bean.schema();
-        boolean positional = schema.kind() == Schema.Kind.PREDICATE;
+        boolean positional = schema.kind() == Schema.Kind.PREDICATE || bean.positional();
         List<AbsCompound.Slot> slots = new ArrayList<>();
         for (int i = 0; i < schema.slots().size(); i++) {
             Schema.SlotSchema s = schema.slots().get(i);

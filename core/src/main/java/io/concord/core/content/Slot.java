@@ -25,4 +25,12 @@ public @interface Slot {
 
     /** An aggregate's most elements; -1 for no limit. */
     int cardMax() default -1;
+
+    /**
+     * The slot's place (0, 1, ...) when its element is written by position, as the FIPA
+     * agent-management actions are ({@code (search description constraints)}); -1 for none. When
+     * one component of an element has a position, all must, the slots keep that order instead of
+     * the alphabetical one, and the element is written and read by position.
+     */
+    int position() default -1;
 }

@@ -89,4 +89,21 @@ class BeanClassesTest {
         msg.setContent("((Stocked 4 (Paper :title T :keywords (sequence a b c d))))");
         assertTrue(assertThrows(ContentException.class, () -> cm.extract(msg)).reason().contains("allowed 0..3"));
     }
+
+    record Give(@Slot(position = 0) String what, @Slot(position = 1) int count) implements AgentAction {
+    }
+
+    record HalfPlaced(@Slot(position = 0) String a, String b) implements AgentAction {
+    }
+
+    @Test
+    void slotPositionsOrderAnActionAndWriteItByPosition() throws Exception {
+        BeanOntology o = new BeanOntology("give", Give.class);
+        SlCodec sl = new SlCodec();
+        String text = sl.write(o.toAbs(new Action(new io.concord.core.acl.AID("a@P"), new Give("z", 2))));
+        assertEquals("((action (agent-identifier :name a@P) (Give z 2)))", text);
+        assertEquals(new Action(new io.concord.core.acl.AID("a@P"), new Give("z", 2)), o.fromAbs(sl.read(text).get(0)));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> new BeanOntology("x", HalfPlaced.class))
+                .getMessage().contains("own @Slot(position)"));
+    }
 }
