@@ -681,6 +681,43 @@ class JadeBridgeTest {
         assertEquals("(sold at 25)", o.result().getContent());
     }
 
+    /** JADE's DFService registers a JADE agent in Concord's DF, finds it there, and deregisters it. */
+    @Test
+    void aJadeAgentRegistersSearchesAndDeregistersInConcordsDf() throws Exception {
+        Object outcome = onJade(a -> {
+            try {
+                DFAgentDescription dfd = new DFAgentDescription();
+                dfd.setName(a.getAID());
+                jade.domain.FIPAAgentManagement.ServiceDescription sd = new jade.domain.FIPAAgentManagement.ServiceDescription();
+                sd.setType("foreign-service");
+                sd.setName("fs");
+                sd.addLanguages("fipa-sl");
+                sd.addProperties(new jade.domain.FIPAAgentManagement.Property("colour", "blue"));
+                dfd.addServices(sd);
+                DFService.register(a, concordAid("df"), dfd);
+                DFAgentDescription template = new DFAgentDescription();
+                jade.domain.FIPAAgentManagement.ServiceDescription t = new jade.domain.FIPAAgentManagement.ServiceDescription();
+                t.setType("foreign-service");
+                template.addServices(t);
+                DFAgentDescription[] found = DFService.search(a, concordAid("df"), template);
+                StringBuilder b = new StringBuilder();
+                for (DFAgentDescription d : found) {
+                    jade.domain.FIPAAgentManagement.ServiceDescription s = (jade.domain.FIPAAgentManagement.ServiceDescription)
+                            d.getAllServices().next();
+                    jade.domain.FIPAAgentManagement.Property p = (jade.domain.FIPAAgentManagement.Property) s.getAllProperties().next();
+                    b.append(d.getName().equals(a.getAID())).append(' ').append(s.getName()).append(' ')
+                            .append(s.getAllLanguages().next()).append(' ').append(p.getName()).append('=').append(p.getValue());
+                }
+                DFService.deregister(a, concordAid("df"), dfd);
+                b.append(" | after deregister: ").append(DFService.search(a, concordAid("df"), template).length);
+                return b.toString();
+            } catch (Exception e) {
+                return "failed: " + e;
+            }
+        });
+        assertEquals("true fs fipa-sl colour=blue | after deregister: 0", outcome);
+    }
+
     @Test
     void theDfAnswersWhatItDoesNotDoWithAClearFailure() throws Exception {
         Object replies = onJade(a -> {
@@ -703,7 +740,7 @@ class JadeBridgeTest {
         });
         String[] lines = replies.toString().split("\n");
         assertTrue(lines[0].startsWith("FAILURE") && lines[0].contains("(unsupported-function modify)"), lines[0]);
-        assertTrue(lines[1].startsWith("NOT-UNDERSTOOD") && lines[1].contains("never closed"), lines[1]);
+        assertTrue(lines[1].startsWith("NOT-UNDERSTOOD") && lines[1].contains("unexpected end of text"), lines[1]);
     }
 
     /**
