@@ -9,6 +9,7 @@ module io.concord.core {
     exports io.concord.core.acl;
     exports io.concord.core.agent;
     exports io.concord.core.codec;
+    exports io.concord.core.content;
     exports io.concord.core.layer;
     exports io.concord.core.net;
     exports io.concord.core.proto;

@@ -21,6 +21,7 @@ import io.concord.bench.harness.ThroughputHarness;
 import io.concord.bench.jade.JadeIdle;
 import io.concord.bench.jmh.BooksBenchmark;
 import io.concord.bench.jmh.ChainBenchmark;
+import io.concord.bench.jmh.ContentBenchmark;
 import io.concord.bench.jmh.HttpBenchmark;
 import io.concord.bench.jmh.ProcessBooksBenchmark;
 import io.concord.bench.jmh.ProcessChainBenchmark;
@@ -65,8 +66,8 @@ import java.util.function.ToDoubleFunction;
  * {@code books}, {@code udp}.
  */
 public final class BenchMain {
-    static final List<String> NAMES = List.of("udp", "stack", "chain", "books", "stress", "bootstrap", "failover", "network", "http", "console",
-            "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load", "blocking", "fleet");
+    static final List<String> NAMES = List.of("udp", "stack", "content", "chain", "books", "stress", "bootstrap", "failover", "network", "http",
+            "console", "sim", "hospital", "serial", "attack", "idle", "throughput", "scale", "load", "blocking", "fleet");
     private static final List<String> PLATFORMS = List.of(Platforms.CONCORD_CLASS7, Platforms.CONCORD_CLASS7_SOCKETS,
             Platforms.CONCORD_CLOSED, Platforms.JADE);
 
@@ -129,6 +130,7 @@ public final class BenchMain {
                 switch (name) {
                     case "udp" -> b.udp();
                     case "stack" -> b.stack();
+                    case "content" -> b.content();
                     case "chain" -> {
                         b.rounds("chain", ChainBenchmark.class, "n", "N", List.of(2, 6, 10, 19));
                         b.processes("chain", ProcessChainBenchmark.class, "n", "N", full ? List.of(2, 6, 10, 19) : List.of(2, 6));
@@ -220,6 +222,24 @@ public final class BenchMain {
         }
         md.append("\nFor scale, the UDP baseline (udp.md) gives the cost of a loopback hop on the same machine.\n");
         Files.writeString(reportDir.resolve("stack.md"), md.toString());
+    }
+
+    /** Issue 33: fill + extract of a 10-slot action, Concord's SL and binary content against JADE's SLCodec. */
+    private void content() throws RunnerException, IOException {
+        Collection<RunResult> results = new Runner(options(ContentBenchmark.class).build()).run();
+        StringBuilder md = new StringBuilder(header("Content: fill + extract of a 10-slot action",
+                "One `(action (agent-identifier ...) (Order ...))` with ten slots (strings, integers, floats, a boolean, "
+                        + "a date, a sequence, a nested concept): filled into a message and extracted again, in one JVM. "
+                        + "Concord's SL and binary content codecs with its bean ontology; JADE 4.3's SLCodec with its BeanOntology."));
+        md.append("| codec | median µs | p90 µs | p99 µs |\n|---|---|---|---|\n");
+        for (RunResult r : results) {
+            String codec = r.getParams().getParam("codec");
+            var st = r.getPrimaryResult().getStatistics();
+            System.out.printf(Locale.ROOT, "RESULT content %s 10 fill_extract_us=%.2f%n", codec, st.getPercentile(50));
+            md.append(String.format(Locale.ROOT, "| %s | %.2f | %.2f | %.2f |%n", codec, st.getPercentile(50),
+                    st.getPercentile(90), st.getPercentile(99)));
+        }
+        Files.writeString(reportDir.resolve("content.md"), md.toString());
     }
 
     /** Chain or books in one JVM: every platform at every size. */

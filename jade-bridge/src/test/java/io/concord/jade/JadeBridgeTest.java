@@ -5,6 +5,11 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
+import io.concord.core.content.Action;
+import io.concord.core.content.ContentException;
+import io.concord.core.content.ContentManager;
+import io.concord.core.content.Done;
+import io.concord.core.content.SlCodec;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.Platform;
@@ -26,6 +31,7 @@ import java.io.OutputStream;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
+import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -177,6 +183,100 @@ class JadeBridgeTest {
                     ACLMessage r = m.createReply();
                     r.setPerformative(m.getPerformative() == ACLMessage.QUERY_REF ? ACLMessage.INFORM : ACLMessage.AGREE);
                     r.setContent(m.getPerformative() == ACLMessage.QUERY_REF ? Integer.toString(price) : "(sold " + m.getContent() + ")");
+                    myAgent.send(r);
+                }
+            });
+        }
+    }
+
+    /**
+     * A Concord book seller speaking the book-trading ontology through Concord's content manager
+     * and SL codec: a CFP to sell a book gets a PROPOSE that it costs its price, an ACCEPT-PROPOSAL
+     * the INFORM that the sale is done; content it cannot read gets NOT-UNDERSTOOD with the reason.
+     * It keeps what it extracted.
+     */
+    static final class ConcordBookSeller extends Agent {
+        final BlockingQueue<Object> extracted = new LinkedBlockingQueue<>();
+        final ContentManager cm = new ContentManager().register(new SlCodec()).register(BookTrading.ontology());
+
+        @Override
+        protected void setup() {
+            addBehaviour(new CyclicBehaviour() {
+                @Override
+                public void action() {
+                    AclMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    AclMessage r = m.createReply();
+                    try {
+                        Object content = cm.extract(m);
+                        extracted.add(content);
+                        if (!(content instanceof Action a && a.action() instanceof BookTrading.Sell sell)) {
+                            throw new ContentException("expected an action Sell, got " + content);
+                        }
+                        if (m.getPerformative() == Performative.CFP) {
+                            BookTrading.Book b = sell.item();
+                            r.setPerformative(Performative.PROPOSE);
+                            cm.fill(r, new BookTrading.Costs(new BookTrading.Book(b.title(), List.of("Frank Herbert"), null), 17.5));
+                        } else if (m.getPerformative() == Performative.ACCEPT_PROPOSAL) {
+                            r.setPerformative(Performative.INFORM);
+                            cm.fill(r, new Done(a));
+                        } else {
+                            r.setPerformative(Performative.NOT_UNDERSTOOD);
+                            r.setContent("not a CFP or ACCEPT-PROPOSAL");
+                        }
+                    } catch (ContentException e) {
+                        r.setPerformative(Performative.NOT_UNDERSTOOD);
+                        r.setContent(e.reason());
+                    }
+                    myAgent.send(r);
+                }
+            });
+        }
+    }
+
+    /** {@link ConcordBookSeller} in JADE, with JADE's SLCodec and BeanOntology; keeps what it extracted. */
+    public static final class JadeBookSeller extends jade.core.Agent {
+        static final BlockingQueue<Object> EXTRACTED = new LinkedBlockingQueue<>();
+
+        @Override
+        protected void setup() {
+            getContentManager().registerLanguage(new jade.content.lang.sl.SLCodec());
+            try {
+                getContentManager().registerOntology(JadeBookTrading.ontology());
+            } catch (jade.content.onto.BeanOntologyException e) {
+                throw new IllegalStateException(e);
+            }
+            addBehaviour(new jade.core.behaviours.CyclicBehaviour(this) {
+                @Override
+                public void action() {
+                    ACLMessage m = myAgent.receive();
+                    if (m == null) {
+                        block();
+                        return;
+                    }
+                    ACLMessage r = m.createReply();
+                    try {
+                        jade.content.ContentElement ce = myAgent.getContentManager().extractContent(m);
+                        EXTRACTED.add(ce);
+                        jade.content.onto.basic.Action a = (jade.content.onto.basic.Action) ce;
+                        JadeBookTrading.Sell sell = (JadeBookTrading.Sell) a.getAction();
+                        if (m.getPerformative() == ACLMessage.CFP) {
+                            JadeBookTrading.Costs c = new JadeBookTrading.Costs();
+                            c.setItem(JadeBookTrading.book(sell.getItem().getTitle(), List.of("Ursula K. Le Guin"), null));
+                            c.setPrice(23.25);
+                            r.setPerformative(ACLMessage.PROPOSE);
+                            myAgent.getContentManager().fillContent(r, c);
+                        } else {
+                            r.setPerformative(ACLMessage.INFORM);
+                            myAgent.getContentManager().fillContent(r, new jade.content.onto.basic.Done(a));
+                        }
+                    } catch (Exception e) {
+                        r.setPerformative(ACLMessage.NOT_UNDERSTOOD);
+                        r.setContent(String.valueOf(e));
+                    }
                     myAgent.send(r);
                 }
             });
@@ -581,6 +681,43 @@ class JadeBridgeTest {
         assertEquals("(sold at 25)", o.result().getContent());
     }
 
+    /** JADE's DFService registers a JADE agent in Concord's DF, finds it there, and deregisters it. */
+    @Test
+    void aJadeAgentRegistersSearchesAndDeregistersInConcordsDf() throws Exception {
+        Object outcome = onJade(a -> {
+            try {
+                DFAgentDescription dfd = new DFAgentDescription();
+                dfd.setName(a.getAID());
+                jade.domain.FIPAAgentManagement.ServiceDescription sd = new jade.domain.FIPAAgentManagement.ServiceDescription();
+                sd.setType("foreign-service");
+                sd.setName("fs");
+                sd.addLanguages("fipa-sl");
+                sd.addProperties(new jade.domain.FIPAAgentManagement.Property("colour", "blue"));
+                dfd.addServices(sd);
+                DFService.register(a, concordAid("df"), dfd);
+                DFAgentDescription template = new DFAgentDescription();
+                jade.domain.FIPAAgentManagement.ServiceDescription t = new jade.domain.FIPAAgentManagement.ServiceDescription();
+                t.setType("foreign-service");
+                template.addServices(t);
+                DFAgentDescription[] found = DFService.search(a, concordAid("df"), template);
+                StringBuilder b = new StringBuilder();
+                for (DFAgentDescription d : found) {
+                    jade.domain.FIPAAgentManagement.ServiceDescription s = (jade.domain.FIPAAgentManagement.ServiceDescription)
+                            d.getAllServices().next();
+                    jade.domain.FIPAAgentManagement.Property p = (jade.domain.FIPAAgentManagement.Property) s.getAllProperties().next();
+                    b.append(d.getName().equals(a.getAID())).append(' ').append(s.getName()).append(' ')
+                            .append(s.getAllLanguages().next()).append(' ').append(p.getName()).append('=').append(p.getValue());
+                }
+                DFService.deregister(a, concordAid("df"), dfd);
+                b.append(" | after deregister: ").append(DFService.search(a, concordAid("df"), template).length);
+                return b.toString();
+            } catch (Exception e) {
+                return "failed: " + e;
+            }
+        });
+        assertEquals("true fs fipa-sl colour=blue | after deregister: 0", outcome);
+    }
+
     @Test
     void theDfAnswersWhatItDoesNotDoWithAClearFailure() throws Exception {
         Object replies = onJade(a -> {
@@ -603,7 +740,100 @@ class JadeBridgeTest {
         });
         String[] lines = replies.toString().split("\n");
         assertTrue(lines[0].startsWith("FAILURE") && lines[0].contains("(unsupported-function modify)"), lines[0]);
-        assertTrue(lines[1].startsWith("NOT-UNDERSTOOD") && lines[1].contains("never closed"), lines[1]);
+        assertTrue(lines[1].startsWith("NOT-UNDERSTOOD") && lines[1].contains("unexpected end of text"), lines[1]);
+    }
+
+    /**
+     * The book-trading ontology both ways over the bridge, each side with its own content stack: a
+     * JADE buyer (JADE's SLCodec and BeanOntology) buys from a Concord seller (Concord's
+     * ContentManager, SlCodec and BeanOntology) with CFP, PROPOSE, ACCEPT-PROPOSAL, INFORM; each
+     * side's extracted objects are checked.
+     */
+    @Test
+    void aJadeBuyerWithJadesSlCodecTradesABookWithAConcordSellerUsingOurs() throws Exception {
+        ConcordBookSeller seller = new ConcordBookSeller();
+        concord.startAgent("bookseller", seller);
+        awaitListed("bookseller");
+        Object seen = onJade(a -> {
+            try {
+                jade.content.ContentManager cm = a.getContentManager();
+                jade.content.lang.sl.SLCodec sl = new jade.content.lang.sl.SLCodec();
+                cm.registerLanguage(sl);
+                cm.registerOntology(JadeBookTrading.ontology());
+                JadeBookTrading.Sell sell = new JadeBookTrading.Sell();
+                sell.setItem(JadeBookTrading.book("Dune \"the novel\"", null, null));
+                jade.content.onto.basic.Action act = new jade.content.onto.basic.Action(concordAid("bookseller"), sell);
+                ACLMessage cfp = new ACLMessage(ACLMessage.CFP);
+                cfp.addReceiver(concordAid("bookseller"));
+                cfp.setLanguage(sl.getName());
+                cfp.setOntology(BookTrading.NAME);
+                cfp.setConversationId("bt1");
+                cm.fillContent(cfp, act);
+                a.send(cfp);
+                ACLMessage propose = a.blockingReceive(MessageTemplate.MatchConversationId("bt1"), 30_000);
+                if (propose == null || propose.getPerformative() != ACLMessage.PROPOSE) {
+                    return "no PROPOSE: " + propose;
+                }
+                JadeBookTrading.Costs costs = (JadeBookTrading.Costs) cm.extractContent(propose);
+                ACLMessage accept = propose.createReply();
+                accept.setPerformative(ACLMessage.ACCEPT_PROPOSAL);
+                cm.fillContent(accept, act);
+                a.send(accept);
+                ACLMessage inform = a.blockingReceive(MessageTemplate.MatchConversationId("bt1"), 30_000);
+                if (inform == null || inform.getPerformative() != ACLMessage.INFORM) {
+                    return "no INFORM: " + inform;
+                }
+                jade.content.onto.basic.Done done = (jade.content.onto.basic.Done) cm.extractContent(inform);
+                jade.content.onto.basic.Action doneAct = (jade.content.onto.basic.Action) done.getAction();
+                return costs + " | done " + doneAct.getActor().getName() + " " + doneAct.getAction();
+            } catch (Exception e) {
+                return "failed: " + e;
+            }
+        });
+        assertEquals("Costs(Book(Dune \"the novel\", [Frank Herbert], null), 17.5) | done bookseller@" + CONCORD
+                + " Sell(Book(Dune \"the novel\", null, null))", seen);
+        Action cfp = (Action) seller.extracted.poll(5, TimeUnit.SECONDS);
+        assertNotNull(cfp);
+        assertEquals("bookseller@" + CONCORD, cfp.actor().name());
+        assertEquals(new BookTrading.Sell(new BookTrading.Book("Dune \"the novel\"", null, null)), cfp.action());
+        Action accepted = (Action) seller.extracted.poll(5, TimeUnit.SECONDS);
+        assertNotNull(accepted);
+        assertEquals(cfp.action(), accepted.action());
+    }
+
+    /** The other way: a Concord buyer with Concord's content manager, a JADE seller with JADE's. */
+    @Test
+    void aConcordBuyerWithOurSlCodecTradesABookWithAJadeSellerUsingJades() throws Exception {
+        jadeMain.createNewAgent("jbookseller", JadeBookSeller.class.getName(), new Object[0]).start();
+        io.concord.core.acl.AID seller = new io.concord.core.acl.AID("jbookseller@" + JADE, "http://127.0.0.1:" + jadeHttp + "/acc");
+        ContentManager cm = new ContentManager().register(new SlCodec()).register(BookTrading.ontology());
+        BookTrading.Book wanted = new BookTrading.Book("The Dispossessed", null, 30.0);
+        Action act = new Action(seller, new BookTrading.Sell(wanted));
+        AclMessage cfp = new AclMessage(Performative.CFP);
+        cfp.addReceiver(seller);
+        cfp.setConversationId("bt2");
+        cm.fill(cfp, act);
+        INBOX.send(cfp);
+        AclMessage propose = poll(m -> "bt2".equals(m.getConversationId()));
+        assertEquals(Performative.PROPOSE, propose.getPerformative(), propose.getContent());
+        assertEquals(new BookTrading.Costs(new BookTrading.Book("The Dispossessed", List.of("Ursula K. Le Guin"), null), 23.25),
+                cm.extract(propose));
+        AclMessage accept = propose.createReply();
+        accept.setPerformative(Performative.ACCEPT_PROPOSAL);
+        cm.fill(accept, act);
+        INBOX.send(accept);
+        AclMessage inform = poll(m -> "bt2".equals(m.getConversationId()));
+        assertEquals(Performative.INFORM, inform.getPerformative(), inform.getContent());
+        Done done = (Done) cm.extract(inform);
+        assertEquals("jbookseller@" + JADE, done.action().actor().name());
+        assertEquals(new BookTrading.Sell(wanted), done.action().action());
+
+        for (int i = 0; i < 2; i++) {
+            jade.content.onto.basic.Action got = (jade.content.onto.basic.Action) JadeBookSeller.EXTRACTED.poll(5, TimeUnit.SECONDS);
+            assertNotNull(got);
+            assertEquals("jbookseller@" + JADE, got.getActor().getName());
+            assertEquals("Sell(Book(The Dispossessed, null, 30.0))", got.getAction().toString());
+        }
     }
 
     private static int rawStatus(String request) throws Exception {

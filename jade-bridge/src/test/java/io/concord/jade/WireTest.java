@@ -96,21 +96,19 @@ class WireTest {
         assertEquals("UTF-8", back.payloadEncoding());
     }
 
+    /** The DF/AMS front end reads with core's SL codec and FIPA agent-management ontology, strictly. */
     @Test
-    void sl0IsReadStrictly() {
-        Sl0.Expr e = Sl0.parse("((action (agent-identifier :name df@P) (search (df-agent-description :services (set "
-                + "(service-description :type \"my type\"))) (search-constraints :max-results -1))))");
-        Sl0.Expr action = (Sl0.Expr) e.items().get(0);
-        assertEquals("action", action.head());
-        assertEquals("df@P", ((Sl0.Expr) action.items().get(1)).text("name"));
-        assertTrue(e.toString().contains(":type \"my type\""), e.toString());
-        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("((action"));
-        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("(a) b"));
-        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("word"));
-        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("(\"open"));
-        assertThrows(IllegalArgumentException.class, () -> Sl0.parse("(".repeat(100) + ")".repeat(100)));
-        assertEquals("plain", Sl0.word("plain"));
-        assertEquals("\"two words\"", Sl0.word("two words"));
-        assertEquals("\"-x\"", Sl0.word("-x"));
+    void agentManagementContentIsReadStrictly() throws Exception {
+        io.concord.core.content.SlCodec sl = new io.concord.core.content.SlCodec();
+        io.concord.core.content.Ontology onto = io.concord.core.content.FipaAgentManagement.ontology();
+        io.concord.core.content.Action a = (io.concord.core.content.Action) onto.fromAbs(sl.read(
+                "((action (agent-identifier :name df@P) (search (df-agent-description :services (set "
+                + "(service-description :type \"my type\"))) (search-constraints :max-results -1))))").get(0));
+        assertEquals("df@P", a.actor().name());
+        String back = sl.write(onto.toAbs(a));
+        assertTrue(back.contains(":type \"my type\""), back);
+        for (String bad : new String[]{"((action", "(a) b", "word", "(\"open", "(".repeat(100) + ")".repeat(100)}) {
+            assertThrows(io.concord.core.content.ContentException.class, () -> onto.fromAbs(sl.read(bad).get(0)), bad);
+        }
     }
 }
