@@ -46,6 +46,9 @@ class SubscribeAndProposeHandlersTest {
     @Test
     void everySubscriptionHandlerIsCalledByTheEngine() throws Exception {
         CountDownLatch over = new CountDownLatch(1);
+        // All three partners' first answers handled: the refusal may come after the other partner's
+        // whole subscription has been cancelled (each agent has a thread of its own; CI saw it).
+        CountDownLatch answered = new CountDownLatch(1);
         String[] roles = {"agree", "refuse", "puzzled"};
         for (String role : roles) {
             container.acceptNewAgent("sub-" + role, new Publisher(role)).start();
@@ -83,6 +86,7 @@ class SubscribeAndProposeHandlersTest {
                     @Override
                     protected void handleAllResponses(Vector v) {
                         called(SubscriptionInitiator.class, "handleAllResponses");
+                        answered.countDown();
                     }
 
                     @Override
@@ -109,6 +113,7 @@ class SubscribeAndProposeHandlersTest {
             }
         }).start();
         assertTrue(over.await(30, TimeUnit.SECONDS), "the subscription was not cancelled");
+        assertTrue(answered.await(30, TimeUnit.SECONDS), "handleAllResponses was not called");
         assertAllCalled(SubscriptionInitiator.class);
         assertAllCalled(SubscriptionResponder.class);
     }
