@@ -62,6 +62,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     private final transient CountDownLatch started = new CountDownLatch(1);
     private final transient CountDownLatch ended = new CountDownLatch(1);
     private transient long wakeups;
+    private transient jade.content.ContentManager contentManager;
     private transient boolean restartAll;
     private transient int next;
     private transient int queueSize;
@@ -113,6 +114,19 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
     }
 
     // ---- life cycle --------------------------------------------------------------------------
+
+    /** The agent's content manager (one per agent, created on first use), as in JADE. */
+    public jade.content.ContentManager getContentManager() {
+        lock.lock();
+        try {
+            if (contentManager == null) {
+                contentManager = new jade.content.ContentManager();
+            }
+            return contentManager;
+        } finally {
+            lock.unlock();
+        }
+    }
 
     /** Adds behaviours and whatever else the agent needs; runs on the agent's thread. */
     protected void setup() {

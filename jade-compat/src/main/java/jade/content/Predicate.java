@@ -1,0 +1,5 @@
+package jade.content;
+
+/** JADE's marker of a predicate: a proposition, true or false. */
+public interface Predicate extends ContentElement {
+}

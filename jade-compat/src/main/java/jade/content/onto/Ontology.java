@@ -1,0 +1,258 @@
+package jade.content.onto;
+
+import io.concord.core.content.AbsObject;
+import io.concord.jadecompat.internal.ContentOntology;
+import jade.content.schema.ObjectSchema;
+
+import java.lang.reflect.Method;
+import java.lang.reflect.ParameterizedType;
+import java.lang.reflect.Type;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * A vocabulary, as JADE's: schemas by name, each with the Java class its values map to, and base
+ * ontologies whose schemas it includes (every ontology here also understands the basic one's
+ * elements: primitives, aggregates, {@code agent-identifier}, {@code action}, {@code done},
+ * {@code result}, {@code =}, {@code true}, {@code false}). A class's slots are read and written
+ * through its JavaBean properties: slot {@code lease-time} is {@code getLeaseTime}/{@code setLeaseTime}
+ * ({@code isX} for a boolean), as JADE's {@code ReflectiveIntrospector} does; aggregates are
+ * {@code jade.util.leap.List}/{@code Set} or {@code java.util.List}/{@code Set}, as the setter takes.
+ */
+public class Ontology implements jade.util.leap.Serializable, ContentOntology {
+    private static final long serialVersionUID = 1L;
+
+    private final String name;
+    private final Ontology[] bases;
+    private final Introspector introspector;
+    private final Map<String, ObjectSchema> schemas = new LinkedHashMap<>();
+    private final Map<String, Class<?>> classes = new HashMap<>();
+    private final Map<Class<?>, ObjectSchema> byClass = new HashMap<>();
+    private final transient Map<Class<?>, Map<String, Property>> properties = new ConcurrentHashMap<>();
+
+    /** One slot's accessors on a class. */
+    record Property(Method getter, Method setter, Class<?> elementType) {
+        Class<?> type() {
+            return setter.getParameterTypes()[0];
+        }
+    }
+
+    /** An ontology extending that one (usually {@code BasicOntology.getInstance()}). */
+    public Ontology(String name, Ontology base) {
+        this(name, base == null ? new Ontology[0] : new Ontology[]{base}, null);
+    }
+
+    /** An ontology with no base other than the basic elements; the introspector is not consulted. */
+    public Ontology(String name, Introspector introspector) {
+        this(name, new Ontology[0], introspector);
+    }
+
+    /** An ontology extending that one; the introspector is not consulted. */
+    public Ontology(String name, Ontology base, Introspector introspector) {
+        this(name, base == null ? new Ontology[0] : new Ontology[]{base}, introspector);
+    }
+
+    /** An ontology extending those; the introspector is not consulted. */
+    public Ontology(String name, Ontology[] bases, Introspector introspector) {
+        this.name = name;
+        this.bases = bases == null ? new Ontology[0] : bases.clone();
+        this.introspector = introspector;
+    }
+
+    /** Its name, the value of a message's {@code :ontology}. */
+    public String getName() {
+        return name;
+    }
+
+    /** The introspector given to the constructor, or null. */
+    public Introspector getIntrospector() {
+        return introspector;
+    }
+
+    /** Adds a schema with no Java class (its values can be written from and read into abstract form only). */
+    public void add(ObjectSchema schema) throws OntologyException {
+        add(schema, null);
+    }
+
+    /** Adds a schema and the class its values map to. */
+    public void add(ObjectSchema schema, Class javaClass) throws OntologyException {
+        if (schema == null) {
+            throw new OntologyException("null schema");
+        }
+        schemas.put(schema.getTypeName(), schema);
+        if (javaClass != null) {
+            classes.put(schema.getTypeName(), javaClass);
+            byClass.put(javaClass, schema);
+        }
+    }
+
+    /** The schema of that name, here or in a base ontology, or null. */
+    public ObjectSchema getSchema(String name) throws OntologyException {
+        ObjectSchema s = schemas.get(name);
+        if (s != null) {
+            return s;
+        }
+        for (Ontology b : bases) {
+            s = b.getSchema(name);
+            if (s != null) {
+                return s;
+            }
+        }
+        return null;
+    }
+
+    /** The schema of that class, here or in a base ontology, or null. */
+    public ObjectSchema getSchema(Class javaClass) throws OntologyException {
+        ObjectSchema s = byClass.get(javaClass);
+        if (s != null) {
+            return s;
+        }
+        for (Ontology b : bases) {
+            s = b.getSchema(javaClass);
+            if (s != null) {
+                return s;
+            }
+        }
+        return null;
+    }
+
+    /** The class of the element of that name, here or in a base ontology, or null. */
+    public Class getClassForElement(String name) throws OntologyException {
+        Class<?> c = classes.get(name);
+        if (c != null) {
+            return c;
+        }
+        for (Ontology b : bases) {
+            c = b.getClassForElement(name);
+            if (c != null) {
+                return c;
+            }
+        }
+        return null;
+    }
+
+    /** Names of the concepts (and agent actions) of this ontology and its bases. */
+    public java.util.List getConceptNames() {
+        return names(jade.content.schema.ConceptSchema.class);
+    }
+
+    /** Names of the agent actions of this ontology and its bases. */
+    public java.util.List getActionNames() {
+        return names(jade.content.schema.AgentActionSchema.class);
+    }
+
+    /** Names of the predicates of this ontology and its bases. */
+    public java.util.List getPredicateNames() {
+        return names(jade.content.schema.PredicateSchema.class);
+    }
+
+    private List<String> names(Class<?> kind) {
+        List<String> out = new ArrayList<>();
+        for (Ontology b : bases) {
+            out.addAll(b.names(kind));
+        }
+        for (ObjectSchema s : schemas.values()) {
+            if (kind.isInstance(s) && !out.contains(s.getTypeName())) {
+                out.add(s.getTypeName());
+            }
+        }
+        return out;
+    }
+
+    @Override
+    public String toString() {
+        return "Ontology " + name;
+    }
+
+    @Override
+    public AbsObject toAbs(Object value) throws OntologyException {
+        return new Mapping(this, true).toAbs(value);
+    }
+
+    @Override
+    public Object fromAbs(AbsObject abs, boolean validate) throws OntologyException {
+        return new Mapping(this, validate).fromAbs(abs);
+    }
+
+    /** Records a slot's accessors explicitly (BeanOntology: a slot named otherwise than its property). */
+    void addProperty(Class<?> c, String slot, Method getter, Method setter, Class<?> elementType) {
+        properties.computeIfAbsent(c, k -> new ConcurrentHashMap<>()).put(slot, new Property(getter, setter, elementType));
+    }
+
+    /** The accessors of that slot on that class: recorded, or found by JavaBean naming. */
+    Property property(Class<?> c, String slot) throws OntologyException {
+        for (Class<?> k = c; k != null; k = k.getSuperclass()) {
+            Property p = recorded(k, slot);
+            if (p != null) {
+                return p;
+            }
+        }
+        Map<String, Property> found = properties.computeIfAbsent(c, k -> new ConcurrentHashMap<>());
+        Property p = found.get(slot);
+        if (p == null) {
+            p = byNaming(c, slot);
+            found.put(slot, p);
+        }
+        return p;
+    }
+
+    private Property recorded(Class<?> c, String slot) {
+        Map<String, Property> m = properties.get(c);
+        Property p = m == null ? null : m.get(slot);
+        if (p != null) {
+            return p;
+        }
+        for (Ontology b : bases) {
+            p = b.recorded(c, slot);
+            if (p != null) {
+                return p;
+            }
+        }
+        return null;
+    }
+
+    private static Property byNaming(Class<?> c, String slot) throws OntologyException {
+        StringBuilder base = new StringBuilder();
+        boolean upper = true;
+        for (char ch : slot.toCharArray()) {
+            if (!Character.isLetterOrDigit(ch)) {
+                upper = true;
+                continue;
+            }
+            base.append(upper ? Character.toUpperCase(ch) : ch);
+            upper = false;
+        }
+        Method getter = null;
+        for (String prefix : new String[]{"get", "is"}) {
+            try {
+                getter = c.getMethod(prefix + base);
+                break;
+            } catch (NoSuchMethodException e) {
+                // try the next form
+            }
+        }
+        if (getter == null) {
+            throw new OntologyException("no getter get" + base + "() for slot :" + slot + " in class " + c.getName());
+        }
+        Method setter;
+        try {
+            setter = c.getMethod("set" + base, getter.getReturnType());
+        } catch (NoSuchMethodException e) {
+            throw new OntologyException("no setter set" + base + "(" + getter.getReturnType().getSimpleName()
+                    + ") for slot :" + slot + " in class " + c.getName());
+        }
+        return new Property(getter, setter, elementType(getter.getGenericReturnType()));
+    }
+
+    static Class<?> elementType(Type t) {
+        if (t instanceof ParameterizedType p && p.getActualTypeArguments().length == 1
+                && p.getActualTypeArguments()[0] instanceof Class<?> e) {
+            return e;
+        }
+        return null;
+    }
+}

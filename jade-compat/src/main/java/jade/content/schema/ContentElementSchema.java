@@ -1,0 +1,13 @@
+package jade.content.schema;
+
+/** The schema of a content element: a predicate (or an agent action). */
+public class ContentElementSchema extends ObjectSchema {
+    private static final long serialVersionUID = 1L;
+    /** The base name. */
+    public static final String BASE_NAME = "ContentElement";
+
+    /** A content-element schema of that name. */
+    protected ContentElementSchema(String typeName) {
+        super(typeName);
+    }
+}

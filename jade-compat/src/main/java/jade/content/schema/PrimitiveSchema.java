@@ -1,0 +1,13 @@
+package jade.content.schema;
+
+/** The schema of a primitive: {@code BasicOntology.STRING}, {@code INTEGER}, {@code FLOAT}, ... */
+public class PrimitiveSchema extends TermSchema {
+    private static final long serialVersionUID = 1L;
+    /** The base name. */
+    public static final String BASE_NAME = "Primitive";
+
+    /** A primitive schema of that name. */
+    public PrimitiveSchema(String typeName) {
+        super(typeName);
+    }
+}
