@@ -45,6 +45,10 @@ public class Seller extends Agent {
             System.out.println("seller: " + m.getSender().getLocalName() + " asks " + a.getActor().getLocalName()
                     + " to " + a.getAction().getClass().getSimpleName());
             reply.setPerformative(ACLMessage.INFORM);
+            if (Shop.TEXT && sold == 0) {
+                System.out.println("seller:   as written: " + m.getContent().replace(m.getSender().getName(), "BUYER")
+                        .replace(a.getActor().getName(), "SELLER"));
+            }
             if (a.getAction() instanceof Sell s) {
                 Book b = s.getBook();
                 System.out.println("seller:   " + b.describe());

@@ -51,6 +51,10 @@ public class Buyer extends Agent {
         }
         try {
             ContentElement ce = getContentManager().extractContent(m);
+            if (Shop.TEXT && ce instanceof Done) {
+                System.out.println("buyer:   as written: " + m.getContent().replace(getAID().getName(), "BUYER")
+                        .replace(seller.getName(), "SELLER"));
+            }
             if (ce instanceof Done d) {
                 Action a = (Action) d.getAction();
                 System.out.println("buyer: done by " + a.getActor().getLocalName() + ": sold "
