@@ -261,6 +261,9 @@ final class Mapping {
     // ---------------------------------------------------------------- abstract -> Java
 
     Object fromAbs(AbsObject abs) throws OntologyException {
+        if (abs instanceof AbsPrimitive p && p.value() instanceof Boolean b) {
+            return b ? new TrueProposition() : new FalseProposition(); // SL's bare true and false as content
+        }
         return value(abs, Object.class, null, null, "content");
     }
 
