@@ -111,6 +111,17 @@ final class Mapping {
         return v;
     }
 
+    /** {@code sequence} or {@code set}, or null for the base aggregate schema (either). */
+    private static String aggregateType(AggregateSchema s) {
+        String t = s.getTypeName();
+        return AbsAggregate.SEQUENCE.equals(t) || AbsAggregate.SET.equals(t) ? t : null;
+    }
+
+    private static boolean isBase(ObjectSchema s) {
+        return s == ConceptSchema.getBaseSchema() || s == jade.content.schema.AgentActionSchema.getBaseSchema()
+                || s.getTypeName().equals(jade.content.schema.TermSchema.BASE_NAME);
+    }
+
     private static List<Object> elements(Object v) {
         List<Object> out = new ArrayList<>();
         if (v instanceof jade.util.leap.Collection c) {
@@ -195,7 +206,7 @@ final class Mapping {
                 throw new OntologyException(where + ": " + name + " is written by position and its slot :" + leftOut
                         + " before this one is empty");
             }
-            AbsObject abs = term(value, slotSchema instanceof AggregateSchema a ? a.getTypeName() : null, where);
+            AbsObject abs = term(value, slotSchema instanceof AggregateSchema a ? aggregateType(a) : null, where);
             if (abs instanceof AbsPrimitive p && slotSchema instanceof PrimitiveSchema ps) {
                 checkPrimitive(ps, p.value(), where);
             }
@@ -294,7 +305,7 @@ final class Mapping {
 
     private Object aggregate(AbsAggregate a, Class<?> expected, Class<?> elementType, ObjectSchema schema, String where)
             throws OntologyException {
-        if (validate && schema instanceof AggregateSchema s && !s.getTypeName().equals(a.type())) {
+        if (validate && schema instanceof AggregateSchema s && aggregateType(s) != null && !s.getTypeName().equals(a.type())) {
             throw new OntologyException(where + ": expected a " + s.getTypeName() + ", got a " + a.type());
         }
         ObjectSchema elementSchema = schema instanceof AggregateSchema s ? s.getElementsSchema() : null;
@@ -456,7 +467,10 @@ final class Mapping {
                 AID aid = new AID((String) value(name, String.class, null, null, "slot :name of agent-identifier"), AID.ISGUID);
                 for (AbsCompound.Slot s : c.slots()) {
                     if (!List.of("name", "addresses", "resolvers").contains(s.name())) {
-                        throw new OntologyException("unknown slot :" + s.name() + " of agent-identifier");
+                        if (s.value() instanceof AbsPrimitive p) {
+                            aid.addUserDefinedSlot(s.name(), String.valueOf(p.value())); // an AID's own slots
+                        }
+                        continue;
                     }
                     if (s.value() instanceof AbsAggregate a) {
                         for (AbsObject e : a.elements()) {
@@ -504,13 +518,7 @@ final class Mapping {
         if (!c.isNamed() && c.slots().size() > names.length) {
             throw new OntologyException(name + " takes at most " + names.length + " argument(s), got " + c.slots().size());
         }
-        if (c.isNamed()) {
-            for (AbsCompound.Slot s : c.slots()) {
-                if (!schema.containsSlot(s.name())) {
-                    throw new OntologyException("unknown slot :" + s.name() + " of " + name);
-                }
-            }
-        }
+        // A named slot the schema does not have is ignored, as JADE ignores it (content-music-shop shows it).
         Object obj = instantiate(cls, name);
         for (int i = 0; i < names.length; i++) {
             String slot = names[i];
@@ -535,7 +543,7 @@ final class Mapping {
             Object value = value(abs, p.type(), p.elementType(), slotSchema, at);
             if (validate && slotSchema instanceof ConceptSchema cs && !(value instanceof AID)) {
                 ObjectSchema actual = schemaOf(value.getClass());
-                if (actual != null && !cs.isAssignableFrom(actual) && !cs.getTypeName().equals(jade.content.schema.TermSchema.BASE_NAME)) {
+                if (actual != null && !isBase(cs) && !cs.isAssignableFrom(actual)) {
                     throw new OntologyException(at + ": expected " + cs.getTypeName() + ", got " + actual.getTypeName());
                 }
             }

@@ -5,6 +5,12 @@ public class AgentActionSchema extends ConceptSchema {
     private static final long serialVersionUID = 1L;
     /** The base name. */
     public static final String BASE_NAME = "AgentAction";
+    private static final ObjectSchema BASE = new AgentActionSchema(BASE_NAME);
+
+    /** The schema of any agent action. */
+    public static ObjectSchema getBaseSchema() {
+        return BASE;
+    }
     private TermSchema resultSchema;
 
     /** An agent-action schema of that name. */

@@ -5,6 +5,12 @@ public class AggregateSchema extends TermSchema {
     private static final long serialVersionUID = 1L;
     /** The base name. */
     public static final String BASE_NAME = "Aggregate";
+    private static final ObjectSchema BASE = new AggregateSchema(BASE_NAME);
+
+    /** The schema of any aggregate (a sequence or a set). */
+    public static ObjectSchema getBaseSchema() {
+        return BASE;
+    }
     private final TermSchema elementsSchema;
 
     /** An aggregate of any terms. */

@@ -5,6 +5,12 @@ public class ConceptSchema extends TermSchema {
     private static final long serialVersionUID = 1L;
     /** The base name. */
     public static final String BASE_NAME = "Concept";
+    private static final ObjectSchema BASE = new ConceptSchema(BASE_NAME);
+
+    /** The schema of any concept (a slot of this schema takes any concept). */
+    public static ObjectSchema getBaseSchema() {
+        return BASE;
+    }
 
     /** A concept schema of that name. */
     public ConceptSchema(String typeName) {

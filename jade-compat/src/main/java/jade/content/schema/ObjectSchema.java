@@ -24,6 +24,14 @@ public abstract class ObjectSchema implements jade.util.leap.Serializable, SlotF
     public static final int UNLIMITED = -1;
     /** The name of the schema every schema descends from. */
     public static final String BASE_NAME = "Object";
+    private static final ObjectSchema BASE = new ObjectSchema() {
+        private static final long serialVersionUID = 1L;
+    };
+
+    /** The schema every schema descends from (a slot of this schema takes any value). */
+    public static ObjectSchema getBaseSchema() {
+        return BASE;
+    }
 
     /** Whether the element is written by position rather than by slot name. */
     protected boolean encodingByOrder;

@@ -5,6 +5,12 @@ public class PredicateSchema extends ContentElementSchema {
     private static final long serialVersionUID = 1L;
     /** The base name. */
     public static final String BASE_NAME = "Predicate";
+    private static final ObjectSchema BASE = new PredicateSchema(BASE_NAME);
+
+    /** The schema of any predicate. */
+    public static ObjectSchema getBaseSchema() {
+        return BASE;
+    }
 
     /** A predicate schema of that name. */
     public PredicateSchema(String typeName) {
