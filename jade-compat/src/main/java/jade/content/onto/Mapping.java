@@ -226,7 +226,7 @@ final class Mapping {
 
     private static Object get(Ontology.Property p, Object v, String slot, String name) throws OntologyException {
         try {
-            return p.getter().invoke(v);
+            return p.get(v);
         } catch (InvocationTargetException e) {
             throw new OntologyException("reading slot :" + slot + " of " + name + " failed: " + e.getCause(), e.getCause());
         } catch (ReflectiveOperationException e) {
@@ -548,7 +548,7 @@ final class Mapping {
                 }
             }
             try {
-                p.setter().invoke(obj, value);
+                p.set(obj, value);
             } catch (InvocationTargetException e) {
                 throw new OntologyException(at + ": the setter refused the value: " + e.getCause(), e.getCause());
             } catch (ReflectiveOperationException | IllegalArgumentException e) {

@@ -34,10 +34,48 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
     private final Map<Class<?>, ObjectSchema> byClass = new HashMap<>();
     private final transient Map<Class<?>, Map<String, Property>> properties = new ConcurrentHashMap<>();
 
-    /** One slot's accessors on a class. */
-    record Property(Method getter, Method setter, Class<?> elementType) {
+    /**
+     * One slot's accessors on a class: a getter and a setter, or, for an aggregate in JADE's older
+     * bean style, {@code getAllX()} (an iterator), {@code addX(element)} and {@code clearAllX()}.
+     */
+    record Property(Method getter, Method setter, Class<?> elementType, Method clearer) {
+        Property(Method getter, Method setter, Class<?> elementType) {
+            this(getter, setter, elementType, null);
+        }
+
+        /** Whether the slot is read with {@code getAllX} and written with {@code addX}. */
+        boolean adder() {
+            return getter.getReturnType() == jade.util.leap.Iterator.class || getter.getReturnType() == java.util.Iterator.class;
+        }
+
+        /** The class the value read from content must have before {@link #set}. */
         Class<?> type() {
-            return setter.getParameterTypes()[0];
+            return adder() ? java.util.List.class : setter.getParameterTypes()[0];
+        }
+
+        /** The slot's value (a list of the elements for an iterator getter). */
+        Object get(Object target) throws ReflectiveOperationException {
+            Object v = getter.invoke(target);
+            if (v instanceof java.util.Iterator<?> it) {
+                List<Object> out = new ArrayList<>();
+                it.forEachRemaining(out::add);
+                return out;
+            }
+            return v;
+        }
+
+        /** Sets the slot (adding each element for an adder). */
+        void set(Object target, Object value) throws ReflectiveOperationException {
+            if (!adder()) {
+                setter.invoke(target, value);
+                return;
+            }
+            if (clearer != null) {
+                clearer.invoke(target);
+            }
+            for (Object o : (java.util.Collection<?>) value) {
+                setter.invoke(target, o);
+            }
         }
     }
 
@@ -236,6 +274,10 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
             }
         }
         if (getter == null) {
+            Property all = allAndAdd(c, base.toString());
+            if (all != null) {
+                return all;
+            }
             throw new OntologyException("no getter get" + base + "() for slot :" + slot + " in class " + c.getName());
         }
         Method setter;
@@ -246,6 +288,35 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
                     + ") for slot :" + slot + " in class " + c.getName());
         }
         return new Property(getter, setter, elementType(getter.getGenericReturnType()));
+    }
+
+    /** JADE's older aggregate accessors: {@code getAllX()}, {@code addX(e)}, {@code clearAllX()}. */
+    private static Property allAndAdd(Class<?> c, String base) {
+        try {
+            Method all = c.getMethod("getAll" + base);
+            if (!java.util.Iterator.class.isAssignableFrom(all.getReturnType())) {
+                return null;
+            }
+            Method add = null;
+            for (Method m : c.getMethods()) {
+                if (m.getName().equals("add" + base) && m.getParameterCount() == 1) {
+                    add = m;
+                }
+            }
+            if (add == null) {
+                return null;
+            }
+            Method clear = null;
+            try {
+                clear = c.getMethod("clearAll" + base);
+            } catch (NoSuchMethodException e) {
+                // no clearer: elements are added to what the object has
+            }
+            Class<?> element = add.getParameterTypes()[0];
+            return new Property(all, add, element == Object.class ? null : element, clear);
+        } catch (NoSuchMethodException e) {
+            return null;
+        }
     }
 
     static Class<?> elementType(Type t) {

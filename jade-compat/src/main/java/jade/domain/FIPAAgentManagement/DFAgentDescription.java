@@ -7,7 +7,7 @@ import jade.util.leap.Iterator;
 import java.util.Date;
 
 /** An agent's entry in the yellow pages: its AID and the services it offers. */
-public class DFAgentDescription implements jade.util.leap.Serializable {
+public class DFAgentDescription implements jade.content.Concept {
     private static final long serialVersionUID = 1L;
     private AID name;
     private Date leaseTime;

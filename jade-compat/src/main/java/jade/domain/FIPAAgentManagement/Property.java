@@ -3,7 +3,7 @@ package jade.domain.FIPAAgentManagement;
 import java.util.Objects;
 
 /** A name and a value, in a service description. */
-public class Property implements jade.util.leap.Serializable {
+public class Property implements jade.content.Concept {
     private static final long serialVersionUID = 1L;
     private String name;
     private Object value;

@@ -1,15 +1,16 @@
 package jade.domain.FIPAAgentManagement;
 
 /** Limits on a DF search: how many results (-1: all), how deep, and a search id. */
-public class SearchConstraints implements jade.util.leap.Serializable {
+public class SearchConstraints implements jade.content.Concept {
     private static final long serialVersionUID = 1L;
     private static long ids;
     private Long maxDepth;
     private Long maxResults;
     private String searchId;
 
+    /** No limits and no search id (as JADE's: {@link #renewSearchId()} gives one). */
     public SearchConstraints() {
-        renewSearchId();
+        // no limits, no search id
     }
 
     /** A new unique search id. */

@@ -4,7 +4,7 @@ import jade.util.leap.ArrayList;
 import jade.util.leap.Iterator;
 
 /** A service an agent offers: type, name, properties, protocols, ontologies, languages, ownership. */
-public class ServiceDescription implements jade.util.leap.Serializable {
+public class ServiceDescription implements jade.content.Concept {
     private static final long serialVersionUID = 1L;
     private String name;
     private String type;
