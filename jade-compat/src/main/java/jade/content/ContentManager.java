@@ -2,7 +2,10 @@ package jade.content;
 
 import io.concord.core.content.AbsObject;
 import io.concord.jadecompat.internal.ContentCodec;
-import io.concord.jadecompat.internal.ContentOntology;
+import io.concord.jadecompat.internal.AbsElements;
+import jade.content.abs.AbsContentElement;
+import jade.content.lang.ByteArrayCodec;
+import jade.content.lang.StringCodec;
 import jade.content.lang.Codec;
 import jade.content.lang.Codec.CodecException;
 import jade.content.onto.Ontology;
@@ -45,10 +48,6 @@ public class ContentManager implements jade.util.leap.Serializable {
     public void registerLanguage(Codec codec, String name) {
         if (codec == null) {
             throw new IllegalArgumentException("Null codec registered");
-        }
-        if (!(codec instanceof ContentCodec)) {
-            throw new IllegalArgumentException("codec " + codec.getClass().getName()
-                    + " is not supported: only SLCodec and LEAPCodec are");
         }
         languages.put(name, codec);
     }
@@ -109,8 +108,8 @@ public class ContentManager implements jade.util.leap.Serializable {
      * language and ontology.
      */
     public void fillContent(ACLMessage message, ContentElement content) throws CodecException, OntologyException {
-        ContentCodec codec = codec(message);
-        ContentOntology ontology = ontology(message);
+        Codec codec = codec(message);
+        Ontology ontology = ontology(message);
         if (content == null) {
             throw new OntologyException("null content");
         }
@@ -122,7 +121,53 @@ public class ContentManager implements jade.util.leap.Serializable {
         } else {
             elements.add(ontology.toAbs(content));
         }
-        codec.writeContent(message, elements);
+        write(codec, message, ontology, elements);
+    }
+
+    /** Writes an abstract content element (a list for several) as the message's content. */
+    public void fillContent(ACLMessage message, AbsContentElement content) throws CodecException, OntologyException {
+        Codec codec = codec(message);
+        Ontology ontology = ontology(message);
+        write(codec, message, ontology, AbsElements.toCore(ontology, content));
+    }
+
+    /** Reads the message's content as abstract descriptors (a list for several elements), checked only by the codec. */
+    public AbsContentElement extractAbsContent(ACLMessage message) throws CodecException, OntologyException {
+        Codec codec = codec(message);
+        Ontology ontology = ontology(message);
+        return AbsElements.fromCore(ontology, read(codec, message, ontology));
+    }
+
+    private static void write(Codec codec, ACLMessage message, Ontology ontology, List<AbsObject> elements)
+            throws CodecException, OntologyException {
+        if (codec instanceof ContentCodec c) {
+            c.writeContent(message, elements);
+        } else if (codec instanceof StringCodec c) {
+            message.setContent(c.encode(ontology, AbsElements.fromCore(ontology, elements)));
+        } else if (codec instanceof ByteArrayCodec c) {
+            message.setByteSequenceContent(c.encode(ontology, AbsElements.fromCore(ontology, elements)));
+        } else {
+            throw new CodecException("codec " + codec.getName() + " is neither a StringCodec nor a ByteArrayCodec");
+        }
+    }
+
+    private static List<AbsObject> read(Codec codec, ACLMessage message, Ontology ontology) throws CodecException, OntologyException {
+        if (codec instanceof ContentCodec c) {
+            return c.readContent(message);
+        }
+        if (codec instanceof StringCodec c) {
+            if (message.getContent() == null) {
+                throw new CodecException("the message has no content");
+            }
+            return AbsElements.toCore(ontology, c.decode(ontology, message.getContent()));
+        }
+        if (codec instanceof ByteArrayCodec c) {
+            if (message.getByteSequenceContent() == null) {
+                throw new CodecException("the message has no content");
+            }
+            return AbsElements.toCore(ontology, c.decode(ontology, message.getByteSequenceContent()));
+        }
+        throw new CodecException("codec " + codec.getName() + " is neither a StringCodec nor a ByteArrayCodec");
     }
 
     /**
@@ -130,9 +175,9 @@ public class ContentManager implements jade.util.leap.Serializable {
      * {@code Action}), or a {@link ContentElementList} when the content has several elements.
      */
     public ContentElement extractContent(ACLMessage message) throws CodecException, UngroundedException, OntologyException {
-        ContentCodec codec = codec(message);
-        ContentOntology ontology = ontology(message);
-        List<AbsObject> elements = codec.readContent(message);
+        Codec codec = codec(message);
+        Ontology ontology = ontology(message);
+        List<AbsObject> elements = read(codec, message, ontology);
         if (elements.isEmpty()) {
             throw new CodecException("the content has no element");
         }
@@ -155,15 +200,15 @@ public class ContentManager implements jade.util.leap.Serializable {
         return list;
     }
 
-    private ContentCodec codec(ACLMessage message) throws CodecException {
+    private Codec codec(ACLMessage message) throws CodecException {
         Codec codec = lookupLanguage(message.getLanguage());
         if (codec == null) {
             throw new CodecException("Unknown language " + message.getLanguage());
         }
-        return (ContentCodec) codec;
+        return codec;
     }
 
-    private ContentOntology ontology(ACLMessage message) throws OntologyException {
+    private Ontology ontology(ACLMessage message) throws OntologyException {
         Ontology ontology = lookupOntology(message.getOntology());
         if (ontology == null) {
             throw new OntologyException("Unknown ontology " + message.getOntology());

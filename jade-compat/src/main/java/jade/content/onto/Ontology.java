@@ -206,6 +206,16 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
         return "Ontology " + name;
     }
 
+    /** The abstract descriptor of a Java object, checked against the schemas. */
+    public jade.content.abs.AbsObject fromObject(Object value) throws OntologyException {
+        return io.concord.jadecompat.internal.AbsConvert.fromCore(toAbs(value), this, false);
+    }
+
+    /** The Java object of an abstract descriptor, checked against the schemas. */
+    public Object toObject(jade.content.abs.AbsObject abs) throws OntologyException, UngroundedException {
+        return fromAbs(io.concord.jadecompat.internal.AbsConvert.toCore(abs, this), true);
+    }
+
     @Override
     public AbsObject toAbs(Object value) throws OntologyException {
         return new Mapping(this, true).toAbs(value);

@@ -79,7 +79,24 @@ class NoSilentMethodsTest {
             Map.entry("jade.core.Runtime.getRevision", "a constant"),
             Map.entry("jade.core.Runtime.getDate", "a constant"),
             Map.entry("jade.core.Runtime.getCopyrightNotice", "a constant: says this is not JADE"),
-            Map.entry("jade.core.ContainerID.getProtocol", "a constant: the platform's transport")));
+            Map.entry("jade.core.ContainerID.getProtocol", "a constant: the platform's transport"),
+            Map.entry("jade.content.abs.AbsAgentAction.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsAggregate.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsConcept.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsContentElementList.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsObjectImpl.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsPredicate.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsPrimitive.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsVariable.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsAgentAction.getJavaClass", "a constant: the descriptor class, as JADE returns it"),
+            Map.entry("jade.content.abs.AbsConcept.getJavaClass", "a constant: the descriptor class, as JADE returns it"),
+            Map.entry("jade.content.abs.AbsPredicate.getJavaClass", "a constant: the descriptor class, as JADE returns it"),
+            Map.entry("jade.content.abs.AbsVariable.getJavaClass", "a constant: the descriptor class, as JADE returns it"),
+            Map.entry("jade.content.abs.AbsContentElementList.getTypeName", "a constant: BasicOntology.CONTENT_ELEMENT_LIST, as JADE"),
+            Map.entry("jade.content.abs.AbsPrimitive.getAbsObject", "JADE: a primitive has no slot (null)"),
+            Map.entry("jade.content.abs.AbsPrimitive.getCount", "JADE: a primitive has no slot (0)"),
+            Map.entry("jade.content.abs.AbsPrimitive.getNames", "JADE: a primitive has no slot (no names)"),
+            Map.entry("jade.content.abs.AbsVariable.isGrounded", "JADE: a variable is never grounded (false)")));
 
     private static JavaClasses classes;
 

@@ -3,7 +3,12 @@ package jade.content.lang.leap;
 import io.concord.core.content.AbsObject;
 import io.concord.core.content.BinaryContentCodec;
 import io.concord.core.content.ContentException;
+import io.concord.jadecompat.internal.AbsElements;
 import io.concord.jadecompat.internal.ContentCodec;
+import jade.content.abs.AbsContentElement;
+import jade.content.onto.BasicOntology;
+import jade.content.onto.Ontology;
+import jade.content.onto.OntologyException;
 import jade.content.lang.ByteArrayCodec;
 import jade.lang.acl.ACLMessage;
 
@@ -24,6 +29,38 @@ public class LEAPCodec extends ByteArrayCodec implements ContentCodec {
     /** The codec. */
     public LEAPCodec() {
         super(NAME);
+    }
+
+    @Override
+    public byte[] encode(AbsContentElement content) throws CodecException {
+        return encode(BasicOntology.getInstance(), content);
+    }
+
+    @Override
+    public byte[] encode(Ontology ontology, AbsContentElement content) throws CodecException {
+        try {
+            return codec.write(AbsElements.toCore(ontology, content));
+        } catch (OntologyException e) {
+            throw new CodecException(e.getMessage(), e);
+        } catch (ContentException e) {
+            throw new CodecException(e.reason(), e);
+        }
+    }
+
+    @Override
+    public AbsContentElement decode(byte[] content) throws CodecException {
+        return decode(BasicOntology.getInstance(), content);
+    }
+
+    @Override
+    public AbsContentElement decode(Ontology ontology, byte[] content) throws CodecException {
+        try {
+            return AbsElements.fromCore(ontology, codec.read(content));
+        } catch (OntologyException e) {
+            throw new CodecException(e.getMessage(), e);
+        } catch (ContentException e) {
+            throw new CodecException(e.reason(), e);
+        }
     }
 
     @Override

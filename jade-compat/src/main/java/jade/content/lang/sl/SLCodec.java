@@ -3,7 +3,12 @@ package jade.content.lang.sl;
 import io.concord.core.content.AbsObject;
 import io.concord.core.content.ContentException;
 import io.concord.core.content.SlCodec;
+import io.concord.jadecompat.internal.AbsElements;
 import io.concord.jadecompat.internal.ContentCodec;
+import jade.content.abs.AbsContentElement;
+import jade.content.onto.BasicOntology;
+import jade.content.onto.Ontology;
+import jade.content.onto.OntologyException;
 import jade.content.lang.StringCodec;
 import jade.lang.acl.ACLMessage;
 
@@ -62,6 +67,38 @@ public class SLCodec extends StringCodec implements ContentCodec {
     /** Whether the codec was asked to preserve Java types (recorded, not applied). */
     public boolean getPreserveJavaTypes() {
         return preserveJavaTypes;
+    }
+
+    @Override
+    public String encode(AbsContentElement content) throws CodecException {
+        return encode(BasicOntology.getInstance(), content);
+    }
+
+    @Override
+    public String encode(Ontology ontology, AbsContentElement content) throws CodecException {
+        try {
+            return codec.write(AbsElements.toCore(ontology, content));
+        } catch (OntologyException e) {
+            throw new CodecException(e.getMessage(), e);
+        } catch (ContentException e) {
+            throw new CodecException(e.reason(), e);
+        }
+    }
+
+    @Override
+    public AbsContentElement decode(String content) throws CodecException {
+        return decode(BasicOntology.getInstance(), content);
+    }
+
+    @Override
+    public AbsContentElement decode(Ontology ontology, String content) throws CodecException {
+        try {
+            return AbsElements.fromCore(ontology, codec.read(content));
+        } catch (OntologyException e) {
+            throw new CodecException(e.getMessage(), e);
+        } catch (ContentException e) {
+            throw new CodecException(e.reason(), e);
+        }
     }
 
     @Override
