@@ -5,12 +5,14 @@ import jade.content.abs.AbsAgentAction;
 import jade.content.abs.AbsAggregate;
 import jade.content.abs.AbsConcept;
 import jade.content.abs.AbsContentElement;
+import jade.content.abs.AbsIRE;
 import jade.content.abs.AbsObject;
 import jade.content.abs.AbsPredicate;
 import jade.content.abs.AbsPrimitive;
 import jade.content.abs.AbsVariable;
 import jade.content.lang.StringCodec;
 import jade.content.lang.sl.SLCodec;
+import jade.content.lang.sl.SLVocabulary;
 import jade.content.onto.BasicOntology;
 import jade.content.onto.BeanOntology;
 import jade.content.onto.Ontology;
@@ -107,10 +109,20 @@ class AbsContentTest {
         AbsPredicate and = (AbsPredicate) sl.decode("((and true (not false)))");
         assertEquals("true", and.getAbsObject("left").getTypeName());
         assertEquals("not", and.getAbsObject("right").getTypeName());
-        AbsPredicate iota = (AbsPredicate) sl.decode("((iota ?x (= ?x ?x)))");
-        AbsVariable x = assertInstanceOf(AbsVariable.class, iota.getAbsObject("variable"));
-        assertEquals("x", x.getName());
+        AbsIRE iota = (AbsIRE) sl.decode("((iota ?x (= ?x ?x)))");
+        assertEquals("x", iota.getVariable().getName());
+        assertEquals("=", iota.getProposition().getTypeName());
         assertFalse(iota.isGrounded());
+        AbsIRE all = (AbsIRE) sl.decode("((all (sequence ?x ?y) (= ?x ?y)))");
+        assertEquals(2, all.getVariables().size());
+        AbsIRE any = new AbsIRE(SLVocabulary.ANY);
+        AbsVariable y = new AbsVariable("y", BasicOntology.STRING);
+        AbsPredicate eq = new AbsPredicate(BasicOntology.EQUALS);
+        eq.set(BasicOntology.EQUALS_LEFT, y);
+        eq.set(BasicOntology.EQUALS_RIGHT, AbsPrimitive.wrap("a b"));
+        any.setVariable(y);
+        any.setProposition(eq);
+        assertEquals("((any ?y (= ?y \"a b\")))", sl.encode(any));
     }
 
     /** A codec of one's own, as JADE lets a user write: SL read and written backwards. */

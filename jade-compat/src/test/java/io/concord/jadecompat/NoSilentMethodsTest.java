@@ -96,6 +96,8 @@ class NoSilentMethodsTest {
             Map.entry("jade.content.abs.AbsPrimitive.getAbsObject", "JADE: a primitive has no slot (null)"),
             Map.entry("jade.content.abs.AbsPrimitive.getCount", "JADE: a primitive has no slot (0)"),
             Map.entry("jade.content.abs.AbsPrimitive.getNames", "JADE: a primitive has no slot (no names)"),
+            Map.entry("jade.content.abs.AbsIRE.getAbsType", "a constant: the descriptor's kind, one of JADE's AbsObject constants"),
+            Map.entry("jade.content.abs.AbsIRE.getJavaClass", "a constant: the descriptor class, as JADE returns it"),
             Map.entry("jade.content.abs.AbsVariable.isGrounded", "JADE: a variable is never grounded (false)")));
 
     private static JavaClasses classes;

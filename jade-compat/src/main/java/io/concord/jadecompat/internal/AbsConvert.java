@@ -28,8 +28,7 @@ import java.util.Map;
  * JADE's abstract descriptors ({@code jade.content.abs}) to core's abstract content and back. The
  * ontology names the slots of elements written by position (predicates, {@code action}, ...); SL's
  * operators are named with JADE's vocabulary ({@code (and left right)}, {@code (not what)}, ...);
- * a referential expression ({@code iota}, {@code any}, {@code all}) is an {@link AbsPredicate}
- * with slots {@code variable} and {@code proposition} here (JADE has {@code AbsIRE}).
+ * a referential expression ({@code iota}, {@code any}, {@code all}) is an {@code AbsIRE}.
  */
 public final class AbsConvert {
     private static final Map<String, String[]> OPERATORS = Map.ofEntries(
@@ -158,6 +157,17 @@ public final class AbsConvert {
         }
         AbsCompound c = (AbsCompound) a;
         String name = c.name();
+        if ((name.equals("iota") || name.equals("any") || name.equals("all")) && !c.isNamed() && c.slots().size() == 2) {
+            jade.content.abs.AbsIRE ire = new jade.content.abs.AbsIRE(name);
+            AbsObject term = fromCore(c.slots().get(0).value(), onto, false);
+            AbsObject proposition = fromCore(c.slots().get(1).value(), onto, true);
+            if (!(term instanceof AbsTerm t) || !(proposition instanceof AbsPredicate p)) {
+                throw new OntologyException(name + " takes a term and a proposition");
+            }
+            ire.setTerm(t);
+            ire.setProposition(p);
+            return ire;
+        }
         ObjectSchema schema = onto == null ? null : onto.getSchema(name);
         AbsPrimitiveSlotsHolder out;
         if (schema instanceof AgentActionSchema) {
