@@ -7,7 +7,7 @@ import jade.content.onto.Ontology;
 public abstract class Codec implements jade.util.leap.Serializable {
     private static final long serialVersionUID = 1L;
     /** The prefix JADE gives a codec without a name. */
-    public static String UNNAMEDPREFIX = "Codec-unnamed";
+    public static final String UNNAMEDPREFIX = "Codec-unnamed";
 
     private final String name;
     private Ontology innerOntology;

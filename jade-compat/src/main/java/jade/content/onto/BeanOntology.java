@@ -66,10 +66,14 @@ public class BeanOntology extends Ontology {
         add(c, true);
     }
 
-    /** Adds that bean class; {@code buildHierarchy} is accepted (a bean's inherited properties are always its slots). */
+    /**
+     * Adds that bean class. With {@code buildHierarchy}, a superclass that is a bean too gets its own
+     * schema, which becomes this one's super-schema (its slots first, as JADE orders them); without,
+     * the inherited properties are this schema's own slots.
+     */
     public void add(Class c, boolean buildHierarchy) throws BeanOntologyException {
         try {
-            schemaFor(c);
+            schemaFor(c, buildHierarchy);
         } catch (OntologyException e) {
             throw e instanceof BeanOntologyException b ? b : new BeanOntologyException(e.getMessage(), e);
         }
@@ -91,7 +95,7 @@ public class BeanOntology extends Ontology {
         }
     }
 
-    private ObjectSchema schemaFor(Class<?> c) throws OntologyException {
+    private ObjectSchema schemaFor(Class<?> c, boolean buildHierarchy) throws OntologyException {
         ObjectSchema existing = getSchema(c);
         if (existing != null) {
             return existing;
@@ -109,6 +113,20 @@ public class BeanOntology extends Ontology {
         ObjectSchema schema = action ? new AgentActionSchema(name) : predicate ? new PredicateSchema(name) : new ConceptSchema(name);
         add(schema, c); // before the slots: a bean may refer to itself
         List<Prop> props = properties(c);
+        Class<?> parent = c.getSuperclass();
+        if (buildHierarchy && parent != null && parent != Object.class
+                && (Concept.class.isAssignableFrom(parent) || Predicate.class.isAssignableFrom(parent))) {
+            ObjectSchema superSchema = schemaFor(parent, true);
+            if (schema instanceof PredicateSchema ps && superSchema instanceof PredicateSchema sup) {
+                ps.addSuperSchema(sup);
+            } else if (schema instanceof ConceptSchema cs && superSchema instanceof ConceptSchema sup) {
+                cs.addSuperSchema(sup);
+            } else {
+                throw new BeanOntologyException(c.getName() + " and its superclass " + parent.getName() + " are of different kinds");
+            }
+            java.util.Set<String> inherited = java.util.Set.of(superSchema.getNames());
+            props.removeIf(p -> inherited.contains(p.slotName()));
+        }
         boolean byPosition = props.stream().anyMatch(p -> p.slot() != null && p.slot().position() >= 0);
         if (byPosition) {
             props.sort(Comparator.comparingInt(p -> p.slot() == null ? Integer.MAX_VALUE : p.slot().position()));
@@ -222,7 +240,7 @@ public class BeanOntology extends Ontology {
             };
         }
         if (Concept.class.isAssignableFrom(type) || Predicate.class.isAssignableFrom(type)) {
-            return schemaFor(type);
+            return schemaFor(type, true);
         }
         throw new BeanOntologyException(where + ": no schema for type " + type.getName());
     }

@@ -121,6 +121,63 @@ class ContentManagerTest {
         }
     }
 
+    /** A bean with a subclass. */
+    public static class Item implements Concept {
+        private int serial;
+        private String zeta;
+
+        public int getSerial() {
+            return serial;
+        }
+
+        public void setSerial(int serial) {
+            this.serial = serial;
+        }
+
+        public String getZeta() {
+            return zeta;
+        }
+
+        public void setZeta(String zeta) {
+            this.zeta = zeta;
+        }
+    }
+
+    /** A bean subclass: with buildHierarchy, Item's slots come first. */
+    public static class Disc extends Item {
+        private String title;
+        private String alpha;
+
+        public String getTitle() {
+            return title;
+        }
+
+        public void setTitle(String title) {
+            this.title = title;
+        }
+
+        public String getAlpha() {
+            return alpha;
+        }
+
+        public void setAlpha(String alpha) {
+            this.alpha = alpha;
+        }
+    }
+
+    /** A predicate about an item. */
+    public static class Has implements Predicate {
+        private Item item;
+
+        public Item getItem() {
+            return item;
+        }
+
+        public void setItem(Item item) {
+            this.item = item;
+        }
+    }
+
     private final AID seller = new AID("seller@P", AID.ISGUID);
     private ContentManager cm;
 
@@ -288,6 +345,32 @@ class ContentManagerTest {
         OntologyException concept = assertThrows(OntologyException.class, () -> cm.extractContent(message("fipa-sl",
                 "((Book :title T :pages 1))")));
         assertTrue(concept.getMessage().contains("neither a predicate nor an agent action"), concept.getMessage());
+    }
+
+    @Test
+    void aBeanSubclassHasItsSuperclassAsSuperSchemaAsInJade() throws Exception {
+        BeanOntology o = new BeanOntology("items");
+        o.add(Item.class);
+        o.add(Disc.class);
+        o.add(Has.class);
+        cm.registerOntology(o);
+        Disc d = new Disc();
+        d.setSerial(3);
+        d.setZeta("z");
+        d.setTitle("T");
+        d.setAlpha("A");
+        Has h = new Has();
+        h.setItem(d);
+        ACLMessage m = message("fipa-sl", null);
+        m.setOntology("items");
+        cm.fillContent(m, h);
+        // JADE 4.3's BeanOntology, given the same Item and Disc, wrote (Disc :serial 3 :zeta z :alpha A :title T):
+        // add(Class) builds the hierarchy, the super-schema's slots first, each schema's own alphabetically
+        assertEquals("((Has (Disc :serial 3 :zeta z :alpha A :title T)))", m.getContent());
+        Disc back = (Disc) ((Has) cm.extractContent(m)).getItem();
+        assertEquals(3, back.getSerial());
+        assertEquals("A", back.getAlpha());
+        assertArrayEquals(new String[]{"serial", "zeta", "alpha", "title"}, o.getSchema("Disc").getNames());
     }
 
     @Test
