@@ -35,8 +35,7 @@ import java.util.jar.JarFile;
  * {@link Concept}, {@link AgentAction} or {@link Predicate} gets a schema named by its simple name
  * (or {@link Element#name()}), one slot per property (a public getter {@code getX}/{@code isX} with a
  * matching setter {@code setX}) unless {@link SuppressSlot}, named as the property (or
- * {@link Slot#name()}), in alphabetical order (or by {@link Slot#position()}, and then written by
- * position); mandatory if {@link Slot#mandatory()}, if the type is a Java primitive, or if
+ * {@link Slot#name()}), in alphabetical order (or by {@link Slot#position()}); mandatory if {@link Slot#mandatory()}, if the type is a Java primitive, or if
  * {@link AggregateSlot#cardMin()} is above 0. Slot types: {@code String}, {@code int}/{@code long}/
  * {@code short} (and boxes), {@code float}/{@code double}, {@code boolean}, {@code Date},
  * {@code byte[]}, {@link AID}, another bean (added too when not yet in the ontology),
@@ -129,8 +128,8 @@ public class BeanOntology extends Ontology {
         }
         boolean byPosition = props.stream().anyMatch(p -> p.slot() != null && p.slot().position() >= 0);
         if (byPosition) {
+            // JADE orders the slots by position and still writes them by name (content-bean-slots shows it)
             props.sort(Comparator.comparingInt(p -> p.slot() == null ? Integer.MAX_VALUE : p.slot().position()));
-            schema.setEncodingByOrder(true);
         } else {
             props.sort(Comparator.comparing(Prop::slotName));
         }

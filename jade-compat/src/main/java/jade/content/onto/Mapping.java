@@ -310,6 +310,9 @@ final class Mapping {
         }
         ObjectSchema elementSchema = schema instanceof AggregateSchema s ? s.getElementsSchema() : null;
         Class<?> et = elementType != null ? elementType : classOf(elementSchema);
+        if (Number.class.isAssignableFrom(box(et))) {
+            et = Object.class; // as JADE: an aggregate's numbers stay Long and Double, whatever the generic type says
+        }
         List<Object> values = new ArrayList<>();
         for (AbsObject e : a.elements()) {
             values.add(value(e, et, null, elementSchema, where));
@@ -378,6 +381,12 @@ final class Mapping {
     private static Object primitive(Object v, Class<?> expected, String where) throws OntologyException {
         Class<?> e = box(expected);
         if (e == Object.class) {
+            if (v instanceof Integer i) {
+                return i.longValue(); // SL's integers are Long in JADE
+            }
+            if (v instanceof Float f) {
+                return f.doubleValue();
+            }
             return v instanceof Instant t ? Date.from(t) : v;
         }
         if (v instanceof Boolean b && (e == Predicate.class || e == TrueProposition.class || e == FalseProposition.class)) {
