@@ -374,6 +374,16 @@ class ContentManagerTest {
     }
 
     @Test
+    void aPackageIsAddedWhole() throws Exception {
+        BeanOntology o = new BeanOntology("sky");
+        o.add("io.concord.jadecompat.beans");
+        assertEquals(io.concord.jadecompat.beans.Planet.class, o.getClassForElement("Planet"));
+        assertEquals(io.concord.jadecompat.beans.Orbits.class, o.getClassForElement("Orbits"));
+        assertNull(o.getSchema("NotContent"));
+        assertThrows(BeanOntologyException.class, () -> o.add("io.concord.jadecompat.nothing.here"));
+    }
+
+    @Test
     void agentHasOneContentManager() {
         jade.core.Agent a = new jade.core.Agent();
         assertSame(a.getContentManager(), a.getContentManager());
