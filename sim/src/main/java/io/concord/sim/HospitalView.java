@@ -193,6 +193,8 @@ public final class HospitalView implements ConsoleView {
             AclMessage m = new AclMessage(Performative.REQUEST);
             m.addReceiver(medical.get(0).aid());
             m.setConversationId(id);
+            m.setOntology(Services.ONTOLOGY);
+            m.setLanguage(Services.LANGUAGE);
             m.setContent(new TransportRequest(from, to, priority, unloadS).encode());
             send(m);
             asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.get(0).aid().localName()));
