@@ -1,5 +1,6 @@
 package io.concord.core.content;
 
+import jade.content.abs.AbsContentElement;
 import jade.content.lang.sl.SLCodec;
 import jade.content.lang.sl.SLOntology;
 import jade.content.onto.BeanOntology;
@@ -14,9 +15,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 /**
  * Random SL2 formulas (connectives, quantifiers, modal operators, referential expressions, over
- * {@code =}, {@code true}, {@code false} and the book ontology's {@code Owns}) written by Concord
- * are read by JADE 4.3 (over its SL ontology) as the same formula: JADE writes them back byte for
- * byte, and Concord reads JADE's text as the same abstract content. Cases: {@code concord.sl.cases}.
+ * {@code =}, {@code true}, {@code false} and the book ontology's {@code Owns}) mean the same to
+ * Concord and JADE 4.3 (over its SL ontology), both ways: written by Concord, JADE reads them as
+ * the same formula and writes them back byte for byte; written by JADE (from the same formula as
+ * JADE's abstract objects), Concord reads them as the same formula and writes them back byte for
+ * byte. Both tests draw the same formulas. Cases: {@code concord.sl.cases}; seed: {@code concord.sl.seed}.
  */
 class JadeFormulaPropertyTest {
     private static final int CASES = Integer.getInteger("concord.sl.cases", 5_000);
@@ -28,16 +31,20 @@ class JadeFormulaPropertyTest {
 
     private final Random random = new Random(SEED);
     private final ContentGenerator strings = new ContentGenerator(SEED);
+    private final SLCodec jade = new SLCodec();
+    private final Ontology jadeOntology;
+    private final SlCodec concord = new SlCodec();
 
-    @Test
-    void jadeReadsConcordsFormulasAsTheSameFormulas() throws Exception {
-        SLCodec jade = new SLCodec();
+    JadeFormulaPropertyTest() throws Exception {
         BeanOntology ontology = new BeanOntology("book-shop", SLOntology.getInstance());
         ontology.add(JadeBookShop.JAuthor.class);
         ontology.add(JadeBookShop.JBook.class);
         ontology.add(JadeBookShop.JOwns.class);
-        Ontology jadeOntology = ontology;
-        SlCodec concord = new SlCodec();
+        jadeOntology = ontology;
+    }
+
+    @Test
+    void jadeReadsConcordsFormulasAsTheSameFormulas() throws Exception {
         for (int i = 0; i < CASES; i++) {
             AbsObject formula = formula(0);
             String text = concord.write(formula);
@@ -45,11 +52,36 @@ class JadeFormulaPropertyTest {
             try {
                 jadeText = jade.encode(jadeOntology, jade.decode(jadeOntology, text));
             } catch (Exception e) {
-                throw new AssertionError("case " + i + " (seed " + SEED + "): JADE cannot read " + text, e);
+                throw new AssertionError(where(i) + ": JADE cannot read " + text, e);
             }
-            assertEquals(text, jadeText, "case " + i + " (seed " + SEED + ")");
-            assertEquals(List.of(formula), concord.read(jadeText), "case " + i);
+            assertEquals(text, jadeText, where(i));
+            assertEquals(List.of(formula), concord.read(jadeText), where(i));
         }
+    }
+
+    @Test
+    void concordReadsJadesFormulasAsTheSameFormulas() throws Exception {
+        for (int i = 0; i < CASES; i++) {
+            AbsObject formula = formula(0);
+            String jadeText;
+            try {
+                jadeText = jade.encode(jadeOntology, (AbsContentElement) JadeMapping.toJadeAbs(formula, jadeOntology, true));
+            } catch (Exception e) {
+                throw new AssertionError(where(i) + ": JADE cannot write " + formula, e);
+            }
+            List<AbsObject> read;
+            try {
+                read = concord.read(jadeText);
+            } catch (SlParseException e) {
+                throw new AssertionError(where(i) + ": Concord cannot read JADE's " + jadeText, e);
+            }
+            assertEquals(List.of(formula), read, where(i) + ": Concord reads JADE's " + jadeText);
+            assertEquals(jadeText, concord.write(read), where(i) + ": Concord writes back what it read");
+        }
+    }
+
+    private static String where(int i) {
+        return "case " + i + " (seed " + SEED + ")";
     }
 
     private AbsObject formula(int depth) {
