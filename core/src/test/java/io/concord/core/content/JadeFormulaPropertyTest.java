@@ -15,7 +15,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 /**
  * Random SL2 formulas (connectives, quantifiers, modal operators, referential expressions, over
- * {@code =}, {@code true}, {@code false} and the book ontology's {@code Owns}) mean the same to
+ * {@code =}, {@code true}, {@code false}, the book ontology's {@code Owns}, and {@code done} and
+ * {@code result} of an {@code (action agent (Sell :book (Book ...)))}) mean the same to
  * Concord and JADE 4.3 (over its SL ontology), both ways: written by Concord, JADE reads them as
  * the same formula and writes them back byte for byte; written by JADE (from the same formula as
  * JADE's abstract objects), Concord reads them as the same formula and writes them back byte for
@@ -40,6 +41,7 @@ class JadeFormulaPropertyTest {
         ontology.add(JadeBookShop.JAuthor.class);
         ontology.add(JadeBookShop.JBook.class);
         ontology.add(JadeBookShop.JOwns.class);
+        ontology.add(JadeBookShop.JSell.class);
         jadeOntology = ontology;
     }
 
@@ -85,7 +87,7 @@ class JadeFormulaPropertyTest {
     }
 
     private AbsObject formula(int depth) {
-        int choice = depth >= 4 ? random.nextInt(3) : random.nextInt(8);
+        int choice = depth >= 4 ? random.nextInt(3) : random.nextInt(10);
         switch (choice) {
             case 0:
                 return new AbsPrimitive(random.nextBoolean());
@@ -102,6 +104,10 @@ class JadeFormulaPropertyTest {
                 return AbsCompound.positional(QUANTIFIER[random.nextInt(2)], variable(), formula(depth + 1));
             case 5:
                 return AbsCompound.positional(MODAL[random.nextInt(MODAL.length)], agent(), formula(depth + 1));
+            case 6:
+                return AbsCompound.positional("done", action());
+            case 7:
+                return AbsCompound.positional("result", action(), term(depth + 1));
             default:
                 return AbsCompound.positional("=", variable(), AbsCompound.positional(IRE[random.nextInt(3)], variable(), formula(depth + 1)));
         }
@@ -128,6 +134,20 @@ class JadeFormulaPropertyTest {
     private String string() {
         String s = strings.string();
         return s.startsWith(".") || s.startsWith("+") || s.startsWith("??") ? "x" + s : s;
+    }
+
+    /** {@code (action agent (Sell :book (Book ...)))}, the book's slots in the order JADE's schema gives them. */
+    private AbsObject action() {
+        List<AbsCompound.Slot> book = new java.util.ArrayList<>();
+        if (random.nextBoolean()) {
+            book.add(new AbsCompound.Slot("pages", new AbsPrimitive(strings.longValue())));
+        }
+        if (random.nextBoolean()) {
+            book.add(new AbsCompound.Slot("price", new AbsPrimitive(strings.doubleValue())));
+        }
+        book.add(new AbsCompound.Slot("title", new AbsPrimitive(string())));
+        AbsObject sell = new AbsCompound("Sell", List.of(new AbsCompound.Slot("book", new AbsCompound("Book", book))));
+        return AbsCompound.positional("action", agent(), sell);
     }
 
     private AbsVariable variable() {
