@@ -1,15 +1,10 @@
 package jade.proto;
 
-import io.concord.jadecompat.internal.Engine;
-import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.DataStore;
 import jade.core.behaviours.SimpleBehaviour;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 
-import java.util.LinkedHashMap;
-import java.util.Map;
 import java.util.Vector;
 
 /**
@@ -32,11 +27,9 @@ public class AchieveREInitiator extends SimpleBehaviour {
     public final String ALL_RESULT_NOTIFICATIONS_KEY = "__all-result-notifications" + hashCode();
 
     private ACLMessage request;
-    private final Map<String, Session> sessions = new LinkedHashMap<>();
+    private final Initiations conversation = new Initiations(this, "R");
     private Vector responses = new Vector();
     private Vector resultNotifications = new Vector();
-    private MessageTemplate template;
-    private long deadlineMs = -1;
     private boolean sent;
     private boolean allResponsesHandled;
     private boolean finished;
@@ -57,23 +50,10 @@ public class AchieveREInitiator extends SimpleBehaviour {
             sendRequests();
             return;
         }
-        ACLMessage reply = myAgent.receive(template);
-        if (reply != null) {
-            getDataStore().put(REPLY_KEY, reply);
+        conversation.receive(REPLY_KEY, true, reply -> {
             handleReply(reply);
             checkProgress();
-            return;
-        }
-        if (deadlineMs >= 0) {
-            long left = deadlineMs - Engine.nowMs();
-            if (left <= 0) {
-                timeout();
-                return;
-            }
-            block(left);
-        } else {
-            block();
-        }
+        }, this::timeout);
     }
 
     @Override
@@ -88,48 +68,12 @@ public class AchieveREInitiator extends SimpleBehaviour {
         getDataStore().put(ALL_REQUESTS_KEY, toSend);
         getDataStore().put(ALL_RESPONSES_KEY, responses);
         getDataStore().put(ALL_RESULT_NOTIFICATIONS_KEY, resultNotifications);
-        String convId = null;
-        int n = 0;
-        for (Object o : toSend == null ? new Vector() : toSend) {
-            ACLMessage m = (ACLMessage) o;
-            if (convId == null) {
-                convId = m.getConversationId() != null ? m.getConversationId()
-                        : "C" + hashCode() + "_" + Engine.nowMs();
-            }
-            if (m.getReplyByDate() != null) {
-                deadlineMs = deadlineMs < 0 ? m.getReplyByDate().getTime() : Math.min(deadlineMs, m.getReplyByDate().getTime());
-            }
-            for (jade.util.leap.Iterator it = m.getAllReceiver(); it.hasNext(); ) {
-                AID r = (AID) it.next();
-                ACLMessage copy = (ACLMessage) m.clone();
-                copy.clearAllReceiver();
-                copy.addReceiver(r);
-                copy.setConversationId(convId);
-                String key = "R" + hashCode() + "_" + (n++);
-                copy.setReplyWith(key);
-                sessions.put(key, new Session(key, r));
-                myAgent.send(copy);
-            }
-        }
-        String cid = convId;
-        template = new MessageTemplate(msg -> cid != null && cid.equals(msg.getConversationId()));
+        conversation.send(toSend);
         checkProgress();
     }
 
-    private Session sessionOf(ACLMessage reply) {
-        Session s = reply.getInReplyTo() == null ? null : sessions.get(reply.getInReplyTo());
-        if (s == null) {
-            for (Session x : sessions.values()) {
-                if (x.state != Session.DONE && x.receiver.equals(reply.getSender())) {
-                    return x;
-                }
-            }
-        }
-        return s;
-    }
-
     private void handleReply(ACLMessage reply) {
-        Session s = sessionOf(reply);
+        Session s = conversation.sessionOf(reply, false);
         int p = reply.getPerformative();
         if (s == null || s.state == Session.DONE) {
             handleOutOfSequence(reply);
@@ -161,17 +105,11 @@ public class AchieveREInitiator extends SimpleBehaviour {
     }
 
     private void checkProgress() {
-        boolean allAnswered = true;
-        boolean allDone = true;
-        for (Session s : sessions.values()) {
-            allAnswered &= s.state != Session.SENT;
-            allDone &= s.state == Session.DONE;
-        }
-        if (allAnswered && !allResponsesHandled) {
+        if (conversation.allAnswered() && !allResponsesHandled) {
             allResponsesHandled = true;
             handleAllResponses(responses);
         }
-        if (allDone) {
+        if (conversation.allDone()) {
             finished = true;
             handleAllResultNotifications(resultNotifications);
         }
@@ -242,11 +180,9 @@ public class AchieveREInitiator extends SimpleBehaviour {
     @Override
     public void reset() {
         super.reset();
-        sessions.clear();
+        conversation.clear();
         responses = new Vector();
         resultNotifications = new Vector();
-        template = null;
-        deadlineMs = -1;
         sent = false;
         allResponsesHandled = false;
         finished = false;

@@ -61,29 +61,15 @@ public class AchieveREResponder extends SimpleBehaviour implements FIPANames.Int
             return;
         }
         getDataStore().put(REQUEST_KEY, request);
-        ACLMessage response;
-        try {
-            response = handleRequest(request);
-        } catch (NotUnderstoodException e) {
-            response = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, request);
-        } catch (RefuseException e) {
-            response = Replies.fromException(e, ACLMessage.REFUSE, request);
-        }
+        ACLMessage response = Replies.answer(request, () -> handleRequest(request),
+                ACLMessage.NOT_UNDERSTOOD, ACLMessage.REFUSE);
         getDataStore().put(RESPONSE_KEY, response);
-        if (response != null) {
-            myAgent.send(Replies.complete(response, request));
-        }
+        Replies.send(myAgent, response, request);
         if (response == null || response.getPerformative() == ACLMessage.AGREE) {
-            ACLMessage result;
-            try {
-                result = prepareResultNotification(request, response);
-            } catch (FailureException e) {
-                result = Replies.fromException(e, ACLMessage.FAILURE, request);
-            }
+            ACLMessage result = Replies.answer(request, () -> prepareResultNotification(request, response),
+                    ACLMessage.FAILURE);
             getDataStore().put(RESULT_NOTIFICATION_KEY, result);
-            if (result != null) {
-                myAgent.send(Replies.complete(result, request));
-            }
+            Replies.send(myAgent, result, request);
         }
     }
 

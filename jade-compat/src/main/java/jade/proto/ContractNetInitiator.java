@@ -1,14 +1,11 @@
 package jade.proto;
 
-import io.concord.jadecompat.internal.Engine;
 import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.DataStore;
 import jade.core.behaviours.SimpleBehaviour;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 
-import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Vector;
 
@@ -37,13 +34,10 @@ public class ContractNetInitiator extends SimpleBehaviour {
     private static final int COLLECT_RESULTS = 2;
 
     private ACLMessage cfp;
-    private final Map<String, Session> sessions = new LinkedHashMap<>();
+    private final Initiations conversation = new Initiations(this, "R");
     private Vector responses = new Vector();
     private Vector acceptances = new Vector();
     private Vector resultNotifications = new Vector();
-    private MessageTemplate template;
-    private String convId;
-    private long deadlineMs = -1;
     private int phase = SEND_CFPS;
     private boolean finished;
 
@@ -63,27 +57,14 @@ public class ContractNetInitiator extends SimpleBehaviour {
             sendCfps();
             return;
         }
-        ACLMessage reply = myAgent.receive(template);
-        if (reply != null) {
-            getDataStore().put(REPLY_KEY, reply);
+        conversation.receive(REPLY_KEY, phase == COLLECT_RESPONSES, reply -> {
             if (phase == COLLECT_RESPONSES) {
                 onResponse(reply);
             } else {
                 onResult(reply);
             }
             checkProgress();
-            return;
-        }
-        if (phase == COLLECT_RESPONSES && deadlineMs >= 0) {
-            long left = deadlineMs - Engine.nowMs();
-            if (left <= 0) {
-                endResponses();
-                return;
-            }
-            block(left);
-        } else {
-            block();
-        }
+        }, this::endResponses);
     }
 
     @Override
@@ -99,46 +80,12 @@ public class ContractNetInitiator extends SimpleBehaviour {
         getDataStore().put(ALL_RESPONSES_KEY, responses);
         getDataStore().put(ALL_ACCEPTANCES_KEY, acceptances);
         getDataStore().put(ALL_RESULT_NOTIFICATIONS_KEY, resultNotifications);
-        int n = 0;
-        for (Object o : toSend == null ? new Vector() : toSend) {
-            ACLMessage m = (ACLMessage) o;
-            if (convId == null) {
-                convId = m.getConversationId() != null ? m.getConversationId() : "C" + hashCode() + "_" + Engine.nowMs();
-            }
-            if (m.getReplyByDate() != null) {
-                deadlineMs = deadlineMs < 0 ? m.getReplyByDate().getTime() : Math.min(deadlineMs, m.getReplyByDate().getTime());
-            }
-            for (jade.util.leap.Iterator it = m.getAllReceiver(); it.hasNext(); ) {
-                AID r = (AID) it.next();
-                ACLMessage copy = (ACLMessage) m.clone();
-                copy.clearAllReceiver();
-                copy.addReceiver(r);
-                copy.setConversationId(convId);
-                String key = "R" + hashCode() + "_" + (n++);
-                copy.setReplyWith(key);
-                sessions.put(key, new Session(key, r));
-                myAgent.send(copy);
-            }
-        }
-        String cid = convId;
-        template = new MessageTemplate(msg -> cid != null && cid.equals(msg.getConversationId()));
+        conversation.send(toSend);
         checkProgress();
     }
 
-    private Session sessionOf(ACLMessage reply) {
-        Session s = reply.getInReplyTo() == null ? null : sessions.get(reply.getInReplyTo());
-        if (s == null || s.state == Session.DONE) {
-            for (Session x : sessions.values()) {
-                if (x.state != Session.DONE && x.receiver.equals(reply.getSender())) {
-                    return x;
-                }
-            }
-        }
-        return s;
-    }
-
     private void onResponse(ACLMessage reply) {
-        Session s = sessionOf(reply);
+        Session s = conversation.sessionOf(reply, true);
         if (s == null || s.state != Session.SENT) {
             handleOutOfSequence(reply);
             return;
@@ -169,7 +116,7 @@ public class ContractNetInitiator extends SimpleBehaviour {
     }
 
     private void onResult(ACLMessage reply) {
-        Session s = sessionOf(reply);
+        Session s = conversation.sessionOf(reply, true);
         if (s == null || s.state != Session.SENT) {
             handleOutOfSequence(reply);
             return;
@@ -188,19 +135,12 @@ public class ContractNetInitiator extends SimpleBehaviour {
     }
 
     private void checkProgress() {
+        if (!conversation.allAnswered()) {
+            return;
+        }
         if (phase == COLLECT_RESPONSES) {
-            for (Session s : sessions.values()) {
-                if (s.state == Session.SENT) {
-                    return;
-                }
-            }
             endResponses();
         } else if (phase == COLLECT_RESULTS) {
-            for (Session s : sessions.values()) {
-                if (s.state == Session.SENT) {
-                    return;
-                }
-            }
             finished = true;
             handleAllResultNotifications(resultNotifications);
         }
@@ -209,13 +149,14 @@ public class ContractNetInitiator extends SimpleBehaviour {
     /** All answered (or time is up): the user picks, the acceptances go out, results are awaited. */
     private void endResponses() {
         handleAllResponses(responses, acceptances);
+        Map<String, Session> sessions = conversation.sessions;
         sessions.clear();
         phase = COLLECT_RESULTS;
         int n = 0;
         for (Object o : acceptances) {
             ACLMessage m = (ACLMessage) o;
             if (m.getConversationId() == null) {
-                m.setConversationId(convId);
+                m.setConversationId(conversation.conversationId());
             }
             if (m.getProtocol() == null) {
                 m.setProtocol(cfp.getProtocol());
@@ -297,13 +238,10 @@ public class ContractNetInitiator extends SimpleBehaviour {
     @Override
     public void reset() {
         super.reset();
-        sessions.clear();
+        conversation.clear();
         responses = new Vector();
         acceptances = new Vector();
         resultNotifications = new Vector();
-        template = null;
-        convId = null;
-        deadlineMs = -1;
         phase = SEND_CFPS;
         finished = false;
     }

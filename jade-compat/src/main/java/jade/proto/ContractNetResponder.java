@@ -67,16 +67,8 @@ public class ContractNetResponder extends SimpleBehaviour {
     private void onCfp(ACLMessage m) {
         cfp = m;
         getDataStore().put(CFP_KEY, m);
-        ACLMessage reply;
-        try {
-            reply = handleCfp(m);
-        } catch (RefuseException e) {
-            reply = Replies.fromException(e, ACLMessage.REFUSE, m);
-        } catch (FailureException e) {
-            reply = Replies.fromException(e, ACLMessage.FAILURE, m);
-        } catch (NotUnderstoodException e) {
-            reply = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, m);
-        }
+        ACLMessage reply = Replies.answer(m, () -> handleCfp(m),
+                ACLMessage.REFUSE, ACLMessage.FAILURE, ACLMessage.NOT_UNDERSTOOD);
         if (reply != null) {
             Replies.complete(reply, m);
             getDataStore().put(PROPOSE_KEY, reply);
@@ -97,15 +89,8 @@ public class ContractNetResponder extends SimpleBehaviour {
         getDataStore().put(REPLY_KEY, m);
         if (m.getPerformative() == ACLMessage.ACCEPT_PROPOSAL) {
             getDataStore().put(ACCEPT_PROPOSAL_KEY, m);
-            ACLMessage result;
-            try {
-                result = handleAcceptProposal(cfp, propose, m);
-            } catch (FailureException e) {
-                result = Replies.fromException(e, ACLMessage.FAILURE, m);
-            }
-            if (result != null) {
-                myAgent.send(Replies.complete(result, m));
-            }
+            ACLMessage result = Replies.answer(m, () -> handleAcceptProposal(cfp, propose, m), ACLMessage.FAILURE);
+            Replies.send(myAgent, result, m);
         } else if (m.getPerformative() == ACLMessage.REJECT_PROPOSAL) {
             getDataStore().put(REJECT_PROPOSAL_KEY, m);
             handleRejectProposal(cfp, propose, m);

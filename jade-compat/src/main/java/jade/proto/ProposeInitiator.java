@@ -1,15 +1,10 @@
 package jade.proto;
 
-import io.concord.jadecompat.internal.Engine;
-import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.DataStore;
 import jade.core.behaviours.SimpleBehaviour;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 
-import java.util.LinkedHashMap;
-import java.util.Map;
 import java.util.Vector;
 
 /**
@@ -30,10 +25,8 @@ public class ProposeInitiator extends SimpleBehaviour {
     public final String ALL_RESPONSES_KEY = "__all-responses" + hashCode();
 
     private ACLMessage proposal;
-    private final Map<String, Session> sessions = new LinkedHashMap<>();
+    private final Initiations conversation = new Initiations(this, "P");
     private Vector responses = new Vector();
-    private MessageTemplate template;
-    private long deadlineMs = -1;
     private boolean sent;
     private boolean finished;
 
@@ -53,23 +46,10 @@ public class ProposeInitiator extends SimpleBehaviour {
             sendProposals();
             return;
         }
-        ACLMessage reply = myAgent.receive(template);
-        if (reply != null) {
-            getDataStore().put(REPLY_KEY, reply);
+        conversation.receive(REPLY_KEY, true, reply -> {
             handleReply(reply);
             checkProgress();
-            return;
-        }
-        if (deadlineMs >= 0) {
-            long left = deadlineMs - Engine.nowMs();
-            if (left <= 0) {
-                finish();
-                return;
-            }
-            block(left);
-        } else {
-            block();
-        }
+        }, this::finish);
     }
 
     @Override
@@ -83,44 +63,13 @@ public class ProposeInitiator extends SimpleBehaviour {
         getDataStore().put(PROPOSE_KEY, proposal);
         getDataStore().put(ALL_PROPOSES_KEY, toSend);
         getDataStore().put(ALL_RESPONSES_KEY, responses);
-        String convId = null;
-        int n = 0;
-        for (Object o : toSend == null ? new Vector() : toSend) {
-            ACLMessage m = (ACLMessage) o;
-            if (convId == null) {
-                convId = m.getConversationId() != null ? m.getConversationId()
-                        : "C" + hashCode() + "_" + Engine.nowMs();
-            }
-            if (m.getReplyByDate() != null) {
-                deadlineMs = deadlineMs < 0 ? m.getReplyByDate().getTime() : Math.min(deadlineMs, m.getReplyByDate().getTime());
-            }
-            for (jade.util.leap.Iterator it = m.getAllReceiver(); it.hasNext(); ) {
-                AID r = (AID) it.next();
-                ACLMessage copy = (ACLMessage) m.clone();
-                copy.clearAllReceiver();
-                copy.addReceiver(r);
-                copy.setConversationId(convId);
-                String key = "P" + hashCode() + "_" + (n++);
-                copy.setReplyWith(key);
-                sessions.put(key, new Session(key, r));
-                myAgent.send(copy);
-            }
-        }
-        String cid = convId;
-        template = new MessageTemplate(msg -> cid != null && cid.equals(msg.getConversationId()));
+        conversation.send(toSend);
         checkProgress();
     }
 
     private void handleReply(ACLMessage reply) {
-        Session s = reply.getInReplyTo() == null ? null : sessions.get(reply.getInReplyTo());
-        if (s == null) {
-            for (Session x : sessions.values()) {
-                if (x.state == Session.SENT && x.receiver.equals(reply.getSender())) {
-                    s = x;
-                    break;
-                }
-            }
-        }
+        // A proposal's session is only ever SENT or DONE: the first open one is the first SENT one.
+        Session s = conversation.sessionOf(reply, false);
         int p = reply.getPerformative();
         boolean answer = p == ACLMessage.ACCEPT_PROPOSAL || p == ACLMessage.REJECT_PROPOSAL || p == ACLMessage.NOT_UNDERSTOOD;
         if (s == null || s.state != Session.SENT || !answer) {
@@ -139,12 +88,9 @@ public class ProposeInitiator extends SimpleBehaviour {
     }
 
     private void checkProgress() {
-        for (Session s : sessions.values()) {
-            if (s.state != Session.DONE) {
-                return;
-            }
+        if (conversation.allDone()) {
+            finish();
         }
-        finish();
     }
 
     private void finish() {
@@ -193,10 +139,8 @@ public class ProposeInitiator extends SimpleBehaviour {
     @Override
     public void reset() {
         super.reset();
-        sessions.clear();
+        conversation.clear();
         responses = new Vector();
-        template = null;
-        deadlineMs = -1;
         sent = false;
         finished = false;
     }

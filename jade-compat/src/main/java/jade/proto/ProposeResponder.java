@@ -48,18 +48,10 @@ public class ProposeResponder extends SimpleBehaviour implements FIPANames.Inter
             return;
         }
         getDataStore().put(PROPOSE_KEY, propose);
-        ACLMessage response;
-        try {
-            response = prepareResponse(propose);
-        } catch (NotUnderstoodException e) {
-            response = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, propose);
-        } catch (RefuseException e) {
-            response = Replies.fromException(e, ACLMessage.REFUSE, propose);
-        }
+        ACLMessage response = Replies.answer(propose, () -> prepareResponse(propose),
+                ACLMessage.NOT_UNDERSTOOD, ACLMessage.REFUSE);
         getDataStore().put(RESPONSE_KEY, response);
-        if (response != null) {
-            myAgent.send(Replies.complete(response, propose));
-        }
+        Replies.send(myAgent, response, propose);
     }
 
     /** Never ends. */

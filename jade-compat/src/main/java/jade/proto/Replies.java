@@ -1,6 +1,10 @@
 package jade.proto;
 
 import jade.core.AID;
+import jade.core.Agent;
+import jade.domain.FIPAAgentManagement.FailureException;
+import jade.domain.FIPAAgentManagement.NotUnderstoodException;
+import jade.domain.FIPAAgentManagement.RefuseException;
 import jade.domain.FIPAException;
 import jade.lang.acl.ACLMessage;
 
@@ -43,5 +47,45 @@ final class Replies {
         r.setPerformative(performative);
         r.setContent(e.getMessage());
         return r;
+    }
+
+    /** A responder's handler: its reply to a message (or null), or the FIPA exception that stands for one. */
+    interface Handler {
+        ACLMessage reply() throws FIPAException;
+    }
+
+    /**
+     * What the handler replies to {@code to}; if it throws a {@link NotUnderstoodException},
+     * {@link RefuseException} or {@link FailureException} whose performative (NOT_UNDERSTOOD,
+     * REFUSE, FAILURE) is one of {@code mapped}, the reply that exception stands for (see
+     * {@link #fromException}). Any other exception goes on to the caller as it came.
+     */
+    static ACLMessage answer(ACLMessage to, Handler handler, int... mapped) {
+        try {
+            return handler.reply();
+        } catch (FIPAException e) {
+            int performative = e instanceof NotUnderstoodException ? ACLMessage.NOT_UNDERSTOOD
+                    : e instanceof RefuseException ? ACLMessage.REFUSE
+                    : e instanceof FailureException ? ACLMessage.FAILURE : -1;
+            for (int p : mapped) {
+                if (p == performative) {
+                    return fromException(e, performative, to);
+                }
+            }
+            throw Replies.<RuntimeException>rethrow(e);
+        }
+    }
+
+    /** Sends the reply, completed from the message it answers (see {@link #complete}); nothing if it is null. */
+    static void send(Agent agent, ACLMessage reply, ACLMessage to) {
+        if (reply != null) {
+            agent.send(complete(reply, to));
+        }
+    }
+
+    /** Throws a checked exception the handler threw although its signature does not say so, unchanged. */
+    @SuppressWarnings("unchecked")
+    private static <T extends Throwable> T rethrow(Throwable t) throws T {
+        throw (T) t;
     }
 }

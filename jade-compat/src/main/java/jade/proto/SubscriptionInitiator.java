@@ -1,14 +1,11 @@
 package jade.proto;
 
-import io.concord.jadecompat.internal.Engine;
 import jade.core.AID;
 import jade.core.Agent;
 import jade.core.behaviours.DataStore;
 import jade.core.behaviours.SimpleBehaviour;
 import jade.lang.acl.ACLMessage;
-import jade.lang.acl.MessageTemplate;
 
-import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Vector;
 
@@ -33,11 +30,9 @@ public class SubscriptionInitiator extends SimpleBehaviour {
     private static final int CANCELLING = 3;
 
     private ACLMessage subscription;
-    private final Map<String, Session> sessions = new LinkedHashMap<>();
+    private final Initiations conversation = new Initiations(this, "S");
+    private final Map<String, Session> sessions = conversation.sessions;
     private Vector responses = new Vector();
-    private String conversationId;
-    private MessageTemplate template;
-    private long deadlineMs = -1;
     private boolean sent;
     private boolean allResponsesHandled;
     private boolean finished;
@@ -58,24 +53,13 @@ public class SubscriptionInitiator extends SimpleBehaviour {
             sendSubscriptions();
             return;
         }
-        ACLMessage reply = myAgent.receive(template);
-        if (reply != null) {
-            getDataStore().put(REPLY_KEY, reply);
+        conversation.receive(REPLY_KEY, !allResponsesHandled, reply -> {
             handleReply(reply);
             checkProgress();
-            return;
-        }
-        if (deadlineMs >= 0 && !allResponsesHandled) {
-            long left = deadlineMs - Engine.nowMs();
-            if (left <= 0) {
-                allResponsesHandled = true;
-                handleAllResponses(responses);
-                return;
-            }
-            block(left);
-        } else {
-            block();
-        }
+        }, () -> {
+            allResponsesHandled = true;
+            handleAllResponses(responses);
+        });
     }
 
     @Override
@@ -89,47 +73,12 @@ public class SubscriptionInitiator extends SimpleBehaviour {
         getDataStore().put(SUBSCRIPTION_KEY, subscription);
         getDataStore().put(ALL_SUBSCRIPTIONS_KEY, toSend);
         getDataStore().put(ALL_RESPONSES_KEY, responses);
-        int n = 0;
-        for (Object o : toSend == null ? new Vector() : toSend) {
-            ACLMessage m = (ACLMessage) o;
-            if (conversationId == null) {
-                conversationId = m.getConversationId() != null ? m.getConversationId()
-                        : "C" + hashCode() + "_" + Engine.nowMs();
-            }
-            if (m.getReplyByDate() != null) {
-                deadlineMs = deadlineMs < 0 ? m.getReplyByDate().getTime() : Math.min(deadlineMs, m.getReplyByDate().getTime());
-            }
-            for (jade.util.leap.Iterator it = m.getAllReceiver(); it.hasNext(); ) {
-                AID r = (AID) it.next();
-                ACLMessage copy = (ACLMessage) m.clone();
-                copy.clearAllReceiver();
-                copy.addReceiver(r);
-                copy.setConversationId(conversationId);
-                String key = "S" + hashCode() + "_" + (n++);
-                copy.setReplyWith(key);
-                sessions.put(key, new Session(key, r));
-                myAgent.send(copy);
-            }
-        }
-        String cid = conversationId;
-        template = new MessageTemplate(msg -> cid != null && cid.equals(msg.getConversationId()));
+        conversation.send(toSend);
         checkProgress();
     }
 
-    private Session sessionOf(ACLMessage reply) {
-        Session s = reply.getInReplyTo() == null ? null : sessions.get(reply.getInReplyTo());
-        if (s == null) {
-            for (Session x : sessions.values()) {
-                if (x.state != Session.DONE && x.receiver.equals(reply.getSender())) {
-                    return x;
-                }
-            }
-        }
-        return s;
-    }
-
     private void handleReply(ACLMessage reply) {
-        Session s = sessionOf(reply);
+        Session s = conversation.sessionOf(reply, false);
         int p = reply.getPerformative();
         if (s == null || s.state == Session.DONE) {
             handleOutOfSequence(reply);
@@ -176,17 +125,11 @@ public class SubscriptionInitiator extends SimpleBehaviour {
     }
 
     private void checkProgress() {
-        boolean allAnswered = true;
-        boolean allDone = true;
-        for (Session s : sessions.values()) {
-            allAnswered &= s.state != Session.SENT;
-            allDone &= s.state == Session.DONE;
-        }
-        if (allAnswered && !allResponsesHandled) {
+        if (conversation.allAnswered() && !allResponsesHandled) {
             allResponsesHandled = true;
             handleAllResponses(responses);
         }
-        if (allDone) {
+        if (conversation.allDone()) {
             finished = true;
         }
     }
@@ -202,7 +145,7 @@ public class SubscriptionInitiator extends SimpleBehaviour {
             if (s.receiver.equals(receiver) && s.state != Session.DONE && s.state != CANCELLING) {
                 ACLMessage c = new ACLMessage(ACLMessage.CANCEL);
                 c.addReceiver(receiver);
-                c.setConversationId(conversationId);
+                c.setConversationId(conversation.conversationId());
                 c.setProtocol(subscription.getProtocol());
                 c.setLanguage(subscription.getLanguage());
                 c.setOntology(subscription.getOntology());
@@ -282,11 +225,8 @@ public class SubscriptionInitiator extends SimpleBehaviour {
     @Override
     public void reset() {
         super.reset();
-        sessions.clear();
+        conversation.clear();
         responses = new Vector();
-        conversationId = null;
-        template = null;
-        deadlineMs = -1;
         sent = false;
         allResponsesHandled = false;
         finished = false;

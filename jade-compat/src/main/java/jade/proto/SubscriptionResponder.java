@@ -116,25 +116,13 @@ public class SubscriptionResponder extends SimpleBehaviour implements FIPANames.
         ACLMessage response;
         if (m.getPerformative() == ACLMessage.CANCEL) {
             getDataStore().put(CANCEL_KEY, m);
-            try {
-                response = handleCancel(m);
-            } catch (FailureException e) {
-                response = Replies.fromException(e, ACLMessage.FAILURE, m);
-            }
+            response = Replies.answer(m, () -> handleCancel(m), ACLMessage.FAILURE);
         } else {
             getDataStore().put(SUBSCRIPTION_KEY, m);
-            try {
-                response = handleSubscription(m);
-            } catch (NotUnderstoodException e) {
-                response = Replies.fromException(e, ACLMessage.NOT_UNDERSTOOD, m);
-            } catch (RefuseException e) {
-                response = Replies.fromException(e, ACLMessage.REFUSE, m);
-            }
+            response = Replies.answer(m, () -> handleSubscription(m), ACLMessage.NOT_UNDERSTOOD, ACLMessage.REFUSE);
         }
         getDataStore().put(RESPONSE_KEY, response);
-        if (response != null) {
-            myAgent.send(Replies.complete(response, m));
-        }
+        Replies.send(myAgent, response, m);
     }
 
     /** Never ends. */

@@ -318,11 +318,7 @@ final class ConsoleAgent extends Agent {
         if (name.equals(getAID().name()) || name.equals(getAID().localName())) {
             throw new IllegalArgumentException("the console does not kill itself; close it instead");
         }
-        Set<String> known = known();
-        String full = known.contains(name) ? name : known.stream().filter(k -> k.startsWith(name + "@")).findFirst().orElse(null);
-        if (full == null) {
-            throw new IllegalArgumentException("no agent " + name + " in the platform's lists");
-        }
+        String full = listed(name, known());
         for (AID here : runtime().agents()) {
             if (here.name().equals(full)) {
                 runtime().agent(here).doDelete();
@@ -331,6 +327,15 @@ final class ConsoleAgent extends Agent {
         }
         send(observe(Performative.REQUEST, full, "kill", "kill-" + (++conversations)));
         return "asked " + full + " to leave the platform (it runs in another JVM); it goes from the lists when it has";
+    }
+
+    /** An agent's full name in the lists, from its full or its local name. */
+    private static String listed(String name, Set<String> known) {
+        String full = known.contains(name) ? name : known.stream().filter(k -> k.startsWith(name + "@")).findFirst().orElse(null);
+        if (full == null) {
+            throw new IllegalArgumentException("no agent " + name + " in the platform's lists");
+        }
+        return full;
     }
 
     private String sendFor(Map<String, String> p) {
@@ -345,11 +350,7 @@ final class ConsoleAgent extends Agent {
             if (n.isEmpty()) {
                 continue;
             }
-            String full = known.contains(n) ? n : known.stream().filter(k -> k.startsWith(n + "@")).findFirst().orElse(null);
-            if (full == null) {
-                throw new IllegalArgumentException("no agent " + n + " in the platform's lists");
-            }
-            m.addReceiver(new AID(full));
+            m.addReceiver(new AID(listed(n, known)));
         }
         if (m.getReceivers().isEmpty()) {
             throw new IllegalArgumentException("say who receives it: one or more agents' names, separated by commas");

@@ -324,18 +324,25 @@ final class ConsoleServer {
         return true;
     }
 
-    /** Reads the form, runs the action on the agents' loop, answers what it said (or 400 with why). */
-    private void onLoop(HttpExchange x, java.util.function.Function<Map<String, String>, String> action) throws IOException {
+    /** An action's form parameters, or null once refused (413 over {@value #MAX_BODY} bytes, 400 malformed). */
+    private Map<String, String> form(HttpExchange x) throws IOException {
         byte[] body = readBody(x);
         if (body == null) {
             refuse(x, 413, "an action takes at most " + MAX_BODY + " bytes of form parameters");
-            return;
+            return null;
         }
-        Map<String, String> params;
         try {
-            params = query(new String(body, StandardCharsets.UTF_8));
+            return query(new String(body, StandardCharsets.UTF_8));
         } catch (IllegalArgumentException e) {
             refuse(x, 400, "malformed form parameters: " + e.getMessage());
+            return null;
+        }
+    }
+
+    /** Reads the form, runs the action on the agents' loop, answers what it said (or 400 with why). */
+    private void onLoop(HttpExchange x, java.util.function.Function<Map<String, String>, String> action) throws IOException {
+        Map<String, String> params = form(x);
+        if (params == null) {
             return;
         }
         java.net.InetSocketAddress client = x.getRemoteAddress();
@@ -393,15 +400,8 @@ final class ConsoleServer {
         if (!fromThePage(x)) {
             return;
         }
-        byte[] body = readBody(x);
-        Map<String, String> params;
-        try {
-            params = body == null ? null : query(new String(body, StandardCharsets.UTF_8));
-        } catch (IllegalArgumentException e) {
-            params = null;
-        }
+        Map<String, String> params = form(x);
         if (params == null) {
-            refuse(x, 400, "malformed form parameters (at most " + MAX_BODY + " bytes)");
             return;
         }
         try {

@@ -45,6 +45,26 @@ public final class Browser implements AutoCloseable {
     }
 
     /** Writes what the browser shows to {@code target/screenshots/name.png}. */
+    /** Every line of a recording the console wrote in {@code target/recordings}, read as JSON. */
+    public static java.util.List<com.fasterxml.jackson.databind.JsonNode> recording(String name) throws IOException {
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        java.util.List<com.fasterxml.jackson.databind.JsonNode> lines = new java.util.ArrayList<>();
+        for (String l : Files.readAllLines(Path.of("target", "recordings", name))) {
+            lines.add(json.readTree(l));
+        }
+        return lines;
+    }
+
+    /**
+     * Moves the Replay tab's slider to the recording's time {@code atMs} ({@code t0Ms}: its first
+     * line's) and waits until the page shows that moment.
+     */
+    public void slideTo(long t0Ms, long atMs) {
+        ((org.openqa.selenium.JavascriptExecutor) driver).executeScript(
+                "const s = document.getElementById('replay-slider'); s.value = arguments[0]; s.dispatchEvent(new Event('input'));", atMs - t0Ms);
+        until(d -> String.valueOf(atMs).equals(d.findElement(org.openqa.selenium.By.id("replay-time")).getAttribute("data-t")));
+    }
+
     public Path screenshot(String name) {
         try {
             Path dir = Path.of("target", "screenshots");

@@ -18,6 +18,7 @@ import io.concord.agents.proto.WheelchairMessage.Done;
 import io.concord.agents.proto.WheelchairMessage.Failed;
 import io.concord.agents.proto.WheelchairMessage.TransportRequest;
 import io.concord.console.ConsoleView;
+import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
 import io.concord.core.acl.Performative;
@@ -86,13 +87,19 @@ public final class HospitalView implements ConsoleView {
             }
         }
 
-        private boolean query(String what) {
+        /** The Medical agent in this agent's copy of the yellow pages, or null. */
+        private AID medical() {
             List<AgentEntry> medical = Platform.of(this).searchCopy(ServiceDescription.ofType(Services.MEDICAL));
-            if (medical.isEmpty()) {
+            return medical.isEmpty() ? null : medical.get(0).aid();
+        }
+
+        private boolean query(String what) {
+            AID medical = medical();
+            if (medical == null) {
                 return false;
             }
             AclMessage q = new AclMessage(Performative.QUERY_REF);
-            q.addReceiver(medical.get(0).aid());
+            q.addReceiver(medical);
             q.setOntology(Services.ONTOLOGY);
             q.setConversationId("audit");
             q.setReplyWith("audit-" + (++queries));
@@ -185,23 +192,25 @@ public final class HospitalView implements ConsoleView {
 
         /** As {@link #ask(int, int, double, double)}, noting where the request came from (the console's client). */
         String ask(int from, int to, double priority, double unloadS, String origin) {
-            List<AgentEntry> medical = Platform.of(this).searchCopy(ServiceDescription.ofType(Services.MEDICAL));
-            if (medical.isEmpty()) {
+            AID medical = medical();
+            if (medical == null) {
                 throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
             }
             String id = "desk-" + (asked.size() + 1);
             AclMessage m = new AclMessage(Performative.REQUEST);
-            m.addReceiver(medical.get(0).aid());
+            m.addReceiver(medical);
             m.setConversationId(id);
+            m.setOntology(Services.ONTOLOGY);
+            m.setLanguage(Services.LANGUAGE);
             m.setContent(new TransportRequest(from, to, priority, unloadS).encode());
             send(m);
-            asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.get(0).aid().localName()));
+            asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.localName()));
             origins.put(id, origin);
             auditDueMs = 0;   // the new transport shows in the audit at the next snapshot
             if (asked.size() > 200) {
                 asked.remove(0);
             }
-            return "asked " + medical.get(0).aid().localName() + " for a transport from node " + from + " to node " + to + " (" + id + ")";
+            return "asked " + medical.localName() + " for a transport from node " + from + " to node " + to + " (" + id + ")";
         }
     }
 

@@ -155,16 +155,10 @@ class HospitalConsoleTest {
      */
     private static void replayShowsTheChairWhereItWas(Console console, Browser browser, String recording) throws Exception {
         assertTrue(console.stopRecording().startsWith(recording + ": "));
-        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
-        java.util.List<com.fasterxml.jackson.databind.JsonNode> views = new java.util.ArrayList<>();
-        long t0 = -1;
-        for (String l : java.nio.file.Files.readAllLines(java.nio.file.Path.of("target", "recordings", recording))) {
-            com.fasterxml.jackson.databind.JsonNode n = json.readTree(l);
-            t0 = t0 < 0 ? n.get("t").asLong() : t0;
-            if (n.get("topic").asText().equals("view-hospital")) {
-                views.add(n);
-            }
-        }
+        java.util.List<com.fasterxml.jackson.databind.JsonNode> lines = Browser.recording(recording);
+        long t0 = lines.get(0).get("t").asLong();
+        java.util.List<com.fasterxml.jackson.databind.JsonNode> views = lines.stream()
+                .filter(n -> n.get("topic").asText().equals("view-hospital")).toList();
         // A snapshot with the chair away from where it started, the last of its millisecond.
         com.fasterxml.jackson.databind.JsonNode first = chair(views.get(0));
         int k = views.size() * 2 / 3;
@@ -178,9 +172,7 @@ class HospitalConsoleTest {
         browser.until(d -> d.findElement(By.cssSelector("#recordings a[data-recording='" + recording + "']"))).click();
         browser.until(d -> d.findElement(By.id("replay-bar")).isDisplayed());
         browser.driver.findElement(By.cssSelector("nav button[data-view='hospital']")).click();
-        ((org.openqa.selenium.JavascriptExecutor) browser.driver).executeScript(
-                "const s = document.getElementById('replay-slider'); s.value = arguments[0]; s.dispatchEvent(new Event('input'));", at - t0);
-        browser.until(d -> String.valueOf(at).equals(d.findElement(By.id("replay-time")).getAttribute("data-t")));
+        browser.slideTo(t0, at);
         WebElement c = browser.driver.findElement(By.id("chair-chair1"));
         assertTrue(want.get("data").get("x").asText().equals(c.getAttribute("data-x"))
                 && want.get("data").get("y").asText().equals(c.getAttribute("data-y")),

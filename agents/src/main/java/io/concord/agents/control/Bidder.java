@@ -18,11 +18,10 @@ import java.util.function.IntSupplier;
 import java.util.function.Supplier;
 
 /**
- * A control agent's answers to the Medical agent's calls for proposals ({@code transport; task;
- * from; to; priority; unload}). It asks the chair's planner for two plans, from where the queue
- * ends to the patient and from the patient to the destination, and proposes {@code proposal;
- * task; cost; path; unload} (and {@code pending}: the proposals still open that the cost counts);
- * or it refuses, saying why: a malformed call, a chair that cannot drive now ({@code unavailable
+ * A control agent's answers to the Medical agent's calls for proposals ({@code transport-call}). It asks the chair's planner for two plans, from where the queue
+ * ends to the patient and from the patient to the destination, and proposes {@code proposal}
+ * (with its {@code pending} items: the proposals still open that the cost counts);
+ * or it refuses, saying why: a malformed call, a chair that cannot drive now ({@code :unavailable
  * true}), no planner, no route.
  *
  * <p>The cost is the seconds until the patient is delivered: the work ahead in the queue, the
@@ -40,7 +39,7 @@ final class Bidder {
         /** The chair's planner, from the yellow pages, or null. */
         AID planner();
 
-        /** A plan as the planner's final answer (INFORM-REF with {@code nodes; length; doors}), never null. */
+        /** A plan as the planner's final answer (INFORM-REF {@code plan}), never null. */
         default CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to) {
             return plan(planner, task, from, to, null);
         }

@@ -38,9 +38,9 @@ import java.util.function.Consumer;
  * The reactive agent, one per chair, on the chair's {@link ChairDriver} (simulated or real).
  *
  * <ul>
- *   <li>Answers the Medical agent's CFP ({@code transport; task; from; to; priority; unload}) after
+ *   <li>Answers the Medical agent's CFP ({@code transport-call}) after
  *       asking its planner for two plans (from where its queue ends to the patient, and from the
- *       patient to the destination): PROPOSE {@code proposal; task; cost; path; unload}, or REFUSE
+ *       patient to the destination): PROPOSE {@code proposal}, or REFUSE
  *       with the reason (no route, a node unknown, no planner).</li>
  *   <li>Queues accepted tasks and executes them in order: drives to the patient, waits the load
  *       time, drives to the destination, waits the unload time, and answers the ACCEPT with
@@ -54,11 +54,11 @@ import java.util.function.Consumer;
  *   <li>Drives through a {@link ChairSupervisor} (made around the driver it is given, unless it is
  *       given one): an e-stop, a watchdog trip, a board's reboot, a refusal or a lost link holds
  *       the chair; the task is paused, not failed, and the Medical agent is told (INFORM
- *       {@code paused; task; chair; reason; resume}, conversation {@code <cfp's>/status}, again
+ *       {@code paused}, conversation {@code <cfp's>/status}, again
  *       every 20 s while paused) and told again when it resumes (INFORM {@code resumed}). After a
  *       trip or a lost link that came back, the agent decides to resume; after an e-stop, a reboot
  *       or a refusal the board did not explain, only an operator does ({@link #resume}, or
- *       REQUEST {@code resume; by}). While the chair cannot drive it refuses new tasks, saying why,
+ *       REQUEST {@code resume-request}). While the chair cannot drive it refuses new tasks, saying why,
  *       with {@code unavailable true} (the Medical agent asks again later). A link down for
  *       {@link #LINK_GRACE_MS} fails its tasks.</li>
  * </ul>
@@ -322,6 +322,7 @@ public class ControlAgent extends Agent implements ChairListener {
             req.addReceiver(planner);
             req.setProtocol(FipaProtocols.REQUEST);
             req.setOntology(Services.ONTOLOGY);
+            req.setLanguage(Services.LANGUAGE);
             req.setContent(new PlanRequest(task, from, to, null, via).encode());
             return asks.ask(req, 10_000, null).thenApply(a -> a != null ? a
                     : new AclMessage(Performative.FAILURE).setContent(new NoRoute(null, "the planner did not answer within 10 s").encode()));

@@ -95,6 +95,7 @@ final class DoorClient {
             req.addReceiver(agent);
             req.setProtocol(FipaProtocols.REQUEST);
             req.setOntology(Services.ONTOLOGY);
+            req.setLanguage(Services.LANGUAGE);
             req.setContent(new OpenRequest(body).encode());
             say.accept("asks door " + id + " to open");
             doors.ask(req, OPEN_TIMEOUT_MS).thenAccept(a -> answered(id, fromId, a));
@@ -129,6 +130,7 @@ final class DoorClient {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(agent);
                 m.setOntology(Services.ONTOLOGY);
+                m.setLanguage(Services.LANGUAGE);
                 m.setContent(new Passed(body).encode());
                 doors.send(m);
             }
@@ -152,6 +154,7 @@ final class DoorClient {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(agent);
                 m.setOntology(Services.ONTOLOGY);
+                m.setLanguage(Services.LANGUAGE);
                 m.setContent(new Here(body, null).encode());
                 doors.send(m);
             }

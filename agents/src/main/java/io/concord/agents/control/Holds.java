@@ -16,7 +16,7 @@ import java.util.function.Supplier;
 /**
  * The place of the chair's {@link ChairSupervisor} in the control agent: what a hold means for the
  * tasks, and who decides to resume. A hold pauses the task under way (it does not fail it) and
- * whoever gave the task is told (INFORM {@code paused; task; chair; reason; resume}, conversation
+ * whoever gave the task is told (INFORM {@code paused}, conversation
  * {@code <cfp's>/status}), again each keep-alive while paused, and told again when it resumes
  * (INFORM {@code resumed}). After a trip or a lost link that came back the agent decides to resume
  * by itself, and with no task accepted it resumes whatever the hold (no motion follows until a
@@ -153,7 +153,7 @@ final class Holds implements ChairSupervisor.Observer {
         return why;
     }
 
-    /** REQUEST {@code resume; by}: an operator's resume through a message; the answer says whether it resumes. */
+    /** REQUEST {@code resume-request}: an operator's resume through a message; the answer says whether it resumes. */
     void resumeAsked(AclMessage m) {
         String by = m.getSender().localName();
         try {

@@ -63,6 +63,7 @@ final class Task {
         AclMessage m = new AclMessage(Performative.INFORM);
         m.addReceiver(accept.getSender());
         m.setOntology(Services.ONTOLOGY);
+        m.setLanguage(Services.LANGUAGE);
         m.setConversationId(cfp.getConversationId() + "/status");
         m.setContent(notice.encode());
         return m;

@@ -324,6 +324,7 @@ final class TaskRunner {
             AclMessage m = new AclMessage(Performative.INFORM);
             m.addReceiver(planner);
             m.setOntology(Services.ONTOLOGY);
+            m.setLanguage(Services.LANGUAGE);
             m.setContent(new Blocked(fromId, toId).encode());
             send(m);
         }

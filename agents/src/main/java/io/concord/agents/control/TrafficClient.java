@@ -85,6 +85,7 @@ final class TrafficClient {
         req.addReceiver(traffic);
         req.setProtocol(FipaProtocols.REQUEST);
         req.setOntology(Services.ONTOLOGY);
+        req.setLanguage(Services.LANGUAGE);
         req.setContent(new Reserve(at, route, aside).encode());
         port.ask(req, WAIT_MS).thenAccept(a -> {
             if (seq != mine) {
@@ -232,6 +233,7 @@ final class TrafficClient {
         AclMessage m = new AclMessage(Performative.INFORM);
         m.addReceiver(traffic);
         m.setOntology(Services.ONTOLOGY);
+        m.setLanguage(Services.LANGUAGE);
         m.setContent(w.encode());
         port.send(m);
     }

@@ -43,11 +43,11 @@ import java.util.function.Consumer;
  *
  * <p>Conversations (content: {@link WheelchairMessage}):
  * <ul>
- *   <li>REQUEST {@code pass; chair=<control AID>} from a planner: CONFIRM, or REFUSE while offline.</li>
- *   <li>REQUEST {@code open} from a chair: AGREE, then INFORM {@code open} when the door is open and
+ *   <li>REQUEST {@code pass-request} from a planner: CONFIRM, or REFUSE while offline.</li>
+ *   <li>REQUEST {@code open-request} from a chair: AGREE {@code open-queued}, then INFORM {@code door-open} when the door is open and
  *       the doorway is the chair's; REFUSE if the chair was not confirmed; FAILURE if offline.</li>
  *   <li>INFORM {@code passed} from the chair in the doorway: the next one's turn.</li>
- *   <li>SUBSCRIBE: AGREE with the door's {@code state}, then INFORM {@code state} on every change.</li>
+ *   <li>SUBSCRIBE {@code state-query}: AGREE with the door's {@code door-state}, then INFORM {@code door-state} on every change.</li>
  * </ul>
  */
 public class DoorAgent extends Agent {

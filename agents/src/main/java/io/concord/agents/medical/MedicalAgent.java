@@ -37,7 +37,7 @@ import java.util.function.Consumer;
 
 /**
  * The Medical agent: takes patient transports (from code, {@link #transport}, or by ACL REQUEST
- * {@code transport; from; to; priority; unload}), and gives each to a chair by FIPA Contract Net:
+ * {@code transport-request}), and gives each to a chair by FIPA Contract Net:
  * a CFP to every chair in the yellow pages with a deadline, the best proposal by the utility
  * U = 100 (3 + TP) / (3 Cost + TP (Path + Unload)), ACCEPT-PROPOSAL to it and REJECT-PROPOSAL to
  * the others. Several auctions run at once, each with its own deadline. A task whose chair fails,
@@ -366,6 +366,7 @@ public class MedicalAgent extends Agent {
         cancel.addReceiver(winner.getSender());
         cancel.setProtocol(FipaProtocols.CONTRACT_NET);
         cancel.setOntology(Services.ONTOLOGY);
+        cancel.setLanguage(Services.LANGUAGE);
         cancel.setConversationId(winner.getConversationId());
         cancel.setContent(new Withdrawal(task).encode());
         send(cancel);
@@ -395,6 +396,7 @@ public class MedicalAgent extends Agent {
         chairs.forEach(cfp::addReceiver);
         cfp.setProtocol(FipaProtocols.CONTRACT_NET);
         cfp.setOntology(Services.ONTOLOGY);
+        cfp.setLanguage(Services.LANGUAGE);
         cfp.setConversationId(id + "-" + attempt);
         cfp.setReplyByEpochMs(currentTimeMillis() + settings.auctionMs());
         cfp.setContent(new TransportCall(id, from, to, tp, unload).encode());

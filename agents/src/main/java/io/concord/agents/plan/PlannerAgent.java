@@ -40,13 +40,13 @@ import java.util.function.Consumer;
  * plans that every door on them confirmed for the chair.
  *
  * <ul>
- *   <li>REQUEST {@code plan; task=T; from=19; to=3}: REFUSE (unknown node), or AGREE and then
- *       INFORM-REF {@code plan; task=T; nodes=19,22,...; doors=WA,A2; length=..} or FAILURE
- *       {@code no-route; reason=..}.</li>
+ *   <li>REQUEST {@code plan-request}: REFUSE (unknown node), or AGREE and then
+ *       INFORM-REF {@code plan} or FAILURE
+ *       {@code no-route}.</li>
  *   <li>It finds the doors in the DF and subscribes to each (position and state); an OFFLINE door
  *       is planned around. Before giving a plan out it asks every door on it to let the chair
  *       pass (REQUEST {@code pass}); a door that refuses is planned around, up to three times.</li>
- *   <li>INFORM {@code blocked; from=a; to=b} from its chair: that edge is avoided for a minute.</li>
+ *   <li>INFORM {@code blocked} from its chair: that edge is avoided for a minute.</li>
  * </ul>
  */
 public class PlannerAgent extends Agent {
@@ -112,6 +112,7 @@ public class PlannerAgent extends Agent {
                 sub.addReceiver(agent);
                 sub.setProtocol("fipa-subscribe");
                 sub.setOntology(Services.ONTOLOGY);
+                sub.setLanguage(Services.LANGUAGE);
                 sub.setContent(new StateQuery().encode());
                 var handle = Conversations.subscribe(this, sub, n -> update(id, agent, n));
                 handle.agreed().thenAccept(agree -> update(id, agent, agree));
@@ -221,6 +222,7 @@ public class PlannerAgent extends Agent {
             ask.addReceiver(k.agent());
             ask.setProtocol("fipa-request");
             ask.setOntology(Services.ONTOLOGY);
+            ask.setLanguage(Services.LANGUAGE);
             ask.setContent(new PassRequest(forChair, task).encode());
             answers.add(asks.ask(ask, 2_000, null));
         }

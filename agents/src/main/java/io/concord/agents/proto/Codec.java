@@ -2,6 +2,12 @@ package io.concord.agents.proto;
 
 import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.core.acl.Performative;
+import io.concord.core.content.AbsCompound;
+import io.concord.core.content.AbsObject;
+import io.concord.core.content.BeanOntology;
+import io.concord.core.content.ContentException;
+import io.concord.core.content.Element;
+import io.concord.core.content.SlCodec;
 
 import java.util.ArrayList;
 import java.util.EnumMap;
@@ -11,70 +17,74 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.function.Function;
 
 import static io.concord.core.acl.Performative.*;
 
 /**
- * {@link WheelchairMessage}'s table of words: which record a word is under each performative, and
- * the readers of its typed fields. Package-private: agents use the records.
+ * {@link WheelchairMessage}'s ontology and codec: the records as a {@link BeanOntology} named
+ * {@value Services#ONTOLOGY}, written and read in FIPA-SL, and under which performatives each is
+ * sent. Package-private: agents use the records.
  */
 final class Codec {
-    private static final Map<Performative, Map<String, Function<Content, WheelchairMessage>>> READERS = new EnumMap<>(Performative.class);
     private static final Map<Class<?>, String> VERBS = new HashMap<>();
+    private static final Map<String, Class<?>> KINDS = new HashMap<>();
     private static final Map<Class<?>, Set<Performative>> UNDER = new HashMap<>();
+    private static final SlCodec SL = new SlCodec();
+    static final BeanOntology ONTOLOGY;
 
     static {
-        word(TransportCall.class, "transport", TransportCall::read, CFP);
-        word(TransportRequest.class, "transport", TransportRequest::read, REQUEST, AGREE);
-        word(Proposal.class, "proposal", Proposal::read, PROPOSE);
-        word(Refused.class, "refuse", Refused::read, REFUSE);
-        word(Award.class, "transport", Award::read, ACCEPT_PROPOSAL);
-        word(Rejection.class, "transport", Rejection::read, REJECT_PROPOSAL);
-        word(Withdrawal.class, "transport", Withdrawal::read, CANCEL);
-        word(Done.class, "done", Done::read, INFORM);
-        word(Failed.class, "failed", Failed::read, FAILURE);
-        word(Paused.class, "paused", Paused::read, INFORM);
-        word(Resumed.class, "resumed", Resumed::read, INFORM);
-        word(Progress.class, "progress", Progress::read, INFORM);
-        word(ResumeRequest.class, "resume", ResumeRequest::read, REQUEST);
-        word(Resuming.class, "resuming", Resuming::read, INFORM);
-        word(PlanRequest.class, "plan", PlanRequest::read, REQUEST);
-        word(PlanAgreed.class, "plan", PlanAgreed::read, AGREE);
-        word(Plan.class, "plan", Plan::read, INFORM_REF);
-        word(NoRoute.class, "no-route", NoRoute::read, FAILURE);
-        word(Blocked.class, "blocked", Blocked::read, INFORM);
-        word(StateQuery.class, "state", StateQuery::read, SUBSCRIBE, REQUEST);
-        word(DoorState.class, "state", DoorState::read, AGREE, INFORM);
-        word(PassRequest.class, "pass", PassRequest::read, REQUEST);
-        word(PassConfirmed.class, "pass", PassConfirmed::read, CONFIRM);
-        word(OpenRequest.class, "open", OpenRequest::read, REQUEST);
-        word(OpenQueued.class, "open", OpenQueued::read, AGREE);
-        word(DoorOpen.class, "open", DoorOpen::read, INFORM);
-        word(Failure.class, "failure", Failure::read, FAILURE);
-        word(Passed.class, "passed", Passed::read, INFORM);
-        word(Here.class, "here", Here::read, INFORM);
-        word(Reserve.class, "reserve", Reserve::read, REQUEST);
-        word(Granted.class, "granted", Granted::read, INFORM);
-        word(Clear.class, "clear", Clear::read, INFORM);
-        word(ReserveWaits.class, "reserve", ReserveWaits::read, AGREE);
-        word(Release.class, "release", Release::read, INFORM);
-        word(Idle.class, "idle", Idle::read, INFORM);
-        word(MakeWay.class, "make-way", MakeWay::read, INFORM);
+        under(TransportCall.class, CFP);
+        under(TransportRequest.class, REQUEST, AGREE);
+        under(Proposal.class, PROPOSE);
+        under(Refused.class, REFUSE);
+        under(Award.class, ACCEPT_PROPOSAL);
+        under(Rejection.class, REJECT_PROPOSAL);
+        under(Withdrawal.class, CANCEL);
+        under(Done.class, INFORM);
+        under(Failed.class, FAILURE);
+        under(Paused.class, INFORM);
+        under(Resumed.class, INFORM);
+        under(Progress.class, INFORM);
+        under(ResumeRequest.class, REQUEST);
+        under(Resuming.class, INFORM);
+        under(PlanRequest.class, REQUEST);
+        under(PlanAgreed.class, AGREE);
+        under(Plan.class, INFORM_REF);
+        under(NoRoute.class, FAILURE);
+        under(Blocked.class, INFORM);
+        under(StateQuery.class, SUBSCRIBE, REQUEST);
+        under(DoorState.class, AGREE, INFORM);
+        under(PassRequest.class, REQUEST);
+        under(PassConfirmed.class, CONFIRM);
+        under(OpenRequest.class, REQUEST);
+        under(OpenQueued.class, AGREE);
+        under(DoorOpen.class, INFORM);
+        under(Failure.class, FAILURE);
+        under(Passed.class, INFORM);
+        under(Here.class, INFORM);
+        under(Reserve.class, REQUEST);
+        under(Granted.class, INFORM);
+        under(Clear.class, INFORM);
+        under(ReserveWaits.class, AGREE);
+        under(Release.class, INFORM);
+        under(Idle.class, INFORM);
+        under(MakeWay.class, INFORM);
+        List<Class<?>> elements = new ArrayList<>(UNDER.keySet());
+        elements.add(Proposal.Pending.class);
+        elements.sort(java.util.Comparator.comparing(Class::getName));
+        ONTOLOGY = new BeanOntology(Services.ONTOLOGY, elements.toArray(Class<?>[]::new));
     }
 
     private Codec() {
     }
 
-    private static void word(Class<? extends WheelchairMessage> kind, String verb, Function<Content, WheelchairMessage> read,
-                             Performative... under) {
+    private static void under(Class<? extends WheelchairMessage> kind, Performative... under) {
+        String verb = kind.getAnnotation(Element.class).name();
         VERBS.put(kind, verb);
-        UNDER.put(kind, EnumSet.of(under[0], under));
-        for (Performative p : under) {
-            if (READERS.computeIfAbsent(p, x -> new HashMap<>()).put(verb, read) != null) {
-                throw new IllegalStateException("two records for '" + verb + "' under " + p);
-            }
+        if (KINDS.put(verb, kind) != null) {
+            throw new IllegalStateException("two records named " + verb);
         }
+        UNDER.put(kind, EnumSet.of(under[0], under));
     }
 
     static String verb(Class<?> kind) {
@@ -91,88 +101,53 @@ final class Codec {
         return VERBS.keySet();
     }
 
+    /** True if the content starts with this opening, {@code ((name}, followed by a slot or the end of the element. */
+    static boolean startsWith(String content, String open) {
+        if (content == null || !content.startsWith(open)) {
+            return false;
+        }
+        char next = content.length() > open.length() ? content.charAt(open.length()) : ' ';
+        return next == ' ' || next == ')';
+    }
+
+    static String encode(WheelchairMessage w) {
+        try {
+            return SL.write(ONTOLOGY.toAbs(w));
+        } catch (ContentException e) {
+            throw new IllegalArgumentException(w.verb() + " cannot be written: " + e.reason(), e);
+        }
+    }
+
     static WheelchairMessage decode(String text, Performative performative) {
-        Content c;
+        if (text == null || text.isBlank()) {
+            throw new Unreadable("empty content");
+        }
+        List<AbsObject> elements;
         try {
-            c = Content.parse(text);
-        } catch (IllegalArgumentException e) {
-            throw new Unreadable(e.getMessage());
+            elements = SL.read(text);
+        } catch (ContentException e) {
+            throw new Unreadable("content is not FIPA-SL (" + e.reason() + "); the wheelchair's contents are one element, "
+                    + "such as ((transport-request :from 3 :to 9)): docs/wheelchair-protocol.md");
         }
-        Function<Content, WheelchairMessage> read = READERS.getOrDefault(performative, Map.of()).get(c.verb());
-        if (read == null) {
-            throw new UnknownWord(c.verb(), performative);
+        if (elements.size() != 1 || !(elements.get(0) instanceof AbsCompound element)) {
+            throw new Unreadable("content must be one element, such as ((transport-request :from 3 :to 9)); got "
+                    + elements.size() + " element(s)");
+        }
+        Class<?> kind = KINDS.get(element.name());
+        if (kind == null || !UNDER.get(kind).contains(performative)) {
+            throw new UnknownWord(element.name(), performative);
         }
         try {
-            return read.apply(c);
+            return (WheelchairMessage) ONTOLOGY.fromAbs(element);
+        } catch (ContentException e) {
+            throw new BadField(e.reason());
         } catch (IllegalArgumentException e) {
-            throw new BadField(e.getMessage());
+            throw new BadField(element.name() + ": " + e.getMessage());
         }
     }
 
-    // ---- typed fields -----------------------------------------------------------------------------
-
-    /** A list comma-separated, as it is written. */
-    static String join(List<?> items) {
-        StringBuilder b = new StringBuilder();
-        for (Object o : items) {
-            b.append(b.length() == 0 ? "" : ",").append(o);
-        }
-        return b.toString();
-    }
-
-    /** A list of node ids (empty if absent). */
-    static List<Integer> nodes(Content c, String key) {
-        List<Integer> out = new ArrayList<>();
-        for (String s : c.list(key)) {
-            try {
-                out.add(Integer.parseInt(s));
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException(key + ": '" + s + "' is not a node id");
-            }
-        }
-        return out;
-    }
-
-    /** A whole number, or null if absent. */
-    static Integer optionalInt(Content c, String key) {
-        return c.get(key) == null ? null : c.integer(key);
-    }
-
-    /** A proposal's other open proposals: {@code T1:177.4,T3:139.5} (seconds to a tenth). */
-    static String pending(List<Proposal.Pending> pending) {
-        List<String> items = new ArrayList<>();
-        for (Proposal.Pending p : pending) {
-            items.add(p.task() + ":" + String.format(Locale.ROOT, "%.1f", p.seconds()));
-        }
-        return join(items);
-    }
-
-    static List<Proposal.Pending> pending(Content c) {
-        List<Proposal.Pending> out = new ArrayList<>();
-        for (String item : c.list("pending")) {
-            int colon = item.lastIndexOf(':');
-            try {
-                if (colon <= 0) {
-                    throw new NumberFormatException();
-                }
-                out.add(new Proposal.Pending(item.substring(0, colon), Double.parseDouble(item.substring(colon + 1))));
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("pending: '" + item + "' is not task:seconds");
-            }
-        }
-        return out;
-    }
-
-    /** Who resumes a paused task: {@code agent} or {@code operator}. */
-    static String resumer(boolean agent) {
-        return agent ? "agent" : "operator";
-    }
-
-    static boolean resumer(Content c) {
-        String v = c.text("resume");
-        if (!v.equals("agent") && !v.equals("operator")) {
-            throw new IllegalArgumentException("field 'resume' must be agent or operator, got '" + v + "'");
-        }
-        return v.equals("agent");
+    /** A list as a record keeps it: unmodifiable, empty when absent. */
+    static <T> List<T> list(List<T> items) {
+        return items == null ? List.of() : List.copyOf(items);
     }
 }

@@ -14,6 +14,8 @@ public final class Services {
     public static final String MEDICAL = "medical-transport";
     /** The ontology every wheelchair message carries. */
     public static final String ONTOLOGY = "concord-wheelchair";
+    /** The language every wheelchair message's content is written in (FIPA-SL). */
+    public static final String LANGUAGE = "fipa-sl";
 
     private Services() {
     }

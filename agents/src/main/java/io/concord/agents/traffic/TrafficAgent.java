@@ -36,19 +36,18 @@ import java.util.function.Consumer;
  *
  * <p>Messages (ontology {@code concord-wheelchair}), from a chair's control agent:
  * <ul>
- *   <li>REQUEST {@code reserve; at=<nodes it stands on>; path=<route>[; aside=true]}: it gives
- *       back everything but {@code at}, and is granted the route (INFORM {@code granted; path;
- *       upto}: how far it may drive now) at once or later, with an AGREE naming who is in the way
- *       meanwhile; then INFORM {@code clear; upto} in the same conversation each time the chairs
+ *   <li>REQUEST {@code reserve} (the nodes it stands on, the route, whether it steps aside): it gives
+ *       back everything but {@code at}, and is granted the route (INFORM {@code granted}, with {@code :upto}: how far it may drive now) at once or later, with an AGREE naming who is in the way
+ *       meanwhile; then INFORM {@code clear} in the same conversation each time the chairs
  *       ahead let it drive farther. A route that is not on the map is REFUSEd. A wait that cannot
  *       end (a silent chair stands on the route, or ahead of it) gets a FAILURE with the reason.</li>
- *   <li>INFORM {@code release; node}: it has left the node.</li>
- *   <li>INFORM {@code idle; at}: it has nothing to do, standing at {@code at}.</li>
- *   <li>INFORM {@code here[; at=<nodes>]}: it is alive (its holds are kept), standing on those
+ *   <li>INFORM {@code release}: it has left the node.</li>
+ *   <li>INFORM {@code idle}: it has nothing to do, standing at {@code at}.</li>
+ *   <li>INFORM {@code here} (with {@code :at}, the nodes): it is alive (its holds are kept), standing on those
  *       nodes; a chair says so as it sets off along each edge, so that a chair that falls silent
  *       keeps exactly the nodes its body takes.</li>
  * </ul>
- * To a chair: INFORM {@code make-way; from; to}: drive to {@code to} (held for it) and ask again
+ * To a chair: INFORM {@code make-way}: drive to {@code to} (held for it) and ask again
  * from there; its pending wait, if any, is answered FAILURE {@code make-way}.
  */
 public class TrafficAgent extends Agent {
@@ -237,6 +236,7 @@ public class TrafficAgent extends Agent {
                 AclMessage m = new AclMessage(Performative.INFORM);
                 m.addReceiver(aids.get(mw.chair()));
                 m.setOntology(Services.ONTOLOGY);
+                m.setLanguage(Services.LANGUAGE);
                 m.setContent(new MakeWay(mw.from(), mw.to(), mw.path()).encode());
                 send(m);
             } else if (o instanceof Reservations.Note<AclMessage> n) {

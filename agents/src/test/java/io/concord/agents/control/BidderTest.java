@@ -1,6 +1,7 @@
 package io.concord.agents.control;
 
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -11,6 +12,7 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -44,26 +46,28 @@ class BidderTest {
     static AclMessage cfp(String task, int from, int to, double unload) {
         AclMessage m = new AclMessage(Performative.CFP);
         m.setConversationId("cfp-" + task);
-        m.setContent(Content.of("transport").with("task", task).with("from", from).with("to", to).with("priority", 1.5)
-                .with("unload", unload).toString());
+        m.setContent(new TransportCall(task, from, to, 1.5, unload).encode());
         return m;
     }
 
     static AclMessage plan(double lengthM, int doors, int... nodes) {
-        StringBuilder n = new StringBuilder();
+        List<Integer> n = new ArrayList<>();
         for (int x : nodes) {
-            n.append(n.length() == 0 ? "" : ",").append(x);
+            n.add(x);
         }
         List<String> d = new ArrayList<>();
         for (int i = 0; i < doors; i++) {
             d.add("D" + i);
         }
-        return new AclMessage(Performative.INFORM_REF).setContent(Content.of("plan").with("task", "T").with("nodes", n).with("length", lengthM)
-                .with("doors", String.join(",", d)).toString());
+        return new AclMessage(Performative.INFORM_REF).setContent(new Plan("T", n, d, lengthM).encode());
     }
 
-    private Content answer(int i) {
-        return Content.parse(answers.get(i).getContent());
+    private Proposal proposal(int i) {
+        return WheelchairMessage.decode(answers.get(i), Proposal.class);
+    }
+
+    private Refused refusal(int i) {
+        return WheelchairMessage.decode(answers.get(i), Refused.class);
     }
 
     @Test
@@ -74,13 +78,13 @@ class BidderTest {
         assertEquals("t1/dropoff 3->9", asked.get(1), "then the way to the destination");
         plans.get(1).complete(plan(21, 2, 3, 7, 9));
         assertEquals(Performative.PROPOSE, answers.get(0).getPerformative());
-        Content p = answer(0);
+        Proposal p = proposal(0);
         double approach = 14 / Bidder.EST_SPEED_MPS + Bidder.EST_DOOR_S;
         double path = 21 / Bidder.EST_SPEED_MPS + 2 * Bidder.EST_DOOR_S;
-        assertEquals(path, p.number("path"), 0.05);
-        assertEquals(approach + 60 + path + 60, p.number("cost"), 0.05);
-        assertEquals(60, p.number("unload"), 1e-9);
-        assertNull(p.get("pending"));
+        assertEquals(path, p.path(), 0.05);
+        assertEquals(approach + 60 + path + 60, p.cost(), 0.05);
+        assertEquals(60, p.unload(), 1e-9);
+        assertTrue(p.pending().isEmpty());
         assertEquals(TaskView.State.PROPOSED, queue.views().get(0).state());
         assertEquals(List.of(19, 5, 3), queue.all().get(0).toPickup);
     }
@@ -90,12 +94,14 @@ class BidderTest {
         bidder.evaluate(cfp("t1", 3, 9, 0));
         plans.get(0).complete(plan(7, 0, 19, 3));
         plans.get(1).complete(plan(7, 0, 3, 9));
-        double first = answer(0).number("cost");
+        double first = proposal(0).cost();
         bidder.evaluate(cfp("t2", 4, 8, 0));
         plans.get(2).complete(plan(7, 0, 19, 4));
         plans.get(3).complete(plan(7, 0, 4, 8));
-        assertEquals(first * 2, answer(1).number("cost"), 0.1, "its own work and t1's, still open");
-        assertEquals("t1:20.0", answer(1).get("pending"));
+        assertEquals(first * 2, proposal(1).cost(), 0.1, "its own work and t1's, still open");
+        assertEquals(1, proposal(1).pending().size());
+        assertEquals("t1", proposal(1).pending().get(0).task());
+        assertEquals(20.0, proposal(1).pending().get(0).seconds(), 0.05);
 
         Task t1 = queue.all().get(0);
         t1.state = TaskView.State.QUEUED;
@@ -106,10 +112,10 @@ class BidderTest {
     @Test
     void aMalformedCallIsRefusedWithWhatIsWrongAndNotQueued() {
         AclMessage m = cfp("t1", 3, 9, 0);
-        m.setContent("transport; task=t1; from=three; to=9");
+        m.setContent("((transport-call :task t1 :from three :to 9 :priority 0 :unload 0))");
         bidder.evaluate(m);
         assertEquals(Performative.REFUSE, answers.get(0).getPerformative());
-        assertTrue(answer(0).get("reason").contains("from"), answers.get(0).getContent());
+        assertTrue(refusal(0).reason().contains("from"), answers.get(0).getContent());
         assertTrue(queue.all().isEmpty());
         assertTrue(asked.isEmpty());
     }
@@ -118,8 +124,8 @@ class BidderTest {
     void aChairThatCannotDriveNowRefusesSayingItMayLater() {
         unavailable = "is held: the e-stop was pressed";
         bidder.evaluate(cfp("t1", 3, 9, 0));
-        assertEquals("chair1 is held: the e-stop was pressed", answer(0).get("reason"));
-        assertEquals("true", answer(0).get("unavailable"));
+        assertEquals("chair1 is held: the e-stop was pressed", refusal(0).reason());
+        assertTrue(refusal(0).unavailable());
         assertTrue(asked.isEmpty());
         assertTrue(queue.all().isEmpty());
     }
@@ -128,15 +134,15 @@ class BidderTest {
     void withNoPlannerOrNoRouteItRefuses() {
         planner = null;
         bidder.evaluate(cfp("t1", 3, 9, 0));
-        assertEquals("no planner for chair1 in the yellow pages", answer(0).get("reason"));
-        assertNull(answer(0).get("unavailable"));
+        assertEquals("no planner for chair1 in the yellow pages", refusal(0).reason());
+        assertFalse(refusal(0).unavailable());
 
         planner = PLANNER;
         bidder.evaluate(cfp("t2", 3, 99, 0));
         plans.get(0).complete(plan(7, 0, 19, 3));
-        plans.get(1).complete(new AclMessage(Performative.FAILURE).setContent(Content.of("no-route").with("reason", "no node 99").toString()));
+        plans.get(1).complete(new AclMessage(Performative.FAILURE).setContent(new NoRoute(null, "no node 99").encode()));
         assertEquals(Performative.REFUSE, answers.get(1).getPerformative());
-        assertEquals("no node 99", answer(1).get("reason"));
+        assertEquals("no node 99", refusal(1).reason());
         assertTrue(queue.all().isEmpty());
     }
 }

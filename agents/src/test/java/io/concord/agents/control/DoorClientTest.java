@@ -5,7 +5,7 @@ import io.concord.agents.map.Door;
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.map.Point;
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage.Refused;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -71,7 +71,7 @@ class DoorClientTest {
         assertTrue(client.mayEnter(d1, 1, south(2.5)));
         assertFalse(client.mayEnter(d1, 1, south(2.2)), "within 2.3 m of the door it waits");
         assertEquals(1, sent.size(), "one request");
-        assertEquals("REQUEST " + Content.of("open").with("body", "chair1") + " to door-D1@test", said(sent.get(0)));
+        assertEquals("REQUEST ((open-request :body chair1)) to door-D1@test", said(sent.get(0)));
         assertEquals(DoorClient.OPEN_TIMEOUT_MS, timeouts.get(0));
     }
 
@@ -82,7 +82,7 @@ class DoorClientTest {
         assertTrue(client.mayEnter(d1, 1, south(1.0)));
         assertTrue(client.mayEnter(d1, 1, south(-1.0)), "in the doorway");
         client.reached(d1);
-        assertEquals("INFORM " + Content.of("passed").with("body", "chair1") + " to door-D1@test", said(sent.get(1)));
+        assertEquals("INFORM ((passed :body chair1)) to door-D1@test", said(sent.get(1)));
         client.reached(d1);
         assertEquals(2, sent.size(), "told once");
         client.mayEnter(d1, 1, south(3.0));
@@ -101,7 +101,7 @@ class DoorClientTest {
     @Test
     void aRefusalOrNoAnswerAsksForAPlanAroundTheDoorAndTheNextApproachAsksAgain() {
         client.mayEnter(d1, 1, south(3.0));
-        answers.get(0).complete(new AclMessage(Performative.REFUSE).setContent(Content.of("refuse").with("reason", "out of order").toString()));
+        answers.get(0).complete(new AclMessage(Performative.REFUSE).setContent(Refused.because("out of order").encode()));
         assertEquals(List.of("1: door D1 answered REFUSE: out of order"), closed);
         assertFalse(client.mayEnter(d1, 1, south(2.0)), "still closed for it");
         assertEquals(2, sent.size(), "asked again");
@@ -131,7 +131,7 @@ class DoorClientTest {
         Set<String> ahead = new LinkedHashSet<>(List.of("D1", "D9"));
         client.keepAlive(ahead);
         assertEquals(1, sent.size(), "D9 has no agent");
-        assertEquals("INFORM " + Content.of("here").with("body", "chair1") + " to door-D1@test", said(sent.get(0)));
+        assertEquals("INFORM ((here :body chair1)) to door-D1@test", said(sent.get(0)));
     }
 
     /**

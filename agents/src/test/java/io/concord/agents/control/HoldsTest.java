@@ -4,7 +4,8 @@ import io.concord.agents.chair.ChairEvent;
 import io.concord.agents.chair.ChairListener;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.ChairSupervisor;
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -15,6 +16,7 @@ import java.util.List;
 
 import static io.concord.agents.control.Fakes.estop;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -107,8 +109,8 @@ class HoldsTest {
         }
     }
 
-    private Content sent(int i) {
-        return Content.parse(sent.get(i).getContent());
+    private WheelchairMessage sent(int i) {
+        return WheelchairMessage.decode(sent.get(i));
     }
 
     @Test
@@ -124,7 +126,7 @@ class HoldsTest {
         taskUnderWay();
         readings(1, true);
         assertEquals("paused", sent(0).verb());
-        assertEquals("operator", sent(0).get("resume"));
+        assertFalse(((Paused) sent(0)).agentResumes(), "an operator resumes");
         assertEquals("cfp-t1/status", sent.get(0).getConversationId());
         assertEquals(MEDICAL, sent.get(0).getReceivers().get(0));
         assertNotNull(active.paused);
@@ -140,7 +142,7 @@ class HoldsTest {
         assertTrue(supervisor.armed());
         assertNull(active.paused);
         assertEquals("resumed", sent(2).verb());
-        assertEquals("decided by nurse Ada", sent(2).get("reason"));
+        assertEquals("decided by nurse Ada", ((Resumed) sent(2)).reason());
     }
 
     @Test
@@ -159,11 +161,11 @@ class HoldsTest {
         taskUnderWay();
         readings(1, true);
         AclMessage ask = new AclMessage(Performative.REQUEST).setSender(new AID("console@test"));
-        ask.setContent(Content.of("resume").with("by", "nurse Ada").toString());
+        ask.setContent(new ResumeRequest("nurse Ada").encode());
         holds.resumeAsked(ask);
         AclMessage answer = sent.get(sent.size() - 1);
         assertEquals(Performative.REFUSE, answer.getPerformative());
-        assertTrue(Content.parse(answer.getContent()).get("reason").contains("e-stop"), answer.getContent());
+        assertTrue(WheelchairMessage.decode(answer, Refused.class).reason().contains("e-stop"), answer.getContent());
         assertEquals(ChairSupervisor.State.HELD, supervisor.state());
     }
 

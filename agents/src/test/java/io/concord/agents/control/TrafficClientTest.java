@@ -1,6 +1,7 @@
 package io.concord.agents.control;
 
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -38,8 +39,8 @@ class TrafficClientTest {
         return sent.get(i).getPerformative() + " " + sent.get(i).getContent();
     }
 
-    private static AclMessage answer(Performative p, Content c) {
-        return new AclMessage(p).setContent(c.toString());
+    private static AclMessage answer(Performative p, WheelchairMessage w) {
+        return new AclMessage(p).setContent(w.encode());
     }
 
     @Test
@@ -58,8 +59,8 @@ class TrafficClientTest {
         assertFalse(client.mayDrive(route, List.of(1), false));
         assertFalse(client.mayDrive(route, List.of(1), false));
         assertEquals(1, sent.size(), "asked once");
-        assertEquals("REQUEST reserve; at=1; path=1,2,3", said(0));
-        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted").with("path", "1,2,3")));
+        assertEquals("REQUEST ((reserve :aside false :at (sequence 1) :path (sequence 1 2 3)))", said(0));
+        answers.get(0).complete(answer(Performative.INFORM, new Granted(List.of(1, 2, 3))));
         assertTrue(client.mayDrive(route, List.of(1), false));
         assertTrue(client.mayDriveNow(route));
         assertFalse(client.mayDriveNow(new ArrayList<>(route)), "a grant is for that very route");
@@ -75,20 +76,20 @@ class TrafficClientTest {
     void aGrantInOrderIsDrivenUpToWhereItIsClear() {
         List<Integer> route = new ArrayList<>(List.of(1, 2, 3));
         client.mayDrive(route, List.of(1), false);
-        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted").with("path", "1,2,3").with("upto", 2))
+        answers.get(0).complete(answer(Performative.INFORM, new Granted(List.of(1, 2, 3), 2))
                 .setConversationId("c1"));
         assertTrue(client.mayDrive(route, List.of(1), false));
         assertTrue(client.mayGoOn(route, 1));
         assertFalse(client.mayGoOn(route, 2), "node 3 is not its turn yet");
         assertEquals(3, client.waitsAt());
-        AclMessage old = answer(Performative.INFORM, Content.of("clear").with("upto", 3)).setConversationId("c0");
+        AclMessage old = answer(Performative.INFORM, new Clear(3)).setConversationId("c0");
         assertFalse(client.isAboutGrant(old));
         client.aboutGrant(old);
         assertFalse(client.mayGoOn(route, 2), "a clear of another reservation changes nothing");
-        client.aboutGrant(answer(Performative.INFORM, Content.of("clear").with("upto", 3)).setConversationId("c1"));
+        client.aboutGrant(answer(Performative.INFORM, new Clear(3)).setConversationId("c1"));
         assertTrue(client.mayGoOn(route, 2));
         assertEquals(-1, client.waitsAt());
-        client.aboutGrant(answer(Performative.FAILURE, Content.of("failure").with("node", 3).with("reason", "x is silent"))
+        client.aboutGrant(answer(Performative.FAILURE, new Failure(null, 3, "x is silent"))
                 .setConversationId("c1"));
         assertEquals(List.of("3 FAILURE: x is silent"), refused);
         assertFalse(client.mayDriveNow(route), "the grant is over");
@@ -97,16 +98,16 @@ class TrafficClientTest {
     @Test
     void aStepAsideIsAskedWithPriority() {
         client.mayDrive(List.of(4, 5), List.of(4), true);
-        assertEquals("REQUEST reserve; at=4; path=4,5; aside=true", said(0));
+        assertEquals("REQUEST ((reserve :aside true :at (sequence 4) :path (sequence 4 5)))", said(0));
     }
 
     @Test
     void eachNodeLeftIsGivenBack() {
         List<Integer> route = List.of(1, 2, 3);
         client.mayDrive(route, List.of(1), false);
-        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted")));
+        answers.get(0).complete(answer(Performative.INFORM, new Granted(List.of())));
         client.keepOnly(List.of(2, 3));
-        assertEquals("INFORM release; node=1", said(1));
+        assertEquals("INFORM ((release :node 1))", said(1));
         client.keepOnly(List.of(2, 3));
         assertEquals(2, sent.size(), "given back once");
         assertEquals(List.of(2, 3), client.held());
@@ -115,13 +116,13 @@ class TrafficClientTest {
     @Test
     void aRouteThatCannotBeGrantedIsToldWithTheNodeInTheWayButAMakeWayOrASupersededWaitIsNot() {
         client.mayDrive(List.of(1, 2, 3), List.of(1), false);
-        answers.get(0).complete(answer(Performative.FAILURE, Content.of("failure").with("node", 2).with("reason", "a silent chair stands there")));
+        answers.get(0).complete(answer(Performative.FAILURE, new Failure(null, 2, "a silent chair stands there")));
         assertEquals(List.of("2 FAILURE: a silent chair stands there"), refused);
 
         client.mayDrive(List.of(1, 5), List.of(1), false);
-        answers.get(1).complete(answer(Performative.FAILURE, Content.of("failure").with("reason", "make-way")));
+        answers.get(1).complete(answer(Performative.FAILURE, new Failure(null, null, "make-way")));
         client.mayDrive(List.of(1, 6), List.of(1), false);
-        answers.get(2).complete(answer(Performative.REFUSE, Content.of("refuse").with("reason", "superseded by a newer request")));
+        answers.get(2).complete(answer(Performative.REFUSE, Refused.because("superseded by a newer request")));
         assertEquals(1, refused.size(), refused.toString());
     }
 
@@ -130,7 +131,7 @@ class TrafficClientTest {
         List<Integer> route = List.of(1, 2, 3);
         client.mayDrive(route, List.of(1), false);
         client.reset();
-        answers.get(0).complete(answer(Performative.INFORM, Content.of("granted")));
+        answers.get(0).complete(answer(Performative.INFORM, new Granted(List.of())));
         assertFalse(client.mayDriveNow(route));
         assertFalse(client.mayDrive(route, List.of(1), false), "asked anew");
         assertEquals(2, sent.size());
@@ -149,12 +150,12 @@ class TrafficClientTest {
     void idleIsSaidOncePerNodeAndAliveSaysWhereItStands() {
         client.idle(7);
         client.idle(7);
-        assertEquals(List.of("INFORM idle; at=7"), List.of(said(0)));
+        assertEquals(List.of("INFORM ((idle :at (sequence 7)))"), List.of(said(0)));
         assertEquals(1, sent.size());
         client.alive(List.of(7, 8));
-        assertEquals("INFORM here; at=7,8", said(1));
+        assertEquals("INFORM ((here :at (sequence 7 8)))", said(1));
         client.idle(8);
-        assertEquals("INFORM idle; at=8", said(2));
+        assertEquals("INFORM ((idle :at (sequence 8)))", said(2));
         assertEquals(List.of(8), client.held());
     }
 }

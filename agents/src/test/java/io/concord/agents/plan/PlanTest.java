@@ -1,7 +1,6 @@
 package io.concord.agents.plan;
 
 import io.concord.agents.map.HospitalMap;
-import io.concord.agents.proto.Content;
 
 import org.junit.jupiter.api.Test;
 
@@ -91,21 +90,5 @@ class PlanTest {
             }
         }
         return d[g.indexOf(t)];
-    }
-
-    @Test
-    void contentRoundTripsAndSaysWhatIsWrong() {
-        Content c = Content.of("transport").with("task", "T1").with("from", 3).with("to", 9).with("priority", 1.5);
-        assertEquals("transport; task=T1; from=3; to=9; priority=1.50", c.toString());
-        Content back = Content.parse(c.toString());
-        assertTrue(back.is("transport"));
-        assertEquals(9, back.integer("to"));
-        assertEquals(1.5, back.number("priority"));
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> back.integer("unload")).getMessage()
-                .contains("needs a field 'unload'"));
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> Content.parse("transport; from=x").integer("from"))
-                .getMessage().contains("whole number"));
-        assertTrue(assertThrows(IllegalArgumentException.class, () -> Content.parse("transport; nonsense")).getMessage()
-                .contains("key=value"));
     }
 }

@@ -10,13 +10,9 @@ import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
 import io.concord.core.agent.ThreadedBehaviourFactory;
 import io.concord.layers.Platform;
-import io.concord.layers.platform.ContainerLayer;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.TimeUnit;
 
 /**
  * A blocking agent beside 100 non-blocking ones (issue 32): a prober pings each of 100 echo agents
@@ -129,7 +125,7 @@ public final class BlockingBeside {
                 ids.add(p.startAgent("echo" + i, new Echo()));
             }
             prober.echoes = List.copyOf(ids);
-            awaitListed(p, proberId, echoes + 1);
+            Listed.await(p, proberId, echoes + 1, 60);
             roundsFor(p, prober, rounds, phaseMs);   // warm-up
             double[] without = new double[phases];
             double[] blocking = new double[phases];
@@ -137,32 +133,16 @@ public final class BlockingBeside {
                 without[k] = roundsFor(p, prober, rounds, phaseMs);
                 Blocker b = new Blocker();
                 p.startAgent("blocker" + k, b);
-                awaitListed(p, proberId, echoes + 2);
+                Listed.await(p, proberId, echoes + 2, 60);
                 Thread.sleep(200); // the blocker's thread is in its sleep and its blockingReceive by now
                 blocking[k] = roundsFor(p, prober, rounds, phaseMs);
                 p.runtime().execute(b::doDelete);
-                awaitListed(p, proberId, echoes + 1);
+                Listed.await(p, proberId, echoes + 1, 60);
             }
-            return new Outcome(echoes, median(without), median(blocking), phases);
+            return new Outcome(echoes, Listed.median(without), Listed.median(blocking), phases);
         }
     }
 
-    /** Waits until the prober's lists hold that many agents. */
-    private static void awaitListed(Platform p, AID who, int agents) throws Exception {
-        long until = System.nanoTime() + 60_000_000_000L;
-        while (System.nanoTime() < until) {
-            CompletableFuture<Integer> k = new CompletableFuture<>();
-            p.runtime().execute(() -> {
-                ContainerLayer c = Platform.containerLayer(p.runtime(), who);
-                k.complete(c == null || c.containerName() == null ? -1 : c.agents().size());
-            });
-            if (k.get(10, TimeUnit.SECONDS) == agents) {
-                return;
-            }
-            Thread.sleep(20);
-        }
-        throw new IllegalStateException("the platform's lists never held " + agents + " agents");
-    }
 
     /** Pings for about that long; the median µs per ping over batches of 100 (one sweep of the echoes). */
     private static double roundsFor(Platform p, Prober prober, Rounds rounds, long ms) throws Exception {
@@ -175,12 +155,7 @@ public final class BlockingBeside {
             rounds.await();
             perPing.add((System.nanoTime() - t0) / 1e3 / 100);
         }
-        return median(perPing.stream().mapToDouble(Double::doubleValue).toArray());
+        return Listed.median(perPing.stream().mapToDouble(Double::doubleValue).toArray());
     }
 
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
 }

@@ -7,7 +7,6 @@ import io.concord.console.Console;
 import io.concord.core.acl.AID;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Platform;
-import io.concord.layers.platform.ContainerLayer;
 
 import java.io.InputStream;
 import java.net.URI;
@@ -15,7 +14,6 @@ import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
@@ -58,7 +56,7 @@ public final class ConsoleCost {
             for (int i = 0; i < n; i++) {
                 links.get(i).next = ids.get((i + 1) % n);
             }
-            awaitListed(p, ids.get(0), n);
+            Listed.await(p, ids.get(0), n, 30);
             roundsFor(p, links.get(0), rounds, phaseMs);   // warm-up
             double[] without = new double[phases];
             double[] open = new double[phases];
@@ -67,7 +65,7 @@ public final class ConsoleCost {
             for (int k = 0; k < phases; k++) {
                 without[k] = roundsFor(p, links.get(0), rounds, phaseMs);
                 try (Console c = Console.start(p, Console.Config.port(0).withAgentName("console" + k))) {
-                    awaitListed(p, ids.get(0), n + 1);
+                    Listed.await(p, ids.get(0), n + 1, 30);
                     CompletableFuture<HttpResponse<InputStream>> browser = http.sendAsync(HttpRequest.newBuilder(
                             URI.create("http://127.0.0.1:" + c.port() + "/api/events?topics=platform,safety")).build(),
                             HttpResponse.BodyHandlers.ofInputStream());
@@ -81,9 +79,9 @@ public final class ConsoleCost {
                     reader.interrupt();
                     reader2.interrupt();
                 }
-                awaitListed(p, ids.get(0), n);
+                Listed.await(p, ids.get(0), n, 30);
             }
-            return new Outcome(n, median(without), median(open), median(sniff), phases);
+            return new Outcome(n, Listed.median(without), Listed.median(open), Listed.median(sniff), phases);
         }
     }
 
@@ -103,22 +101,6 @@ public final class ConsoleCost {
         return t;
     }
 
-    /** Waits until the first link's lists hold that many agents (links, and the console if open). */
-    private static void awaitListed(Platform p, AID who, int agents) throws Exception {
-        long until = System.nanoTime() + 30_000_000_000L;
-        while (System.nanoTime() < until) {
-            CompletableFuture<Integer> k = new CompletableFuture<>();
-            p.runtime().execute(() -> {
-                ContainerLayer c = Platform.containerLayer(p.runtime(), who);
-                k.complete(c == null || c.containerName() == null ? -1 : c.agents().size());
-            });
-            if (k.get(10, TimeUnit.SECONDS) == agents) {
-                return;
-            }
-            Thread.sleep(20);
-        }
-        throw new IllegalStateException("the platform's lists never held " + agents + " agents");
-    }
 
     /** Runs rounds for about that long; the median µs per round over batches of 50. */
     private static double roundsFor(Platform p, ConcordChainLink first, Rounds rounds, long ms) throws Exception {
@@ -131,12 +113,7 @@ public final class ConsoleCost {
             rounds.await();
             perRound.add((System.nanoTime() - t0) / 1e3 / 50);
         }
-        return median(perRound.stream().mapToDouble(Double::doubleValue).toArray());
+        return Listed.median(perRound.stream().mapToDouble(Double::doubleValue).toArray());
     }
 
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
 }

@@ -105,10 +105,14 @@
     const s = state.safety;
     return s ? s.agents.find((x) => x.agent === name) : null;
   }
+  // Every action the console asks of the server: a form's fields POSTed with the console's header;
+  // the answer's message (or the error's text) is shown in the element `said`. True if it went well.
+  function post(path, params, said) {
+    return fetch(url(path), { method: 'POST', body: new URLSearchParams(params), headers: { 'X-Concord-Console': '1' } })
+      .then((r) => r.text().then((t) => { $(said).textContent = r.ok ? JSON.parse(t).message : t; return r.ok; }));
+  }
   function act(action, params, said) {
-    const body = new URLSearchParams(params);
-    return fetch(url('api/agents/' + action), { method: 'POST', body: body, headers: { 'X-Concord-Console': '1' } })
-      .then((r) => r.text().then((t) => { $(said || 'agent-said').textContent = r.ok ? JSON.parse(t).message : t; return r.ok; }));
+    return post('api/agents/' + action, params, said || 'agent-said');
   }
   // One table, grouped as JADE's RMA groups its tree: by host, then by JVM (process id).
   function drawAgents(p, q) {
@@ -437,7 +441,9 @@
   // ---- application views (the hospital) -------------------------------------------------------
   function loadViews() {
     fetch(url('api/views')).then((r) => r.json()).then((vs) => {
-      state.views = vs;
+      // A view a recording brought (opened before this answer came) keeps its tab.
+      state.views = vs.concat(state.views.filter((v) => !vs.some((w) => w.id === v.id)));
+      vs = state.views;
       const box = $('view-tabs');
       box.replaceChildren();
       for (const v of vs) {
@@ -479,9 +485,7 @@
       b.addEventListener('click', () => {
         const body = new URLSearchParams();
         for (const fl of form.fields) body.set(fl.name, f.elements[fl.name].value);
-        fetch(url('api/views/' + state.view.id + '/' + form.action), { method: 'POST', body: body,
-          headers: { 'X-Concord-Console': '1' } })
-          .then((r) => r.text().then((t) => { $('view-said').textContent = r.ok ? JSON.parse(t).message : t; }));
+        viewAction(form.action, body);
       });
       f.appendChild(b);
     }
@@ -574,9 +578,7 @@
     state.lastTables = tables;
   }
   function viewAction(action, params) {
-    fetch(url('api/views/' + state.view.id + '/' + action), { method: 'POST', body: new URLSearchParams(params),
-      headers: { 'X-Concord-Console': '1' } })
-      .then((r) => r.text().then((t) => { $('view-said').textContent = r.ok ? JSON.parse(t).message : t; }));
+    post('api/views/' + state.view.id + '/' + action, params, 'view-said');
   }
 
   // ---- bench ----------------------------------------------------------------------------------
@@ -675,9 +677,7 @@
     });
   }
   function recordAction(what) {
-    const body = new URLSearchParams(formParams($('record-form')));
-    fetch(url('api/record/' + what), { method: 'POST', body: body, headers: { 'X-Concord-Console': '1' } })
-      .then((r) => r.text().then((t) => { $('record-said').textContent = r.ok ? JSON.parse(t).message : t; loadRecordings(); }));
+    post('api/record/' + what, formParams($('record-form')), 'record-said').then(() => loadRecordings());
   }
   $('record-start').addEventListener('click', () => recordAction('start'));
   $('record-stop').addEventListener('click', () => recordAction('stop'));

@@ -17,7 +17,10 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 
-/** Moves the test ontology's objects between Concord's records and JADE's beans, and compares them. */
+/**
+ * Moves the test ontology's objects between Concord's records and JADE's beans, and compares them;
+ * turns Concord's abstract content into JADE's.
+ */
 final class JadeMapping {
     private JadeMapping() {
     }
@@ -86,6 +89,87 @@ final class JadeMapping {
             return j;
         }
         throw new IllegalArgumentException("no JADE form for " + o.getClass());
+    }
+
+    /**
+     * JADE's abstract form of Concord's abstract content, over JADE's ontology: a compound becomes
+     * what JADE's schema for its name makes ({@code AbsPredicate}, {@code AbsConcept}, {@code AbsIRE}),
+     * a positional argument fills the schema's slot at its position (the order JADE reads and writes
+     * them in), and {@code true} or {@code false} where the schema expects a formula becomes JADE's
+     * proposition of that name (Concord reads {@code (not true)} with a boolean primitive inside).
+     *
+     * @param formula whether {@code o} stands where a formula is expected (true for a content element)
+     */
+    static jade.content.abs.AbsObject toJadeAbs(AbsObject o, jade.content.onto.Ontology ontology, boolean formula)
+            throws jade.content.onto.OntologyException {
+        if (o instanceof AbsPrimitive p) {
+            Object v = p.value();
+            if (v instanceof Boolean b && formula) {
+                return new jade.content.abs.AbsPredicate(b ? "true" : "false");
+            }
+            if (v instanceof String s) {
+                return jade.content.abs.AbsPrimitive.wrap(s);
+            }
+            if (v instanceof Boolean b) {
+                return jade.content.abs.AbsPrimitive.wrap(b);
+            }
+            if (v instanceof Long l) {
+                return jade.content.abs.AbsPrimitive.wrap(l.longValue());
+            }
+            if (v instanceof Integer i) {
+                return jade.content.abs.AbsPrimitive.wrap(i.intValue());
+            }
+            if (v instanceof Double d) {
+                return jade.content.abs.AbsPrimitive.wrap(d.doubleValue());
+            }
+            if (v instanceof Float f) {
+                return jade.content.abs.AbsPrimitive.wrap(f.floatValue());
+            }
+            if (v instanceof java.time.Instant t) {
+                return jade.content.abs.AbsPrimitive.wrap(Date.from(t));
+            }
+            return jade.content.abs.AbsPrimitive.wrap((byte[]) v);
+        }
+        if (o instanceof AbsVariable v) {
+            return new jade.content.abs.AbsVariable(v.name(), null);
+        }
+        if (o instanceof AbsAggregate a) {
+            jade.content.abs.AbsAggregate j = new jade.content.abs.AbsAggregate(a.type());
+            for (AbsObject e : a.elements()) {
+                j.add((jade.content.abs.AbsTerm) toJadeAbs(e, ontology, false));
+            }
+            return j;
+        }
+        AbsCompound c = (AbsCompound) o;
+        jade.content.schema.ObjectSchema schema = ontology.getSchema(c.name());
+        if (schema == null) {
+            throw new IllegalArgumentException("JADE's ontology has no schema for " + c.name());
+        }
+        jade.content.abs.AbsObject j = schema.newInstance();
+        String[] names = schema.getNames();
+        if (c.slots().size() > names.length) {
+            throw new IllegalArgumentException(c.name() + " has " + c.slots().size() + " arguments, JADE's schema " + names.length);
+        }
+        for (int i = 0; i < c.slots().size(); i++) {
+            AbsCompound.Slot slot = c.slots().get(i);
+            String name = slot.name() != null ? slot.name() : names[i];
+            boolean slotIsFormula = schema.getSchema(name) instanceof jade.content.schema.PredicateSchema;
+            jade.content.abs.AbsObject value = toJadeAbs(slot.value(), ontology, slotIsFormula);
+            if (j instanceof jade.content.abs.AbsIRE ire) {
+                if (i == 0) {
+                    ire.setVariable((jade.content.abs.AbsVariable) value);
+                } else {
+                    ire.setProposition((jade.content.abs.AbsPredicate) value);
+                }
+            } else if (j instanceof jade.content.abs.AbsPredicate p) {
+                p.set(name, value);
+            } else if (j instanceof jade.content.abs.AbsConcept k) {
+                k.set(name, (jade.content.abs.AbsTerm) value);
+            } else {
+                throw new IllegalArgumentException("no JADE abstract form for " + c.name() + " (" + j.getClass() + ")");
+            }
+        }
+        return j;
     }
 
     @SuppressWarnings("unchecked")

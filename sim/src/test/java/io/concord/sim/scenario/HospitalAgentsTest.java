@@ -4,7 +4,8 @@ import io.concord.agents.control.TaskView;
 import io.concord.agents.door.DoorAgent;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.agents.proto.Asks;
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -15,6 +16,7 @@ import io.concord.sim.world.WorldDoor;
 
 import org.junit.jupiter.api.Test;
 
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -42,10 +44,14 @@ class HospitalAgentsTest {
             return asks.ask(m, 30_000, null);
         }
 
-        void tell(String to, String content) {
+        CompletableFuture<AclMessage> ask(String to, WheelchairMessage content) {
+            return ask(to, content.encode());
+        }
+
+        void tell(String to, WheelchairMessage content) {
             AclMessage m = new AclMessage(Performative.INFORM);
             m.addReceiver(AID.local(to, "hospital"));
-            m.setContent(content);
+            m.setContent(content.encode());
             send(m);
         }
     }
@@ -105,14 +111,14 @@ class HospitalAgentsTest {
     void aPlanAlongAWayIsThatWayWithItsDoorsAsked() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
             Probe p = probe(r, "probe", 200);
-            AclMessage plan = await(r, p.ask("planner-chair1", "plan; task=make-way; from=19; to=5; via=19,23,22,7,6,5"));
+            AclMessage plan = await(r, p.ask("planner-chair1", "((plan-request :task make-way :from 19 :to 5 :via (sequence 19 23 22 7 6 5)))"));
             assertEquals(Performative.INFORM_REF, plan.getPerformative(), plan.getContent());
-            assertEquals("19,23,22,7,6,5", Content.parse(plan.getContent()).get("nodes"));
-            assertEquals("WA", Content.parse(plan.getContent()).get("doors"));
+            assertEquals(List.of(19, 23, 22, 7, 6, 5), WheelchairMessage.decode(plan, Plan.class).nodes());
+            assertEquals(List.of("WA"), WheelchairMessage.decode(plan, Plan.class).doors());
             assertTrue(r.log.contains("planner-chair1: make-way plan [19, 23, 22, 7, 6, 5] through [WA] confirmed"), String.join("\n", r.log));
-            AclMessage off = await(r, p.ask("planner-chair1", "plan; task=make-way; from=19; to=5; via=19,5"));
+            AclMessage off = await(r, p.ask("planner-chair1", "((plan-request :task make-way :from 19 :to 5 :via (sequence 19 5)))"));
             assertEquals(Performative.FAILURE, off.getPerformative());
-            assertEquals("via: no edge 19-5 on " + r.world.map().name(), Content.parse(off.getContent()).get("reason"));
+            assertEquals("via: no edge 19-5 on " + r.world.map().name(), WheelchairMessage.reasonOf(off));
         }
     }
 
@@ -163,18 +169,18 @@ class HospitalAgentsTest {
     void aDoorOpensOnlyForAChairItConfirmedAndClosesAfterItsTimeout() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
             Probe p = probe(r, "stranger", 2_000);
-            AclMessage refused = await(r, p.ask("door-A1", "open; body=nobody"));
+            AclMessage refused = await(r, p.ask("door-A1", new OpenRequest("nobody")));
             assertEquals(Performative.REFUSE, refused.getPerformative());
             assertTrue(refused.getContent().contains("not confirmed"), refused.getContent());
             DoorAgent door = r.hospital.door("A1");
             assertEquals(DoorAgent.State.CLOSED, door.state());
             // A planner confirms the stranger; now it may ask.
-            assertEquals(Performative.CONFIRM, await(r, p.ask("door-A1", "pass; chair=stranger@hospital")).getPerformative());
-            AclMessage open = await(r, p.ask("door-A1", "open; body=nobody"));
+            assertEquals(Performative.CONFIRM, await(r, p.ask("door-A1", new PassRequest("stranger@hospital", null))).getPerformative());
+            AclMessage open = await(r, p.ask("door-A1", new OpenRequest("nobody")));
             assertEquals(Performative.INFORM, open.getPerformative());
             assertEquals(DoorAgent.State.OPEN, door.state());
             assertTrue(r.world.door("A1").isOpen());
-            p.tell("door-A1", "passed");
+            p.tell("door-A1", new Passed(null));
             // Five seconds with nobody in the doorway, then it closes.
             r.sim.runFor(4_000);
             assertEquals(DoorAgent.State.OPEN, door.state());
@@ -188,9 +194,9 @@ class HospitalAgentsTest {
     void aClosingDoorThatMeetsAChairStopsAndOpensAgain() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
             Probe p = probe(r, "stranger", 2_000);
-            await(r, p.ask("door-A1", "pass; chair=stranger@hospital"));
-            await(r, p.ask("door-A1", "open; body=nobody"));
-            p.tell("door-A1", "passed");
+            await(r, p.ask("door-A1", new PassRequest("stranger@hospital", null)));
+            await(r, p.ask("door-A1", new OpenRequest("nobody")));
+            p.tell("door-A1", new Passed(null));
             DoorAgent door = r.hospital.door("A1");
             assertTrue(r.sim.runUntil(() -> door.state() == DoorAgent.State.CLOSING, 10_000));
             // A chair rolls into the leaf's way in the room as it closes.
@@ -211,12 +217,12 @@ class HospitalAgentsTest {
             WorldDoor d = r.world.door("B2");
             d.setMechanismFailed(true);
             assertTrue(r.sim.runUntil(() -> r.hospital.door("B2").state() == DoorAgent.State.OFFLINE, 1_000));
-            AclMessage refused = await(r, p.ask("door-B2", "pass; chair=stranger@hospital"));
+            AclMessage refused = await(r, p.ask("door-B2", new PassRequest("stranger@hospital", null)));
             assertEquals(Performative.REFUSE, refused.getPerformative());
-            assertEquals("offline", Content.parse(refused.getContent()).get("reason"));
+            assertEquals("offline", WheelchairMessage.reasonOf(refused));
             d.setMechanismFailed(false);
             assertTrue(r.sim.runUntil(() -> r.hospital.door("B2").state() == DoorAgent.State.CLOSED, 1_000));
-            assertEquals(Performative.CONFIRM, await(r, p.ask("door-B2", "pass; chair=stranger@hospital")).getPerformative());
+            assertEquals(Performative.CONFIRM, await(r, p.ask("door-B2", new PassRequest("stranger@hospital", null))).getPerformative());
         }
     }
 
@@ -228,17 +234,17 @@ class HospitalAgentsTest {
             r.platform.startAgent("a", a);
             r.platform.startAgent("b", b);
             r.sim.runFor(2_000);
-            await(r, a.ask("door-WA", "pass; chair=a@hospital"));
-            await(r, b.ask("door-WA", "pass; chair=b@hospital"));
-            var first = a.ask("door-WA", "open; body=ca");
+            await(r, a.ask("door-WA", new PassRequest("a@hospital", null)));
+            await(r, b.ask("door-WA", new PassRequest("b@hospital", null)));
+            var first = a.ask("door-WA", new OpenRequest("ca"));
             assertEquals(Performative.INFORM, await(r, first).getPerformative());
             // Chair a stands in the doorway, now open.
             r.world.addChair("ca", ChairConfig.standard().noiseless(), new io.concord.agents.chair.Pose(19.5, 10.8, 0));
-            var second = b.ask("door-WA", "open; body=cb");
+            var second = b.ask("door-WA", new OpenRequest("cb"));
             r.sim.runFor(10_000);
             assertFalse(second.isDone(), "b waits while a is in the doorway");
             assertEquals(java.util.List.of("b@hospital"), r.hospital.door("WA").waiting());
-            a.tell("door-WA", "passed");
+            a.tell("door-WA", new Passed(null));
             r.sim.runFor(2_000);
             assertFalse(second.isDone(), "a said it passed, but its chair is still in the doorway");
             r.world.removeChair("ca");
@@ -250,15 +256,15 @@ class HospitalAgentsTest {
     void aSessionLapsesWhenTheChairGoesSilent() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 0)) {
             Probe p = probe(r, "stranger", 2_000);
-            await(r, p.ask("door-A3", "pass; chair=stranger@hospital"));
+            await(r, p.ask("door-A3", new PassRequest("stranger@hospital", null)));
             assertEquals(java.util.List.of("stranger@hospital"), r.hospital.door("A3").sessions());
             r.sim.runFor(50_000);
-            p.tell("door-A3", "here");
+            p.tell("door-A3", new Here(null, null));
             r.sim.runFor(50_000);
             assertEquals(java.util.List.of("stranger@hospital"), r.hospital.door("A3").sessions(), "kept alive");
             r.sim.runFor(70_000);
             assertTrue(r.hospital.door("A3").sessions().isEmpty(), "lapsed after 60 s of silence");
-            assertEquals(Performative.REFUSE, await(r, p.ask("door-A3", "open; body=x")).getPerformative());
+            assertEquals(Performative.REFUSE, await(r, p.ask("door-A3", new OpenRequest("x"))).getPerformative());
         }
     }
 
@@ -273,7 +279,7 @@ class HospitalAgentsTest {
             AclMessage cancel = new AclMessage(Performative.CANCEL);
             cancel.addReceiver(AID.local("control-chair1", "hospital"));
             cancel.setConversationId("T1-1");
-            cancel.setContent("transport; task=T1");
+            cancel.setContent(new Withdrawal("T1").encode());
             p.send(cancel);
             r.sim.runFor(2_000);
             assertTrue(r.log.contains("control-chair1: ignores a CANCEL of T1 from stranger@hospital: only medical@hospital, who gave it, "
@@ -377,17 +383,16 @@ class HospitalAgentsTest {
             java.util.List<AclMessage> agreed = new java.util.ArrayList<>();
             AclMessage m = new AclMessage(Performative.REQUEST);
             m.addReceiver(AID.local("medical", "hospital"));
-            m.setContent("transport; from=3; to=9; priority=1.5; unload=30");
+            m.setContent("((transport-request :from 3 :to 9 :priority 1.5 :unload 30))");
             var answer = ward.asks.ask(m, 900_000, agreed::add);
             assertTrue(r.sim.runUntil(answer::isDone, 900_000), String.join("\n", ScenarioTest.tail(r.log, 20)));
             assertEquals(1, agreed.size(), "AGREE first");
             assertEquals(Performative.INFORM, answer.join().getPerformative());
-            Content done = Content.parse(answer.join().getContent());
-            assertTrue(done.is("done"));
-            assertEquals("control-chair1", done.get("chair"));
-            AclMessage bad = await(r, ward.ask("medical", "transport; from=3"));
+            Done done = WheelchairMessage.decode(answer.join(), Done.class);
+            assertEquals("control-chair1", done.chair());
+            AclMessage bad = await(r, ward.ask("medical", "((transport-request :from 3))"));
             assertEquals(Performative.REFUSE, bad.getPerformative());
-            assertTrue(bad.getContent().contains("needs a field 'to'"), bad.getContent());
+            assertTrue(bad.getContent().contains("missing mandatory slot :to of transport-request"), bad.getContent());
         }
     }
 

@@ -1,7 +1,8 @@
 package io.concord.sim.scenario;
 
 import io.concord.agents.proto.Asks;
-import io.concord.agents.proto.Content;
+import io.concord.agents.proto.WheelchairMessage;
+import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.agents.proto.Services;
 import io.concord.agents.traffic.TrafficAgent;
 import io.concord.core.acl.AID;
@@ -14,7 +15,9 @@ import io.concord.testkit.FaultPlan;
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.stream.Collectors;
 import java.util.concurrent.CompletableFuture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -32,7 +35,7 @@ class TrafficTest {
     static final class Chair extends Agent {
         Asks asks;
         final List<AclMessage> agrees = new ArrayList<>();
-        final List<Content> orders = new ArrayList<>();
+        final List<WheelchairMessage> orders = new ArrayList<>();
         /** FAILUREs that come after the answer (in a granted reservation's conversation). */
         final List<AclMessage> failures = new ArrayList<>();
 
@@ -41,8 +44,8 @@ class TrafficTest {
             asks = new Asks(this);
             addBehaviour(asks);
             io.concord.core.agent.Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM)
-                    .and(m -> m.getContent() != null && (m.getContent().startsWith("make-way") || m.getContent().startsWith("clear"))),
-                    m -> orders.add(Content.parse(m.getContent())));
+                    .and(WheelchairMessage.matching(MakeWay.class).or(WheelchairMessage.matching(Clear.class))),
+                    m -> orders.add(WheelchairMessage.decode(m)));
             io.concord.core.agent.Inbox.each(this, MessageTemplate.matchPerformative(Performative.FAILURE), failures::add);
         }
 
@@ -50,24 +53,29 @@ class TrafficTest {
             AclMessage m = new AclMessage(Performative.REQUEST);
             m.addReceiver(AID.local("traffic", "hospital"));
             m.setOntology(Services.ONTOLOGY);
-            Content c = Content.of("reserve").with("at", at).with("path", path);
-            m.setContent((aside ? c.with("aside", "true") : c).toString());
+            m.setLanguage(Services.LANGUAGE);
+            m.setContent(new Reserve(nodes(at), nodes(path), aside).encode());
             return asks.ask(m, 600_000, agrees::add);
         }
 
-        void tell(Content c) {
+        void tell(WheelchairMessage c) {
             AclMessage m = new AclMessage(Performative.INFORM);
             m.addReceiver(AID.local("traffic", "hospital"));
             m.setOntology(Services.ONTOLOGY);
-            m.setContent(c.toString());
+            m.setLanguage(Services.LANGUAGE);
+            m.setContent(c.encode());
             send(m);
         }
 
         void release(int... nodes) {
             for (int n : nodes) {
-                tell(Content.of("release").with("node", n));
+                tell(new Release(n));
             }
         }
+    }
+
+    private static List<Integer> nodes(String commaSeparated) {
+        return Arrays.stream(commaSeparated.split(",")).map(Integer::valueOf).toList();
     }
 
     private static Chair chair(ScenarioTest.Run r, String name) {
@@ -83,7 +91,7 @@ class TrafficTest {
     }
 
     private static String reason(AclMessage m) {
-        return Content.parse(m.getContent()).get("reason");
+        return WheelchairMessage.reasonOf(m);
     }
 
     /**
@@ -97,18 +105,17 @@ class TrafficTest {
             Chair b = chair(r, "b");
             AclMessage ga = answer(r, a.reserve("19", "19,22,7,8", false));
             assertEquals(Performative.INFORM, ga.getPerformative());
-            assertEquals("19,22,7,8", Content.parse(ga.getContent()).get("path"));
-            assertEquals("8", Content.parse(ga.getContent()).get("upto"), "a may drive all of it");
+            assertEquals(new Granted(List.of(19, 22, 7, 8), 8), WheelchairMessage.decode(ga), "a may drive all of it");
             AclMessage gb = answer(r, b.reserve("6", "6,7,22,23", false));
             assertEquals(Performative.INFORM, gb.getPerformative());
-            assertEquals("6", Content.parse(gb.getContent()).get("upto"), "b waits where it stands: 7 is a's turn");
+            assertEquals(6, WheelchairMessage.decode(gb, Granted.class).upto(), "b waits where it stands: 7 is a's turn");
             assertEquals(List.of("a@hospital", "b@hospital"), r.hospital.traffic().holders().get(7), "7's queue");
             a.release(19, 22);
             r.sim.runFor(5_000);
             assertTrue(b.orders.isEmpty(), "7 is still a's: " + b.orders);
             a.release(7);
             assertTrue(r.sim.runUntil(() -> !b.orders.isEmpty(), 5_000), "b is told to go on");
-            assertEquals("clear; upto=23", b.orders.get(0).toString());
+            assertEquals(new Clear(23), b.orders.get(0));
             assertEquals(List.of("b@hospital"), r.hospital.traffic().holders().get(22));
         }
     }
@@ -118,20 +125,20 @@ class TrafficTest {
         try (ScenarioTest.Run r = new ScenarioTest.Run(1, FaultPlan.NONE, 0)) {
             Chair a = chair(r, "a");
             Chair b = chair(r, "b");
-            a.tell(Content.of("idle").with("at", 7));
+            a.tell(new Idle(List.of(7)));
             r.sim.runFor(500);
             CompletableFuture<AclMessage> gb = b.reserve("19", "19,22,7,6,5,21", false);
             assertTrue(r.sim.runUntil(() -> !a.orders.isEmpty(), 10_000), "a is told to make way");
-            Content order = a.orders.get(0);
-            assertEquals(7, order.integer("from"));
-            int to = order.integer("to");
+            MakeWay order = (MakeWay) a.orders.get(0);
+            assertEquals(7, order.from());
+            int to = order.to();
             assertFalse(List.of(19, 22, 7, 6, 5, 21).contains(to), "not onto b's route: " + to);
             assertFalse(gb.isDone(), "b waits while a stands on 7");
             // a asks for the way there (stepping aside goes first), drives it, and leaves 7 and every
             // node before the one it was sent to.
-            String path = "7," + order.get("path");
+            String path = "7," + order.path().stream().map(String::valueOf).collect(Collectors.joining(","));
             assertEquals(Performative.INFORM, answer(r, a.reserve("7", path, true)).getPerformative());
-            List<Integer> passed = order.list("path").stream().map(Integer::valueOf).filter(n -> n != to).toList();
+            List<Integer> passed = order.path().stream().filter(n -> n != to).toList();
             a.release(7);
             passed.forEach(a::release);
             assertEquals(Performative.INFORM, answer(r, gb).getPerformative());
@@ -159,9 +166,10 @@ class TrafficTest {
             assertTrue(b.orders.isEmpty());
             assertEquals(Performative.FAILURE, answer(r, ga).getPerformative());
             assertEquals("make-way", reason(ga.join()));
-            Content order = a.orders.get(0);
-            assertEquals(3, order.integer("from"));
-            assertEquals(Performative.INFORM, answer(r, a.reserve("3", "3," + order.get("path"), true)).getPerformative());
+            MakeWay order = (MakeWay) a.orders.get(0);
+            assertEquals(3, order.from());
+            String path = "3," + order.path().stream().map(String::valueOf).collect(Collectors.joining(","));
+            assertEquals(Performative.INFORM, answer(r, a.reserve("3", path, true)).getPerformative());
             assertFalse(gb.isDone(), "b waits until a has left its room and the corridor");
             a.release(3, 2);
             assertEquals(Performative.INFORM, answer(r, gb).getPerformative());
@@ -175,18 +183,18 @@ class TrafficTest {
             Chair b = chair(r, "b");
             assertEquals(Performative.INFORM, answer(r, a.reserve("19", "19,22,7,6", false)).getPerformative());
             // a sets off along 19-22 and says so; then nothing more is heard of it.
-            a.tell(Content.of("here").with("at", "19,22"));
+            a.tell(new Here(null, List.of(19, 22)));
             AclMessage gb = answer(r, b.reserve("23", "23,22,7,8", false));
-            assertEquals("granted; path=23,22,7,8; upto=23", gb.getContent(), "granted behind a, which holds 22");
+            assertEquals("((granted :path (sequence 23 22 7 8) :upto 23))", gb.getContent(), "granted behind a, which holds 22");
             for (int i = 0; i < 4; i++) {
                 r.sim.runFor(TrafficAgent.SILENT_MS / 4);
-                b.tell(Content.of("here"));
+                b.tell(new Here(null, null));
             }
             assertTrue(r.sim.runUntil(() -> !b.failures.isEmpty(), 5_000), "b is told, in its reservation's conversation");
             AclMessage m = b.failures.get(0);
             assertEquals(gb.getConversationId(), m.getConversationId());
             assertEquals("a is silent and stands on the route", reason(m));
-            assertEquals(22, Content.parse(m.getContent()).integer("node"));
+            assertEquals(22, WheelchairMessage.decode(m, Failure.class).node());
             var held = r.hospital.traffic().holders();
             assertTrue(held.get(19).contains("a@hospital") && held.get(22).contains("a@hospital"), "its body: " + held);
             assertFalse(held.get(7).contains("a@hospital"), "the rest of its route is given back: " + held);
@@ -203,7 +211,7 @@ class TrafficTest {
             CompletableFuture<AclMessage> gb = b.reserve("23", "23,22,7,8", false);
             for (int i = 0; i < 4; i++) {
                 r.sim.runFor(TrafficAgent.SILENT_MS / 4);
-                b.tell(Content.of("here"));
+                b.tell(new Here(null, null));
             }
             assertEquals(Performative.INFORM, answer(r, gb).getPerformative(), "22 is free: a never left 19");
             assertEquals(List.of("a@hospital"), r.hospital.traffic().holders().get(19));
