@@ -501,7 +501,7 @@ public final class HospitalDemo {
                 p.destroyForcibly();
             }
         }
-        OUT.println(ok ? "Every transport was done." : "Not every transport was done.");
+        OUT.println(ok ? "Every transport of --tasks was done." : "Not every transport of --tasks was done.");
         return ok;
     }
 

@@ -266,7 +266,7 @@ public final class HospitalView implements ConsoleView {
         double unload = number(p, "unload", 60);
         HospitalMap map = world.map();
         if (!map.hasNode(from) || !map.hasNode(to)) {
-            throw new IllegalArgumentException("no route node " + (map.hasNode(from) ? to : from) + " in " + map.name());
+            throw new IllegalArgumentException("no node " + (map.hasNode(from) ? to : from) + " in " + map.name());
         }
         if (priority < 0 || priority > 3 || unload < 0 || unload > 3_600) {
             throw new IllegalArgumentException("priority is 0 to 3 and unload 0 to 3600 s");

@@ -149,7 +149,11 @@ public class ControlAgent extends Agent implements ChairListener {
         // Every clear (a stale one too, which it ignores: none stays in the mailbox) and a FAILURE of the granted route.
         Inbox.each(this, ours.and(WheelchairMessage.matching(Clear.class).or(traffic::isAboutGrant)), traffic::aboutGrant);
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.CANCEL), m -> runner.cancelled(m));
-        Inbox.each(this, ours.and(WheelchairMessage.matching(ResumeRequest.class)), holds::resumeAsked);
+        MessageTemplate resume = WheelchairMessage.matching(ResumeRequest.class);
+        Inbox.each(this, resume, holds::resumeAsked);
+        // Any other REQUEST is answered, saying what is wrong or what this agent takes.
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST).and(MessageTemplate.not(resume)),
+                m -> WheelchairMessage.notTaken(m, "a control agent takes resume-request (and the Medical agent's CFPs)", this::send));
         // A chair that waits (loading, queued) is not silent: it keeps its doors' sessions alive.
         addBehaviour(new TickerBehaviour(this, KEEPALIVE_MS) {
             @Override

@@ -205,7 +205,7 @@ public class DoorAgent extends Agent {
         public void unknown(String verb, AclMessage m) {
             if (m.getPerformative() == Performative.REQUEST) {
                 send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD)
-                        .setContent("unknown request '" + verb + "'; a door knows pass, open, state"));
+                        .setContent("unknown request '" + verb + "'; a door takes pass-request, open-request, state-query (docs/wheelchair-protocol.md)"));
             }
         }
     };
@@ -243,6 +243,8 @@ public class DoorAgent extends Agent {
         if (state != before) {
             log.accept(door.id() + ": " + before.name().toLowerCase(Locale.ROOT) + " -> " + state.name().toLowerCase(Locale.ROOT));
             AclMessage n = new AclMessage(Performative.INFORM).setContent(stateContent().encode());
+            n.setOntology(Services.ONTOLOGY);
+            n.setLanguage(Services.LANGUAGE);
             for (var s : new ArrayList<>(subscriptions.getSubscriptions())) {
                 s.notify(n.copy());
             }

@@ -180,11 +180,14 @@ public class MedicalAgent extends Agent {
                 send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
             }
         });
+        // Any other REQUEST is answered, saying what is wrong or what this agent takes.
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST).and(MessageTemplate.not(requests)),
+                m -> WheelchairMessage.notTaken(m, "the Medical agent takes transport-request", this::send));
     }
 
     /** How a transport asked for by REQUEST ended, for whoever asked. */
     private static String answer(Outcome o) {
-        String chair = String.valueOf(o.chair()); // "null" when no chair took it: the text it has always been
+        String chair = o.chair(); // left out when no chair took it
         String reason = o.reason() == null ? "" : o.reason();
         return o.done() ? new Done(o.task(), null, chair, reason).encode() : new Failed(o.task(), chair, reason).encode();
     }

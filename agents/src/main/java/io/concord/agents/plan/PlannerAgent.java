@@ -157,7 +157,7 @@ public class PlannerAgent extends Agent {
         @Override
         public void unknown(String verb, AclMessage m) {
             if (m.getPerformative() == Performative.REQUEST) {
-                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("a planner knows 'plan'"));
+                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("unknown request '" + verb + "'; a planner takes plan-request (docs/wheelchair-protocol.md)"));
             }
         }
     };

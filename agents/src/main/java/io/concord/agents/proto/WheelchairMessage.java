@@ -16,7 +16,7 @@ import java.util.function.Consumer;
 /**
  * The wheelchair agents' messages as types (docs/wheelchair-protocol.md): one record per meaning,
  * and the ontology {@value Services#ONTOLOGY} built from them. A record is an element of that
- * ontology (an agent action for what is asked, a predicate for what is said), named by its
+ * ontology (an agent action for what is asked, a concept for what is said), named by its
  * {@link Element}, its components its slots; its {@link #encode()} is its content in FIPA-SL,
  * readable on the wire: {@code ((transport-call :from 3 :priority 3.0 :task T1 :to 9 :unload 60.0))}.
  * A message is decoded once, from its performative and its content together (each record is sent
@@ -31,6 +31,15 @@ public sealed interface WheelchairMessage {
     /** The content as it goes on the wire: FIPA-SL under the ontology {@value Services#ONTOLOGY}. */
     default String encode() {
         return Codec.encode(this);
+    }
+
+    /**
+     * The ontology {@value Services#ONTOLOGY}: the records' schemas, for a reader of its own (its
+     * {@code fromAbs} turns core's abstract content, such as {@code ContentManager.extractAbs}
+     * gives, into these records).
+     */
+    static io.concord.core.content.Ontology ontology() {
+        return Codec.ONTOLOGY;
     }
 
     /** Hands this message to the handler's method for its type. */
@@ -104,13 +113,19 @@ public sealed interface WheelchairMessage {
 
     /**
      * REQUEST {@code transport-request} to the Medical agent, which answers AGREE with this very text;
-     * priority is 0 and unload 60 when absent.
+     * priority (TP, 0 to 3) is 0 and unload (0 to 3600 s) 60 when absent.
      */
     @Element(name = "transport-request")
     record TransportRequest(int from, int to, Double priority, Double unload) implements WheelchairMessage, AgentAction {
         public TransportRequest {
             priority = priority == null ? 0.0 : priority;
             unload = unload == null ? 60.0 : unload;
+            if (!(priority >= 0 && priority <= 3)) {
+                throw new IllegalArgumentException("priority is 0 to 3 (the dissertation's TP: 0, 1.5 or 3), got " + priority);
+            }
+            if (!(unload >= 0 && unload <= 3600)) {
+                throw new IllegalArgumentException("unload is 0 to 3600 s, got " + unload);
+            }
         }
 
         /** A request with every field given. */
@@ -130,7 +145,7 @@ public sealed interface WheelchairMessage {
     @Element(name = "proposal")
     record Proposal(@Slot(mandatory = true) String task, double cost, double path, double unload, List<Pending> pending)
             implements WheelchairMessage, Concept {
-        /** An open proposal of the chair's (written to a tenth of a second). */
+        /** An open proposal of the chair's: its task and its seconds. */
         @Element(name = "pending")
         public record Pending(@Slot(mandatory = true) String task, double seconds) implements Concept {
         }
@@ -616,6 +631,25 @@ public sealed interface WheelchairMessage {
      * wrong type; an element unknown under its performative goes to {@link Handler#unknown}.
      */
     static void dispatch(AclMessage m, Handler h, Consumer<AclMessage> send) {
+        dispatchChecked(m, h, send);
+    }
+
+    /**
+     * Answers a REQUEST an agent does not take, as {@link #dispatch} does: NOT-UNDERSTOOD naming
+     * what is wrong when the content does not read, REFUSE naming the slot when it breaks the
+     * ontology, and NOT-UNDERSTOOD saying what the agent takes ({@code takes}) otherwise.
+     */
+    static void notTaken(AclMessage m, String takes, Consumer<AclMessage> send) {
+        dispatchChecked(m, new Handler() {
+            @Override
+            public void unknown(String verb, AclMessage r) {
+                send.accept(r.createReply().setPerformative(Performative.NOT_UNDERSTOOD)
+                        .setContent("unknown request '" + verb + "'; " + takes + " (docs/wheelchair-protocol.md)"));
+            }
+        }, send);
+    }
+
+    private static void dispatchChecked(AclMessage m, Handler h, Consumer<AclMessage> send) {
         WheelchairMessage w;
         try {
             w = decode(m);

@@ -188,7 +188,7 @@ public class TrafficAgent extends Agent {
         public void unknown(String verb, AclMessage m) {
             heard(m);
             if (m.getPerformative() == Performative.REQUEST) {
-                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("traffic knows reserve, release, idle, here"));
+                send(m.createReply().setPerformative(Performative.NOT_UNDERSTOOD).setContent("unknown request '" + verb + "'; the traffic agent takes reserve (and is told release, idle, here; docs/wheelchair-protocol.md)"));
             }
         }
     };

@@ -9,6 +9,7 @@ import io.concord.core.content.AbsCompound;
 import io.concord.core.content.AbsObject;
 import io.concord.core.content.AbsPrimitive;
 import io.concord.core.content.AgentAction;
+import io.concord.core.content.ContentManager;
 import io.concord.core.content.Ontology;
 import io.concord.core.content.Schema;
 import io.concord.core.content.SlCodec;
@@ -295,6 +296,39 @@ class WheelchairMessageTest {
         WheelchairMessage.dispatch(new AclMessage(INFORM).setContent("release node 7"), ignore, sent::add);
         WheelchairMessage.dispatch(new AclMessage(INFORM).setContent("((release :node seven))"), ignore, sent::add);
         assertEquals(2, sent.size(), "an INFORM is not answered");
+    }
+
+    /** A REQUEST an agent does not take is answered, never left in its mailbox: what it takes, or what is wrong. */
+    @Test
+    void aRequestAnAgentDoesNotTakeIsAnsweredWithWhatItTakes() {
+        List<AclMessage> sent = new ArrayList<>();
+        String takes = "the Medical agent takes transport-request";
+        WheelchairMessage.notTaken(request("((teleport :to 9))"), takes, sent::add);
+        WheelchairMessage.notTaken(request("((plan-request :from 1 :task T :to 2))"), takes, sent::add);
+        WheelchairMessage.notTaken(request("transport; from=3; to=9"), takes, sent::add);
+        WheelchairMessage.notTaken(request("((plan-request :from x :task T :to 2))"), takes, sent::add);
+        assertEquals(List.of(NOT_UNDERSTOOD, NOT_UNDERSTOOD, NOT_UNDERSTOOD, REFUSE), sent.stream().map(AclMessage::getPerformative).toList());
+        assertEquals("unknown request 'teleport'; the Medical agent takes transport-request (docs/wheelchair-protocol.md)", sent.get(0).getContent());
+        assertEquals("unknown request 'plan-request'; the Medical agent takes transport-request (docs/wheelchair-protocol.md)",
+                sent.get(1).getContent(), "another agent's request");
+        assertTrue(sent.get(2).getContent().startsWith("content is not FIPA-SL"), sent.get(2).getContent());
+        assertEquals("slot :from of plan-request: expected integer, got string", WheelchairMessage.reasonOf(sent.get(3)));
+    }
+
+    @Test
+    void aTransportRequestOutOfRangeIsRefusedWithTheRange() {
+        assertBad("transport-request refused its slots: priority is 0 to 3 (the dissertation's TP: 0, 1.5 or 3), got 7.0",
+                "((transport-request :from 3 :to 9 :priority 7.0))", REQUEST);
+        assertBad("transport-request refused its slots: unload is 0 to 3600 s, got -1.0", "((transport-request :from 3 :to 9 :unload -1.0))", REQUEST);
+    }
+
+    /** A program of one's own reads the contents with core's content manager and the records' ontology. */
+    @Test
+    void aContentManagerReadsThemAsAbstractContentAndTheOntologyMakesTheRecords() throws Exception {
+        ContentManager cm = new ContentManager().register(new SlCodec()).register(WheelchairMessage.ontology());
+        AclMessage m = new AclMessage(INFORM).setLanguage(Services.LANGUAGE).setOntology(Services.ONTOLOGY)
+                .setContent(new Progress("T1", "chair1", "loading", 3, null).encode());
+        assertEquals(new Progress("T1", "chair1", "loading", 3, null), WheelchairMessage.ontology().fromAbs(cm.extractAbs(m).get(0)));
     }
 
     private static AclMessage request(String content) {

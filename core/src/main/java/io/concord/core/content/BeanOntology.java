@@ -100,7 +100,9 @@ public final class BeanOntology implements Ontology {
             try {
                 return properties.get(slot).getter().invoke(v);
             } catch (ReflectiveOperationException e) {
-                throw new ContentException("cannot read slot :" + schema.slots().get(slot).name() + " of " + schema.name(), e);
+                throw new ContentException("cannot read slot :" + schema.slots().get(slot).name() + " of " + schema.name()
+                        + (e instanceof IllegalAccessException ? ": its class and accessor must be public"
+                        : ": " + (e instanceof java.lang.reflect.InvocationTargetException ite ? ite.getCause() : e)), e);
             }
         }
 

@@ -393,6 +393,18 @@ class HospitalAgentsTest {
             AclMessage bad = await(r, ward.ask("medical", "((transport-request :from 3))"));
             assertEquals(Performative.REFUSE, bad.getPerformative());
             assertTrue(bad.getContent().contains("missing mandatory slot :to of transport-request"), bad.getContent());
+            AclMessage urgent = await(r, ward.ask("medical", "((transport-request :from 3 :to 9 :priority 7.0))"));
+            assertEquals(Performative.REFUSE, urgent.getPerformative());
+            assertTrue(WheelchairMessage.reasonOf(urgent).contains("priority is 0 to 3"), urgent.getContent());
+            // What the Medical agent does not take is answered too, not left in its mailbox.
+            AclMessage old = await(r, ward.ask("medical", "transport; from=3; to=9"));
+            assertEquals(Performative.NOT_UNDERSTOOD, old.getPerformative());
+            assertTrue(old.getContent().startsWith("content is not FIPA-SL"), old.getContent());
+            AclMessage other = await(r, ward.ask("medical", "((teleport :to 9))"));
+            assertEquals(Performative.NOT_UNDERSTOOD, other.getPerformative());
+            assertEquals("unknown request 'teleport'; the Medical agent takes transport-request (docs/wheelchair-protocol.md)", other.getContent());
+            AclMessage toChair = await(r, ward.ask("control-chair1", "((teleport :to 9))"));
+            assertEquals(Performative.NOT_UNDERSTOOD, toChair.getPerformative(), "a control agent answers too");
         }
     }
 
