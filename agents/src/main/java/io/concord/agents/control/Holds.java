@@ -156,15 +156,18 @@ final class Holds implements ChairSupervisor.Observer {
     /** REQUEST {@code resume-request}: an operator's resume through a message; the answer says whether it resumes. */
     void resumeAsked(AclMessage m) {
         String by = m.getSender().localName();
+        String why;
         try {
             String b = WheelchairMessage.decode(m, ResumeRequest.class).by();
             if (b != null && !b.isBlank()) {
                 by = b + " via " + m.getSender().localName();
             }
+            // As the console's form answers: a chair that is not held has nothing to resume.
+            why = supervisor.armed() ? supervisor.name() + " is not held: it is armed and drives as its tasks ask; nothing to resume"
+                    : resume(by);
         } catch (IllegalArgumentException e) {
-            // no content beyond the word: the sender decided
+            why = e.getMessage();   // a request that does not read resumes nothing
         }
-        String why = resume(by);
         agent.send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
                 .setContent(why == null ? new Resuming(supervisor.name()).encode() : Refused.because(why).encode()));
     }

@@ -169,6 +169,30 @@ class HoldsTest {
         assertEquals(ChairSupervisor.State.HELD, supervisor.state());
     }
 
+    /** As the console's form: an armed chair has nothing to resume; a request that does not read resumes nothing. */
+    @Test
+    void aResumeOfAnArmedChairOrOneThatDoesNotReadIsRefused() {
+        readings(3, false);
+        assertTrue(supervisor.armed());
+        AclMessage ask = new AclMessage(Performative.REQUEST).setSender(new AID("console@test"));
+        ask.setContent(new ResumeRequest("nurse Ada").encode());
+        holds.resumeAsked(ask);
+        assertEquals(Performative.REFUSE, sent.get(sent.size() - 1).getPerformative());
+        assertTrue(WheelchairMessage.reasonOf(sent.get(sent.size() - 1)).contains("is not held"), sent.get(sent.size() - 1).getContent());
+
+        taskUnderWay();
+        readings(1, true);
+        readings(3, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state(), "released, held for an operator");
+        ask.setContent("((resume-request :by \"nurse Ada\" :colour red))");
+        holds.resumeAsked(ask);
+        AclMessage answer = sent.get(sent.size() - 1);
+        assertEquals(Performative.REFUSE, answer.getPerformative());
+        assertEquals("unknown slot :colour of resume-request", WheelchairMessage.reasonOf(answer));
+        readings(3, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state(), "still held");
+    }
+
     @Test
     void aLinkDownLongerThanTheGraceFailsTheTasksAndOneThatCameBackDoesNot() {
         readings(3, false);
