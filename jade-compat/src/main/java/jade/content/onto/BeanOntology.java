@@ -144,25 +144,10 @@ public class BeanOntology extends Ontology {
 
     private static List<Prop> properties(Class<?> c) throws BeanOntologyException {
         List<Prop> out = new ArrayList<>();
-        for (Method m : c.getMethods()) {
+        for (io.concord.core.content.BeanAccessors.Accessor a : io.concord.core.content.BeanAccessors.of(c)) {
+            Method m = a.getter();
             String n = m.getName();
-            if (m.getParameterCount() != 0 || m.getDeclaringClass() == Object.class || Modifier.isStatic(m.getModifiers())) {
-                continue;
-            }
-            String base;
-            if (n.startsWith("get") && n.length() > 3) {
-                base = n.substring(3);
-            } else if (n.startsWith("is") && n.length() > 2 && (m.getReturnType() == boolean.class || m.getReturnType() == Boolean.class)) {
-                base = n.substring(2);
-            } else {
-                continue;
-            }
-            Method setter;
-            try {
-                setter = c.getMethod("set" + base, m.getReturnType());
-            } catch (NoSuchMethodException ex) {
-                continue;
-            }
+            Method setter = a.setter();
             if (m.isAnnotationPresent(SuppressSlot.class)) {
                 continue;
             }
@@ -170,8 +155,7 @@ public class BeanOntology extends Ontology {
             if (slot != null && slot.manageAsSerializable()) {
                 throw new BeanOntologyException(c.getName() + "." + n + ": @Slot(manageAsSerializable) is not supported");
             }
-            String property = Character.toLowerCase(base.charAt(0)) + base.substring(1);
-            String slotName = slot != null && !Slot.USE_METHOD_NAME.equals(slot.name()) ? slot.name() : property;
+            String slotName = slot != null && !Slot.USE_METHOD_NAME.equals(slot.name()) ? slot.name() : a.name();
             out.add(new Prop(slotName, m, setter, slot, m.getAnnotation(AggregateSlot.class)));
         }
         return out;

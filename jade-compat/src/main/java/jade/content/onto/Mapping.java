@@ -431,28 +431,7 @@ final class Mapping {
     }
 
     private static Class<?> box(Class<?> c) {
-        if (!c.isPrimitive()) {
-            return c;
-        }
-        if (c == int.class) {
-            return Integer.class;
-        }
-        if (c == long.class) {
-            return Long.class;
-        }
-        if (c == double.class) {
-            return Double.class;
-        }
-        if (c == float.class) {
-            return Float.class;
-        }
-        if (c == boolean.class) {
-            return Boolean.class;
-        }
-        if (c == short.class) {
-            return Short.class;
-        }
-        return c;
+        return java.lang.invoke.MethodType.methodType(c).wrap().returnType();
     }
 
     private static AbsObject arg(AbsCompound c, int i, int arity) throws OntologyException {

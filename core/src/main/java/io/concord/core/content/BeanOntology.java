@@ -2,7 +2,6 @@ package io.concord.core.content;
 
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Method;
-import java.lang.reflect.Modifier;
 import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.RecordComponent;
 import java.lang.reflect.Type;
@@ -202,30 +201,11 @@ public final class BeanOntology implements Ontology {
         return out;
     }
 
-    /** A bean's properties, as JADE finds them: a public getter ({@code getX}, or {@code isX} for a boolean) with a matching setter. */
+    /** A bean's properties, as JADE finds them ({@link BeanAccessors}). */
     private static List<Property> beanProperties(Class<?> c) {
         List<Property> out = new ArrayList<>();
-        for (Method m : c.getMethods()) {
-            String n = m.getName();
-            if (m.getParameterCount() != 0 || m.getDeclaringClass() == Object.class || Modifier.isStatic(m.getModifiers())) {
-                continue;
-            }
-            String base;
-            if (n.startsWith("get") && n.length() > 3) {
-                base = n.substring(3);
-            } else if (n.startsWith("is") && n.length() > 2 && (m.getReturnType() == boolean.class || m.getReturnType() == Boolean.class)) {
-                base = n.substring(2);
-            } else {
-                continue;
-            }
-            Method setter;
-            try {
-                setter = c.getMethod("set" + base, m.getReturnType());
-            } catch (NoSuchMethodException e) {
-                continue;
-            }
-            String name = Character.toLowerCase(base.charAt(0)) + base.substring(1);
-            out.add(new Property(name, m, setter, m.getGenericReturnType(), m.getAnnotation(Slot.class)));
+        for (BeanAccessors.Accessor a : BeanAccessors.of(c)) {
+            out.add(new Property(a.name(), a.getter(), a.setter(), a.getter().getGenericReturnType(), a.getter().getAnnotation(Slot.class)));
         }
         return out;
     }
