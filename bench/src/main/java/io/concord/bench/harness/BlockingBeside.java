@@ -9,6 +9,7 @@ import io.concord.core.agent.Agent;
 import io.concord.core.agent.CyclicBehaviour;
 import io.concord.core.agent.PortRange;
 import io.concord.core.agent.ThreadedBehaviourFactory;
+import io.concord.testkit.EchoAgent;
 import io.concord.layers.Platform;
 
 import java.util.ArrayList;
@@ -31,26 +32,6 @@ public final class BlockingBeside {
     }
 
     private BlockingBeside() {
-    }
-
-    /** Answers every ping at once. */
-    static final class Echo extends Agent {
-        @Override
-        protected void setup() {
-            addBehaviour(new CyclicBehaviour(this) {
-                @Override
-                public void action() {
-                    AclMessage m = receive();
-                    if (m == null) {
-                        block();
-                        return;
-                    }
-                    AclMessage r = m.createReply();
-                    r.setPerformative(Performative.INFORM);
-                    send(r);
-                }
-            });
-        }
     }
 
     /** Pings the echoes one after the other, a batch at a time (see {@link Rounds}). */
@@ -122,7 +103,7 @@ public final class BlockingBeside {
             AID proberId = p.startAgent("prober", prober);
             List<AID> ids = new ArrayList<>();
             for (int i = 0; i < echoes; i++) {
-                ids.add(p.startAgent("echo" + i, new Echo()));
+                ids.add(p.startAgent("echo" + i, new EchoAgent()));
             }
             prober.echoes = List.copyOf(ids);
             Listed.await(p, proberId, echoes + 1, 60);

@@ -13,4 +13,20 @@ public interface ContentCodec {
 
     /** Reads the message's content as abstract elements. */
     List<AbsObject> readContent(ACLMessage message) throws Codec.CodecException;
+
+    /** Work on core's codec and JADE's ontologies. */
+    interface Work<T> {
+        T run() throws io.concord.core.content.ContentException, jade.content.onto.OntologyException;
+    }
+
+    /** Runs the work, its failures as JADE's codecs report them: a {@link Codec.CodecException} with the reason. */
+    static <T> T translated(Work<T> work) throws Codec.CodecException {
+        try {
+            return work.run();
+        } catch (jade.content.onto.OntologyException e) {
+            throw new Codec.CodecException(e.getMessage(), e);
+        } catch (io.concord.core.content.ContentException e) {
+            throw new Codec.CodecException(e.reason(), e);
+        }
+    }
 }

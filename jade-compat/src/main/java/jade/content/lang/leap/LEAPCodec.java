@@ -2,13 +2,11 @@ package jade.content.lang.leap;
 
 import io.concord.core.content.AbsObject;
 import io.concord.core.content.BinaryContentCodec;
-import io.concord.core.content.ContentException;
 import io.concord.jadecompat.internal.AbsElements;
 import io.concord.jadecompat.internal.ContentCodec;
 import jade.content.abs.AbsContentElement;
 import jade.content.onto.BasicOntology;
 import jade.content.onto.Ontology;
-import jade.content.onto.OntologyException;
 import jade.content.lang.ByteArrayCodec;
 import jade.lang.acl.ACLMessage;
 
@@ -38,13 +36,7 @@ public class LEAPCodec extends ByteArrayCodec implements ContentCodec {
 
     @Override
     public byte[] encode(Ontology ontology, AbsContentElement content) throws CodecException {
-        try {
-            return codec.write(AbsElements.toCore(ontology, content));
-        } catch (OntologyException e) {
-            throw new CodecException(e.getMessage(), e);
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        return ContentCodec.translated(() -> codec.write(AbsElements.toCore(ontology, content)));
     }
 
     @Override
@@ -54,22 +46,12 @@ public class LEAPCodec extends ByteArrayCodec implements ContentCodec {
 
     @Override
     public AbsContentElement decode(Ontology ontology, byte[] content) throws CodecException {
-        try {
-            return AbsElements.fromCore(ontology, codec.read(content));
-        } catch (OntologyException e) {
-            throw new CodecException(e.getMessage(), e);
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        return ContentCodec.translated(() -> AbsElements.fromCore(ontology, codec.read(content)));
     }
 
     @Override
     public void writeContent(ACLMessage message, List<AbsObject> elements) throws CodecException {
-        try {
-            message.setByteSequenceContent(codec.write(elements));
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        message.setByteSequenceContent(ContentCodec.translated(() -> codec.write(elements)));
     }
 
     @Override
@@ -78,10 +60,6 @@ public class LEAPCodec extends ByteArrayCodec implements ContentCodec {
         if (bytes == null) {
             throw new CodecException("the message has no content");
         }
-        try {
-            return codec.read(bytes);
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        return ContentCodec.translated(() -> codec.read(bytes));
     }
 }

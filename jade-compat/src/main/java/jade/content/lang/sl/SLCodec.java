@@ -1,14 +1,12 @@
 package jade.content.lang.sl;
 
 import io.concord.core.content.AbsObject;
-import io.concord.core.content.ContentException;
 import io.concord.core.content.SlCodec;
 import io.concord.jadecompat.internal.AbsElements;
 import io.concord.jadecompat.internal.ContentCodec;
 import jade.content.abs.AbsContentElement;
 import jade.content.onto.BasicOntology;
 import jade.content.onto.Ontology;
-import jade.content.onto.OntologyException;
 import jade.content.lang.StringCodec;
 import jade.lang.acl.ACLMessage;
 
@@ -76,13 +74,7 @@ public class SLCodec extends StringCodec implements ContentCodec {
 
     @Override
     public String encode(Ontology ontology, AbsContentElement content) throws CodecException {
-        try {
-            return codec.write(AbsElements.toCore(ontology, content));
-        } catch (OntologyException e) {
-            throw new CodecException(e.getMessage(), e);
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        return ContentCodec.translated(() -> codec.write(AbsElements.toCore(ontology, content)));
     }
 
     @Override
@@ -92,22 +84,12 @@ public class SLCodec extends StringCodec implements ContentCodec {
 
     @Override
     public AbsContentElement decode(Ontology ontology, String content) throws CodecException {
-        try {
-            return AbsElements.fromCore(ontology, codec.read(content));
-        } catch (OntologyException e) {
-            throw new CodecException(e.getMessage(), e);
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        return ContentCodec.translated(() -> AbsElements.fromCore(ontology, codec.read(content)));
     }
 
     @Override
     public void writeContent(ACLMessage message, List<AbsObject> elements) throws CodecException {
-        try {
-            message.setContent(codec.write(elements));
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        message.setContent(ContentCodec.translated(() -> codec.write(elements)));
     }
 
     @Override
@@ -116,10 +98,6 @@ public class SLCodec extends StringCodec implements ContentCodec {
         if (text == null) {
             throw new CodecException("the message has no content");
         }
-        try {
-            return codec.read(text);
-        } catch (ContentException e) {
-            throw new CodecException(e.reason(), e);
-        }
+        return ContentCodec.translated(() -> codec.read(text));
     }
 }
