@@ -379,6 +379,13 @@ public final class HttpMtp implements Gateway {
                 answer(management.answer(ctx, m, local.equalsIgnoreCase("df")), m.getSender());
                 continue;
             }
+            String refused = ours ? ctx.refuses(m, r) : null;
+            if (refused != null) {
+                // Who may use what is the platform's policy (docs/security.md, "Who may do what").
+                drops.record("http", "not-authorized", m.getSender().name() + " to " + r.name() + ": " + refused);
+                answer(refusal(ctx, m, r, refused), m.getSender());
+                continue;
+            }
             if (!ours || !ctx.deliver(m, r)) {
                 answer(notFound(ctx, m, r), m.getSender());
             }
@@ -408,6 +415,14 @@ public final class HttpMtp implements Gateway {
             return;
         }
         sendOut(reply, to);
+    }
+
+    /** A REFUSE in the receiver's name, saying what the policy said (as JADE's AMS refuses an unauthorised action). */
+    private static AclMessage refusal(GatewayContext ctx, AclMessage original, AID receiver, String why) {
+        AclMessage r = original.createReply().setPerformative(Performative.REFUSE);
+        r.setSender(AID.local(receiver.localName(), ctx.platformName()));
+        r.setContent("((unauthorised \"" + why.replace("\\", "\\\\").replace("\"", "\\\"") + "\"))");
+        return r;
     }
 
     /** JADE's AMS FAILURE for an unknown receiver. */

@@ -118,6 +118,13 @@ public final class Boot {
             b.gateway(httpGateway(hostPort, s));
             acc = "http://" + hostPort[0] + ":" + hostPort[1] + "/acc";
         }
+        if (s.containsKey("http-expose")) {
+            try {
+                b.httpExpose(s.get("http-expose"));
+            } catch (IllegalArgumentException e) {
+                throw new BootException("-http-expose: " + e.getMessage(), e);
+            }
+        }
         if (s.containsKey("console")) {
             b.console(s.get("console")).consoleOut(out);
         }
@@ -176,7 +183,7 @@ public final class Boot {
 
     /** The options that take a value; all but {@code conf} may also stand in a configuration file, as may {@code watch}. */
     private static final List<String> VALUED = List.of("agents", "name", "ports", "profile", "transport", "host", "conf",
-            "seeds", "discovery-port", "http", "http-platforms", "http-hosts", "key", "console");
+            "seeds", "discovery-port", "http", "http-platforms", "http-hosts", "http-expose", "key", "console");
 
     static Map<String, String> settings(String[] args) {
         Map<String, String> cli = new LinkedHashMap<>();
@@ -390,6 +397,6 @@ public final class Boot {
     static String usage() {
         return "Usage: java -cp <class path> io.concord.layers.Boot -agents \"name:pkg.Class(arg,...);...\" "
                 + "[-name concord] [-ports 7001-7200] [-profile class7|class3|closed] [-transport udp|tcp] "
-                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-http-platforms name,...] [-http-hosts address,...] [-key platform.key] [-console [host:]port] [-conf file.properties] [-watch]";
+                + "[-host 127.0.0.1] [-seeds host[:port],...] [-discovery-port 7000] [-http [host:]port] [-http-platforms name,...] [-http-hosts address,...] [-http-expose status,sniff,kill] [-key platform.key] [-console [host:]port] [-conf file.properties] [-watch]";
     }
 }

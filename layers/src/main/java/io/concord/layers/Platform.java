@@ -10,6 +10,7 @@ import io.concord.core.net.Transport;
 import io.concord.layers.defence.Defence;
 import io.concord.layers.observe.ObserverLayer;
 import io.concord.layers.platform.ContainerLayer;
+import io.concord.layers.authority.Policy;
 import io.concord.layers.platform.Gateway;
 import io.concord.layers.platform.NetworkConfig;
 import io.concord.layers.platform.PlatformConfig;
@@ -44,6 +45,7 @@ public final class Platform implements AutoCloseable {
     private final Supplier<List<Layer>> stack;
     private final Transport transport;
     private volatile AutoCloseable console;
+    private final Policy policy;
 
     private Platform(Builder b, AgentRuntime runtime, boolean owns) {
         this.runtime = runtime;
@@ -55,10 +57,12 @@ public final class Platform implements AutoCloseable {
         NetworkConfig network = b.network;
         Supplier<Gateway> gateways = b.gateway;
         Set<Defence> off = b.off;
+        Policy policy = off.contains(Defence.AUTHORITY) ? Policy.allowingEverything() : b.policy;
+        this.policy = policy;
         this.stack = () -> {
             List<Layer> l = new ArrayList<>();
-            l.add(new ObserverLayer());
-            l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get(), off));
+            l.add(new ObserverLayer(policy));
+            l.add(new ContainerLayer(config, network, gateways == null ? null : gateways.get(), off, policy));
             l.addAll(safety.get());
             return l;
         };
@@ -90,6 +94,7 @@ public final class Platform implements AutoCloseable {
         private Supplier<Gateway> gateway;
         private Supplier<List<Layer>> safety;
         private Set<Defence> off = Set.of();
+        private Policy policy = Policy.defaults();
         private AgentRuntime runtime;
         private PlatformKey key;
         private String console;
@@ -185,6 +190,19 @@ public final class Platform implements AutoCloseable {
         }
 
         /**
+         * Opens services to agents of other platforms (over the HTTP MTP) beyond the defaults,
+         * named one by one: {@code status}, {@code sniff}, {@code kill} (the observation service).
+         * By default they reach only
+         * the agents' own conversations, the DF and the AMS (docs/security.md, "Who may do what").
+         *
+         * @throws IllegalArgumentException for a name that is not a service, or one that cannot be opened
+         */
+        public Builder httpExpose(String... services) {
+            this.policy = Policy.exposing(String.join(",", services));
+            return this;
+        }
+
+        /**
          * Builds this platform's stacks without some defences: only for the threat tests, which
          * show each threat reaching an agent without its defence. It reaches only the stacks of
          * this platform (the container layer's, and the default safety layers').
@@ -254,6 +272,11 @@ public final class Platform implements AutoCloseable {
     public AID startAgent(String localName, Agent agent, Object... args) {
         AgentOptions o = AgentOptions.defaults().withPortRange(ports).withStack(stack).withTransport(transport);
         return runtime.startAgentWith(localName, agent, o, args);
+    }
+
+    /** Who may do what on this platform (what its builder exposed to agents of other platforms). */
+    public Policy policy() {
+        return policy;
     }
 
     /** The console this platform serves ({@link Builder#console}), or {@code null}. */

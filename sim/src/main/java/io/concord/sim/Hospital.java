@@ -8,6 +8,9 @@ import io.concord.agents.plan.PlannerAgent;
 import io.concord.agents.traffic.TrafficAgent;
 import io.concord.agents.traffic.TrafficRules;
 import io.concord.layers.Platform;
+import io.concord.layers.authority.Operator;
+import io.concord.layers.authority.OperatorKey;
+import io.concord.layers.authority.Operators;
 import io.concord.sim.world.HospitalWorld;
 import io.concord.sim.world.SimChair;
 import io.concord.sim.world.WorldDoor;
@@ -29,8 +32,46 @@ public final class Hospital {
     private final Map<String, DoorAgent> doors = new LinkedHashMap<>();
     private final Map<String, PlannerAgent> planners = new LinkedHashMap<>();
     private final Map<String, ControlAgent> controls = new LinkedHashMap<>();
+    /** The console's operator key: the ward's operators are this one and {@link #operators}'s. */
+    private volatile OperatorKey operatorKey = OperatorKey.generate("an operator at the console");
+    private volatile List<Operator> operators = List.of();
 
     private Hospital() {
+    }
+
+    /**
+     * The operator key the console of this ward signs with (a held chair's resume), which every
+     * control agent of the ward trusts; by default one made for this run, held in memory only (the
+     * console of this process is then the only operator). The demo's is {@code --operator-key file}.
+     */
+    public Hospital operatorKey(OperatorKey key) {
+        this.operatorKey = java.util.Objects.requireNonNull(key, "key");
+        trust();
+        return this;
+    }
+
+    /** The console's operator key ({@link #operatorKey(OperatorKey)}). */
+    public OperatorKey operatorKey() {
+        return operatorKey;
+    }
+
+    /** Other operators the ward's control agents trust, beside the console's key (their orders come by {@code resume-request}). */
+    public Hospital operators(List<Operator> others) {
+        this.operators = List.copyOf(others);
+        trust();
+        return this;
+    }
+
+    private void trust() {
+        for (ControlAgent a : controls.values()) {
+            a.operators(wardOperators());
+        }
+    }
+
+    private Operators wardOperators() {
+        List<Operator> all = new ArrayList<>(operators);
+        all.add(operatorKey.operator());
+        return Operators.of(all);
     }
 
     /** Starts the traffic agent, the door agents and every chair's agents on the platform. */
@@ -83,6 +124,7 @@ public final class Hospital {
         platform.startAgent("planner-" + c.name(), p);
         planners.put(c.name(), p);
         ControlAgent a = new ControlAgent(c, map, log);
+        a.operators(wardOperators());
         platform.startAgent("control-" + c.name(), a);
         controls.put(c.name(), a);
     }

@@ -287,7 +287,8 @@ public final class HospitalView implements ConsoleView {
         if (ctl.supervisor().state() == io.concord.agents.chair.ChairSupervisor.State.ARMED) {
             throw new IllegalArgumentException(chair + " is not held: it is armed and drives as its tasks ask; nothing to resume");
         }
-        var f = ctl.resume("an operator at the console");
+        // The console signs with the operator key it was started with; the control agent checks it.
+        var f = ctl.resume(hospital.operatorKey().sign("resume", chair, ctl.runtime().clock().epochMillis()));
         if (!f.isDone()) {
             return "asked " + chair + " to resume";
         }

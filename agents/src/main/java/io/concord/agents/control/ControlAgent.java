@@ -15,6 +15,10 @@ import io.concord.agents.proto.WheelchairMessage.MakeWay;
 import io.concord.agents.proto.WheelchairMessage.NoRoute;
 import io.concord.agents.proto.WheelchairMessage.PlanRequest;
 import io.concord.agents.proto.WheelchairMessage.ResumeRequest;
+import io.concord.layers.authority.Operators;
+import io.concord.layers.authority.Policy;
+import io.concord.layers.authority.SignedOrder;
+import io.concord.layers.defence.Defence;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.MessageTemplate;
@@ -84,6 +88,7 @@ public class ControlAgent extends Agent implements ChairListener {
     private final TaskQueue tasks = new TaskQueue();
     private final RouteFollower follower;
     private final Holds holds;
+    private final ResumeAuthority authority;
     private Asks asks;
     private ContractNetResponder responder;
     private Bidder bidder;
@@ -104,7 +109,8 @@ public class ControlAgent extends Agent implements ChairListener {
         this.map = map;
         this.log = log;
         this.follower = new RouteFollower(this.chair, map);
-        this.holds = new Holds(supervisor, this::getLocalName, ports);
+        this.authority = new ResumeAuthority(() -> runtime() == null ? System.currentTimeMillis() : runtime().clock().epochMillis());
+        this.holds = new Holds(supervisor, this::getLocalName, () -> getAID() == null ? "" : getAID().platform(), ports, authority);
     }
 
     @Override
@@ -244,20 +250,45 @@ public class ControlAgent extends Agent implements ChairListener {
     // ---- holds and resumes: see Holds --------------------------------------------------------
 
     /**
-     * An operator's decision to resume a held chair (the console, or any code). Thread-safe.
-     * Completes with null once resuming, or with why it cannot (offline, the e-stop still pressed).
-     *
-     * @param who who decided, for the log and the Medical agent
+     * An operator's decision to resume a held chair (the console, or any code): the operator's order,
+     * signed with an operator key the ward configured ({@link #operators}), for this chair
+     * ({@code OperatorKey.sign("resume", chair, epochMs)}). Thread-safe. Completes with null once
+     * resuming, or with why it cannot (not an operator's order, a replay, offline, the e-stop still pressed).
      */
-    public CompletableFuture<String> resume(String who) {
+    public CompletableFuture<String> resume(SignedOrder order) {
         CompletableFuture<String> f = new CompletableFuture<>();
-        Runnable r = () -> f.complete(holds.resume(who));
+        String text = order.encode();
+        Runnable r = () -> f.complete(holds.resumeOrdered(text));
         if (runtime().inLoop()) {
             r.run();
         } else {
             runtime().execute(r);
         }
         return f;
+    }
+
+    /**
+     * The operators whose signed orders this agent takes (the ward's); none until set, so that no
+     * one can resume a chair held for an operator. Thread-safe.
+     */
+    public void operators(Operators ops) {
+        authority.operators(java.util.Objects.requireNonNull(ops, "operators"));
+    }
+
+    /**
+     * Builds this agent without a defence: only for the tests that show what the defence stands
+     * against ({@link Defence#AUTHORITY}: anyone's resume-request resumes the chair). Before it starts.
+     */
+    public ControlAgent withoutDefences(Defence... off) {
+        if (java.util.List.of(off).contains(Defence.AUTHORITY)) {
+            authority.policy(Policy.allowingEverything());
+        }
+        return this;
+    }
+
+    /** Resumes refused so far, by kind ({@code foreign}, {@code unsigned}, {@code bad-order}). On the loop or after. */
+    public java.util.Map<String, Long> resumeRefusals() {
+        return authority.refusals();
     }
 
     /** How long the link may stay down before its tasks fail ({@link #LINK_GRACE_MS} unless set). Call on the loop. */

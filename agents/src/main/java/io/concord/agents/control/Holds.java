@@ -49,6 +49,8 @@ final class Holds implements ChairSupervisor.Observer {
     private final ChairSupervisor supervisor;
     /** The agent's name: who decided, when the agent resumes. */
     private final Supplier<String> name;
+    private final Supplier<String> platform;
+    private final ResumeAuthority authority;
     private final Agent agent;
     /** Counts the link's outages: a grace timer ends only the outage it was set for. */
     private int outages;
@@ -56,6 +58,16 @@ final class Holds implements ChairSupervisor.Observer {
     private boolean estopSeen;
 
     Holds(ChairSupervisor supervisor, Supplier<String> name, Agent agent) {
+        this(supervisor, name, () -> "", agent, new ResumeAuthority(System::currentTimeMillis));
+    }
+
+    /**
+     * @param platform  this agent's platform name, to tell its members from agents of other platforms
+     * @param authority who may resume (operators and the policy)
+     */
+    Holds(ChairSupervisor supervisor, Supplier<String> name, Supplier<String> platform, Agent agent, ResumeAuthority authority) {
+        this.platform = platform;
+        this.authority = authority;
         this.supervisor = supervisor;
         this.name = name;
         this.agent = agent;
@@ -153,23 +165,48 @@ final class Holds implements ChairSupervisor.Observer {
         return why;
     }
 
-    /** REQUEST {@code resume-request}: an operator's resume through a message; the answer says whether it resumes. */
+    /**
+     * REQUEST {@code resume-request}: an operator's resume through a message, carried by a member
+     * with the operator's signed order ({@link ResumeAuthority}); the answer says whether it resumes.
+     * A member that holds only the platform key, an agent of another platform, a forged, replayed or
+     * stale order: refused with the reason, said in the log and counted.
+     */
     void resumeAsked(AclMessage m) {
-        String by = m.getSender().localName();
         String why;
         try {
-            String b = WheelchairMessage.decode(m, ResumeRequest.class).by();
-            if (b != null && !b.isBlank()) {
-                by = b + " via " + m.getSender().localName();
-            }
+            ResumeRequest r = WheelchairMessage.decode(m, ResumeRequest.class);
             // As the console's form answers: a chair that is not held has nothing to resume.
-            why = supervisor.armed() ? supervisor.name() + " is not held: it is armed and drives as its tasks ask; nothing to resume"
-                    : resume(by);
+            if (supervisor.armed()) {
+                why = supervisor.name() + " is not held: it is armed and drives as its tasks ask; nothing to resume";
+            } else {
+                ResumeAuthority.Verdict v = authority.ofMessage(m, r.order(), supervisor.name(), platform.get());
+                if (!v.allowed()) {
+                    why = v.refusal();
+                    agent.say("refuses the resume of " + supervisor.name() + " asked by " + m.getSender().name() + ": " + why);
+                } else {
+                    String by = r.by() != null && !r.by().isBlank() && !r.by().equals(v.operator()) ? v.operator() + " (" + r.by() + ")" : v.operator();
+                    why = resume(by + " via " + m.getSender().localName());
+                }
+            }
         } catch (IllegalArgumentException e) {
             why = e.getMessage();   // a request that does not read resumes nothing
         }
         agent.send(m.createReply().setPerformative(why == null ? Performative.INFORM : Performative.REFUSE)
                 .setContent(why == null ? new Resuming(supervisor.name()).encode() : Refused.because(why).encode()));
+    }
+
+    /** An operator's signed order given in this process (the console): null if resuming, else why not (said and counted). */
+    String resumeOrdered(String order) {
+        ResumeAuthority.Verdict v = authority.ofOrder(order, supervisor.name());
+        if (!v.allowed()) {
+            agent.say("refuses a resume of " + supervisor.name() + ": " + v.refusal());
+            return v.refusal();
+        }
+        return resume(v.operator());
+    }
+
+    ResumeAuthority authority() {
+        return authority;
     }
 
     /** Whether the agent resumes by itself after the hold (else an operator does). */

@@ -13,6 +13,7 @@ import io.concord.agents.proto.WheelchairMessage.Rejection;
 import io.concord.agents.proto.WheelchairMessage.Resumed;
 import io.concord.agents.proto.WheelchairMessage.TransportCall;
 import io.concord.agents.proto.WheelchairMessage.TransportRequest;
+import io.concord.layers.authority.Policy;
 import io.concord.agents.proto.WheelchairMessage.Withdrawal;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
@@ -171,6 +172,12 @@ public class MedicalAgent extends Agent {
         MessageTemplate requests = MessageTemplate.matchPerformative(Performative.REQUEST).and(WheelchairMessage.matching(TransportRequest.class));
         Inbox.each(this, requests, m -> {
             try {
+                Policy.Decision may = Policy.defaults().decide(Policy.principalOf(m, getAID().platform()), Policy.Service.TRANSPORT_REQUEST);
+                if (!may.allowed()) {
+                    log.accept(getLocalName() + ": refuses a transport asked by " + m.getSender().name() + ": " + may.reason());
+                    send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(may.reason()).encode()));
+                    return;
+                }
                 TransportRequest r = WheelchairMessage.decode(m, TransportRequest.class);
                 // The AGREE is the request's own text.
                 send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));

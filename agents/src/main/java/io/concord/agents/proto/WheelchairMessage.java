@@ -275,9 +275,18 @@ public sealed interface WheelchairMessage {
         }
     }
 
-    /** REQUEST {@code resume-request}, an operator -> a control agent: resume the held chair; {@code by}: who decided, or null. */
+    /**
+     * REQUEST {@code resume-request}, an operator -> a control agent: resume the held chair;
+     * {@code order}: the operator's signed order ({@code io.concord.layers.authority.SignedOrder}, resume of that chair),
+     * without which it is refused; {@code by}: who decided, for the log, or null.
+     */
     @Element(name = "resume-request")
-    record ResumeRequest(String by) implements WheelchairMessage, AgentAction {
+    record ResumeRequest(String by, String order) implements WheelchairMessage, AgentAction {
+        /** A request with no order (refused: only an operator's signed order resumes a chair). */
+        public ResumeRequest(String by) {
+            this(by, null);
+        }
+
         public void to(Handler h, AclMessage m) {
             h.onResumeRequest(this, m);
         }

@@ -9,6 +9,10 @@ import io.concord.agents.proto.WheelchairMessage.*;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
+import io.concord.layers.authority.OperatorKey;
+import io.concord.layers.authority.Operators;
+import io.concord.layers.authority.Policy;
+import io.concord.layers.authority.SignedOrder;
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;
@@ -40,7 +44,11 @@ class HoldsTest {
     boolean work;
     long ms;
 
-    final Holds holds = new Holds(supervisor, () -> "control-chair1", new Holds.Agent() {
+    static final OperatorKey ADA = OperatorKey.generate("nurse Ada");
+    long nowMs = 1_700_000_000_000L;
+    final ResumeAuthority authority = new ResumeAuthority(() -> nowMs);
+
+    final Holds holds = new Holds(supervisor, () -> "control-chair1", () -> "test", new Holds.Agent() {
         @Override
         public Task active() {
             return active;
@@ -71,9 +79,10 @@ class HoldsTest {
         public void say(String s) {
             said.add(s);
         }
-    });
+    }, authority);
 
     HoldsTest() {
+        authority.operators(Operators.of(ADA.operator()));
         supervisor.setObserver(holds);
         supervisor.setListener(new ChairListener() {
             @Override
@@ -137,7 +146,7 @@ class HoldsTest {
         holds.keepAlive();
         assertEquals("paused", sent(1).verb(), "told again while paused");
 
-        assertNull(holds.resume("nurse Ada"));
+        assertNull(holds.resumeOrdered(ADA.sign("resume", "chair1", nowMs).encode()));
         readings(3, false);
         assertTrue(supervisor.armed());
         assertNull(active.paused);
@@ -161,7 +170,7 @@ class HoldsTest {
         taskUnderWay();
         readings(1, true);
         AclMessage ask = new AclMessage(Performative.REQUEST).setSender(new AID("console@test"));
-        ask.setContent(new ResumeRequest("nurse Ada").encode());
+        ask.setContent(new ResumeRequest("nurse Ada", ADA.sign("resume", "chair1", nowMs).encode()).encode());
         holds.resumeAsked(ask);
         AclMessage answer = sent.get(sent.size() - 1);
         assertEquals(Performative.REFUSE, answer.getPerformative());
@@ -209,5 +218,89 @@ class HoldsTest {
         assertEquals(1, failed.size(), "the link came back within the grace");
         readings(3, false);
         assertTrue(supervisor.armed(), "a lost link that came back: the agent resumes");
+    }
+
+    // ---- who may resume: only an operator's signed order (docs/security.md, "Who may do what") ----
+
+    /** The chair held for an operator after an e-stop pressed and released under a task. */
+    private void heldForAnOperator() {
+        readings(3, false);
+        taskUnderWay();
+        readings(1, true);
+        readings(3, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state());
+    }
+
+    private AclMessage ask(String sender, String order) {
+        AclMessage ask = new AclMessage(Performative.REQUEST).setSender(new AID(sender));
+        ask.setContent(new ResumeRequest("mallory", order).encode());
+        holds.resumeAsked(ask);
+        return sent.get(sent.size() - 1);
+    }
+
+    @Test
+    void aKeyHoldersResumeWithoutAnOperatorsOrderIsRefusedLoggedAndCounted() {
+        heldForAnOperator();
+        AclMessage answer = ask("mallory@test", null);
+        assertEquals(Performative.REFUSE, answer.getPerformative());
+        assertTrue(WheelchairMessage.reasonOf(answer).contains("only an operator may resume chair1"), answer.getContent());
+        assertTrue(said.stream().anyMatch(l -> l.startsWith("refuses the resume of chair1 asked by mallory@test")), said.toString());
+        assertEquals(1L, authority.refusals().get("unsigned"));
+        readings(3, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state(), "still held");
+    }
+
+    @Test
+    void withoutTheAuthorityDefenceAKeyHoldersResumeResumesTheChair() {
+        authority.policy(Policy.allowingEverything());
+        heldForAnOperator();
+        assertEquals(Performative.INFORM, ask("mallory@test", null).getPerformative());
+        readings(3, false);
+        assertTrue(supervisor.armed(), "the hazard: a key holder resumed a chair held for an operator");
+    }
+
+    @Test
+    void anAgentOfAnotherPlatformIsRefusedEvenWithAnOperatorsOrder() {
+        heldForAnOperator();
+        AclMessage answer = ask("killer@elsewhere", ADA.sign("resume", "chair1", nowMs).encode());
+        assertEquals(Performative.REFUSE, answer.getPerformative());
+        assertTrue(WheelchairMessage.reasonOf(answer).contains("an agent of another platform may not use the chair's resume"), answer.getContent());
+        assertEquals(1L, authority.refusals().get("foreign"));
+    }
+
+    @Test
+    void anOperatorsSignedOrderCarriedByAMemberResumesTheChairOnceOnly() {
+        heldForAnOperator();
+        String order = ADA.sign("resume", "chair1", nowMs).encode();
+        assertEquals(Performative.INFORM, ask("console@test", order).getPerformative());
+        assertTrue(said.contains("resume decided by nurse Ada (mallory) via console"), said.toString());
+        readings(3, false);
+        assertTrue(supervisor.armed());
+
+        readings(1, true);
+        readings(3, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state());
+        AclMessage again = ask("console@test", order);
+        assertEquals(Performative.REFUSE, again.getPerformative(), "the same order a second time");
+        assertTrue(WheelchairMessage.reasonOf(again).contains("a replay"), again.getContent());
+    }
+
+    @Test
+    void aTamperedStaleForeignKeyedOrAnotherChairsOrderIsRefused() {
+        heldForAnOperator();
+        SignedOrder good = ADA.sign("resume", "chair1", nowMs);
+        SignedOrder tampered = new SignedOrder(good.action(), "chair1", good.operator(), good.atMs() + 1, good.nonce(), good.signature());
+        assertTrue(WheelchairMessage.reasonOf(ask("console@test", tampered.encode())).contains("forged, or changed"));
+        SignedOrder otherChair = ADA.sign("resume", "chair2", nowMs);
+        assertTrue(WheelchairMessage.reasonOf(ask("console@test", otherChair.encode())).contains("not to resume chair1"));
+        SignedOrder stale = ADA.sign("resume", "chair1", nowMs - Operators.MAX_AGE_MS - 1);
+        assertTrue(WheelchairMessage.reasonOf(ask("console@test", stale.encode())).contains("s old"));
+        SignedOrder stranger = OperatorKey.generate("nurse Ada").sign("resume", "chair1", nowMs);
+        assertTrue(WheelchairMessage.reasonOf(ask("console@test", stranger.encode())).contains("forged, or changed"),
+                "a key of the same name that the ward does not know");
+        assertTrue(WheelchairMessage.reasonOf(ask("console@test", "resume chair1 please")).contains("an order is written"));
+        assertEquals(5L, authority.refusals().get("bad-order"));
+        readings(3, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state());
     }
 }

@@ -44,5 +44,11 @@ public enum Defence {
      * it for dead: a process that still holds its port is slow, not gone (no false eviction, no
      * election on a busy machine).
      */
-    PORT_CHECK
+    PORT_CHECK,
+    /**
+     * The platform's {@code Policy} decides who may use each service (the observation service,
+     * the platform protocol, a chair's resume...): off, everyone may use everything, so that the
+     * tests can show each refusal's attack succeed without it.
+     */
+    AUTHORITY
 }

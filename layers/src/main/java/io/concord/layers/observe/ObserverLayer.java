@@ -7,6 +7,7 @@ import io.concord.core.layer.Envelope;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.time.internal.TokenBucket;
+import io.concord.layers.authority.Policy;
 import io.concord.layers.platform.ContainerLayer;
 import io.concord.layers.temporal.TemporalLayer;
 
@@ -38,6 +39,10 @@ import java.util.Map;
  * platform's lists). JADE's AMS does the same for any agent of the platform; here, as everything
  * above the container layer, only a member of the platform reaches it (class 7: a key holder).</li>
  * </ul>
+ *
+ * <p>Who may ask is the {@link Policy}'s to decide: by default only a member of the platform; an
+ * agent of another platform (over the HTTP MTP) is refused (REFUSE with the reason, counted as
+ * {@code not-authorized}) unless an operator exposed that service to them ({@code -http-expose}).
  */
 public final class ObserverLayer extends Layer {
     public static final String ONTOLOGY = "concord-observe";
@@ -64,6 +69,17 @@ public final class ObserverLayer extends Layer {
     private static final String RATE_DETAIL = "more than " + EVENTS_PER_SECOND + " messages a second to report to a sniffer";
 
     private final Map<String, Sniffer> sniffers = new LinkedHashMap<>();
+    private final Policy policy;
+
+    /** With the documented policy: members only. */
+    public ObserverLayer() {
+        this(Policy.defaults());
+    }
+
+    /** With the platform's policy (what it exposes to agents of other platforms). */
+    public ObserverLayer(Policy policy) {
+        this.policy = java.util.Objects.requireNonNull(policy, "policy");
+    }
 
     /** Observation requests are this layer's own, and a sniffed agent's messages are reported here: both take the stacks. */
     @Override
@@ -126,6 +142,14 @@ public final class ObserverLayer extends Layer {
     }
 
     private void serve(AclMessage m) {
+        Policy.Decision d = policy.decide(Policy.principalOf(m, ctx.host().platformName()), Policy.serviceOf(m));
+        if (!d.allowed()) {
+            ctx.host().drops().record(ctx.host().nodeName(), name(), "not-authorized", m.getSender().name() + ": " + d.reason());
+            if (m.getPerformative() != Performative.CANCEL) {
+                answer(m, Performative.REFUSE, "{\"reason\":" + Json.quote(d.reason()) + "}");
+            }
+            return;
+        }
         String content = m.getContent() == null ? "" : m.getContent().trim();
         String key = m.getSender().name() + " " + m.getConversationId();
         if (m.getPerformative() == Performative.CANCEL) {

@@ -10,6 +10,7 @@ import io.concord.core.layer.StackHost;
 import io.concord.core.net.Address;
 import io.concord.core.net.internal.Neighbourhood;
 import io.concord.core.acl.MtsFailure;
+import io.concord.layers.authority.Policy;
 import io.concord.layers.defence.Defence;
 import io.concord.layers.frame.Frames;
 
@@ -77,6 +78,7 @@ public final class ContainerLayer extends Layer {
     private ServiceRequests requests;
     private Registrations registrations;
     private MembershipGate gate;
+    private final Policy policy;
     /** Messages for foreign agents (or the platform's DF and AMS) waiting for a container to carry them. */
     private WaitRoom forContainer;
 
@@ -99,6 +101,16 @@ public final class ContainerLayer extends Layer {
      * agent without its defence ({@link Defence#CLAIM_CHECK}).
      */
     public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, Set<Defence> off) {
+        this(config, network, gateway, off, off.contains(Defence.AUTHORITY) ? Policy.allowingEverything() : Policy.defaults());
+    }
+
+    /**
+     * ... with the platform's {@link Policy}: what agents of other platforms, arriving through the
+     * gateway, may reach (by default the agents' own conversations, the DF and the AMS; never the
+     * platform protocol or the observation service).
+     */
+    public ContainerLayer(PlatformConfig config, NetworkConfig network, Gateway gateway, Set<Defence> off, Policy policy) {
+        this.policy = java.util.Objects.requireNonNull(policy, "policy");
         this.config = config;
         this.network = network;
         this.gateway = gateway;
@@ -212,7 +224,7 @@ public final class ContainerLayer extends Layer {
         st.selfEntry = new AgentEntry(self, uri, host.clock().epochMillis(), List.of());
         selfAid = st.selfEntry.aid();
         context = new HostContext(host, layerContext, config, st, platform, selfAid, this::place);
-        relay = new GatewayRelay(context, st, gateway, this::role, m -> layerContext.passUp(Envelope.outgoing(m, selfAid, null)),
+        relay = new GatewayRelay(context, st, gateway, policy, this::role, m -> layerContext.passUp(Envelope.outgoing(m, selfAid, null)),
                 host::execute);
         Neighbourhood around = host.capability(Neighbourhood.class);
         List<Address> neighbours = around == null ? List.of() : around.neighbours();

@@ -33,10 +33,19 @@ public interface GatewayContext {
     }
 
     /**
+     * Whether the platform's policy refuses this foreign agent's message (the observation
+     * service, the platform protocol, unless an operator exposed it): the reason to answer it with
+     * (a REFUSE), or null if {@link #deliver} may take it. Loop only.
+     */
+    default String refuses(AclMessage message, AID receiver) {
+        return null;
+    }
+
+    /**
      * Delivers a message from a foreign agent to an agent of this platform by name (relayed by the
      * container to wherever the agent runs). Loop only.
      *
-     * @return false if no agent of that name is known (answer the sender with a FAILURE)
+     * @return false if no agent of that name is known, or the policy refuses the message (answer the sender with a FAILURE)
      */
     boolean deliver(AclMessage message, AID receiver);
 

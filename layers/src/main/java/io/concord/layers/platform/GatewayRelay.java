@@ -8,6 +8,8 @@ import io.concord.core.codec.StringAclCodec;
 import io.concord.core.net.Channels;
 import io.concord.core.acl.MtsFailure;
 
+import io.concord.layers.authority.Policy;
+
 import java.util.List;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
@@ -22,13 +24,15 @@ final class GatewayRelay implements PlatformMessage.Handler {
     private final PlatformContext ctx;
     private final PlatformState st;
     private final Gateway gateway;
+    private final Policy policy;
     private final Supplier<Role> role;
     private final Consumer<AclMessage> toAgent;
     private final Consumer<Runnable> onLoop;
     private boolean started;
 
-    GatewayRelay(PlatformContext ctx, PlatformState st, Gateway gateway, Supplier<Role> role,
+    GatewayRelay(PlatformContext ctx, PlatformState st, Gateway gateway, Policy policy, Supplier<Role> role,
                  Consumer<AclMessage> toAgent, Consumer<Runnable> onLoop) {
+        this.policy = policy;
         this.ctx = ctx;
         this.st = st;
         this.gateway = gateway;
@@ -149,7 +153,23 @@ final class GatewayRelay implements PlatformMessage.Handler {
         }
 
         @Override
+        public String refuses(AclMessage message, AID receiver) {
+            if (Policy.principalOf(message, ctx.platform()) == Policy.Principal.MEMBER) {
+                return null;   // the gateway's own answers for a member (a FAILURE from the AMS)
+            }
+            Policy.Decision d = policy.decide(Policy.Principal.FOREIGN, Policy.serviceOf(message));
+            return d.allowed() ? null : d.reason();
+        }
+
+        @Override
         public boolean deliver(AclMessage message, AID receiver) {
+            String refused = refuses(message, receiver);
+            if (refused != null) {
+                // The gateway should have asked first; whatever it does, the policy holds here.
+                ctx.drop("not-authorized", (message.getSender() == null ? "a message with no sender" : message.getSender().name())
+                        + " to " + receiver.name() + ": " + refused);
+                return false;
+            }
             String name = receiver.name();
             if (name.equalsIgnoreCase(ctx.self())) {
                 toAgent.accept(message);

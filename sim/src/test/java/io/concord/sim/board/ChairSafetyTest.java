@@ -160,9 +160,9 @@ class ChairSafetyTest {
             assertEquals("0,0", s.get("motors"), "released, not resumed: " + s);
             assertTrue(moved(s) - stopped < 0.02, "the chair stands after the release: " + s);
             assertEquals(ChairSupervisor.State.HELD, w.call(w.supervisor::state));
-            assertNull(w.control.resume("the nurse at the console").get(10, TimeUnit.SECONDS));
+            assertNull(w.control.resume(w.hospital.operatorKey().sign("resume", "chair1", w.control.runtime().clock().epochMillis())).get(10, TimeUnit.SECONDS));
             w.board.awaitStatus(st -> moved(st) > stopped + 0.2, 30_000, "the chair to drive on after the resume");
-            w.awaitSaid("control-chair1: resumes T1 (decided by the nurse at the console)", 10_000);
+            w.awaitSaid("control-chair1: resumes T1 (decided by an operator at the console)", 10_000);
             w.awaitSaid("medical: T1 resumed on control-chair1", 10_000);
             assertFalse(f.isDone(), "the transport goes on: " + f);
         }
@@ -226,7 +226,7 @@ class ChairSafetyTest {
             assertTrue(moved(s) - stopped < 0.02, "no motion after the reboot without a decision: " + s);
             assertTrue(w.said("it waits for an operator's resume"), w.tail());
             assertEquals(2, w.serial.boot());
-            assertNull(w.control.resume("operator").get(10, TimeUnit.SECONDS));
+            assertNull(w.control.resume(w.hospital.operatorKey().sign("resume", "chair1", w.control.runtime().clock().epochMillis())).get(10, TimeUnit.SECONDS));
             w.board.awaitStatus(st -> moved(st) > stopped + 0.2, 30_000, "the chair to drive on after the resume");
         }
     }

@@ -58,7 +58,7 @@ public final class SafetyHostMain {
         try (BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8))) {
             for (String l; (l = in.readLine()) != null; ) {
                 if (l.equals("resume")) {
-                    hospital.control("chair1").resume("operator");
+                    hospital.control("chair1").resume(hospital.operatorKey().sign("resume", "chair1", rt.clock().epochMillis()));
                 }
             }
         }
