@@ -49,12 +49,53 @@ final class AgentManagement {
     record ForeignEntry(AID aid, List<ServiceDescription> services) {
     }
 
+    /**
+     * What agents of other platforms may make the DF hold: registrations per sender (the agent
+     * that asked) and in all, and the size of a search's answer (JADE's {@code max-results}, with
+     * JADE's default when a search gives none).
+     */
+    record Limits(int perSender, int total, int defaultResults, int maxResults) {
+        static final Limits DEFAULT = new Limits(64, 4_096, 100, 1_000);
+
+        Limits {
+            if (perSender < 1 || total < perSender || defaultResults < 1 || maxResults < defaultResults) {
+                throw new IllegalArgumentException("DF limits must be positive and in order: " + perSender + " per sender, "
+                        + total + " in all, " + defaultResults + " results by default, at most " + maxResults);
+            }
+        }
+    }
+
     private final Map<String, ForeignEntry> foreignRegistrations = new LinkedHashMap<>();
+    /** Who registered each entry (the sender's name, lower case), and until when (epoch ms; MAX_VALUE: no lease). */
+    private final Map<String, String> registrant = new LinkedHashMap<>();
+    private final Map<String, Long> leaseUntil = new LinkedHashMap<>();
+    private final Map<String, Integer> perSender = new LinkedHashMap<>();
     private final Supplier<List<String>> acc;
+    private final java.util.function.LongSupplier epochMs;
+    private final Limits limits;
+    private final java.util.function.BiConsumer<String, String> refused;
 
     /** @param acc the addresses of this platform's ACC: Concord agents are described as reached there */
     AgentManagement(Supplier<List<String>> acc) {
+        this(acc, System::currentTimeMillis, Limits.DEFAULT, (r, w) -> { });
+    }
+
+    /**
+     * @param epochMs the clock lease times are read on
+     * @param refused told of each registration refused for a limit ({@code df-limit}) with why
+     */
+    AgentManagement(Supplier<List<String>> acc, java.util.function.LongSupplier epochMs, Limits limits,
+                    java.util.function.BiConsumer<String, String> refused) {
         this.acc = acc;
+        this.epochMs = epochMs;
+        this.limits = limits;
+        this.refused = refused;
+    }
+
+    /** Foreign registrations held now (after expiring the leases that ended). */
+    int registrations() {
+        expire(epochMs.getAsLong());
+        return foreignRegistrations.size();
     }
 
     /** The answer to a REQUEST to this platform's DF ({@code df}) or AMS, to send back to its sender. */
@@ -98,12 +139,12 @@ final class AgentManagement {
             }
             Object content;
             if (action.action() instanceof Search s) {
-                content = new Result(action, df ? searchDf(ctx, s) : searchAms(ctx));
+                content = new Result(action, df ? searchDf(ctx, s) : searchAms(ctx, s));
             } else if (df && action.action() instanceof Register reg) {
-                register(reg.description());
+                register(reg.description(), m.getSender());
                 content = new Done(action);
             } else if (df && action.action() instanceof Deregister d) {
-                deregister(d.description());
+                deregister(d.description(), m.getSender());
                 content = new Done(action);
             } else if (action.action() instanceof Register || action.action() instanceof Deregister) {
                 throw new UnsupportedOperationException(function + " with the AMS");
@@ -144,45 +185,121 @@ final class AgentManagement {
         if (!(s.description() instanceof DfAgentDescription template)) {
             throw new IllegalArgumentException("search needs a df-agent-description template");
         }
+        expire(epochMs.getAsLong());
         List<ServiceDescription> templates = services(template.services());
-        Long limit = s.constraints().maxResults();
-        long max = limit == null ? -1 : limit;
+        long max = maxResults(s);
         List<Object> out = new ArrayList<>();
         for (AgentEntry e : ctx.search(templates)) {
-            if (max < 0 || out.size() < max) {
-                out.add(describe(new AID(e.name(), acc.get().toArray(new String[0])), e.services()));
+            if (out.size() >= max) {
+                return out;
             }
+            out.add(describe(new AID(e.name(), acc.get().toArray(new String[0])), e.services()));
         }
         for (ForeignEntry f : foreignRegistrations.values()) {
-            if (ServiceDescription.offersAll(f.services(), templates) && (max < 0 || out.size() < max)) {
+            if (out.size() >= max) {
+                return out;
+            }
+            if (ServiceDescription.offersAll(f.services(), templates)) {
                 out.add(describe(f.aid(), f.services()));
             }
         }
         return out;
     }
 
-    private List<Object> searchAms(GatewayContext ctx) {
+    /** A search's {@code max-results}: JADE's default when none is given or it is negative, never past the cap. */
+    private long maxResults(Search s) {
+        Long asked = s.constraints() == null ? null : s.constraints().maxResults();
+        return asked == null || asked < 0 ? limits.defaultResults() : Math.min(asked, limits.maxResults());
+    }
+
+    private List<Object> searchAms(GatewayContext ctx, Search s) {
+        long max = maxResults(s);
         List<Object> out = new ArrayList<>();
         for (AgentEntry e : ctx.agents()) {
+            if (out.size() >= max) {
+                break;
+            }
             out.add(new AmsAgentDescription(new AID(e.name(), acc.get().toArray(new String[0])), null, "active"));
         }
         return out;
     }
 
-    private void register(Object description) {
+    /** Forgets the registrations whose lease has ended. */
+    private void expire(long now) {
+        if (leaseUntil.isEmpty()) {
+            return;
+        }
+        for (var it = leaseUntil.entrySet().iterator(); it.hasNext(); ) {
+            var e = it.next();
+            if (e.getValue() <= now) {
+                it.remove();
+                forget(e.getKey());
+            }
+        }
+    }
+
+    private void forget(String key) {
+        foreignRegistrations.remove(key);
+        String by = registrant.remove(key);
+        if (by != null) {
+            perSender.computeIfPresent(by, (k, n) -> n <= 1 ? null : n - 1);
+        }
+        leaseUntil.remove(key);
+    }
+
+    private void register(Object description, AID sender) {
         if (!(description instanceof DfAgentDescription d) || d.name() == null) {
             throw new IllegalArgumentException("register needs a df-agent-description with a :name");
         }
-        foreignRegistrations.put(d.name().name().toLowerCase(Locale.ROOT), new ForeignEntry(d.name(), services(d.services())));
+        long now = epochMs.getAsLong();
+        expire(now);
+        String key = d.name().name().toLowerCase(Locale.ROOT);
+        String by = sender == null ? "" : sender.name().toLowerCase(Locale.ROOT);
+        String holder = registrant.get(key);
+        if (holder != null && !holder.equals(by)) {
+            throw new IllegalArgumentException("already-registered: " + d.name().name() + " was registered by another agent");
+        }
+        if (d.leaseTime() != null && d.leaseTime().toEpochMilli() <= now) {
+            throw new IllegalArgumentException("the lease-time " + d.leaseTime() + " has passed already");
+        }
+        if (holder == null) {
+            int mine = perSender.getOrDefault(by, 0);
+            if (mine >= limits.perSender()) {
+                String why = by + " has " + mine + " registrations in the DF, the most one agent of another platform may hold;"
+                        + " deregister some, or give lease times";
+                refused.accept("df-limit", why);
+                throw new IllegalArgumentException(why);
+            }
+            if (foreignRegistrations.size() >= limits.total()) {
+                String why = "the DF holds " + limits.total() + " registrations of agents of other platforms, the most it takes";
+                refused.accept("df-limit", why);
+                throw new IllegalArgumentException(why);
+            }
+            perSender.merge(by, 1, Integer::sum);
+            registrant.put(key, by);
+        }
+        foreignRegistrations.put(key, new ForeignEntry(d.name(), services(d.services())));
+        if (d.leaseTime() != null) {
+            leaseUntil.put(key, d.leaseTime().toEpochMilli());
+        } else {
+            leaseUntil.remove(key);
+        }
     }
 
-    private void deregister(Object description) {
+    private void deregister(Object description, AID sender) {
         if (!(description instanceof DfAgentDescription d) || d.name() == null) {
             throw new IllegalArgumentException("deregister needs a df-agent-description with a :name");
         }
-        if (foreignRegistrations.remove(d.name().name().toLowerCase(Locale.ROOT)) == null) {
+        expire(epochMs.getAsLong());
+        String key = d.name().name().toLowerCase(Locale.ROOT);
+        String holder = registrant.get(key);
+        if (holder == null) {
             throw new IllegalArgumentException("not-registered");
         }
+        if (sender == null || !holder.equals(sender.name().toLowerCase(Locale.ROOT))) {
+            throw new IllegalArgumentException("unauthorised: " + d.name().name() + " was registered by another agent");
+        }
+        forget(key);
     }
 
     private static List<ServiceDescription> services(Set<FipaAgentManagement.ServiceDescription> set) {

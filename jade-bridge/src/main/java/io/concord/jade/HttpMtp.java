@@ -49,7 +49,7 @@ public final class HttpMtp implements Gateway {
     private final java.util.Set<String> warned = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final ReplyLimit replyLimit;
     private volatile GatewayContext context;
-    private final AgentManagement management = new AgentManagement(this::addresses);
+    private final AgentManagement management;
     private volatile Trust trust = Trust.ANY;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong rejected = new AtomicLong();
@@ -73,6 +73,8 @@ public final class HttpMtp implements Gateway {
         this.advertisedHost = advertisedHost;
         this.limits = limits;
         this.clock = clock;
+        this.management = new AgentManagement(this::addresses, clock::epochMillis, AgentManagement.Limits.DEFAULT,
+                (reason, why) -> drops.record("http", reason, why));
         this.replyLimit = new ReplyLimit(clock::nanoTime);
     }
 
