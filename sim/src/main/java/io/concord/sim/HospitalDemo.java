@@ -12,6 +12,7 @@ import io.concord.core.agent.PortRange;
 import io.concord.testkit.FaultPlan;
 import io.concord.testkit.Simulation;
 import io.concord.layers.Platform;
+import io.concord.layers.authority.OperatorKey;
 import io.concord.layers.Profile;
 import io.concord.layers.SafetyStack;
 import io.concord.layers.platform.ServiceDescription;
@@ -99,7 +100,8 @@ public final class HospitalDemo {
 
     /** Settings of a run. */
     record Options(long seed, double speed, boolean virtual, Path map, Path picture, int chairs, List<TaskSpec> tasks,
-                   double maxSeconds, String serial, boolean augmented, String console, Path pairKey, Path record) {
+                   double maxSeconds, String serial, boolean augmented, String console, Path pairKey, Path record,
+                   Path operatorKey) {
         /** The options a child JVM of the demo gets: the ward alone records (its console does). */
         List<String> childArgs(String role) {
             List<String> a = new ArrayList<>(List.of("--seed", Long.toString(seed), "--speed", Double.toString(speed),
@@ -120,6 +122,9 @@ public final class HospitalDemo {
             if (console != null) {
                 a.addAll(List.of("--console", console));
             }
+            if (operatorKey != null) {
+                a.addAll(List.of("--operator-key", operatorKey.toAbsolutePath().toString()));
+            }
             if (record != null && role.equals("ward")) {
                 a.addAll(List.of("--record", record.toAbsolutePath().toString()));
             }
@@ -129,7 +134,7 @@ public final class HospitalDemo {
 
     static final String USAGE = "usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
             + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]"
-            + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port] [--record FILE.jsonl]\n"
+            + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port [--operator-key FILE]] [--record FILE.jsonl]\n"
             + "(each option with its default: README.md, \"The two commands\")";
 
     /** True if the arguments ask for the usage ({@code --help}, {@code -h}). */
@@ -200,6 +205,7 @@ public final class HospitalDemo {
         String console = null;
         Path pairKey = null;
         Path record = null;
+        Path operatorKey = null;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--virtual")) {
@@ -223,6 +229,7 @@ public final class HospitalDemo {
                     case "--console" -> console = value(a, v);
                     case "--pair-key" -> pairKey = Path.of(value(a, v));
                     case "--record" -> record = Path.of(value(a, v));
+                    case "--operator-key" -> operatorKey = Path.of(value(a, v));
                     case "--tasks" -> {
                         tasks = new ArrayList<>();
                         for (String t : value(a, v).split(",")) {
@@ -261,6 +268,15 @@ public final class HospitalDemo {
         if (console != null && virtual) {
             throw new IllegalArgumentException("--console shows the hospital as it runs in real time: it cannot run with --virtual");
         }
+        if (operatorKey != null && console == null) {
+            throw new IllegalArgumentException("--operator-key is the key the console signs an operator's resume with: it needs --console [host:]port");
+        }
+        if (operatorKey != null && Files.exists(operatorKey)) {
+            OperatorKey.load(operatorKey);   // not a key, or one others may read: stops the demo here, with why
+        }
+        if (console != null && operatorKey == null) {
+            operatorKey = defaultOperatorKey();
+        }
         if (console != null) {
             try {
                 Console.Config.parse(console);
@@ -281,7 +297,7 @@ public final class HospitalDemo {
                 throw new IllegalArgumentException("--record: " + record + " exists already; give another file");
             }
         }
-        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey, record);
+        return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey, record, operatorKey);
     }
 
     /** The map has a parking place for each chair: where it starts, in the map's order. */
@@ -540,6 +556,11 @@ public final class HospitalDemo {
         t.start();
     }
 
+    /** Where the demo keeps the operator key when {@code --operator-key} names none: {@code ~/.concord/operator.key}. */
+    static Path defaultOperatorKey() {
+        return Path.of(System.getProperty("user.home"), ".concord", "operator.key");
+    }
+
     /** The ward's JVM: the world, the doors' and the chairs' agents, until it is stopped. */
     static void ward(HospitalMap map, Options o) throws Exception {
         Platform platform = Platform.builder().name("hospital").build();
@@ -547,6 +568,10 @@ public final class HospitalDemo {
         HospitalWorld world = world(map, o);
         Consumer<String> log = line -> OUT.printf(Locale.ROOT, "t=%7.1f s  %s%n", world.worldTimeNs() / 1e9, line);
         Hospital hospital = Hospital.start(platform, world, log);
+        if (o.operatorKey() != null) {
+            // The console signs a held chair's resume with this key; the chairs' agents trust it.
+            hospital.operatorKey(OperatorKey.loadOrCreate(o.operatorKey(), System.getProperty("user.name", "operator").replaceAll("[^A-Za-z0-9 ._@:-]", "-"), OUT::println));
+        }
         world.attach(rt, o.speed());
         AtomicReference<Console> console = new AtomicReference<>();
         if (o.console() != null) {
