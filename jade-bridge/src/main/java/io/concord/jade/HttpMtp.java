@@ -48,6 +48,10 @@ public final class HttpMtp implements Gateway {
     private final DropCounters drops = new DropCounters();
     private final java.util.Set<String> warned = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final ReplyLimit replyLimit;
+    /** The observation service's events (when an operator exposed it): the bridge's own answers' rate. */
+    private final ReplyLimit observeLimit;
+    /** Everything else the agents post to one host. */
+    private final ReplyLimit agentLimit;
     private volatile GatewayContext context;
     private final AgentManagement management;
     private volatile Trust trust = Trust.ANY;
@@ -76,6 +80,8 @@ public final class HttpMtp implements Gateway {
         this.management = new AgentManagement(this::addresses, clock::epochMillis, AgentManagement.Limits.DEFAULT,
                 (reason, why) -> drops.record("http", reason, why));
         this.replyLimit = new ReplyLimit(clock::nanoTime);
+        this.observeLimit = new ReplyLimit(clock::nanoTime);
+        this.agentLimit = new ReplyLimit(clock::nanoTime, ReplyLimit.AGENT_BURST, ReplyLimit.AGENT_RATE);
     }
 
     @Override
@@ -427,6 +433,14 @@ public final class HttpMtp implements Gateway {
         return r;
     }
 
+    private static String hostOf(String url) {
+        try {
+            return java.net.URI.create(url).getHost();
+        } catch (IllegalArgumentException e) {
+            return url;
+        }
+    }
+
     /** JADE's AMS FAILURE for an unknown receiver. */
     private static AclMessage notFound(GatewayContext ctx, AclMessage original, AID receiver) {
         return MtsFailure.of(ctx.platformName(), original, receiver, "Agent not found: " + receiver.name());
@@ -480,6 +494,16 @@ public final class HttpMtp implements Gateway {
         if (urls.isEmpty()) {
             outQueued.decrementAndGet();
             tellSender(ctx, message, receiver, problem == null ? "no http address" : problem);
+            return;
+        }
+        // Every post to a foreign host is bounded: the observation service's events as the bridge's
+        // own answers, the agents' conversations far above any real one (an amplifier stops there).
+        String host = hostOf(urls.get(0));
+        ReplyLimit limit = io.concord.layers.authority.Policy.OBSERVE_ONTOLOGY.equals(m.getOntology()) ? observeLimit : agentLimit;
+        if (host != null && !limit.allow(host)) {
+            outQueued.decrementAndGet();
+            drops.record("http", "http-out-limit", "more posts to " + host + " than " + limit.rate() + " a second");
+            tellSender(ctx, message, receiver, "the bridge posts at most " + limit.rate() + " messages a second to " + host);
             return;
         }
         loop.run(() -> post(ctx, message, receiver, m, payload, urls, 0));

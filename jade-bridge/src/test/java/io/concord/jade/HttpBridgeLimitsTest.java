@@ -309,4 +309,22 @@ class HttpBridgeLimitsTest {
             assertEquals(full, told, "and its sender is told FAILURE, saying why");
         }
     }
+
+    /** An exposed sniff posts its events to an address the subscriber names: at the bridge's answer rate, not the agent's. */
+    @Test
+    void theObservationServicesEventsToAForeignHostAreBoundedAsTheBridgesOwnAnswers() throws Exception {
+        start(8);
+        AID foreign = new AID("sniffer@elsewhere", DEAD);
+        for (int i = 0; i < 1_000; i++) {
+            AclMessage e = new AclMessage(Performative.INFORM).setSender(new AID("echo@ourplat"));
+            e.setOntology("concord-observe");
+            e.setContent("{\"dir\":\"sent\"}");
+            e.addReceiver(foreign);
+            mtp.sendOut(e, foreign);
+        }
+        mtp.server().sweep().get(10, TimeUnit.SECONDS);
+        assertEquals(1_000 - ReplyLimit.BURST, drops("http-out-limit"), "past the burst, with the clock standing still");
+        assertEquals(1_000 - ReplyLimit.BURST, failures.stream().filter(f -> f.getContent().contains("posts at most 50 messages a second"))
+                .count(), "the sender (the observed agent) is told each time");
+    }
 }
