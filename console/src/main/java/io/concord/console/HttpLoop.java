@@ -397,7 +397,11 @@ final class HttpLoop {
                 selector.select(SWEEP_EVERY_NS / 1_000_000);
                 Runnable t;
                 while ((t = tasks.poll()) != null) {
-                    t.run();
+                    try {
+                        t.run();
+                    } catch (RuntimeException e) {
+                        System.err.println("the console's HTTP server failed on a task: " + e);
+                    }
                 }
                 Iterator<SelectionKey> it = selector.selectedKeys().iterator();
                 while (it.hasNext()) {
@@ -407,7 +411,11 @@ final class HttpLoop {
                         continue;
                     }
                     if (k.channel() == server) {
-                        accept(nanos.getAsLong());
+                        try {
+                            accept(nanos.getAsLong());
+                        } catch (IOException e) {
+                            // out of descriptors, say: the connection waits in the backlog for the next turn
+                        }
                     } else {
                         ready((Conn) k.attachment(), k);
                     }
@@ -455,7 +463,17 @@ final class HttpLoop {
     private void accept(long now) throws IOException {
         SocketChannel ch;
         while ((ch = server.accept()) != null) {
-            InetSocketAddress remote = (InetSocketAddress) ch.getRemoteAddress();
+            InetSocketAddress remote;
+            try {
+                remote = (InetSocketAddress) ch.getRemoteAddress();
+            } catch (IOException e) {
+                ch.close();   // reset before it was accepted
+                continue;
+            }
+            if (remote == null) {
+                ch.close();
+                continue;
+            }
             InetAddress from = remote.getAddress();
             boolean mine = perClient.getOrDefault(from, 0) >= limits.maxPerClient();
             if (mine || conns.size() >= limits.maxConnections()) {
@@ -467,9 +485,15 @@ final class HttpLoop {
                 }
                 close(victim);
             }
-            ch.configureBlocking(false);
-            ch.setOption(StandardSocketOptions.TCP_NODELAY, true);
-            SelectionKey k = ch.register(selector, SelectionKey.OP_READ);
+            SelectionKey k;
+            try {
+                ch.configureBlocking(false);
+                ch.setOption(StandardSocketOptions.TCP_NODELAY, true);
+                k = ch.register(selector, SelectionKey.OP_READ);
+            } catch (IOException e) {
+                ch.close();   // gone already
+                continue;
+            }
             Conn c = new Conn(ch, k, remote, now);
             k.attach(c);
             conns.add(c);
