@@ -572,6 +572,7 @@ final class HttpLoop {
         if (c.closed) {
             return;
         }
+        long now = nanos.getAsLong();   // before the client can have the answer: idle from then on
         boolean empty;
         boolean done;
         boolean keep;
@@ -603,10 +604,10 @@ final class HttpLoop {
             c.key.interestOps(0);   // a stream between two pieces
         } else if (keep && !stopping) {
             c.state = State.READING;
-            c.lastActivityNs = nanos.getAsLong();
+            c.lastActivityNs = now;
             c.key.interestOps(SelectionKey.OP_READ);
             try {
-                process(c, c.lastActivityNs);   // a request that came behind the one answered
+                process(c, now);   // a request that came behind the one answered
             } catch (IOException e) {
                 close(c);
             }
@@ -635,6 +636,7 @@ final class HttpLoop {
     }
 
     private void read(Conn c) throws IOException {
+        long now = nanos.getAsLong();   // the bytes were there before: a request is no younger than this
         readBuffer.clear();
         int n = c.ch.read(readBuffer);
         if (n < 0) {
@@ -644,7 +646,6 @@ final class HttpLoop {
         if (n == 0) {
             return;
         }
-        long now = nanos.getAsLong();
         if (c.state == State.DRAINING) {
             c.drained += n;
             if (c.drained > MAX_DRAIN) {

@@ -353,4 +353,83 @@ class ConsoleHttpLimitsTest {
             assertEquals(0, c.server().connections());
         }
     }
+    /**
+     * At the total cap, a new connection from another address closes the oldest unfinished
+     * request whatever its address; the rest go when their time is up.
+     */
+    @Test
+    void atTheTotalCapANewConnectionClosesAnUnfinishedRequestOfAnyAddress() throws Exception {
+        HttpLoop.Limits small = new HttpLoop.Limits(16 * 1024, 4096, 2048, 10_000_000_000L, 30_000_000_000L, 30_000_000_000L, 8, 4, true);
+        AtomicLong clock = new AtomicLong();
+        try (Console c = console(small, clock)) {
+            List<Socket> slow = new ArrayList<>();
+            try {
+                for (String from : new String[] {"127.0.0.2", "127.0.0.3"}) {   // all of 127/8 is loopback
+                    for (int i = 0; i < 4; i++) {
+                        Socket s = new Socket();
+                        s.setSoTimeout(20_000);
+                        s.bind(new InetSocketAddress(from, 0));
+                        s.connect(new InetSocketAddress("127.0.0.1", c.port()), 10_000);
+                        slow.add(s);
+                        assertTrue(write(s, "GET /api/platform HTTP/1.1\r\nHost: 127.0.0.1\r\nX-Slow: "));
+                    }
+                }
+                assertEquals("HTTP/1.1 200 OK", statusLine(exchange(c, "GET /api/platform HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+                        + "Connection: close\r\n\r\n")));
+                assertEquals(1L, c.drops().get("http-connections"), c.drops().toString());
+                clock.addAndGet(9_000_000_000L);
+                c.server().sweep();
+                assertEquals(0L, c.drops().getOrDefault("http-slow", 0L), "not before its time: " + c.drops());
+                clock.addAndGet(2_000_000_000L);
+                c.server().sweep();
+                assertEquals(7L, c.drops().get("http-slow"), c.drops().toString());
+                for (Socket s : slow) {
+                    assertClosed(s);
+                }
+                assertEquals(0, c.server().connections());
+            } finally {
+                for (Socket s : slow) {
+                    s.close();
+                }
+            }
+        }
+    }
+
+    /** A kept-alive connection serves request after request (two sent at once too), and closes, uncounted, once idle 30 s. */
+    @Test
+    void aKeptAliveConnectionServesRequestsAndClosesWhenIdle() throws Exception {
+        AtomicLong clock = new AtomicLong();
+        try (Console c = console(HttpLoop.Limits.DEFAULT, clock); Socket s = new Socket("127.0.0.1", c.port())) {
+            s.setSoTimeout(20_000);
+            Map<String, Long> before = c.drops();
+            assertTrue(write(s, "GET /api/views HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\nGET /api/platform HTTP/1.1\r\nHost: localhost\r\n\r\n"));
+            InputStream in = s.getInputStream();
+            assertEquals("HTTP/1.1 200 OK", statusLine(readAnswer(in)));
+            assertEquals("HTTP/1.1 200 OK", statusLine(readAnswer(in)));
+            clock.addAndGet(29_000_000_000L);
+            c.server().sweep();
+            assertTrue(write(s, "GET /api/views HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"));
+            assertTrue(readAnswer(in).contains("\"id\":\"hospital\""));
+            clock.addAndGet(31_000_000_000L);
+            c.server().sweep();
+            assertEquals(-1, in.read(), "closed once idle");
+            assertEquals(before, c.drops(), "an idle connection closed is housekeeping, not a refusal");
+        }
+    }
+
+    /** One answer with a Content-Length, read from the stream. */
+    static String readAnswer(InputStream in) throws IOException {
+        ByteArrayOutputStream head = new ByteArrayOutputStream();
+        while (!head.toString(StandardCharsets.ISO_8859_1).endsWith("\r\n\r\n")) {
+            int b = in.read();
+            if (b < 0) {
+                throw new AssertionFailedError("the connection closed in an answer's head: " + head);
+            }
+            head.write(b);
+        }
+        String h = head.toString(StandardCharsets.ISO_8859_1);
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("\r\nContent-Length: ([0-9]+)\r\n").matcher(h);
+        assertTrue(m.find(), h);
+        return h + new String(in.readNBytes(Integer.parseInt(m.group(1))), StandardCharsets.UTF_8);
+    }
 }
