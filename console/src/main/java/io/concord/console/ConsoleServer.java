@@ -33,8 +33,6 @@ import java.util.regex.Pattern;
  * reads come from the hub's last events, the writes (a view's action, start, kill, send) are handed to the loop.
  */
 final class ConsoleServer {
-    static final int MAX_URI = HttpLoop.Limits.DEFAULT.maxUri();
-    static final int MAX_BODY = HttpLoop.Limits.DEFAULT.maxBody();
     static final long KEEPALIVE_MS = 2_000;
     private static final Set<String> TOPICS = Set.of("platform", "safety", "sniff", "mail");
     /** What a GET (and a HEAD) may ask for, besides the files under /api/recordings/ and /api/bench/. */
@@ -406,7 +404,7 @@ final class ConsoleServer {
         return true;
     }
 
-    /** An action's form parameters (the server took at most {@value #MAX_BODY} bytes), or null once refused (400 malformed). */
+    /** An action's form parameters (the server took at most the limit's bytes, 4 KiB), or null once refused (400 malformed). */
     private Map<String, String> form(HttpLoop.Exchange x) throws IOException {
         try {
             return query(new String(x.body(), StandardCharsets.UTF_8));

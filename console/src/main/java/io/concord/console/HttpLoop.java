@@ -271,7 +271,7 @@ final class HttpLoop {
         }
 
         /**
-         * Sends a piece of a stream; waits while more than {@value #STREAM_WINDOW} bytes wait for the
+         * Sends a piece of a stream; waits while more than {@value HttpLoop#STREAM_WINDOW} bytes wait for the
          * client (the write timeout closes a client that does not read). False once the connection is closed.
          */
         boolean send(byte[] data) throws InterruptedException {

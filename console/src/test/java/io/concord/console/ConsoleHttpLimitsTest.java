@@ -181,6 +181,12 @@ class ConsoleHttpLimitsTest {
                 assertEquals(200, r.statusCode(), r.body());
                 assertTrue(r.body().contains("\"message\":\"chair1 may drive again\""), r.body());
                 assertEquals(resumed + 1, RESUMED.get(), "the action ran once, on the agents' loop");
+                // The agents unaffected: the console's agent still finds seller1 in the lists and messages it.
+                r = http.send(HttpRequest.newBuilder(URI.create(base + "/api/agents/send")).header("X-Concord-Console", "1")
+                        .timeout(Duration.ofSeconds(20)).POST(HttpRequest.BodyPublishers.ofString("performative=INFORM&receivers=seller1&content=hi"))
+                        .build(), HttpResponse.BodyHandlers.ofString());
+                assertEquals(200, r.statusCode(), r.body());
+                assertTrue(r.body().contains("sent INFORM to seller1"), r.body());
                 loopTurns();
 
                 clock.addAndGet(HttpLoop.Limits.DEFAULT.requestTimeoutNs() + 1_000_000_000L);
