@@ -113,7 +113,7 @@ public final class Console implements AutoCloseable {
     private final ConsoleServer server;
     private final String token;
 
-    private Console(Platform platform, Config config) {
+    private Console(Platform platform, Config config, HttpLoop.Limits limits, java.util.function.LongSupplier nanos) {
         this.platform = platform;
         this.config = config;
         InetAddress bind;
@@ -126,7 +126,8 @@ public final class Console implements AutoCloseable {
         this.hub = new Hub(config.keep(), config.maxBrowsers());
         this.agent = new ConsoleAgent(hub, views);
         try {
-            this.server = new ConsoleServer(new InetSocketAddress(bind, config.port()), token, !bind.isLoopbackAddress(), hub, this);
+            this.server = new ConsoleServer(new InetSocketAddress(bind, config.port()), token, !bind.isLoopbackAddress(), hub, this,
+                    limits, nanos);
         } catch (IOException e) {
             throw new UncheckedIOException("the console cannot listen on " + config.host() + ":" + config.port() + ": " + e.getMessage()
                     + " (is another program on that port? give another with [host:]port, or 0 for any)", e);
@@ -148,7 +149,17 @@ public final class Console implements AutoCloseable {
      * @throws UncheckedIOException     if the port is taken
      */
     public static Console start(Platform platform, Config config) {
-        return new Console(platform, config);
+        return new Console(platform, config, HttpLoop.Limits.DEFAULT, System::nanoTime);
+    }
+
+    /** With the HTTP server's limits and clock given: for tests, which shorten a limit or move the time. */
+    static Console start(Platform platform, Config config, HttpLoop.Limits limits, java.util.function.LongSupplier nanos) {
+        return new Console(platform, config, limits, nanos);
+    }
+
+    /** The HTTP server, for tests (its sweep, its connections). */
+    ConsoleServer server() {
+        return server;
     }
 
     /** Adds a view (a tab); browsers see it when they load the page. */
@@ -205,7 +216,10 @@ public final class Console implements AutoCloseable {
     /**
      * What the console refused or dropped, by reason: {@code console-slow-client} (events a slow
      * browser could not take), {@code console-busy} (streams refused over the limit),
-     * {@code console-malformed} (agent reports that were not JSON), and the HTTP answers 4xx by code.
+     * {@code console-malformed} (agent reports that were not JSON), the HTTP answers 4xx by code
+     * ({@code http-404}...), and the connections the HTTP server closed for a limit:
+     * {@code http-slow} (a request not whole within its time), {@code http-slow-reader} (an answer
+     * not taken within its time), {@code http-connections} (closed for a newer one at a cap).
      */
     public Map<String, Long> drops() {
         Map<String, Long> m = new TreeMap<>(server.refusals());

@@ -3,13 +3,9 @@ package io.concord.console;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import com.sun.net.httpserver.HttpExchange;
-import com.sun.net.httpserver.HttpServer;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.URLDecoder;
 import java.nio.charset.StandardCharsets;
@@ -18,52 +14,70 @@ import java.nio.file.Path;
 import java.security.MessageDigest;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
-import java.util.TreeMap;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.LongAdder;
+import java.util.function.LongSupplier;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
- * The console's HTTP side, on the JDK's server with a fixed pool of threads: one per open event
+ * The console's HTTP side: {@link HttpLoop}'s selector thread reads every request whole without
+ * blocking and under its limits, then hands it to a fixed pool of workers: one per open event
  * stream (at most the hub's limit) and four for everything else. No handler touches an agent:
  * reads come from the hub's last events, the writes (a view's action, start, kill, send) are handed to the loop.
  */
 final class ConsoleServer {
-    static final int MAX_URI = 2_048;
-    static final int MAX_BODY = 4_096;
     static final long KEEPALIVE_MS = 2_000;
     private static final Set<String> TOPICS = Set.of("platform", "safety", "sniff", "mail");
+    /** What a GET (and a HEAD) may ask for, besides the files under /api/recordings/ and /api/bench/. */
+    private static final Set<String> PAGES = Set.of("/", "/index.html", "/app.js", "/style.css", "/api/events", "/api/platform",
+            "/api/safety", "/api/mail", "/api/views", "/api/bench", "/api/drops", "/api/recordings", "/favicon.ico");
+    /**
+     * A host name (labels of letters, digits and '-'), an IPv4 address or a bracketed IPv6 one,
+     * and an optional port of digits: nothing else (no user, no second colon, no path).
+     */
+    private static final Pattern HOST = Pattern.compile(
+            "((?:[a-z0-9](?:[a-z0-9-]{0,61}[a-z0-9])?)(?:\\.[a-z0-9](?:[a-z0-9-]{0,61}[a-z0-9])?)*|\\[[0-9a-f:.]{2,45}\\])(?::([0-9]{1,5}))?",
+            Pattern.CASE_INSENSITIVE);
 
-    private final HttpServer http;
+    private final HttpLoop http;
     private final ExecutorService pool;
     private final String token;
     private final boolean open;
     private final Hub hub;
     private final Console console;
     private final ObjectMapper json = new ObjectMapper();
-    private final Map<String, LongAdder> refusals = new ConcurrentHashMap<>();
     private volatile boolean stopping;
 
     ConsoleServer(InetSocketAddress at, String token, boolean open, Hub hub, Console console) throws IOException {
+        this(at, token, open, hub, console, HttpLoop.Limits.DEFAULT, System::nanoTime);
+    }
+
+    /** With the limits and the clock given: the tests' way to shorten a limit or move the time. */
+    ConsoleServer(InetSocketAddress at, String token, boolean open, Hub hub, Console console, HttpLoop.Limits limits,
+                  LongSupplier nanos) throws IOException {
         this.token = token;
         this.open = open;
         this.hub = hub;
         this.console = console;
-        this.http = HttpServer.create(at, 64);
         AtomicInteger n = new AtomicInteger();
         this.pool = Executors.newFixedThreadPool(console.config().maxBrowsers() + 4, r -> {
             Thread t = new Thread(r, "concord-console-" + n.incrementAndGet());
             t.setDaemon(true);
             return t;
         });
-        http.setExecutor(pool);
-        http.createContext("/", this::handle);
+        try {
+            this.http = new HttpLoop(at, limits, nanos, pool, this::handle);
+        } catch (IOException e) {
+            pool.shutdownNow();
+            throw e;
+        }
     }
 
     void start() {
@@ -72,37 +86,42 @@ final class ConsoleServer {
 
     void stop() {
         stopping = true;
-        http.stop(0);
+        http.stop();
         pool.shutdownNow();
     }
 
     InetSocketAddress address() {
-        return http.getAddress();
+        return http.address();
     }
 
+    /** What the server refused or closed, by reason: {@code http-<status>}, {@code http-slow}, {@code http-slow-reader}, {@code http-connections}. */
     Map<String, Long> refusals() {
-        Map<String, Long> m = new TreeMap<>();
-        refusals.forEach((k, v) -> m.put(k, v.sum()));
-        return m;
+        return http.refusals();
     }
 
-    private void handle(HttpExchange x) throws IOException {
+    /** Closes the connections past their time by the server's clock; returns once done. For tests. */
+    void sweep() throws Exception {
+        http.sweep().get(10, TimeUnit.SECONDS);
+    }
+
+    /** Connections open. For tests. */
+    int connections() {
+        return http.connections();
+    }
+
+    private void handle(HttpLoop.Exchange x) throws IOException {
         try {
             route(x);
         } catch (RuntimeException e) {
-            answer(x, 500, "text/plain", "the console failed on this request: " + e);
-        } finally {
-            x.close();
+            if (!x.answered()) {
+                answer(x, 500, "text/plain", "the console failed on this request: " + e);
+            }
         }
     }
 
-    private void route(HttpExchange x) throws IOException {
-        String raw = x.getRequestURI().getRawPath();
-        String rawQuery = x.getRequestURI().getRawQuery();
-        if (raw.length() + (rawQuery == null ? 0 : rawQuery.length()) > MAX_URI) {
-            refuse(x, 414, "the address is longer than " + MAX_URI + " characters");
-            return;
-        }
+    private void route(HttpLoop.Exchange x) throws IOException {
+        String raw = x.rawPath();
+        String rawQuery = x.rawQuery();
         Map<String, String> q;
         try {
             q = query(rawQuery);
@@ -111,17 +130,24 @@ final class ConsoleServer {
             return;
         }
         if (!authorized(x, q)) {
-            x.getResponseHeaders().set("WWW-Authenticate", "Bearer realm=\"concord-console\"");
+            x.setHeader("WWW-Authenticate", "Bearer realm=\"concord-console\"");
             refuse(x, 401, "this console is open on a network address: every request needs its token "
                     + "(?token=..., the Authorization: Bearer header, or the concord-token cookie), printed when it started");
             return;
         }
-        if (!open && !loopbackHost(x.getRequestHeaders().getFirst("Host"))) {
-            refuse(x, 403, "this console answers only to the names of the loopback address (Host: 127.0.0.1, localhost or [::1])");
+        String host = x.header("Host");
+        if (!open && !loopbackHost(host)) {
+            refuse(x, 403, "this console answers only to the names of the loopback address (Host: 127.0.0.1, localhost or [::1], "
+                    + "with a port or without, nothing else)");
             return;
         }
-        String method = x.getRequestMethod();
+        if (open && host != null && hostName(host) == null) {
+            refuse(x, 400, "the Host header is not a host name and an optional port");
+            return;
+        }
+        String method = x.method();
         String path = raw;
+        boolean get = method.equals("GET") || method.equals("HEAD");
         if (method.equals("POST")) {
             if (path.startsWith("/api/views/")) {
                 act(x, path.substring("/api/views/".length()));
@@ -129,14 +155,27 @@ final class ConsoleServer {
                 agentAction(x, path.substring("/api/agents/".length()));
             } else if (path.equals("/api/record/start") || path.equals("/api/record/stop")) {
                 record(x, path.endsWith("start"));
-            } else {
-                refuse(x, 405, "only an action may be posted: a view's at /api/views/{view}/{action}, "
+            } else if (page(path)) {
+                x.setHeader("Allow", "GET, HEAD");
+                refuse(x, 405, path + " answers GET and HEAD; only an action may be posted: a view's at /api/views/{view}/{action}, "
                         + "the console's at /api/agents/start, /api/agents/kill, /api/agents/send, /api/record/start and /api/record/stop");
+            } else {
+                noSuchPage(x, path);
             }
             return;
         }
-        if (!method.equals("GET") && !method.equals("HEAD")) {
-            refuse(x, 405, "the console answers GET, and POST for a view's action");
+        if (action(path)) {
+            x.setHeader("Allow", "POST");
+            refuse(x, 405, path + " is an action: POST it, with the header X-Concord-Console: 1");
+            return;
+        }
+        if (!get) {
+            if (page(path)) {
+                x.setHeader("Allow", "GET, HEAD");
+                refuse(x, 405, path + " answers GET and HEAD");
+            } else {
+                noSuchPage(x, path);
+            }
             return;
         }
         switch (path) {
@@ -156,24 +195,50 @@ final class ConsoleServer {
                 } else if (path.startsWith("/api/bench/")) {
                     benchFile(x, path.substring("/api/bench/".length()));
                 } else {
-                    refuse(x, 404, "no such page: " + path + "; the console serves /, /api/events, /api/platform, "
-                            + "/api/safety, /api/mail, /api/views, /api/bench, /api/recordings");
+                    noSuchPage(x, path);
                 }
             }
         }
     }
 
-    private boolean authorized(HttpExchange x, Map<String, String> q) {
+    private void noSuchPage(HttpLoop.Exchange x, String path) throws IOException {
+        refuse(x, 404, "no such page: " + path + "; the console serves /, /api/events, /api/platform, "
+                + "/api/safety, /api/mail, /api/views, /api/bench, /api/recordings");
+    }
+
+    /** A path a GET may ask for. */
+    private static boolean page(String path) {
+        return PAGES.contains(path) || path.startsWith("/api/recordings/") || path.startsWith("/api/bench/");
+    }
+
+    /** A path of an action there is: a view's, the console's, a recording's start and stop. */
+    private boolean action(String path) {
+        if (path.equals("/api/record/start") || path.equals("/api/record/stop")) {
+            return true;
+        }
+        if (path.startsWith("/api/agents/")) {
+            return ConsoleAgent.ACTIONS.contains(path.substring("/api/agents/".length()));
+        }
+        if (path.startsWith("/api/views/")) {
+            String rest = path.substring("/api/views/".length());
+            int slash = rest.indexOf('/');
+            return slash > 0 && console.views().stream()
+                    .anyMatch(v -> v.id().equals(rest.substring(0, slash)) && v.actions().contains(rest.substring(slash + 1)));
+        }
+        return false;
+    }
+
+    private boolean authorized(HttpLoop.Exchange x, Map<String, String> q) {
         if (token == null) {
             return true;
         }
         String given = q.get("token");
-        String auth = x.getRequestHeaders().getFirst("Authorization");
+        String auth = x.header("Authorization");
         if (given == null && auth != null && auth.startsWith("Bearer ")) {
             given = auth.substring(7).trim();
         }
         if (given == null) {
-            String cookies = x.getRequestHeaders().getFirst("Cookie");
+            String cookies = x.header("Cookie");
             if (cookies != null) {
                 for (String c : cookies.split(";")) {
                     String t = c.trim();
@@ -186,20 +251,31 @@ final class ConsoleServer {
         return given != null && MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8), token.getBytes(StandardCharsets.UTF_8));
     }
 
-    /** On loopback, a page of another site cannot reach the console through a name it controls (DNS rebinding). */
-    static boolean loopbackHost(String host) {
+    /**
+     * The name of a {@code Host} header, in lower case, or {@code null} unless it is a host name
+     * (or an IPv4 address, or a bracketed IPv6 one) and an optional port of digits, nothing else.
+     */
+    static String hostName(String host) {
         if (host == null) {
-            return false;
+            return null;
         }
-        String h = host.trim().toLowerCase(java.util.Locale.ROOT);
-        int colon = h.lastIndexOf(':');
-        if (colon > 0 && !h.endsWith("]")) {
-            h = h.substring(0, colon);
+        Matcher m = HOST.matcher(host);
+        if (!m.matches() || (m.group(2) != null && Integer.parseInt(m.group(2)) > 65535)) {
+            return null;
         }
-        return h.equals("127.0.0.1") || h.equals("localhost") || h.equals("[::1]");
+        return m.group(1).toLowerCase(Locale.ROOT);
     }
 
-    private void resource(HttpExchange x, String name, String type, Map<String, String> q) throws IOException {
+    /**
+     * On loopback, a page of another site cannot reach the console through a name it controls (DNS
+     * rebinding): the Host must parse ({@link #hostName}) and name 127.0.0.1, localhost or [::1].
+     */
+    static boolean loopbackHost(String host) {
+        String h = hostName(host);
+        return h != null && (h.equals("127.0.0.1") || h.equals("localhost") || h.equals("[::1]"));
+    }
+
+    private void resource(HttpLoop.Exchange x, String name, String type, Map<String, String> q) throws IOException {
         try (InputStream in = ConsoleServer.class.getResourceAsStream("web/" + name)) {
             if (in == null) {
                 refuse(x, 404, "the console's " + name + " is missing from its jar");
@@ -207,19 +283,19 @@ final class ConsoleServer {
             }
             byte[] b = in.readAllBytes();
             if (token != null && q.containsKey("token")) {
-                x.getResponseHeaders().add("Set-Cookie", "concord-token=" + token + "; Path=/; HttpOnly; SameSite=Strict");
+                x.addHeader("Set-Cookie", "concord-token=" + token + "; Path=/; HttpOnly; SameSite=Strict");
             }
-            x.getResponseHeaders().set("Content-Security-Policy", "default-src 'self'; img-src 'self' data:; style-src 'self'");
+            x.setHeader("Content-Security-Policy", "default-src 'self'; img-src 'self' data:; style-src 'self'");
             answer(x, 200, type, b);
         }
     }
 
-    private void last(HttpExchange x, String topic) throws IOException {
+    private void last(HttpLoop.Exchange x, String topic) throws IOException {
         String json = hub.last(topic);
         answer(x, 200, "application/json", json == null ? "null" : json);
     }
 
-    private void views(HttpExchange x) throws IOException {
+    private void views(HttpLoop.Exchange x) throws IOException {
         ArrayNode a = json.createArrayNode();
         for (ConsoleView v : console.views()) {
             ObjectNode o = a.addObject().put("id", v.id()).put("title", v.title());
@@ -229,7 +305,7 @@ final class ConsoleServer {
         answer(x, 200, "application/json", a.toString());
     }
 
-    private void events(HttpExchange x, Map<String, String> q) throws IOException {
+    private void events(HttpLoop.Exchange x, Map<String, String> q) throws IOException {
         Set<String> topics = new LinkedHashSet<>();
         for (String t : q.getOrDefault("topics", "platform").split(",")) {
             String s = t.trim();
@@ -263,28 +339,32 @@ final class ConsoleServer {
             refuse(x, 503, "too many browsers have the console open (" + console.config().maxBrowsers() + "); close one");
             return;
         }
+        if (x.method().equals("HEAD")) {
+            hub.close(c);
+            x.setHeader("Cache-Control", "no-store");
+            answer(x, 200, "text/event-stream; charset=utf-8", new byte[0]);
+            return;
+        }
         try {
-            x.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
-            x.getResponseHeaders().set("Cache-Control", "no-store");
-            x.sendResponseHeaders(200, 0);
-            OutputStream out = x.getResponseBody();
-            out.write(": concord console\n\n".getBytes(StandardCharsets.UTF_8));
-            out.flush();
-            while (!stopping && !c.closed) {
+            x.setHeader("Content-Type", "text/event-stream; charset=utf-8");
+            x.setHeader("Cache-Control", "no-store");
+            x.setHeader("X-Content-Type-Options", "nosniff");
+            x.startStream(200);
+            boolean on = x.send(": concord console\n\n".getBytes(StandardCharsets.UTF_8));
+            while (on && !stopping && !c.closed) {
                 String e = c.take(KEEPALIVE_MS);
-                out.write((e == null ? ": keep-alive\n\n" : e).getBytes(StandardCharsets.UTF_8));
-                out.flush();   // a browser that has gone makes this throw; a slow one blocks this thread only
+                // Waits while the browser is behind: its own queue in the hub fills and drops (counted), the agents never wait.
+                on = x.send((e == null ? ": keep-alive\n\n" : e).getBytes(StandardCharsets.UTF_8));
             }
-        } catch (IOException e) {
-            // the browser went away
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
             hub.close(c);
+            x.endStream();
         }
     }
 
-    private void act(HttpExchange x, String rest) throws IOException {
+    private void act(HttpLoop.Exchange x, String rest) throws IOException {
         if (!fromThePage(x)) {
             return;
         }
@@ -305,7 +385,7 @@ final class ConsoleServer {
     }
 
     /** Starting, killing and messaging agents (JADE's RMA and DummyAgent): the same guards as a view's action. */
-    private void agentAction(HttpExchange x, String action) throws IOException {
+    private void agentAction(HttpLoop.Exchange x, String action) throws IOException {
         if (!fromThePage(x)) {
             return;
         }
@@ -316,23 +396,18 @@ final class ConsoleServer {
         onLoop(x, params -> console.agentAction(action, params));
     }
 
-    private boolean fromThePage(HttpExchange x) throws IOException {
-        if (!"1".equals(x.getRequestHeaders().getFirst("X-Concord-Console"))) {
+    private boolean fromThePage(HttpLoop.Exchange x) throws IOException {
+        if (!"1".equals(x.header("X-Concord-Console"))) {
             refuse(x, 403, "an action must carry the header X-Concord-Console: 1 (the page sends it; another site's form cannot)");
             return false;
         }
         return true;
     }
 
-    /** An action's form parameters, or null once refused (413 over {@value #MAX_BODY} bytes, 400 malformed). */
-    private Map<String, String> form(HttpExchange x) throws IOException {
-        byte[] body = readBody(x);
-        if (body == null) {
-            refuse(x, 413, "an action takes at most " + MAX_BODY + " bytes of form parameters");
-            return null;
-        }
+    /** An action's form parameters (the server took at most the limit's bytes, 4 KiB), or null once refused (400 malformed). */
+    private Map<String, String> form(HttpLoop.Exchange x) throws IOException {
         try {
-            return query(new String(body, StandardCharsets.UTF_8));
+            return query(new String(x.body(), StandardCharsets.UTF_8));
         } catch (IllegalArgumentException e) {
             refuse(x, 400, "malformed form parameters: " + e.getMessage());
             return null;
@@ -340,12 +415,12 @@ final class ConsoleServer {
     }
 
     /** Reads the form, runs the action on the agents' loop, answers what it said (or 400 with why). */
-    private void onLoop(HttpExchange x, java.util.function.Function<Map<String, String>, String> action) throws IOException {
+    private void onLoop(HttpLoop.Exchange x, java.util.function.Function<Map<String, String>, String> action) throws IOException {
         Map<String, String> params = form(x);
         if (params == null) {
             return;
         }
-        java.net.InetSocketAddress client = x.getRemoteAddress();
+        java.net.InetSocketAddress client = x.remote();
         params.put(ConsoleView.CLIENT, client == null ? "" : client.getAddress().getHostAddress() + ":" + client.getPort());
         CompletableFuture<String> done = new CompletableFuture<>();
         console.platform().runtime().execute(() -> {
@@ -371,32 +446,8 @@ final class ConsoleServer {
         }
     }
 
-    private static byte[] readBody(HttpExchange x) throws IOException {
-        String len = x.getRequestHeaders().getFirst("Content-Length");
-        if (len != null) {
-            try {
-                if (Long.parseLong(len.trim()) > MAX_BODY) {
-                    return null;
-                }
-            } catch (NumberFormatException e) {
-                return null;
-            }
-        }
-        InputStream in = x.getRequestBody();
-        ByteArrayOutputStream b = new ByteArrayOutputStream();
-        byte[] buf = new byte[1024];
-        int n;
-        while ((n = in.read(buf)) > 0) {
-            b.write(buf, 0, n);
-            if (b.size() > MAX_BODY) {
-                return null;
-            }
-        }
-        return b.toByteArray();
-    }
-
     /** Starts or stops a recording: the same guards as an action; {@code name} names the file. */
-    private void record(HttpExchange x, boolean start) throws IOException {
+    private void record(HttpLoop.Exchange x, boolean start) throws IOException {
         if (!fromThePage(x)) {
             return;
         }
@@ -413,7 +464,7 @@ final class ConsoleServer {
         }
     }
 
-    private void recordings(HttpExchange x) throws IOException {
+    private void recordings(HttpLoop.Exchange x) throws IOException {
         Path dir = console.config().recordings();
         ObjectNode o = json.createObjectNode();
         Path now = console.recording();
@@ -432,7 +483,7 @@ final class ConsoleServer {
         answer(x, 200, "application/json", o.toString());
     }
 
-    private void recordingFile(HttpExchange x, String name) throws IOException {
+    private void recordingFile(HttpLoop.Exchange x, String name) throws IOException {
         if (!Console.recordingName(name)) {
             refuse(x, 400, "a recording is named by its file name (letters, digits, . _ -, ending in .jsonl), got '" + name + "'");
             return;
@@ -445,7 +496,7 @@ final class ConsoleServer {
         answer(x, 200, "application/x-ndjson; charset=utf-8", Files.readAllBytes(p));
     }
 
-    private void benchList(HttpExchange x) throws IOException {
+    private void benchList(HttpLoop.Exchange x) throws IOException {
         Path dir = console.config().reports();
         ArrayNode a = json.createArrayNode();
         if (dir != null && Files.isDirectory(dir)) {
@@ -460,7 +511,7 @@ final class ConsoleServer {
         return n.matches("[A-Za-z0-9][A-Za-z0-9._-]{0,100}") && (n.endsWith(".md") || n.endsWith(".png") || n.endsWith(".svg"));
     }
 
-    private void benchFile(HttpExchange x, String name) throws IOException {
+    private void benchFile(HttpLoop.Exchange x, String name) throws IOException {
         Path dir = console.config().reports();
         if (!benchName(name) || name.contains("..")) {
             refuse(x, 400, "a report is named by its file name (letters, digits, . _ -; .md, .png or .svg), got '" + name + "'");
@@ -499,24 +550,18 @@ final class ConsoleServer {
         return m;
     }
 
-    private void refuse(HttpExchange x, int code, String why) throws IOException {
-        refusals.computeIfAbsent("http-" + code, k -> new LongAdder()).increment();
+    private void refuse(HttpLoop.Exchange x, int code, String why) throws IOException {
+        http.count("http-" + code);
         answer(x, code, "text/plain; charset=utf-8", why + "\n");
     }
 
-    private static void answer(HttpExchange x, int code, String type, String body) throws IOException {
+    private static void answer(HttpLoop.Exchange x, int code, String type, String body) throws IOException {
         answer(x, code, type, body.getBytes(StandardCharsets.UTF_8));
     }
 
-    private static void answer(HttpExchange x, int code, String type, byte[] body) throws IOException {
-        x.getResponseHeaders().set("Content-Type", type);
-        x.getResponseHeaders().set("X-Content-Type-Options", "nosniff");
-        boolean head = x.getRequestMethod().equals("HEAD");
-        x.sendResponseHeaders(code, head ? -1 : body.length == 0 ? -1 : body.length);
-        if (!head && body.length > 0) {
-            try (OutputStream o = x.getResponseBody()) {
-                o.write(body);
-            }
-        }
+    private static void answer(HttpLoop.Exchange x, int code, String type, byte[] body) throws IOException {
+        x.setHeader("Content-Type", type);
+        x.setHeader("X-Content-Type-Options", "nosniff");
+        x.respond(code, body);
     }
 }
