@@ -267,7 +267,14 @@ public final class ObserverLayer extends Layer {
             inform.setConversationId(s.conversation);
             inform.setContent(s.missed == 0 ? json : json.substring(0, json.length() - 1) + ",\"missed\":" + s.missed + "}");
             s.missed = 0;
-            ctx.passDown(Envelope.outgoing(inform, s.who, null));
+            try {
+                ctx.passDown(Envelope.outgoing(inform, s.who, null));
+            } catch (io.concord.core.layer.SendRejectedException full) {
+                // The sniffer takes no more (stopped, gone): its subscription ends here, and the
+                // agent's own message, whose event this was, goes on.
+                limit("the sniffer " + s.who.name() + " takes no more events (" + full.getMessage() + "); its subscription ends");
+                (gone == null ? gone = new ArrayList<>() : gone).add(e.getKey());
+            }
         }
         if (gone != null) {
             gone.forEach(sniffers::remove);

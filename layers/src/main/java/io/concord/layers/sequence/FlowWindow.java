@@ -13,6 +13,12 @@ import io.concord.core.layer.SendRejectedException;
  * {@link Retransmission} part sends what this part lets go. One per agent, called on its loop.
  */
 final class FlowWindow {
+    /**
+     * A receiver that acknowledges nothing for this long while frames wait for it is silent: it
+     * stops holding the agent back (no head-of-line stall behind a stopped or gone peer); a slow
+     * one acknowledges, or answers probes with its window shut, and keeps holding it back.
+     */
+    static final long SILENT_MS = 1_000;
     private final int reorderWindow;
     private final boolean on;
     /** Receivers with frames held for them: while any, the agent is paused. */
@@ -51,7 +57,38 @@ final class FlowWindow {
         }
         env.detachData();
         o.held.add(env);
-        if (!o.holding) {
+        if (!o.holding && !o.silent) {
+            o.holding = true;
+            if (congested++ == 0) {
+                ctx.host().backpressure(true);
+            }
+        }
+    }
+
+    /**
+     * The receiver has been silent for {@link #SILENT_MS} with frames waiting: it no longer holds
+     * the agent back (what waits for it keeps waiting, bounded by {@link SequenceLayer#MAX_HELD}).
+     */
+    void silent(LayerContext ctx, SenderState o) {
+        if (o.silent) {
+            return;
+        }
+        o.silent = true;
+        if (o.holding) {
+            o.holding = false;
+            if (--congested == 0) {
+                ctx.host().backpressure(false);
+            }
+        }
+    }
+
+    /** The receiver acknowledged again: if frames still wait for it, it holds the agent back again (slow, not gone). */
+    void heard(LayerContext ctx, SenderState o) {
+        if (!o.silent) {
+            return;
+        }
+        o.silent = false;
+        if (!o.held.isEmpty() && !o.holding && on) {
             o.holding = true;
             if (congested++ == 0) {
                 ctx.host().backpressure(true);

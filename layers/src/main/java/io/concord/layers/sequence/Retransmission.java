@@ -78,6 +78,9 @@ final class Retransmission {
     }
 
     void transmit(LayerContext ctx, Envelope env, SenderState o) {
+        if (o.acked >= o.nextSeq - 1) {
+            o.progressNs = ctx.nowNs();   // all taken so far: the receiver's silence, if any, starts now
+        }
         long seq = o.nextSeq++;
         int at = env.prepend(HEADER_BYTES);
         byte[] d = env.data();
@@ -111,14 +114,24 @@ final class Retransmission {
             o.probes = 0;
             return;
         }
+        long now = ctx.nowNs();
+        if (o.progressNs == Long.MIN_VALUE) {
+            o.progressNs = now;
+        }
         if (shut) {
             // A receiver that keeps its window shut is slow, not gone: it answers each probe.
             o.probes = Math.min(o.probes + 1, 4);
-        } else if (++o.probes > config.maxProbes()) {
-            ctx.drop(Envelope.control(peer, o.address, new byte[0], 0, 0), "unacknowledged",
-                    (o.nextSeq - 1 - o.acked) + " frames to " + o.address + " were never acknowledged; is the peer gone?");
-            o.probes = 0;
-            return;
+        } else {
+            if (!o.held.isEmpty() && now - o.progressNs >= FlowWindow.SILENT_MS * 1_000_000L) {
+                // Stopped or gone: the frames for it wait, the agent's other conversations go on.
+                flow.silent(ctx, o);
+            }
+            if (++o.probes > config.maxProbes()) {
+                ctx.drop(Envelope.control(peer, o.address, new byte[0], 0, 0), "unacknowledged",
+                        (o.nextSeq - 1 - o.acked) + " frames to " + o.address + " were never acknowledged; is the peer gone?");
+                // Still asked now and then: a peer that was only stopped answers when it goes on.
+                o.probes = 4;
+            }
         }
         control.send(ctx, peer, o.address, PROBE, control.stream(), o.nextSeq - 1, null, 0);
         long backoff = config.probeTimeoutMs() << Math.min(o.probes, 4);
@@ -182,6 +195,8 @@ final class Retransmission {
                 long was = out.acked;
                 out.acked = Math.min(seq, out.nextSeq - 1);
                 forgetLarge(out, was, out.acked);
+                out.progressNs = ctx.nowNs();
+                flow.heard(ctx, out);
             }
             // The window of the latest acknowledgement only: one overtaken by a later one
             // (reordered, or a late copy) must not open a window the receiver shut since.

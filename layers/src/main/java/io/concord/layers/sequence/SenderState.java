@@ -30,6 +30,14 @@ final class SenderState {
     final ArrayDeque<Envelope> held = new ArrayDeque<>();
     /** Counted among the receivers that hold the agent back. */
     boolean holding;
+    /**
+     * The receiver has not acknowledged anything for {@link FlowWindow#SILENT_MS} while frames
+     * wait for it (stopped, gone, cut off): what waits for it still waits, but it no longer holds
+     * the agent back, whose other conversations go on. Cleared by its next acknowledgement.
+     */
+    boolean silent;
+    /** When this receiver last acknowledged something new, or when frames began to wait for it unacknowledged. */
+    long progressNs = Long.MIN_VALUE;
 
     SenderState(int size) {
         ring = new byte[size][];

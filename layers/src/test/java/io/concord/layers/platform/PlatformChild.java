@@ -53,6 +53,14 @@ public final class PlatformChild {
                 m.addReceiver(AID.local(w[1], args[0]));
                 m.setContent(w[2]);
                 echo.send(m);
+            } else if (w.length == 2 && w[0].equals("sniff")) {
+                // The observation service's subscription, as the console's agent makes it: every event comes here.
+                AclMessage m = new AclMessage(Performative.SUBSCRIBE);
+                m.addReceiver(AID.local(w[1], args[0]));
+                m.setOntology("concord-observe");
+                m.setConversationId("sniff-" + w[1]);
+                m.setContent("sniff");
+                echo.send(m);
             } else if (w.length == 2 && w[0].equals("register")) {
                 p.runtime().execute(() -> Platform.of(echo).register(ServiceDescription.ofType(w[1]))
                         .whenComplete((ok, e) -> System.out.println(e == null ? "REGISTERED " + w[1] : "REGISTER-FAILED " + e)));
