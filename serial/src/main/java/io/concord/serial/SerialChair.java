@@ -515,7 +515,7 @@ public final class SerialChair implements ChairDriver {
             LOG.error("{}: {} ({} frames dropped)", settings.name(), macMismatch(), receiver.drops().get("mac") - macAtOpen);
         }
         double drift = receiver.drift();
-        if (!driftLogged && port != null && Math.abs(drift) > SequenceCheck.DRIFT) {
+        if (!driftLogged && port != null && receiver.driftSpanMs() >= 10_000 && Math.abs(drift) > SequenceCheck.DRIFT) {
             driftLogged = true;
             LOG.warn("{}: {}: its frames grow late by {} ms a second, and are stale once {} ms late", settings.name(), driftWords(drift),
                     Math.round((Math.abs(drift) - SequenceCheck.DRIFT) * 1000), FrameReceiver.BOARD_FRAME_MAX_AGE_MS);
