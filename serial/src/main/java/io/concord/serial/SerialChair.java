@@ -149,6 +149,9 @@ public final class SerialChair implements ChairDriver {
     private volatile boolean expired;
     private final java.util.concurrent.atomic.AtomicLong nakCount = new java.util.concurrent.atomic.AtomicLong();
     private final java.util.concurrent.atomic.AtomicLong framesSent = new java.util.concurrent.atomic.AtomicLong();
+    /** Frames sent since the port was last opened. */
+    private volatile long sessionFrames;
+    private final java.util.concurrent.atomic.AtomicLong sessions = new java.util.concurrent.atomic.AtomicLong();
     private final java.util.concurrent.atomic.AtomicLong frozenCount = new java.util.concurrent.atomic.AtomicLong();
     /** Drops counted when the last frame was taken: what has been dropped since tells a stale link from a silent one. */
     private volatile long staleAtFrame;
@@ -364,6 +367,16 @@ public final class SerialChair implements ChairDriver {
     /** Frames sent to the board, of every type. */
     public long framesSent() {
         return framesSent.get();
+    }
+
+    /** How often the port was opened: each opening starts a session (a SYNC PING first). */
+    public long sessions() {
+        return sessions.get();
+    }
+
+    /** Frames sent to the board since the port was last opened (a new session's SYNC PING and CONFIGURE first). */
+    public long sessionFramesSent() {
+        return sessionFrames;
     }
 
     /** How often a frozen host's command was not sent (nothing sent for over {@link Settings#frozenMs()}). */
@@ -611,6 +624,7 @@ public final class SerialChair implements ChairDriver {
         seq = (seq + 1) & 0xFFFF;
         lastWriteNanos = clock.nanoTime();
         framesSent.incrementAndGet();
+        sessionFrames++;
         return p.write(b);
     }
 
@@ -676,8 +690,10 @@ public final class SerialChair implements ChairDriver {
             sync = true;
             stopSent = false;
             lastWriteNanos = -1;
+            sessionFrames = 0;
             port = p;
         }
+        sessions.incrementAndGet();
         LOG.info("{}: opened {}{}", settings.name(), settings.port(), codec.paired() ? " (paired: every frame carries a MAC)" : "");
         return true;
     }
