@@ -170,7 +170,7 @@ class HostFreezeTest {
     @Test
     void withoutItsDefencesAFrozenHostStallsTheTransportForGood(@TempDir Path dir) throws Exception {
         try (Pty pty = new Pty(dir); EmulatorProcess board = new EmulatorProcess(pty.board, "--at", "19");
-             Host host = new Host(pty.host, "none", 1_000)) {
+             Host host = new Host(pty.host, "none", 1_000, "NO_FROZEN_COMMAND")) {
             drivingThenFrozen(host, board);
             long accepted = Long.parseLong(board.status().get("accepted"));
             // 40 heartbeats after the freeze: the board refuses every one and stays disarmed.
