@@ -52,6 +52,7 @@ public final class Board {
     private int leftPermille;
     private int rightPermille;
     private long accepted;
+    private Consumer<String> trace;
 
     /**
      * @param chair    the motors and sensors
@@ -160,6 +161,22 @@ public final class Board {
             tripped = false;
         }
         try {
+            act(f);
+        } finally {
+            if (trace != null) {
+                String what = Frame.Type.name(f.type());
+                if (f.type() == Frame.Type.DRIVE && f.body().length == 4) {
+                    int[] p = BoardProtocol.readDrive(f);
+                    what += " " + p[0] + "," + p[1];
+                }
+                trace.accept(what + ((f.flags() & Frame.SYNC) != 0 ? " SYNC" : "") + " seq=" + f.seq() + " t=" + f.timeMs() + " armed="
+                        + armed + " motors=" + leftPermille + "," + rightPermille);
+            }
+        }
+    }
+
+    private void act(Frame f) {
+        try {
             switch (f.type()) {
                 case Frame.Type.DRIVE -> {
                     int[] p = BoardProtocol.readDrive(f);
@@ -250,6 +267,16 @@ public final class Board {
         Frame f = new Frame(type, flags, seq, nowMs & 0xFFFFFFFFL, body);
         seq = (seq + 1) & 0xFFFF;
         wire.accept(codec.encode(f));
+    }
+
+    /**
+     * Told of every host frame taken, after the board acted on it, in one line: its type (a DRIVE
+     * with its powers), seq, the host's time in it, then whether the board is armed and its motors
+     * ("DRIVE 600,600 seq=12 t=5030 armed=true motors=600,600"); null for none. For the emulator's
+     * trace and tests.
+     */
+    public void setTrace(Consumer<String> t) {
+        this.trace = t;
     }
 
     /** Host frames dropped, by reason. */

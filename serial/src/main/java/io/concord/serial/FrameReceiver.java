@@ -12,6 +12,8 @@ import java.util.function.Consumer;
  * SYNC starts the count again at the board ({@link SequenceCheck}). Single-threaded.
  */
 final class FrameReceiver {
+    /** Board frames older than this are stale at the host. */
+    static final long BOARD_FRAME_MAX_AGE_MS = 500;
     private final FrameCodec codec;
     private final boolean fromBoard;
     private final SequenceCheck check;
@@ -59,6 +61,16 @@ final class FrameReceiver {
     public void reset() {
         deframer.reset();
         check.reset();
+    }
+
+    /** The sender's clock drift as measured since the count started again ({@link SequenceCheck#drift()}). Any thread. */
+    public double drift() {
+        return check.drift();
+    }
+
+    /** The time the drift was measured over, in ms of this end's clock. Any thread. */
+    public long driftSpanMs() {
+        return check.driftSpanMs();
     }
 
     /** The board's boot number of the last STATE or HELLO taken, or -1 (at the host). */

@@ -25,6 +25,11 @@ final class SequenceCheck {
     /** Milliseconds the reference may have grown by since it was set, at the drift tolerance. */
     private double slack;
     private long lastLocalMs;
+    /** The measured drift: the offset and local time of the first frame since the reset, and of the last in order (stale or not). */
+    private volatile int firstOffset;
+    private volatile long firstLocalMs;
+    private volatile int lastOffset;
+    private volatile long lastSeenMs;
 
     /** @param maxAgeMs frames delayed more than this are stale; the drift tolerance is {@link #DRIFT} */
     public SequenceCheck(long maxAgeMs) {
@@ -51,6 +56,10 @@ final class SequenceCheck {
             refOffset = offset;
             slack = 0;
             lastLocalMs = localMs;
+            firstOffset = offset;
+            firstLocalMs = localMs;
+            lastOffset = offset;
+            lastSeenMs = localMs;
             return null;
         }
         int ahead = (f.seq() - last) & 0xFFFF;
@@ -60,6 +69,8 @@ final class SequenceCheck {
         if (ahead > 32_768) {
             return "out-of-order";
         }
+        lastOffset = offset;
+        lastSeenMs = localMs;
         long dt = localMs - lastLocalMs;
         if (dt > 0) {
             slack += drift * dt;
@@ -83,5 +94,26 @@ final class SequenceCheck {
         last = -1;
         refOffset = 0;
         slack = 0;
+        firstLocalMs = 0;
+        lastSeenMs = 0;
+    }
+
+    /**
+     * The sender's clock drift against this end's, measured from the first frame since the reset
+     * to the last one in order (stale or not): the growth of the offset over the time passed. 0.03
+     * is a sender's clock 3 % slow, -0.01 one 1 % fast; NaN before a second has passed. The frames'
+     * delays on the wire blur it by their jitter over the span. Any thread.
+     */
+    public double drift() {
+        long span = driftSpanMs();
+        if (span < 1_000) {
+            return Double.NaN;
+        }
+        return (lastOffset - firstOffset) / (double) span;
+    }
+
+    /** The time the drift is measured over, in ms of this end's clock. */
+    public long driftSpanMs() {
+        return lastSeenMs - firstLocalMs;
     }
 }

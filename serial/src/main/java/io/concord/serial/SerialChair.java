@@ -46,6 +46,13 @@ import java.util.stream.Collectors;
  *       for a silent board.</li>
  * </ul>
  *
+ * <p>The command the heartbeat repeats is cleared in one place ({@link #neutralOnly}), by every
+ * hold: a new session (the port opened, after a lost link too), a link lost, the supervisor's
+ * {@link #holdMotion()}, and a host that was frozen (nothing sent for {@link Settings#frozenMs()}
+ * while the command drove: the command predates the freeze, and is never sent after it). Until
+ * the supervisor resumes ({@link #releaseMotion()}) only neutral frames go out, whatever the
+ * agents ask.
+ *
  * <p>When the port goes away, or the board falls silent for {@link Settings#silentMs()}, the port
  * is closed, the listener is told the chair is offline (a reading with the LINK fault, then
  * {@code onOnline(false)}), and the port is opened again with back-off (0.1 s doubling to 2 s)
@@ -55,6 +62,8 @@ import java.util.stream.Collectors;
  */
 public final class SerialChair implements ChairDriver {
     private static final Logger LOG = LoggerFactory.getLogger(SerialChair.class);
+    /** The drift the protocol tolerates, in words. */
+    private static final String TOLERANCE = Math.round(SequenceCheck.DRIFT * 100) + " %";
 
     /**
      * How to reach the board.
@@ -69,28 +78,50 @@ public final class SerialChair implements ChairDriver {
      * @param heartbeatMs       how often the drive command is sent again
      * @param silentMs          a board silent this long is taken as gone
      * @param commandDeadlineMs a command the loop has not confirmed for this long is not sent again
+     * @param frozenMs          a host that has sent nothing for longer than this (frozen, starved) never sends
+     *                          the driving command it held: neutral, and a hold (the board's 200 ms watchdog
+     *                          less one heartbeat: the board may not have tripped)
      */
     public record Settings(String port, int baud, String name, byte[] key, Pose start, ChairLayout layout, int stateHz,
-                           long heartbeatMs, long silentMs, long commandDeadlineMs) {
-        /** 115200 baud, no key, odometry from (0, 0, 0), the standard layout, 20 Hz, heartbeat 50 ms, silent after 500 ms, deadline 300 ms. */
+                           long heartbeatMs, long silentMs, long commandDeadlineMs, long frozenMs) {
+        /**
+         * 115200 baud, no key, odometry from (0, 0, 0), the standard layout, 20 Hz, heartbeat 50 ms, silent after 500 ms,
+         * deadline 300 ms, frozen after 150 ms.
+         */
         public static Settings of(String port, String name) {
-            return new Settings(port, 115_200, name, null, new Pose(0, 0, 0), ChairLayout.standard(), 20, 50, 500, 300);
+            return new Settings(port, 115_200, name, null, new Pose(0, 0, 0), ChairLayout.standard(), 20, 50, 500, 300, 150);
         }
 
         public Settings withKey(byte[] k) {
-            return new Settings(port, baud, name, k, start, layout, stateHz, heartbeatMs, silentMs, commandDeadlineMs);
+            return new Settings(port, baud, name, k, start, layout, stateHz, heartbeatMs, silentMs, commandDeadlineMs, frozenMs);
         }
 
         public Settings withStart(Pose p) {
-            return new Settings(port, baud, name, key, p, layout, stateHz, heartbeatMs, silentMs, commandDeadlineMs);
+            return new Settings(port, baud, name, key, p, layout, stateHz, heartbeatMs, silentMs, commandDeadlineMs, frozenMs);
         }
 
         public Settings withCommandDeadlineMs(long ms) {
-            return new Settings(port, baud, name, key, start, layout, stateHz, heartbeatMs, silentMs, ms);
+            return new Settings(port, baud, name, key, start, layout, stateHz, heartbeatMs, silentMs, ms, frozenMs);
         }
     }
 
+    /** The driver's defences, each switched off only by a test that shows its hazard ({@link #openWithDefences}). */
+    public enum Defence {
+        /**
+         * Every hold (a new session, a lost link, the supervisor's, a frozen host) clears the
+         * command and only neutral goes out until {@link #releaseMotion()}; off, the heartbeat
+         * sends the last command again after the port reopens.
+         */
+        NEUTRAL_UNTIL_RESUMED,
+        /**
+         * A driving command is not sent after the host sent nothing for {@link Settings#frozenMs()};
+         * off, the first frame after a freeze is the command from before it.
+         */
+        NO_FROZEN_COMMAND
+    }
+
     private final Settings settings;
+    private final Set<Defence> defences;
     private final AgentRuntime runtime;
     private final Clock clock;
     private final BoardLink.Opener opener;
@@ -117,10 +148,24 @@ public final class SerialChair implements ChairDriver {
     private volatile long confirmedNanos;
     private volatile boolean expired;
     private final java.util.concurrent.atomic.AtomicLong nakCount = new java.util.concurrent.atomic.AtomicLong();
+    private final java.util.concurrent.atomic.AtomicLong framesSent = new java.util.concurrent.atomic.AtomicLong();
+    /** Frames sent since the port was last opened. */
+    private volatile long sessionFrames;
+    private final java.util.concurrent.atomic.AtomicLong sessions = new java.util.concurrent.atomic.AtomicLong();
+    private final java.util.concurrent.atomic.AtomicLong frozenCount = new java.util.concurrent.atomic.AtomicLong();
+    /** Drops counted when the last frame was taken: what has been dropped since tells a stale link from a silent one. */
+    private volatile long staleAtFrame;
+    private volatile long droppedAtFrame;
+    /** Whether the drift over the protocol's tolerance was logged in this session. */
+    private volatile boolean driftLogged;
     // guarded by sendLock
     private boolean stopSent;
     private int seq;
     private boolean sync = true;
+    /** Only neutral goes out until the supervisor resumes ({@link #releaseMotion()}). */
+    private boolean motionHeld = true;
+    /** When the last frame went to the board in this session, or -1 before the first. */
+    private long lastWriteNanos = -1;
     // heartbeat thread
     private final long[] gapsUs = new long[1 << 16];
     private volatile int gapCount;
@@ -147,8 +192,13 @@ public final class SerialChair implements ChairDriver {
      * @param opener opens the link to the board
      */
     SerialChair(AgentRuntime runtime, Settings settings, Clock clock, BoardLink.Opener opener) {
+        this(runtime, settings, clock, opener, EnumSet.allOf(Defence.class));
+    }
+
+    SerialChair(AgentRuntime runtime, Settings settings, Clock clock, BoardLink.Opener opener, Set<Defence> defences) {
         this.runtime = runtime;
         this.settings = settings;
+        this.defences = defences.isEmpty() ? EnumSet.noneOf(Defence.class) : EnumSet.copyOf(defences);
         this.clock = clock;
         this.opener = opener;
         this.startNanos = clock.nanoTime();
@@ -156,7 +206,7 @@ public final class SerialChair implements ChairDriver {
         this.codec = new FrameCodec(settings.key());
         this.layout = settings.layout();
         this.odometry = new Odometry(settings.layout(), settings.start());
-        this.receiver = new FrameReceiver(codec, true, 500, this::onBoardFrame);
+        this.receiver = new FrameReceiver(codec, true, FrameReceiver.BOARD_FRAME_MAX_AGE_MS, this::onBoardFrame);
         this.reader = new Thread(this::readLoop, "serial-" + settings.name());
         this.reader.setDaemon(true);
         this.heartbeat = new Thread(this::heartbeatLoop, "serial-heartbeat-" + settings.name());
@@ -171,12 +221,20 @@ public final class SerialChair implements ChairDriver {
      *                                  and says that pseudo-terminals are not among them)
      */
     public static SerialChair open(AgentRuntime runtime, Settings settings) {
+        return openWithDefences(runtime, settings, EnumSet.allOf(Defence.class));
+    }
+
+    /**
+     * As {@link #open}, with only some of the driver's defences: for the tests that show what each
+     * one stands against. Never use it to drive a chair.
+     */
+    public static SerialChair openWithDefences(AgentRuntime runtime, Settings settings, Set<Defence> defences) {
         if (!Files.exists(Path.of(settings.port())) && !settings.port().toUpperCase().startsWith("COM")) {
             String found = Arrays.stream(SerialPort.getCommPorts()).map(SerialPort::getSystemPortPath).collect(Collectors.joining(", "));
             throw new IllegalArgumentException("no serial port at " + settings.port() + "; ports found: "
                     + (found.isEmpty() ? "none" : found) + " (pseudo-terminals, such as socat's, are never listed: give their path)");
         }
-        SerialChair c = new SerialChair(runtime, settings, Clock.system(), () -> openSerialPort(settings));
+        SerialChair c = new SerialChair(runtime, settings, Clock.system(), () -> openSerialPort(settings), defences);
         c.reader.start();
         c.heartbeat.start();
         return c;
@@ -214,12 +272,62 @@ public final class SerialChair implements ChairDriver {
 
     private void command(int l, int r) {
         long c = ((long) l << 32) | (r & 0xFFFFFFFFL);
-        boolean change = c != command || expired;
-        command = c;
+        boolean change;
+        synchronized (sendLock) {
+            if (motionHeld && defences.contains(Defence.NEUTRAL_UNTIL_RESUMED)) {
+                c = 0; // held: a command given now is not kept for after the resume
+            }
+            change = c != command || expired;
+            command = c;
+        }
         confirmedNanos = clock.nanoTime();
         if (change) {
             expired = false;
             sendCommand();
+        }
+    }
+
+    /** The supervisor holds motion: the command is forgotten, neutral goes out at once and until {@link #releaseMotion()}. */
+    @Override
+    public void holdMotion() {
+        if (!defences.contains(Defence.NEUTRAL_UNTIL_RESUMED)) {
+            stop();
+            return;
+        }
+        neutralOnly();
+        expired = false;
+        confirmedNanos = clock.nanoTime();
+        sendCommand();
+    }
+
+    /** The supervisor resumed: the agents' commands go out again. */
+    @Override
+    public void releaseMotion() {
+        synchronized (sendLock) {
+            motionHeld = false;
+        }
+    }
+
+    /** True while only neutral goes out (a hold, until the supervisor resumes). */
+    public boolean motionHeld() {
+        synchronized (sendLock) {
+            return motionHeld;
+        }
+    }
+
+    /**
+     * The one place a hold clears the command: the heartbeat forgets it, the next frame is a STOP,
+     * and only neutral goes out until {@link #releaseMotion()}. Every hold comes here: a new
+     * session, a lost link, the supervisor's, a frozen host. Any thread.
+     */
+    private void neutralOnly() {
+        if (!defences.contains(Defence.NEUTRAL_UNTIL_RESUMED)) {
+            return;
+        }
+        synchronized (sendLock) {
+            command = 0;
+            stopSent = false;
+            motionHeld = true;
         }
     }
 
@@ -254,6 +362,35 @@ public final class SerialChair implements ChairDriver {
     /** Frames taken. */
     public long accepted() {
         return accepted;
+    }
+
+    /** Frames sent to the board, of every type. */
+    public long framesSent() {
+        return framesSent.get();
+    }
+
+    /** How often the port was opened: each opening starts a session (a SYNC PING first). */
+    public long sessions() {
+        return sessions.get();
+    }
+
+    /** Frames sent to the board since the port was last opened (a new session's SYNC PING and CONFIGURE first). */
+    public long sessionFramesSent() {
+        return sessionFrames;
+    }
+
+    /** How often a frozen host's command was not sent (nothing sent for over {@link Settings#frozenMs()}). */
+    public long frozen() {
+        return frozenCount.get();
+    }
+
+    /**
+     * The board's clock drift against the host's, as measured since the session or the board's
+     * restart began (0.03: the board's clock runs 3 % slow; negative: fast); NaN before a second
+     * of frames.
+     */
+    public double drift() {
+        return receiver.drift();
     }
 
     /** Refusals (NAKs) received. */
@@ -390,15 +527,64 @@ public final class SerialChair implements ChairDriver {
             macLogged = true;
             LOG.error("{}: {} ({} frames dropped)", settings.name(), macMismatch(), receiver.drops().get("mac") - macAtOpen);
         }
+        double drift = receiver.drift();
+        if (!driftLogged && port != null && receiver.driftSpanMs() >= 10_000 && Math.abs(drift) > SequenceCheck.DRIFT) {
+            driftLogged = true;
+            LOG.warn("{}: {}: its frames grow late by {} ms a second, and are stale once {} ms late", settings.name(), driftWords(drift),
+                    Math.round((Math.abs(drift) - SequenceCheck.DRIFT) * 1000), FrameReceiver.BOARD_FRAME_MAX_AGE_MS);
+        }
         if (heard && port != null && now - lastFrameNanos > settings.silentMs() * 1_000_000) {
             long silent = (now - lastFrameNanos) / 1_000_000;
-            lost("the board has been silent for " + silent + " ms");
+            long stale = receiver.drops().get("stale") - staleAtFrame;
+            long dropped = receiver.drops().total() - droppedAtFrame;
+            if (stale > 0 && stale == dropped) {
+                lost("every frame stale: " + driftWords(drift) + "; " + stale + " frames in " + silent + " ms were dropped as over "
+                        + FrameReceiver.BOARD_FRAME_MAX_AGE_MS + " ms late");
+            } else if (dropped > 0) {
+                lost("every frame from the board was dropped for " + silent + " ms (" + dropped + " frames, " + stale + " of them stale;"
+                        + " drops so far: " + receiver.drops() + ")");
+            } else {
+                lost("the board has been silent for " + silent + " ms");
+            }
         }
     }
 
+    /** The measured drift in words: "the board's clock drifts more than 2 % (3.0 % slow, measured over 50.5 s)". */
+    private String driftWords(double drift) {
+        if (Double.isNaN(drift)) {
+            return "the board's clock drifts more than " + TOLERANCE + " (too few frames to measure by how much)";
+        }
+        String over = Math.abs(drift) > SequenceCheck.DRIFT ? "more than" : "within";
+        return "the board's clock drifts " + over + " " + TOLERANCE + " (" + pct(Math.abs(drift)) + " % "
+                + (drift >= 0 ? "slow" : "fast") + ", measured over " + String.format(java.util.Locale.ROOT, "%.1f", receiver.driftSpanMs() / 1000.0)
+                + " s)";
+    }
+
+    private static String pct(double fraction) {
+        return String.format(java.util.Locale.ROOT, "%.1f", fraction * 100);
+    }
+
     private void sendCommand() {
+        String frozeWhy = null;
         synchronized (sendLock) {
-            long c = command;
+            long now = clock.nanoTime();
+            long c = motionHeld && defences.contains(Defence.NEUTRAL_UNTIL_RESUMED) ? 0 : command;
+            if (c != 0 && port != null && lastWriteNanos >= 0 && now - lastWriteNanos > settings.frozenMs() * 1_000_000
+                    && defences.contains(Defence.NO_FROZEN_COMMAND)) {
+                // Nothing went to the board for longer than the freeze limit: the host was frozen
+                // or starved, and the command it holds was decided before that. Never sent: the
+                // board may not have tripped, and would drive on it.
+                frozeWhy = "nothing was sent to the board for " + (now - lastWriteNanos) / 1_000_000 + " ms (over "
+                        + settings.frozenMs() + " ms: the host was frozen or late); the command it held, confirmed "
+                        + (now - confirmedNanos) / 1_000_000 + " ms ago, is not sent";
+                frozenCount.incrementAndGet();
+                command = 0;
+                stopSent = false;
+                if (defences.contains(Defence.NEUTRAL_UNTIL_RESUMED)) {
+                    motionHeld = true;
+                }
+                c = 0;
+            }
             int l = (int) (c >> 32);
             int r = (int) c;
             boolean neutral = l == 0 && r == 0;
@@ -410,6 +596,11 @@ public final class SerialChair implements ChairDriver {
                 }
                 write(Frame.Type.DRIVE, BoardProtocol.drive(l, r));
             }
+        }
+        if (frozeWhy != null) {
+            String why = frozeWhy;
+            LOG.warn("{}: {}: sends STOP and holds motion until the supervisor resumes", settings.name(), why);
+            runtime.execute(() -> event(new ChairEvent(ChairEvent.Kind.HOST_FROZEN, why)));
         }
     }
 
@@ -431,6 +622,9 @@ public final class SerialChair implements ChairDriver {
     private boolean sendFrame(BoardLink p, int type, int flags, byte[] body) {
         byte[] b = codec.encode(new Frame(type, flags, seq, nowMs(), body));
         seq = (seq + 1) & 0xFFFF;
+        lastWriteNanos = clock.nanoTime();
+        framesSent.incrementAndGet();
+        sessionFrames++;
         return p.write(b);
     }
 
@@ -487,11 +681,19 @@ public final class SerialChair implements ChairDriver {
         heard = false;
         macAtOpen = receiver.drops().get("mac");
         macLogged = false;
+        staleAtFrame = receiver.drops().get("stale");
+        droppedAtFrame = receiver.drops().total();
+        driftLogged = false;
         synchronized (sendLock) {
+            // A new session never carries the last one's command: cleared before the port is used.
+            neutralOnly();
             sync = true;
             stopSent = false;
+            lastWriteNanos = -1;
+            sessionFrames = 0;
             port = p;
         }
+        sessions.incrementAndGet();
         LOG.info("{}: opened {}{}", settings.name(), settings.port(), codec.paired() ? " (paired: every frame carries a MAC)" : "");
         return true;
     }
@@ -520,9 +722,14 @@ public final class SerialChair implements ChairDriver {
         if (port == null) {
             return;
         }
+        neutralOnly();
         closePort();
-        LOG.warn("{}: link down: {}; opens the port again when it returns", settings.name(), why);
-        runtime.execute(() -> setOnline(false));
+        LOG.warn("{}: link down: {}; opens the port again when it returns (frames dropped so far: {})", settings.name(), why,
+                receiver.drops());
+        runtime.execute(() -> {
+            event(new ChairEvent(ChairEvent.Kind.LINK_LOST, why));
+            setOnline(false);
+        });
     }
 
     private void closePort() {
@@ -547,6 +754,8 @@ public final class SerialChair implements ChairDriver {
     private void onBoardFrame(Frame f) {
         lastFrameNanos = clock.nanoTime();
         heard = true;
+        staleAtFrame = receiver.drops().get("stale");
+        droppedAtFrame = receiver.drops().total();
         accepted++;
         try {
             switch (f.type()) {

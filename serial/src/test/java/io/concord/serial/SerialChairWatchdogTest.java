@@ -1,5 +1,6 @@
 package io.concord.serial;
 
+import io.concord.agents.chair.ChairEvent;
 import io.concord.agents.chair.ChairFault;
 import io.concord.agents.chair.ChairLayout;
 import io.concord.agents.chair.ChairListener;
@@ -13,6 +14,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.List;
 import java.util.Set;
 import java.util.SplittableRandom;
@@ -36,12 +38,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  *   <li>The command goes out again every heartbeat while the agents confirmed it within 300 ms;
  *       past that, one STOP and silence, until the agents confirm a command again.</li>
  *   <li>A stop is one STOP, then neutral DRIVEs at each heartbeat.</li>
+ *   <li>Every hold (a new session, a lost link, the supervisor's, a frozen host) clears the
+ *       command: only neutral goes out until the supervisor resumes, even when the port reopens
+ *       before the supervisor's hold reaches the driver.</li>
+ *   <li>Nothing sent for over 150 ms (the host frozen): the command from before is never sent.</li>
+ *   <li>A link lost to stale frames says so, with the board's clock drift measured; a silent
+ *       board is silent.</li>
  * </ul>
  */
 class SerialChairWatchdogTest {
     private static final long HEARTBEAT_MS = 50;
     private static final long SILENT_MS = 500;
     private static final long DEADLINE_MS = 300;
+    private static final long FROZEN_MS = 150;
 
     private final ManualClock clock = new ManualClock();
     private final AgentRuntime runtime = AgentRuntime.builder().clock(clock)
@@ -96,15 +105,25 @@ class SerialChairWatchdogTest {
 
     @BeforeEach
     void openTheLink() {
+        openWith(EnumSet.allOf(SerialChair.Defence.class));
+    }
+
+    /** A new driver with these defences, its link open, the board's first STATE taken, motion released as the supervisor would. */
+    private void openWith(Set<SerialChair.Defence> defences) {
+        ports.clear();
+        heard.clear();
+        clock.setNanoTime(0);
+        boardSeq = 0;
         SerialChair.Settings s = SerialChair.Settings.of("test-port", "chair1");
         assertEquals(HEARTBEAT_MS, s.heartbeatMs());
         assertEquals(SILENT_MS, s.silentMs());
         assertEquals(DEADLINE_MS, s.commandDeadlineMs());
+        assertEquals(FROZEN_MS, s.frozenMs());
         chair = new SerialChair(runtime, s, clock, () -> {
             FakePort p = new FakePort();
             ports.add(p);
             return p;
-        });
+        }, defences);
         chair.setListener(new ChairListener() {
             @Override
             public void onReadings(ChairReadings r) {
@@ -115,11 +134,20 @@ class SerialChairWatchdogTest {
             public void onOnline(boolean online) {
                 heard.add(online ? "online" : "offline");
             }
+
+            @Override
+            public void onEvent(ChairEvent e) {
+                if (e.kind() == ChairEvent.Kind.LINK_LOST || e.kind() == ChairEvent.Kind.HOST_FROZEN) {
+                    heard.add(e.toString());
+                }
+            }
         });
         assertTrue(chair.openPort());
         boardSays();
         assertEquals(List.of("online", "reading"), heard);
         heard.clear();
+        assertTrue(chair.motionHeld(), "a new session holds motion until the supervisor resumes");
+        chair.releaseMotion(); // as the supervisor does once the board says it is armed
         assertEquals(List.of(), port().take(), "nothing to send before the agents or the heartbeat ask");
     }
 
@@ -134,8 +162,12 @@ class SerialChairWatchdogTest {
 
     /** The board sends a STATE now (armed, nothing in range), and the loop takes it. */
     private void boardSays() {
+        boardSays(clock.nanoTime() / 1_000_000);
+    }
+
+    /** The board sends a STATE stamped {@code nowMs} on its own clock, and the loop takes it. */
+    private void boardSays(long nowMs) {
         int sensors = ChairLayout.standard().sensors().size();
-        long nowMs = clock.nanoTime() / 1_000_000;
         byte[] body = BoardProtocol.state(new BoardProtocol.State(1, 0, 0, new int[sensors], false, false, true,
                 BoardProtocol.ARMED, 24_000, Set.of(), null));
         byte[] b = codec.encode(new Frame(Frame.Type.STATE, 0, boardSeq++ & 0xFFFF, nowMs, body));
@@ -184,7 +216,8 @@ class SerialChairWatchdogTest {
         beatAt(SILENT_MS + 1);
         assertTrue(port().closed, "501 ms without a frame from the board: the port is closed");
         assertFalse(chair.online());
-        assertEquals(List.of("reading LINK", "offline"), heard, "a last reading with the LINK fault, then offline");
+        assertEquals(List.of("LINK_LOST (the board has been silent for 501 ms)", "reading LINK", "offline"), heard,
+                "why, then a last reading with the LINK fault, then offline");
         assertEquals(List.of(), port().take(), "the heartbeat sent nothing on a link it took for lost");
         agentsDriveAt(SILENT_MS + 40, 20, 30);
         beatAt(SILENT_MS + 51);
@@ -197,7 +230,7 @@ class SerialChairWatchdogTest {
         beatAt(HEARTBEAT_MS);
         assertEquals(List.of("PING SYNC", "CONFIGURE", "STOP"), port().take(), "the first session");
         beatAt(SILENT_MS + 1);
-        assertEquals(List.of("reading LINK", "offline"), heard);
+        assertEquals(List.of("LINK_LOST (the board has been silent for 501 ms)", "reading LINK", "offline"), heard);
         heard.clear();
         assertEquals(1, chair.reconnects());
         // The reader opens the port again (after its back-off); the agents want the chair to stand.
@@ -298,5 +331,144 @@ class SerialChairWatchdogTest {
             beatAt(ms);
             assertEquals(List.of("DRIVE 0,0"), port().take(), "at " + ms + " ms");
         }
+    }
+
+    // ---- holds: only neutral until the supervisor resumes ----------------------------------------
+
+    /**
+     * The race of issue 51: the board falls silent mid-drive, the link goes down, and the agents
+     * confirm their drive once more before the supervisor's hold reaches the driver; the port opens
+     * again at once. What the board gets on the new session.
+     */
+    private List<String> reconnectedWhileTheAgentsStillDrive() {
+        agentsDriveAt(0, 60, 60);
+        assertEquals(List.of("PING SYNC", "CONFIGURE", "DRIVE 600,600"), port().take());
+        for (long ms = HEARTBEAT_MS; ms <= SILENT_MS; ms += HEARTBEAT_MS) {
+            agentsDriveAt(ms - 10, 60, 60);
+            beatAt(ms);
+        }
+        beatAt(SILENT_MS + 1);
+        assertTrue(port().closed, "the link is down");
+        agentsDriveAt(SILENT_MS + 2, 60, 60);  // the agents' loop, not yet told
+        clock.setNanoTime((SILENT_MS + 3) * 1_000_000);
+        assertTrue(chair.openPort());          // the reader opens the port again at once
+        beatAt(SILENT_MS + 20);                // the heartbeat, before the loop runs the hold
+        return port().take();
+    }
+
+    @Test
+    void aReconnectWhileTheAgentsStillDriveSendsOnlyNeutralUntilTheSupervisorResumes() {
+        assertEquals(List.of("PING SYNC", "CONFIGURE", "STOP"), reconnectedWhileTheAgentsStillDrive(),
+                "the new session's third frame is neutral: the lost link cleared the command");
+        assertTrue(chair.motionHeld());
+        for (long ms = 550; ms <= 1_000; ms += HEARTBEAT_MS) {
+            agentsDriveAt(ms - 5, 60, 60);     // the agents ask on; a supervisor would not even pass it
+            if (ms % 100 == 0) {
+                boardSays();
+            }
+            beatAt(ms);
+            assertEquals(List.of("DRIVE 0,0"), port().take(), "only neutral while held, at " + ms + " ms");
+        }
+        chair.releaseMotion();                 // the supervisor resumed: the board said armed twice
+        assertEquals(List.of(), port().take(), "a command given while held is not kept for after the resume");
+        agentsDriveAt(1_010, 60, 60);
+        assertEquals(List.of("DRIVE 600,600"), port().take(), "the agents' next command drives");
+    }
+
+    @Test
+    void withoutItsDefenceAReconnectSendsTheLastDriveAsTheNewSessionsThirdFrame() {
+        openWith(EnumSet.complementOf(EnumSet.of(SerialChair.Defence.NEUTRAL_UNTIL_RESUMED)));
+        assertEquals(List.of("PING SYNC", "CONFIGURE", "DRIVE 600,600"), reconnectedWhileTheAgentsStillDrive(),
+                "the hazard: a board that missed the SYNC drives on a command from before the link was lost");
+    }
+
+    @Test
+    void theSupervisorsHoldSendsStopAtOnceAndNeutralAfter() {
+        agentsDriveAt(0, 60, 60);
+        port().take();
+        clock.setNanoTime(20_000_000);
+        chair.holdMotion();
+        assertEquals(List.of("STOP"), port().take());
+        agentsDriveAt(30, 60, 60);
+        beatAt(50);
+        assertEquals(List.of("DRIVE 0,0"), port().take());
+    }
+
+    // ---- a host frozen mid-drive ---------------------------------------------------------------
+
+    /** Driving at 600,600, confirmed on every reading, then the whole host stops for 170 ms after the beat at 200 ms. */
+    private void drivingThenFrozenFor170Ms() {
+        agentsDriveAt(0, 60, 60);
+        port().take();
+        for (long ms = HEARTBEAT_MS; ms <= 200; ms += HEARTBEAT_MS) {
+            agentsDriveAt(ms - 10, 60, 60);
+            boardSays();
+            beatAt(ms);
+        }
+        assertEquals(List.of("DRIVE 600,600", "DRIVE 600,600", "DRIVE 600,600", "DRIVE 600,600"), port().take());
+        heard.clear();
+        // Frozen from 200 to 370 ms: nothing runs. The board has not tripped (170 ms < 200 ms).
+    }
+
+    @Test
+    void aHostFrozenFor170MsNeverSendsTheCommandFromBeforeTheFreeze() {
+        drivingThenFrozenFor170Ms();
+        beatAt(370);  // the heartbeat wakes first: the command was confirmed 180 ms ago, within the deadline
+        assertEquals(List.of("STOP"), port().take(), "the first frame after the freeze is neutral");
+        assertEquals(List.of("HOST_FROZEN (nothing was sent to the board for 170 ms (over 150 ms: the host was frozen or late);"
+                + " the command it held, confirmed 180 ms ago, is not sent)"), heard);
+        assertEquals(1, chair.frozen());
+        agentsDriveAt(375, 60, 60);
+        beatAt(420);
+        assertEquals(List.of("DRIVE 0,0"), port().take(), "held until the supervisor resumes");
+        chair.releaseMotion();
+        agentsDriveAt(430, 60, 60);
+        assertEquals(List.of("DRIVE 600,600"), port().take());
+    }
+
+    @Test
+    void aHostFrozenFor170MsWhoseLoopWakesFirstSendsNeutralToo() {
+        drivingThenFrozenFor170Ms();
+        agentsDriveAt(370, 70, 70);  // the loop wakes first, with a new command from a reading before the freeze
+        assertEquals(List.of("STOP"), port().take());
+        assertEquals(1, chair.frozen());
+    }
+
+    @Test
+    void withoutItsDefenceTheFirstFrameAfterAFreezeIsTheFrozenCommand() {
+        openWith(EnumSet.complementOf(EnumSet.of(SerialChair.Defence.NO_FROZEN_COMMAND)));
+        drivingThenFrozenFor170Ms();
+        beatAt(370);
+        assertEquals(List.of("DRIVE 600,600"), port().take(), "the hazard: a 180 ms old command to a board that has not tripped");
+        assertEquals(0, chair.frozen());
+    }
+
+    // ---- a link lost to stale frames --------------------------------------------------------------
+
+    @Test
+    void aLinkLostToStaleFramesSaysTheBoardsClockDriftsAndByHowMuch() {
+        long lastBeat = 0;
+        for (long ms = HEARTBEAT_MS; ms <= 60_000 && !port().closed; ms += HEARTBEAT_MS) {
+            clock.setNanoTime(ms * 1_000_000 - 1_000_000);
+            chair.stop();
+            boardSays(Math.round(ms * 0.97));  // the board's clock 3 % slow
+            beatAt(ms);
+            lastBeat = ms;
+        }
+        assertTrue(port().closed, "the link is lost");
+        // The delay grows by 1 % of the time passed (3 % less the 2 % tolerated): over 500 ms after 50 s.
+        assertTrue(lastBeat > 50_000 && lastBeat < 51_500, "lost at " + lastBeat + " ms");
+        String lost = heard.stream().filter(h -> h.startsWith("LINK_LOST")).findFirst().orElseThrow(() -> new AssertionError(heard));
+        assertTrue(lost.startsWith("LINK_LOST (every frame stale: the board's clock drifts more than 2 % (3.0 % slow, measured over 5"),
+                lost);
+        assertTrue(lost.contains(" frames in 5") && lost.endsWith(" ms were dropped as over 500 ms late)"), lost);
+        assertEquals(0.03, chair.drift(), 0.001);
+        assertTrue(chair.drops().get("stale") >= 10, chair.drops().toString());
+    }
+
+    @Test
+    void aBoardThatSaysNothingIsSilentNotStale() {
+        beatAt(SILENT_MS + 1);
+        assertEquals(List.of("LINK_LOST (the board has been silent for 501 ms)", "reading LINK", "offline"), heard);
     }
 }

@@ -670,7 +670,7 @@ public final class HospitalView implements ConsoleView {
             case ARMED -> "armed";
             case ARMING -> "re-arming";
             case OFFLINE -> "offline";
-            case HELD -> "held: " + s.hold() + (s.hold().cause().agentMayResume() ? "" : "; needs Resume");
+            case HELD -> "held: " + s.hold() + (s.hold().agentMayResume() ? "" : "; needs Resume");
         };
         // What it has seen since it started: e-stops, trips, reboots, refusals, links lost.
         StringBuilder seen = new StringBuilder();

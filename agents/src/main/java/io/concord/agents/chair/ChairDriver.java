@@ -29,6 +29,24 @@ public interface ChairDriver {
         drive(0, 0);
     }
 
+    /**
+     * A supervisor holds motion (docs/chair-safety.md): the driver forgets the last command at
+     * once and sends only neutral, whatever it is asked, until {@link #releaseMotion()}. A driver
+     * that repeats its command by itself (the serial driver's heartbeat) must never repeat one
+     * given before the hold. The default stops the chair.
+     */
+    default void holdMotion() {
+        stop();
+    }
+
+    /**
+     * The supervisor resumed (the board says it is armed again after a decision): commands reach
+     * the motors again. A driver that holds motion by itself (a new session, a lost link, a host
+     * that was frozen) stays held until this call. The default does nothing.
+     */
+    default void releaseMotion() {
+    }
+
     /** The latest state report, or null before the first. */
     ChairReadings latest();
 

@@ -1,8 +1,9 @@
 package io.concord.agents.chair;
 
 /**
- * Something a chair's board reported that is not a reading: a refusal, a change of its arming, a
- * reboot, a board that speaks another protocol. Told to the driver's listener on the loop, once
+ * Something a chair's board (or its driver) reported that is not a reading: a refusal, a change of
+ * its arming, a reboot, a board that speaks another protocol, why the link went down, a host that
+ * was frozen. Told to the driver's listener on the loop, once
  * per frame that carried it ({@link ChairListener#onEvent}); a {@link ChairSupervisor} turns them
  * into holds.
  *
@@ -22,7 +23,17 @@ public record ChairEvent(Kind kind, String detail) {
         /** The board started again (a new boot number in HELLO or STATE): its motors are at zero, its counts restarted. */
         REBOOTED,
         /** The board speaks another version of the protocol: nothing it says is taken. */
-        INCOMPATIBLE
+        INCOMPATIBLE,
+        /**
+         * The link went down, and why ("every frame stale: ...", "the board has been silent for
+         * 543 ms"): told just before {@link ChairListener#onOnline onOnline(false)}.
+         */
+        LINK_LOST,
+        /**
+         * The host was frozen or starved (its heartbeat ran late): the driver did not send the
+         * command it held, sent neutral, and holds motion until {@link ChairDriver#releaseMotion()}.
+         */
+        HOST_FROZEN
     }
 
     @Override

@@ -1,8 +1,12 @@
 package io.concord.agents.chair;
 
+import io.concord.core.time.Clock;
+
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
+import java.util.ArrayDeque;
+import java.util.EnumMap;
 import java.util.EnumSet;
 import java.util.Map;
 import java.util.Set;
@@ -29,7 +33,13 @@ import java.util.TreeMap;
  * says why). Nothing the chair reports ends a hold: only {@link #resume} does, a decision of an
  * agent or an operator, and only while the link is up and the e-stop released. Resuming sends
  * neutral and waits until the board says it is armed in two readings (a chair without an arming
- * board, the simulated one, is armed at once); a refused resume says why.
+ * board, the simulated one, is armed at once); a refused resume says why. Every hold reaches the
+ * chair as {@link ChairDriver#holdMotion()} (the driver forgets its last command), and the armed
+ * state as {@link ChairDriver#releaseMotion()}.
+ *
+ * <p>A fault that recurs is not resumed by the agents for ever: the {@link Repeats}th hold of one
+ * agent-resumable cause (a lost link, a watchdog trip, a frozen host) within its window holds the
+ * chair for an operator ({@link Hold#repeated()}), with the count in its reason.
  *
  * <p>Confined to the loop of the runtime that drives the chair, as every driver is. The
  * {@link Defence}s are there for tests: each hazard's test switches its defence off and watches
@@ -58,6 +68,8 @@ public final class ChairSupervisor implements ChairDriver {
         LINK(1, true),
         /** The board's watchdog stopped the motors: the host's commands came too late. */
         WATCHDOG(2, true),
+        /** The host was frozen or starved: its driver did not send the command it held (it was older than the host's silence). */
+        HOST_FROZEN(2, true),
         /** The board refused a command (a NAK) and said no more. */
         REFUSED(2, false),
         /** The e-stop was pressed (and may since have been released). */
@@ -85,20 +97,52 @@ public final class ChairSupervisor implements ChairDriver {
     /**
      * A hold: its cause and the chair's own words.
      *
-     * @param cause  why
-     * @param detail what the chair said ("NAK not neutral for frame 812", "boot 8 after boot 7")
+     * @param cause    why
+     * @param detail   what the chair said ("NAK not neutral for frame 812", "boot 8 after boot 7")
+     * @param repeated null, or how often the cause recurred ("the 3rd link loss within 10 minutes"):
+     *                 then only an operator resumes, whatever the cause
      */
-    public record Hold(Cause cause, String detail) {
+    public record Hold(Cause cause, String detail, String repeated) {
+        public Hold(Cause cause, String detail) {
+            this(cause, detail, null);
+        }
+
+        /** True if the control agent may decide alone to resume: the cause allows it and it has not recurred too often. */
+        public boolean agentMayResume() {
+            return cause.agentMayResume() && repeated == null;
+        }
+
         @Override
         public String toString() {
             return switch (cause) {
                 case START -> "not armed yet";
                 case LINK -> "the link to the chair went down";
                 case WATCHDOG -> "the board's watchdog tripped";
+                case HOST_FROZEN -> "the host was frozen";
                 case REFUSED -> "the board refused a command";
                 case ESTOP -> "the e-stop was pressed";
                 case REBOOT -> "the board restarted";
-            } + (detail == null || detail.isEmpty() ? "" : " (" + detail + ")");
+            } + (detail == null || detail.isEmpty() ? "" : " (" + detail + ")")
+                    + (repeated == null ? "" : "; " + repeated + ": an operator must resume it");
+        }
+    }
+
+    /**
+     * When a fault that the agents may resume after is one too many: the {@code count}th hold of
+     * one cause within {@code windowMs} holds the chair for an operator.
+     *
+     * @param count    holds of one cause (1 or more)
+     * @param windowMs within this many milliseconds (more than 0)
+     */
+    public record Repeats(int count, long windowMs) {
+        /** 3 within 10 minutes. */
+        public static final Repeats STANDARD = new Repeats(3, 600_000);
+
+        public Repeats {
+            if (count < 1 || windowMs <= 0) {
+                throw new IllegalArgumentException("repeats need a count of 1 or more and a window over 0 ms, not " + count + " within "
+                        + windowMs + " ms");
+            }
         }
     }
 
@@ -122,12 +166,20 @@ public final class ChairSupervisor implements ChairDriver {
         /** A board's reboot holds motion; off, it is ignored. */
         REBOOT_HOLDS,
         /** A link that went down holds motion when it comes back; off, driving goes on at once. */
-        LINK_HOLDS
+        LINK_HOLDS,
+        /** A fault that recurs ({@link Repeats}) holds the chair for an operator; off, the agents resume it for ever. */
+        REPEATS_NEED_OPERATOR
     }
 
     private final ChairDriver chair;
     private final Set<Defence> defences;
+    private final Clock clock;
+    private final Repeats repeats;
+    /** When each agent-resumable cause last held motion, within the repeats' window (ms of the clock). */
+    private final Map<Cause, ArrayDeque<Long>> recent = new EnumMap<>(Cause.class);
     private final Map<String, Long> counts = new TreeMap<>();
+    /** Why the link went down, as the driver said it just before; null once taken. */
+    private String linkLoss;
     private ChairListener listener;
     private Observer observer;
     private State state;
@@ -137,13 +189,20 @@ public final class ChairSupervisor implements ChairDriver {
     private int armedReadings;
     private String decidedBy;
 
-    /** Supervises {@code chair} with every defence on. */
+    /** Supervises {@code chair} with every defence on, on the system's clock, {@link Repeats#STANDARD}. */
     public ChairSupervisor(ChairDriver chair) {
-        this(chair, EnumSet.allOf(Defence.class));
+        this(chair, Clock.system(), Repeats.STANDARD);
     }
 
-    private ChairSupervisor(ChairDriver chair, Set<Defence> defences) {
+    /** Supervises {@code chair} with every defence on, timing repeated faults on {@code clock}. */
+    public ChairSupervisor(ChairDriver chair, Clock clock, Repeats repeats) {
+        this(chair, EnumSet.allOf(Defence.class), clock, repeats);
+    }
+
+    private ChairSupervisor(ChairDriver chair, Set<Defence> defences, Clock clock, Repeats repeats) {
         this.chair = chair;
+        this.clock = clock;
+        this.repeats = repeats;
         this.defences = EnumSet.noneOf(Defence.class);
         this.defences.addAll(defences);
         this.state = chair.online() ? State.HELD : State.OFFLINE;
@@ -171,7 +230,12 @@ public final class ChairSupervisor implements ChairDriver {
      * Never use it to drive a chair.
      */
     public static ChairSupervisor withDefences(ChairDriver chair, Set<Defence> defences) {
-        return new ChairSupervisor(chair, defences);
+        return new ChairSupervisor(chair, defences, Clock.system(), Repeats.STANDARD);
+    }
+
+    /** As {@link #withDefences(ChairDriver, Set)}, on a test's clock and repeats. Never use it to drive a chair. */
+    public static ChairSupervisor withDefences(ChairDriver chair, Set<Defence> defences, Clock clock, Repeats repeats) {
+        return new ChairSupervisor(chair, defences, clock, repeats);
     }
 
     /** Sets the one observer of holds and resumes (replacing any before); null removes it. */
@@ -221,7 +285,7 @@ public final class ChairSupervisor implements ChairDriver {
         if (estopPressed && defences.contains(Defence.ESTOP_HOLDS)) {
             return "has its e-stop pressed";
         }
-        if (state == State.HELD && !hold.cause().agentMayResume()) {
+        if (state == State.HELD && !hold.agentMayResume()) {
             return "is paused: " + hold + "; it waits for an operator's resume";
         }
         if (state != State.ARMED && hold.cause() != Cause.START) {
@@ -247,6 +311,9 @@ public final class ChairSupervisor implements ChairDriver {
             return chair.name() + "'s e-stop is still pressed: release it first";
         }
         count("resume");
+        if (hold.repeated() != null) {
+            recent.remove(hold.cause()); // an operator decided: the count of that fault starts again
+        }
         decidedBy = who;
         LOG.info("{}: resumes after {}: decided by {}", chair.name(), hold, who);
         state = State.ARMING;
@@ -347,7 +414,9 @@ public final class ChairSupervisor implements ChairDriver {
         if (!up) {
             count("link-down");
             state = State.OFFLINE;
-            hold = new Hold(Cause.LINK, "no word from the chair");
+            chair.holdMotion();
+            hold = new Hold(Cause.LINK, linkLoss == null ? "no word from the chair" : linkLoss, repeated(Cause.LINK));
+            linkLoss = null;
             LOG.warn("{}: holds motion: {}", chair.name(), hold);
             if (observer != null) {
                 observer.onHold(hold);
@@ -358,6 +427,7 @@ public final class ChairSupervisor implements ChairDriver {
                 state = State.HELD;
             } else {
                 state = State.ARMED;
+                chair.releaseMotion();
             }
         }
         if (listener != null) {
@@ -402,6 +472,13 @@ public final class ChairSupervisor implements ChairDriver {
                 }
             }
             case INCOMPATIBLE -> count("incompatible");
+            case LINK_LOST -> linkLoss = e.detail();
+            case HOST_FROZEN -> {
+                count("host-frozen");
+                if (state != State.OFFLINE) {
+                    holdFor(Cause.HOST_FROZEN, e.detail());
+                }
+            }
             default -> { }
         }
         if (listener != null) {
@@ -416,9 +493,9 @@ public final class ChairSupervisor implements ChairDriver {
         }
         boolean news = state != State.HELD || cause != hold.cause();
         state = State.HELD;
-        chair.stop();
+        chair.holdMotion();
         if (news) {
-            hold = new Hold(cause, detail);
+            hold = new Hold(cause, detail, repeated(cause));
             count("hold");
             LOG.warn("{}: holds motion: {}", chair.name(), hold);
             if (observer != null) {
@@ -427,8 +504,57 @@ public final class ChairSupervisor implements ChairDriver {
         }
     }
 
+    /**
+     * Notes one more hold of {@code cause}: null if the agents may still resume after it, else how
+     * often it recurred within the window (then an operator must).
+     */
+    private String repeated(Cause cause) {
+        if (!cause.agentMayResume() || !defences.contains(Defence.REPEATS_NEED_OPERATOR)) {
+            return null;
+        }
+        long now = clock.nanoTime() / 1_000_000;
+        ArrayDeque<Long> times = recent.computeIfAbsent(cause, c -> new ArrayDeque<>());
+        times.addLast(now);
+        while (now - times.peekFirst() > repeats.windowMs()) {
+            times.removeFirst();
+        }
+        if (times.size() < repeats.count()) {
+            return null;
+        }
+        count("repeated");
+        String what = switch (cause) {
+            case LINK -> "link loss";
+            case WATCHDOG -> "watchdog trip";
+            case HOST_FROZEN -> "host freeze";
+            default -> cause.name().toLowerCase(java.util.Locale.ROOT);
+        };
+        String r = "the " + ordinal(times.size()) + " " + what + " within " + minutes(repeats.windowMs());
+        LOG.warn("{}: {}: holds the chair for an operator (the agents no longer resume it by themselves)", chair.name(), r);
+        return r;
+    }
+
+    private static String ordinal(int n) {
+        int t = n % 100;
+        String suffix = t >= 11 && t <= 13 ? "th" : switch (n % 10) {
+            case 1 -> "st";
+            case 2 -> "nd";
+            case 3 -> "rd";
+            default -> "th";
+        };
+        return n + suffix;
+    }
+
+    private static String minutes(long ms) {
+        if (ms % 60_000 == 0) {
+            long m = ms / 60_000;
+            return m + (m == 1 ? " minute" : " minutes");
+        }
+        return ms / 1000.0 + " s";
+    }
+
     private void becomeArmed() {
         state = State.ARMED;
+        chair.releaseMotion();
         LOG.info("{}: armed again (decided by {})", chair.name(), decidedBy);
         if (observer != null) {
             observer.onArmed(decidedBy);

@@ -19,7 +19,7 @@ import java.util.function.Supplier;
  * whoever gave the task is told (INFORM {@code paused}, conversation
  * {@code <cfp's>/status}), again each keep-alive while paused, and told again when it resumes
  * (INFORM {@code resumed}). After a trip or a lost link that came back the agent decides to resume
- * by itself, and with no task accepted it resumes whatever the hold (no motion follows until a
+ * by itself, and with no task accepted it resumes whatever the hold but a recurring fault (no motion follows until a
  * task does); after an e-stop, a reboot or a refusal the board did not explain, only an operator
  * does. A link down for the grace time fails the tasks (the Medical agent gives them to another
  * chair).
@@ -80,7 +80,7 @@ final class Holds implements ChairSupervisor.Observer {
     /** A reading came: an e-stop released says what follows; the agent resumes if it may. */
     void reading(ChairReadings r) {
         if (estopSeen && !r.emergencyStop() && supervisor.state() == ChairSupervisor.State.HELD
-                && !supervisor.hold().cause().agentMayResume() && agent.hasWork()) {
+                && !supervisor.hold().agentMayResume() && agent.hasWork()) {
             agent.say("the e-stop of " + supervisor.name() + " is released: the chair stays held until an operator resumes it");
         }
         estopSeen = r.emergencyStop();
@@ -111,7 +111,7 @@ final class Holds implements ChairSupervisor.Observer {
     /** The supervisor holds the chair: the task is paused, and whoever gave it is told why. */
     @Override
     public void onHold(ChairSupervisor.Hold hold) {
-        String how = hold.cause().agentMayResume() ? "it resumes when the chair can drive again" : "it waits for an operator's resume";
+        String how = hold.agentMayResume() ? "it resumes when the chair can drive again" : "it waits for an operator's resume";
         Task active = agent.active();
         if (active != null) {
             active.paused = hold + "; " + how;
@@ -144,16 +144,18 @@ final class Holds implements ChairSupervisor.Observer {
     /**
      * The agent's own decision to resume: after a trip or a link that came back, or with no task
      * accepted at all (no motion follows until a task is); never after an e-stop, a reboot or an
-     * unexplained refusal while it holds a task.
+     * unexplained refusal while it holds a task, nor after a fault that recurred too often
+     * ({@link ChairSupervisor.Hold#repeated()}), task or not.
      */
     private void decideToResume() {
         if (supervisor.state() != ChairSupervisor.State.HELD || !supervisor.online() || supervisor.estopPressed()) {
             return;
         }
         ChairSupervisor.Hold h = supervisor.hold();
-        if (h.cause().agentMayResume()) {
+        if (h.agentMayResume()) {
             supervisor.resume(name.get() + " (" + h + ")");
-        } else if (!agent.hasWork()) {
+        } else if (!agent.hasWork() && h.repeated() == null) {
+            // A fault that recurs waits for an operator even with no task: the next task would meet it.
             supervisor.resume(name.get() + " (" + h + "; no task accepted)");
         }
     }
@@ -211,7 +213,7 @@ final class Holds implements ChairSupervisor.Observer {
 
     /** Whether the agent resumes by itself after the hold (else an operator does). */
     private boolean agentResumes() {
-        return supervisor.hold().cause().agentMayResume();
+        return supervisor.hold().agentMayResume();
     }
 
     /** Tells whoever gave the task how it stands (paused, resumed), outside the contract's conversation. */

@@ -1,5 +1,7 @@
 package io.concord.agents.chair;
 
+import io.concord.core.time.ManualClock;
+
 import org.junit.jupiter.api.Test;
 
 import java.util.ArrayList;
@@ -24,6 +26,9 @@ class ChairSupervisorTest {
         ChairListener listener;
         boolean online = true;
         long seq;
+        /** True between the supervisor's holdMotion() and releaseMotion(). */
+        boolean motionHeld;
+        int releases;
 
         @Override
         public String name() {
@@ -38,6 +43,18 @@ class ChairSupervisorTest {
         @Override
         public void drive(double l, double r) {
             commands.add(l == 0 && r == 0 ? "neutral" : "drive " + (int) l + "," + (int) r);
+        }
+
+        @Override
+        public void holdMotion() {
+            motionHeld = true;
+            stop();
+        }
+
+        @Override
+        public void releaseMotion() {
+            motionHeld = false;
+            releases++;
         }
 
         @Override
@@ -90,7 +107,11 @@ class ChairSupervisorTest {
     }
 
     private static ChairSupervisor armedOn(FakeChair c, Set<ChairSupervisor.Defence> defences, Heard heard) {
-        ChairSupervisor s = ChairSupervisor.withDefences(c, defences);
+        return armedOn(c, defences, heard, new ManualClock());
+    }
+
+    private static ChairSupervisor armedOn(FakeChair c, Set<ChairSupervisor.Defence> defences, Heard heard, ManualClock clock) {
+        ChairSupervisor s = ChairSupervisor.withDefences(c, defences, clock, ChairSupervisor.Repeats.STANDARD);
         s.setObserver(heard);
         s.setListener(new ChairListener() {
             @Override
@@ -238,5 +259,107 @@ class ChairSupervisorTest {
         oc.listener.onOnline(true);
         off.drive(50, 50);
         assertEquals("drive 50,50", oc.last());
+    }
+
+    // ---- faults that recur -----------------------------------------------------------------------
+
+    /**
+     * The link goes down with the driver's reason, comes back 50.5 s later on the clock, and the
+     * agent resumes if the hold lets it (as the control agent decides): the hold after the loss.
+     */
+    private static ChairSupervisor.Hold linkLostAndBack(FakeChair c, ChairSupervisor s, ManualClock clock) {
+        c.event(ChairEvent.Kind.LINK_LOST, "every frame stale: the board's clock drifts more than 2 % (3.0 % slow)");
+        c.online = false;
+        c.listener.onOnline(false);
+        assertTrue(c.motionHeld, "the driver is told to forget its command at once");
+        clock.advanceNs(50_500_000_000L);
+        c.online = true;
+        c.listener.onOnline(true);
+        ChairSupervisor.Hold h = s.hold();
+        if (h.agentMayResume()) {
+            assertNull(s.resume("the control agent"));
+            c.event(ChairEvent.Kind.ARMED, null);
+            c.reading(false);
+            c.reading(false);
+            assertEquals(ChairSupervisor.State.ARMED, s.state());
+            assertTrue(!c.motionHeld, "released when armed again");
+        }
+        return h;
+    }
+
+    @Test
+    void aLinkLostThreeTimesWithinTenMinutesHoldsTheChairForAnOperatorWithTheReason() {
+        FakeChair c = new FakeChair();
+        ManualClock clock = new ManualClock();
+        ChairSupervisor s = armedOn(c, all(), new Heard(), clock);
+        assertTrue(linkLostAndBack(c, s, clock).agentMayResume(), "the first loss: the agent resumes");
+        assertTrue(linkLostAndBack(c, s, clock).agentMayResume(), "the second");
+        ChairSupervisor.Hold third = linkLostAndBack(c, s, clock);
+        assertEquals(ChairSupervisor.Cause.LINK, third.cause());
+        assertEquals("the 3rd link loss within 10 minutes", third.repeated());
+        assertTrue(!third.agentMayResume(), "the third within 10 minutes: an operator's");
+        assertEquals("the link to the chair went down (every frame stale: the board's clock drifts more than 2 % (3.0 % slow)); the 3rd"
+                + " link loss within 10 minutes: an operator must resume it", third.toString());
+        assertEquals(ChairSupervisor.State.HELD, s.state());
+        s.drive(50, 50);
+        assertEquals("neutral", c.last());
+        assertTrue(s.whyNotAvailable().contains("waits for an operator's resume"), s.whyNotAvailable());
+        assertEquals(1L, s.counts().get("repeated"));
+        assertNull(s.resume("nurse Ada"));
+        c.event(ChairEvent.Kind.ARMED, null);
+        c.reading(false);
+        c.reading(false);
+        s.drive(50, 50);
+        assertEquals("drive 50,50", c.last(), "the operator resumed it");
+        assertTrue(linkLostAndBack(c, s, clock).agentMayResume(), "after an operator's decision the count starts again");
+    }
+
+    @Test
+    void linkLossesFurtherApartThanTheWindowAreResumedByTheAgent() {
+        FakeChair c = new FakeChair();
+        ManualClock clock = new ManualClock();
+        ChairSupervisor s = armedOn(c, all(), new Heard(), clock);
+        for (int i = 0; i < 6; i++) {
+            clock.advanceNs(250_000_000_000L); // each loss 300.5 s after the last: two in any 10 minutes
+            assertTrue(linkLostAndBack(c, s, clock).agentMayResume(), "loss " + (i + 1));
+        }
+    }
+
+    @Test
+    void withoutItsDefenceALinkLostOverAndOverIsResumedByTheAgentForEver() {
+        FakeChair c = new FakeChair();
+        ManualClock clock = new ManualClock();
+        ChairSupervisor s = armedOn(c, allBut(ChairSupervisor.Defence.REPEATS_NEED_OPERATOR), new Heard(), clock);
+        for (int i = 0; i < 10; i++) {
+            assertTrue(linkLostAndBack(c, s, clock).agentMayResume(), "the hazard: loss " + (i + 1) + " resumed by the agent");
+        }
+        assertEquals(10L, s.counts().get("link-down"));
+    }
+
+    @Test
+    void aHostFrozenHoldsMotionAndTheAgentMayResumeItThreeTimesAWindowAtMost() {
+        FakeChair c = new FakeChair();
+        ManualClock clock = new ManualClock();
+        Heard heard = new Heard();
+        ChairSupervisor s = armedOn(c, all(), heard, clock);
+        for (int i = 1; i <= 3; i++) {
+            c.event(ChairEvent.Kind.HOST_FROZEN, "the heartbeat ran 172 ms after its last");
+            assertEquals(ChairSupervisor.Cause.HOST_FROZEN, s.hold().cause());
+            assertEquals("hold HOST_FROZEN", heard.said.get(heard.said.size() - 1));
+            s.drive(50, 50);
+            assertEquals("neutral", c.last());
+            if (i < 3) {
+                assertTrue(s.hold().agentMayResume(), s.hold().toString());
+                assertNull(s.resume("the control agent"));
+                c.event(ChairEvent.Kind.ARMED, null);
+                c.reading(false);
+                c.reading(false);
+                s.drive(50, 50);
+                assertEquals("drive 50,50", c.last());
+            }
+            clock.advanceNs(60_000_000_000L);
+        }
+        assertEquals("the 3rd host freeze within 10 minutes", s.hold().repeated());
+        assertEquals(3L, s.counts().get("host-frozen"));
     }
 }

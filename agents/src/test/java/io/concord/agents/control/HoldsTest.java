@@ -303,4 +303,31 @@ class HoldsTest {
         readings(3, false);
         assertEquals(ChairSupervisor.State.HELD, supervisor.state());
     }
+
+    /** The control agent resumes after a lost link twice; the third loss within 10 minutes waits for an operator, task or not. */
+    @Test
+    void aLinkLostAThirdTimeWithinTheWindowIsLeftToAnOperatorEvenWithNoTask() {
+        readings(3, false);
+        taskUnderWay();
+        for (int i = 1; i <= 2; i++) {
+            chair.link(false);
+            chair.link(true);
+            readings(2, false);
+            assertTrue(supervisor.armed(), "loss " + i + ": the agent resumed");
+        }
+        chair.link(false);
+        chair.link(true);
+        readings(5, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state());
+        Paused p = (Paused) WheelchairMessage.decode(sent.get(sent.size() - 1));
+        assertFalse(p.agentResumes(), "the Medical agent is told an operator resumes: " + p);
+        assertTrue(said.stream().anyMatch(l -> l.contains("the 3rd link loss within 10 minutes: an operator must resume it")), said.toString());
+        work = false;
+        active = null;
+        readings(5, false);
+        assertEquals(ChairSupervisor.State.HELD, supervisor.state(), "no task either: the next task would meet the same fault");
+        assertNull(holds.resumeOrdered(ADA.sign("resume", "chair1", nowMs).encode()));
+        readings(2, false);
+        assertTrue(supervisor.armed());
+    }
 }

@@ -41,7 +41,11 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  * {@code status} (one line: motors, watchdog, armed, boot, pose, drops), {@code trip} (the
  * watchdog trips as soon as the motors turn, as after a short host freeze; the host's next frame
  * clears the fault before any STATE shows it), {@code corrupt-rx N} (the next N host frames arrive with a byte flipped),
- * {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
+ * {@code drop-sync} (the host's next SYNC PING is lost on the wire: the board never sees the new
+ * session), {@code mute MS} (the board's frames to the host are lost for MS ms while it still
+ * hears the host: the host takes the link for lost), {@code trace on|off} (one line per host frame
+ * taken: {@code rx DRIVE 600,600 seq=12 t=5030 armed=true motors=600,600}, t the host's time in
+ * it), {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
  * are at zero by its watchdog meanwhile.
  */
 public final class BoardEmulator {
@@ -66,6 +70,12 @@ public final class BoardEmulator {
     private boolean macSaid;
     /** Host frames still to corrupt on their way in. */
     private int corruptIn;
+    /** Drops the host's next SYNC PING on its way in (the {@code drop-sync} command). */
+    private boolean dropSync;
+    /** A host frame cut short by a read while {@code drop-sync} looks at whole frames. */
+    private final java.io.ByteArrayOutputStream partialIn = new java.io.ByteArrayOutputStream();
+    /** Until when (the board's clock) its frames to the host are lost ({@code mute}). */
+    private long mutedUntilMs = -1;
 
     /** Fault probabilities on the board's frames. */
     record Faults(double drop, double corrupt, double duplicate, double reorder, double garbage, long delayMs, SplittableRandom random) {
@@ -140,7 +150,7 @@ public final class BoardEmulator {
                     out.println("board: the port " + path + " is gone; waiting for it");
                 } else if (n > 0) {
                     corruptIncoming(buf, n);
-                    board.onBytes(buf, 0, n, nowMs());
+                    receive(buf, n);
                     if (!macSaid && board.drops().get("mac") > 0) {
                         macSaid = true;
                         out.println("board: a host frame failed its MAC check: the host is paired with another key, or only one end"
@@ -182,6 +192,31 @@ public final class BoardEmulator {
         }
     }
 
+    /** The host's bytes to the board, less a SYNC PING that {@code drop-sync} loses. */
+    private void receive(byte[] buf, int n) {
+        if (!dropSync && partialIn.size() == 0) {
+            board.onBytes(buf, 0, n, nowMs());
+            return;
+        }
+        for (int i = 0; i < n; i++) {
+            partialIn.write(buf[i]);
+            if (buf[i] == 0) {
+                byte[] frame = partialIn.toByteArray();
+                partialIn.reset();
+                // Stuffed, a frame starts with its COBS code byte, then its type and flags (both
+                // non-zero in a SYNC PING, so they are the first block's first bytes).
+                if (dropSync && frame.length > 3 && frame[1] == io.concord.serial.Frame.Type.PING
+                        && (frame[2] & io.concord.serial.Frame.SYNC) != 0) {
+                    dropSync = false;
+                    out.println("board: the host's SYNC PING was lost on the wire");
+                    out.flush();
+                } else {
+                    board.onBytes(frame, 0, frame.length, nowMs());
+                }
+            }
+        }
+    }
+
     private SerialPort open() {
         if (!Files.exists(Path.of(path))) {
             return null;
@@ -203,6 +238,12 @@ public final class BoardEmulator {
             case "estop on" -> board.estop(true, nowMs());
             case "estop off" -> board.estop(false, nowMs());
             case "trip" -> tripWhenDriving = true;
+            case "drop-sync" -> dropSync = true;
+            case "trace on" -> board.setTrace(l -> {
+                out.println("rx " + l);
+                out.flush();
+            });
+            case "trace off" -> board.setTrace(null);
             case "reboot" -> {
                 boot++;
                 board.switchOn(boot, nowMs());
@@ -220,10 +261,20 @@ public final class BoardEmulator {
                 return false;
             }
             default -> {
-                if (cmd.startsWith("corrupt-rx ")) {
-                    corruptIn = Integer.parseInt(cmd.substring(11).trim());
+                if (cmd.startsWith("corrupt-rx ") || cmd.startsWith("mute ")) {
+                    String n = cmd.substring(cmd.indexOf(' ') + 1).trim();
+                    try {
+                        if (cmd.startsWith("mute ")) {
+                            mutedUntilMs = nowMs() + Long.parseLong(n);
+                        } else {
+                            corruptIn = Integer.parseInt(n);
+                        }
+                    } catch (NumberFormatException e) {
+                        out.println("board: " + cmd.substring(0, cmd.indexOf(' ')) + " takes a whole number (frames, or ms), not '" + n + "'");
+                    }
                 } else {
-                    out.println("board: commands are estop on, estop off, reboot, trip, corrupt-rx N, status, quit; not '" + cmd + "'");
+                    out.println("board: commands are estop on, estop off, reboot, trip, corrupt-rx N, drop-sync, mute MS, trace on|off,"
+                            + " status, quit; not '" + cmd + "'");
                 }
             }
         }
@@ -233,6 +284,9 @@ public final class BoardEmulator {
 
     /** A frame the board sends, through the fault plan. */
     private void emit(byte[] frame) {
+        if (mutedUntilMs >= 0 && nowMs() < mutedUntilMs) {
+            return;
+        }
         SplittableRandom r = faults.random();
         if (r.nextDouble() < faults.drop()) {
             return;

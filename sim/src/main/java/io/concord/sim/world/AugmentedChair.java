@@ -91,6 +91,16 @@ public final class AugmentedChair implements ChairDriver {
     }
 
     @Override
+    public void holdMotion() {
+        real.holdMotion();
+    }
+
+    @Override
+    public void releaseMotion() {
+        real.releaseMotion();
+    }
+
+    @Override
     public String whyOffline() {
         return real.whyOffline();
     }

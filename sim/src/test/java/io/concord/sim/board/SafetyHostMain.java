@@ -17,7 +17,8 @@ import java.util.EnumSet;
  * The ward's host in a process of its own, for the tests that freeze it: the wheelchair's agents on
  * the chair's port, a transport from node 19 to node 3 once they are ready; every line of their
  * log on standard output. Arguments: the port, {@code all} or {@code none} (the supervisor's
- * defences), and the command deadline in ms. On standard input: {@code resume}.
+ * defences), the command deadline in ms, and optionally the serial driver's defences to switch
+ * off (comma-separated {@link SerialChair.Defence} names). On standard input: {@code resume}.
  */
 public final class SafetyHostMain {
     private SafetyHostMain() {
@@ -27,6 +28,12 @@ public final class SafetyHostMain {
         String port = args[0];
         boolean defences = args[1].equals("all");
         long deadline = Long.parseLong(args[2]);
+        java.util.Set<SerialChair.Defence> driver = EnumSet.allOf(SerialChair.Defence.class);
+        if (args.length > 3) {
+            for (String d : args[3].split(",")) {
+                driver.remove(SerialChair.Defence.valueOf(d.trim()));
+            }
+        }
         HospitalMap map = HospitalMap.defaultHospital();
         Platform platform = Platform.builder().name("freeze").build();
         var rt = platform.runtime();
@@ -40,8 +47,8 @@ public final class SafetyHostMain {
         ChairSupervisor[] sup = new ChairSupervisor[1];
         java.util.concurrent.CountDownLatch opened = new java.util.concurrent.CountDownLatch(1);
         rt.execute(() -> {
-            SerialChair serial = SerialChair.open(rt, SerialChair.Settings.of(port, "chair1").withStart(doors.poseAt(19, 90))
-                    .withCommandDeadlineMs(deadline));
+            SerialChair serial = SerialChair.openWithDefences(rt, SerialChair.Settings.of(port, "chair1").withStart(doors.poseAt(19, 90))
+                    .withCommandDeadlineMs(deadline), driver);
             sup[0] = ChairSupervisor.withDefences(serial, defences ? EnumSet.allOf(ChairSupervisor.Defence.class)
                     : EnumSet.noneOf(ChairSupervisor.Defence.class));
             opened.countDown();
