@@ -145,7 +145,12 @@ public final class SerialBench {
                 while (sensor.size() < 1) {
                     Thread.sleep(10);
                 }
-                rt.execute(() -> chair[0].stop());
+                // No supervisor here: the bench arms the driver itself, as a supervisor's resume does
+                // (a new session sends only neutral until then).
+                rt.execute(() -> {
+                    chair[0].stop();
+                    chair[0].releaseMotion();
+                });
                 Thread.sleep(100);
                 // Drive commands: each power its own value, so that its arrival is its own.
                 for (int i = -WARM_UP; i < samples; i++) {
