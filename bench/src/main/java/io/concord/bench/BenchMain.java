@@ -850,7 +850,10 @@ public final class BenchMain {
                 + "real sockets on 127.0.0.1) pass a 500-byte secret round a ring, measured quiet and then while an attacker "
                 + "in another JVM floods their ports: forged frames (an outsider: random bytes, Concord headers with random "
                 + "ids and bodies), handshakes from new identities (a key holder: a new agent name, so a signed handshake, "
-                + "each), and TCP streams announcing 1 MiB frames (the platform on TCP). Forged deliveries are messages a "
+                + "each), TCP streams announcing 1 MiB frames (the platform on TCP), an agent of another platform over the "
+                + "HTTP MTP (`foreign`: DF registrations under ever new names, and the observation service's kill and sniff, "
+                + "all refused past their bounds: `links_alive` must stay 6) and 300 slow connections to the web console "
+                + "(`console`: its answer to a normal request before and during). Forged deliveries are messages a "
                 + "link received from anyone but its predecessor; the heap is the platform JVM's used heap, sampled every "
                 + "20 ms during the flood. Both processes share the machine's cores: the control `cpu` is an attacker that only "
                 + "keeps one core busy and sends nothing, so that the chain's slowdown from sharing the CPU is seen apart. "
@@ -858,9 +861,9 @@ public final class BenchMain {
                 + "JIT has compiled the paths it takes, cost the chain 3 to 5 times.",
                 "Median time per round over batches of 50 rounds"));
         md.append("| attack | attack messages sent | µs per round, quiet | µs per round, attacked | slower | forged delivered "
-                + "| heap MB at most | heap MB after GC | drops counted by the agents |\n|---|---|---|---|---|---|---|---|---|\n");
+                + "| heap MB at most | heap MB after GC | drops counted by the agents | more |\n|---|---|---|---|---|---|---|---|---|---|\n");
         // -Dconcord.attack.kinds=handshake,tcp runs only those (to profile one).
-        for (String kind : System.getProperty("concord.attack.kinds", "cpu,forged,handshake,tcp").split(",")) {
+        for (String kind : System.getProperty("concord.attack.kinds", "cpu,forged,handshake,tcp,foreign,console").split(",")) {
             AttackHarness.Result r;
             try {
                 r = AttackHarness.run(kind, seconds);
@@ -868,9 +871,9 @@ public final class BenchMain {
                 throw new IOException("the attack harness failed for " + kind + ": " + e, e);
             }
             System.out.println(r.line());
-            md.append(String.format(Locale.ROOT, "| %s | %d | %.1f | %.1f | %.2f× | %d | %.0f | %.0f | %s |%n", kind,
+            md.append(String.format(Locale.ROOT, "| %s | %d | %.1f | %.1f | %.2f× | %d | %.0f | %.0f | %s | %s |%n", kind,
                     r.attackSent(), r.usBefore(), r.usDuring(), r.usDuring() / r.usBefore(), r.forged(), r.heapMbMax(),
-                    r.heapMbAfterGc(), r.drops()));
+                    r.heapMbAfterGc(), r.drops(), r.extra()));
         }
         Files.writeString(reportDir.resolve("attack.md"), md.toString());
     }

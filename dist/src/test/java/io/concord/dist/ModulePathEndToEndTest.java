@@ -58,7 +58,7 @@ class ModulePathEndToEndTest {
             String line;
             while ((line = out.readLine()) != null) {
                 lines.add(line);
-                if (line.contains("bought 1 books")) {
+                if (line.contains("bought 1 book ")) {
                     break;
                 }
             }
@@ -69,7 +69,7 @@ class ModulePathEndToEndTest {
             }
         }
         String all = String.join("\n", lines);
-        assertTrue(all.contains("buyer: bought 1 books in 1 attempts"), "the trade did not finish on the module path:\n" + all);
+        assertTrue(all.contains("buyer: bought 1 book in 1 attempt"), "the trade did not finish on the module path:\n" + all);
         assertFalse(all.contains("no safety layers"), "core did not find the safety stack on the module path:\n" + all);
     }
 

@@ -163,7 +163,8 @@ public class BookBuyer extends Agent {
                 rounds++;
             }
             if (bought == rounds && prints) {
-                say(getLocalName() + ": bought " + bought + " books in " + attempt + " attempts, mean "
+                say(getLocalName() + ": bought " + bought + (bought == 1 ? " book" : " books") + " in " + attempt
+                        + (attempt == 1 ? " attempt" : " attempts") + ", mean "
                         + (totalMs / bought) + " ms a purchase");
             }
         } else if (m.getPerformative() == Performative.REFUSE || m.getPerformative() == Performative.FAILURE) {

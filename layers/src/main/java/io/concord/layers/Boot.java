@@ -199,7 +199,10 @@ public final class Boot {
                 if (i + 1 >= args.length) {
                     throw new BootException("-" + key + " needs a value. " + usage());
                 }
-                cli.put(key, args[++i]);
+                if (cli.put(key, args[++i]) != null) {
+                    throw new BootException("-" + key + " is given twice; give each option once (several agents go in one -agents, "
+                            + "separated by ';')");
+                }
             } else {
                 throw new BootException("unknown option '" + a + "'. " + usage());
             }

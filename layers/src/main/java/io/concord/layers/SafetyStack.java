@@ -211,7 +211,7 @@ public final class SafetyStack {
                 layers.add(new ParserLayer(members, out.contains(LayerKind.TEMPORAL) ? null : clock,
                         !offHere.contains(Defence.IDENTIFICATION), limit, overhead));
                 if (!out.contains(LayerKind.SEQUENCE)) {
-                    layers.add(new SequenceLayer(seq, offHere));
+                    layers.add(new SequenceLayer(seq, offHere, profile == Profile.CLOSED && copiesSent > 1));
                 }
                 if (!out.contains(LayerKind.TEMPORAL)) {
                     layers.add(new TemporalLayer(temporal, clock, offHere));

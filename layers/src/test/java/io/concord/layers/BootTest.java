@@ -74,6 +74,15 @@ class BootTest {
     }
 
     @Test
+    void anOptionGivenTwiceOrAServiceThatCannotBeExposedStopsBootWithWhy() {
+        PrintStream out = new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8);
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-name", "a", "-name", "b"}, out))
+                .getMessage().contains("-name is given twice"));
+        assertTrue(assertThrows(Boot.BootException.class, () -> Boot.start(new String[]{"-http-expose", "resume", "-agents",
+                "x:io.concord.testkit.EchoAgent"}, out)).getMessage().contains("-http-expose: resume cannot be exposed"));
+    }
+
+    @Test
     void aPlatformWithItsOwnKeyCannotBeReachedWithTheUsersKey(@TempDir Path dir) throws Exception {
         Path own = dir.resolve("own.key");
         Files.writeString(own, "ab".repeat(32));

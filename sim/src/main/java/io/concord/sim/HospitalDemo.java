@@ -135,6 +135,7 @@ public final class HospitalDemo {
     static final String USAGE = "usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
             + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]"
             + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port [--operator-key FILE]] [--record FILE.jsonl]\n"
+            + "   or: java -jar concord-demo.jar platform   (the platform demo: three JVMs started with Boot, a book trade, a failover)\n"
             + "(each option with its default: README.md, \"The two commands\")";
 
     /** True if the arguments ask for the usage ({@code --help}, {@code -h}). */
@@ -206,8 +207,12 @@ public final class HospitalDemo {
         Path pairKey = null;
         Path record = null;
         Path operatorKey = null;
+        java.util.Set<String> given = new java.util.HashSet<>();
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
+            if (a.startsWith("--") && !given.add(a)) {
+                throw new IllegalArgumentException(a + " is given twice; give each option once");
+            }
             if (a.equals("--virtual")) {
                 virtual = true;
                 continue;
@@ -456,9 +461,9 @@ public final class HospitalDemo {
     static boolean runProcesses(Options o, Consumer<String> seen) throws Exception {
         HospitalMap map = o.map() == null ? HospitalMap.defaultHospital() : HospitalMap.load(o.map());
         intro(map, o);
-        OUT.printf(Locale.ROOT, "Two JVMs on this machine: the ward (world, doors' and chairs' agents) and the staff's terminal "
-                + "(the Medical agent). No address is configured: they find each other by port binding on 127.0.0.1 "
-                + "(7001 and up) and elect a container. The world runs %.0f times faster than real time.%n%n", o.speed());
+        OUT.printf(Locale.ROOT, "This launcher starts two JVMs on this machine: the ward (world, doors' and chairs' agents) and the "
+                + "staff's terminal (the Medical agent). No address is configured: they find each other by port binding on 127.0.0.1 "
+                + "(7001 and up) and elect a container. The world runs %s.%n%n", pace(o.speed()));
         Process ward = spawn("ward", o);
         List<Process> children = new CopyOnWriteArrayList<>(List.of(ward));
         // Stopped (Ctrl-C, kill), the launcher stops its JVMs first: a ward left running would keep driving a real chair.
@@ -554,6 +559,16 @@ public final class HospitalDemo {
         }, "demo-" + prefix.trim());
         t.setDaemon(true);
         t.start();
+    }
+
+    /** "10 times faster than real time", "in real time", "2.5 times faster than real time", "half as fast as real time". */
+    static String pace(double speed) {
+        if (speed == 1) {
+            return "in real time";
+        }
+        String x = speed == Math.rint(speed) ? String.format(Locale.ROOT, "%.0f", speed) : String.format(Locale.ROOT, "%.2f", speed)
+                .replaceAll("0+$", "").replaceAll("\\.$", "");
+        return speed > 1 ? x + " times faster than real time" : x + " times as fast as real time";
     }
 
     /** Where the demo keeps the operator key when {@code --operator-key} names none: {@code ~/.concord/operator.key}. */

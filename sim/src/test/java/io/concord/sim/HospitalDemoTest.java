@@ -133,6 +133,14 @@ class HospitalDemoTest {
                 assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--speeed"})).getMessage());
         assertEquals("unknown argument 'fast'",
                 assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"fast"})).getMessage());
+        assertEquals("--chairs is given twice; give each option once",
+                assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "3", "--chairs", "4"})).getMessage());
+        assertTrue(HospitalDemo.USAGE.contains("concord-demo.jar platform"), "the platform demo is in the usage");
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--operator-key", "k"}))
+                .getMessage().contains("needs --console"));
+        assertEquals("10 times faster than real time", HospitalDemo.pace(10));
+        assertEquals("in real time", HospitalDemo.pace(1));
+        assertEquals("2.5 times faster than real time", HospitalDemo.pace(2.5));
     }
 
     /**
@@ -193,6 +201,43 @@ class HospitalDemoTest {
             launcher.descendants().forEach(ProcessHandle::destroyForcibly);
             launcher.destroyForcibly();
         }
+    }
+
+    /** Everything a process of the demo prints (standard output and error together), once it has ended. */
+    private static List<String> runToTheEnd(String... args) throws Exception {
+        List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Demo.class.getName()));
+        cmd.addAll(List.of(args));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        try {
+            List<String> out = new java.util.ArrayList<>();
+            try (java.io.BufferedReader r = p.inputReader()) {
+                for (String line; (line = r.readLine()) != null; ) {
+                    out.add(line);
+                }
+            }
+            assertTrue(p.waitFor(300, java.util.concurrent.TimeUnit.SECONDS), "the demo ended");
+            assertEquals(0, p.exitValue(), "the demo succeeded:\n" + String.join("\n", out.subList(Math.max(0, out.size() - 30), out.size())));
+            return out;
+        } finally {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+        }
+    }
+
+    /**
+     * A clean start prints no warning: what is expected at start (the copies sent against loss, a
+     * handshake's second answer) is counted, not warned about; a security reviewer reads a WARN as
+     * an attack. The virtual hospital, and the platform demo (three JVMs, a failover), as real processes.
+     */
+    @Test
+    void aVirtualRunAndThePlatformDemoPrintNoWarning() throws Exception {
+        List<String> virtual = runToTheEnd("hospital", "--virtual", "--picture", "target/pictures/hospital-virtual-nowarn.png");
+        assertTrue(virtual.stream().anyMatch(l -> l.contains("T1")), "the virtual run ran: " + virtual.size() + " lines");
+        assertEquals(List.of(), virtual.stream().filter(l -> l.contains(" WARN ")).toList(), "warnings of a clean --virtual run");
+        List<String> platform = runToTheEnd("platform");
+        assertTrue(platform.stream().anyMatch(l -> l.contains("bought")), "the platform demo traded: " + platform);
+        assertEquals(List.of(), platform.stream().filter(l -> l.contains(" WARN ")).toList(), "warnings of the platform demo");
     }
 
     /** The next line that matches, waiting for the launcher's output (a minute at most per line: a failure, not a timing). */

@@ -43,11 +43,11 @@ public final class AttackHarness {
 
     /** What one attack measured. */
     public record Result(String kind, double usBefore, double usDuring, long forged, double heapMbMax, double heapMbAfterGc,
-                         long attackSent, Map<String, Long> drops) {
+                         long attackSent, Map<String, Long> drops, String extra) {
         public String line() {
             return String.format(Locale.ROOT, "RESULT attack %s chain_us_before=%.1f chain_us_during=%.1f delivered_forged=%d "
                     + "heap_mb_max=%.0f heap_mb_after_gc=%.0f sent=%d", kind, usBefore, usDuring, forged, heapMbMax, heapMbAfterGc,
-                    attackSent);
+                    attackSent) + (extra.isEmpty() ? "" : " " + extra);
         }
     }
 
@@ -59,9 +59,20 @@ public final class AttackHarness {
         PlatformKey key = PlatformKey.random();
         String name = "attack" + ProcessHandle.current().pid() + kind;
         try (AgentRuntime rt = AgentRuntime.builder().platformName(name).build().start()) {
-            Platform p = Platform.builder().runtime(rt).ports(new PortRange(7851, 20, 10)).transport(transport)
+            int web = kind.equals("foreign") || kind.equals("console") ? freePort() : 0;
+            io.concord.jade.HttpMtp[] mtp = new io.concord.jade.HttpMtp[1];
+            Platform.Builder pb = Platform.builder().runtime(rt).ports(new PortRange(7851, 20, 10)).transport(transport)
                     .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(key).transport(transport)
-                            .identities(IdentityStore.ephemeral()).build()).build();
+                            .identities(IdentityStore.ephemeral()).build());
+            if (kind.equals("foreign")) {
+                // Every agent may become container and serve the ACC; the one that does is the one attacked.
+                pb.gateway(() -> {
+                    io.concord.jade.HttpMtp m = new io.concord.jade.HttpMtp("127.0.0.1", web);
+                    mtp[0] = m;
+                    return m;
+                });
+            }
+            Platform p = pb.build();
             Rounds rounds = new Rounds();
             List<ConcordChainLink> links = new ArrayList<>();
             List<AID> aids = new ArrayList<>();
@@ -90,8 +101,14 @@ public final class AttackHarness {
                 }
                 Thread.sleep(20);
             }
+            io.concord.console.Console console = kind.equals("console")
+                    ? io.concord.console.Console.start(p, io.concord.console.Console.Config.parse("127.0.0.1:" + web)) : null;
+            if (kind.equals("foreign")) {
+                awaitHttp(web);
+            }
             ConcordChainLink first = links.get(0);
             measure(rt, rounds, first, seconds / 2); // warm-up
+            double consoleBefore = console == null ? 0 : consoleMs(web);
             double before = measure(rt, rounds, first, seconds);
             List<String> targets = new ArrayList<>();
             for (int i = 0; i < AGENTS; i++) {
@@ -99,8 +116,12 @@ public final class AttackHarness {
                 targets.add(aids.get(i).name() + "=" + at.host() + ":" + at.port());
             }
             List<String> args = new ArrayList<>(List.of(kind, name, HexFormat.of().formatHex(key.bytes())));
+            if (web != 0) {
+                args.add("http=127.0.0.1:" + web);
+            }
             args.addAll(targets);
             double[] heapMax = new double[1];
+            double[] consoleDuring = new double[1];
             long sent;
             double during;
             try (Children attacker = new Children()) {
@@ -124,6 +145,7 @@ public final class AttackHarness {
                 // the paths the attack takes (its first seconds, interpreted, cost the chain 3-5x).
                 Thread.sleep(Long.getLong("concord.attack.buildupMs", (long) (seconds * 1_000)));
                 during = measure(rt, rounds, first, seconds);
+                consoleDuring[0] = console == null ? 0 : consoleMs(web);
                 sampler.interrupt();
                 sent = attacker.finish(0);
             }
@@ -136,10 +158,61 @@ public final class AttackHarness {
             for (AID a : aids) {
                 PlatformHarness.onLoop(rt, () -> rt.drops(a)).forEach((k, v) -> drops.merge(k, v, Long::sum));
             }
+            String extra = "";
+            if (mtp[0] != null) {
+                mtp[0].drops().forEach((k, v) -> drops.merge(k, v, Long::sum));
+                int alive = PlatformHarness.onLoop(rt, () -> (int) aids.stream().filter(a -> rt.agents().contains(a)).count());
+                extra = "links_alive=" + alive + " df_limit=" + drops.getOrDefault("df-limit", 0L) + " not_authorized="
+                        + drops.getOrDefault("not-authorized", 0L);
+            }
+            if (console != null) {
+                extra = String.format(Locale.ROOT, "console_ms_before=%.1f console_ms_during=%.1f", consoleBefore, consoleDuring[0]);
+                console.close();
+            }
             System.gc();
             double retained = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed() / 1048576.0;
-            return new Result(kind, before, during, forged, heapMax[0], retained, sent, drops);
+            return new Result(kind, before, during, forged, heapMax[0], retained, sent, drops, extra);
         }
+    }
+
+    private static int freePort() throws java.io.IOException {
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+
+    /** Waits until the container serves the ACC (a GET answers 405: it takes POSTs). */
+    private static void awaitHttp(int port) throws Exception {
+        java.net.http.HttpClient c = java.net.http.HttpClient.newHttpClient();
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (System.nanoTime() < end) {
+            try {
+                c.send(java.net.http.HttpRequest.newBuilder(java.net.URI.create("http://127.0.0.1:" + port + "/acc")).GET().build(),
+                        java.net.http.HttpResponse.BodyHandlers.discarding());
+                return;
+            } catch (java.io.IOException e) {
+                Thread.sleep(20);
+            }
+        }
+        throw new IllegalStateException("the platform's ACC did not serve in 20 s");
+    }
+
+    /** The console's answer to a normal request (GET /api/platform), median of 20, in ms; fails if it does not answer in 10 s. */
+    private static double consoleMs(int port) throws Exception {
+        java.net.http.HttpClient c = java.net.http.HttpClient.newBuilder().connectTimeout(java.time.Duration.ofSeconds(10)).build();
+        double[] ms = new double[20];
+        for (int i = 0; i < ms.length; i++) {
+            long t0 = System.nanoTime();
+            java.net.http.HttpResponse<String> r = c.send(java.net.http.HttpRequest.newBuilder(
+                    java.net.URI.create("http://127.0.0.1:" + port + "/api/platform")).timeout(java.time.Duration.ofSeconds(10)).GET().build(),
+                    java.net.http.HttpResponse.BodyHandlers.ofString());
+            if (r.statusCode() != 200) {
+                throw new IllegalStateException("the console answered " + r.statusCode() + ": " + r.body());
+            }
+            ms[i] = (System.nanoTime() - t0) / 1e6;
+        }
+        Arrays.sort(ms);
+        return ms[ms.length / 2];
     }
 
     /** Median time per round over batches of {@link #ROUNDS}, for about that many seconds. */

@@ -84,7 +84,7 @@ public record PortRange(int base, int count, int window) {
         if (own == null) {
             throw new IllegalStateException("the " + transport + " port range " + base + "-" + last() + " on " + host
                     + " is full: all " + count + " ports are held by agents or other programs; widen it "
-                    + "(--ports " + base + "-" + Math.min(65535, last() + count) + ", or PortRange.of) or stop some agents");
+                    + "(-ports " + base + "-" + Math.min(65535, last() + count) + ", or PortRange.of) or stop some agents");
         }
         int end = Math.min(last(), p + window);
         for (int q = p + 1; q <= end; q++) {

@@ -41,8 +41,11 @@ public final class DropCounters {
         return a != null ? a : byLayer.computeIfAbsent(layer, l -> new ConcurrentHashMap<>()).computeIfAbsent(reason, r -> new LongAdder());
     }
 
-    /** Reasons that are part of normal operation (a copy sent on purpose against loss): never warned about. */
-    private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy");
+    /**
+     * Reasons that are part of normal operation, never warned about: a copy sent on purpose against
+     * loss, a second answer to a handshake retried while the first answer was on its way.
+     */
+    private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy", "handshake-late");
     /**
      * Reasons warned about once per process, not once per agent: frames of another platform
      * sharing the port range reach every agent of this one alike ({@code foreign-key} under

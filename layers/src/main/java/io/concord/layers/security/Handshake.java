@@ -340,6 +340,12 @@ final class Handshake {
             return;
         }
         if (type == HELLO_REPLY && (known == null || known.challenge == null || !Arrays.equals(known.challenge, echo))) {
+            if (known != null && known.answeredChallenge != null && Arrays.equals(known.answeredChallenge, echo)) {
+                // The peer answered this agent's hello more than once (a retry crossed its reply):
+                // the first answer was taken; this one changes nothing, and is no replay.
+                ctx.drop(env, "handshake-late", "a second reply from " + name + " to a hello it answered already");
+                return;
+            }
             ctx.drop(env, "replayed-handshake", "a reply from " + name + " to no hello of this agent under way");
             return;
         }
@@ -387,6 +393,7 @@ final class Handshake {
             confirm[0] = (byte) CONFIRM;
             System.arraycopy(pair.challenge, 0, confirm, 1, CHALLENGE_BYTES);
             System.arraycopy(PairKeys.confirmation(key, pair.challenge, challenge), 0, confirm, 1 + CHALLENGE_BYTES, 16);
+            pair.answeredChallenge = pair.challenge;
             pair.challenge = null;
             use(ctx, pair, key);
             sendHandshakeBody(ctx, src, pair.address, confirm);

@@ -27,6 +27,8 @@ final class Pair {
     int attempts;
     /** The challenge of this agent's hello under way, or null. */
     byte[] challenge;
+    /** The challenge of this agent's last hello that was answered: another reply to it is late, not a replay. */
+    byte[] answeredChallenge;
     /** Replies this agent sent, each waiting for the peer's confirmation. */
     final ArrayDeque<Pending> pending = new ArrayDeque<>();
     /** The challenge of the last hello whose key was confirmed: a copy of it is a replay. */

@@ -32,7 +32,12 @@ final class Delivery {
     private final Map<Long, ReceiverState> ins;
 
     /** The switches are off only in threat tests ({@code Defence.SEQUENCE_WINDOW}, {@code REORDER_BUFFER}). */
-    Delivery(SequenceLayer.Config config, boolean sequenceWindow, boolean reorderBuffer, FlowWindow flow, ControlFrames control) {
+    /** The stack below sends copies and remembers no tags: a recent repetition is a copy (see SequenceLayer). */
+    private final boolean copiesReachIt;
+
+    Delivery(SequenceLayer.Config config, boolean sequenceWindow, boolean reorderBuffer, FlowWindow flow, ControlFrames control,
+             boolean copiesReachIt) {
+        this.copiesReachIt = copiesReachIt;
         this.config = config;
         this.sequenceWindow = sequenceWindow;
         this.reorderBuffer = reorderBuffer;
@@ -145,7 +150,11 @@ final class Delivery {
                 deliver(ctx, env, peer, in, seq);
                 return;
             }
-            ctx.drop(env, "repeated", "sequence " + seq + " was delivered already");
+            if (copiesReachIt && in.expected - seq <= SequenceLayer.COPY_SPAN) {
+                ctx.drop(env, "copy", "a copy of sequence " + seq + ", delivered already");
+            } else {
+                ctx.drop(env, "repeated", "sequence " + seq + " was delivered already");
+            }
             scheduleAck(ctx, peer, in);
             return;
         }

@@ -88,6 +88,8 @@ public final class SequenceLayer extends Layer {
      * sends this many in one action of a behaviour meets the limit.
      */
     public static final int MAX_HELD = 4096;
+    /** How far behind the next expected number a copy of a frame may arrive (the security layer's tag memory is as long). */
+    public static final int COPY_SPAN = 64;
 
     private final boolean sessionProof;
     private final ControlFrames control;
@@ -104,12 +106,22 @@ public final class SequenceLayer extends Layer {
      * {@code SafetyStack.Builder.withoutDefences}, above the layers.
      */
     public SequenceLayer(Config config, Set<Defence> off) {
+        this(config, off, false);
+    }
+
+    /**
+     * ... and {@code copiesReachIt}: the layers below send each frame more than once and keep no
+     * memory of tags (the closed profile), so the second copy of a frame is first seen here; it is
+     * then counted as a {@code copy}, as the security layer counts it where it can (a copy sent on
+     * purpose is not news), and only a frame older than the last {@value #COPY_SPAN} as {@code repeated}.
+     */
+    public SequenceLayer(Config config, Set<Defence> off, boolean copiesReachIt) {
         this.sessionProof = !off.contains(Defence.SESSION_PROOF);
         this.control = new ControlFrames(config.reorderWindow());
         this.flow = new FlowWindow(config.reorderWindow(), !off.contains(Defence.FLOW_CONTROL));
         this.sending = new Retransmission(config, !off.contains(Defence.RETRANSMISSION), flow, control);
         this.receiving = new Delivery(config, !off.contains(Defence.SEQUENCE_WINDOW), !off.contains(Defence.REORDER_BUFFER), flow,
-                control);
+                control, copiesReachIt);
     }
 
     @Override

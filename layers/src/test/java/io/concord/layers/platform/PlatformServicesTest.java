@@ -343,7 +343,7 @@ class PlatformServicesTest {
             }
             IllegalStateException e = assertThrows(IllegalStateException.class, () -> p.startAgent("a3", new PlatformWorld.Idle()));
             assertTrue(e.getMessage().contains("port range 7001-7003 on h1 is full"), e.getMessage());
-            assertTrue(e.getMessage().contains("--ports 7001-7006"), e.getMessage());
+            assertTrue(e.getMessage().contains("-ports 7001-7006"), e.getMessage());
         }
     }
 

@@ -43,7 +43,7 @@ final class Parts {
         control.init(probe.ctx);
         this.flow = new FlowWindow(config.reorderWindow(), flowControl);
         this.sending = new Retransmission(config, true, flow, control);
-        this.receiving = new Delivery(config, true, true, flow, control);
+        this.receiving = new Delivery(config, true, true, flow, control, false);
     }
 
     LayerContext ctx() {
