@@ -338,6 +338,20 @@ final class ConsoleAgent extends Agent {
         return full;
     }
 
+    /**
+     * The platform's DF or AMS by its local or full name ({@code df}, {@code ams@hospital}), as
+     * JADE's DummyAgent reaches them: not agents of the lists, the container answers for them. Null otherwise.
+     */
+    private AID service(String name) {
+        String platform = getAID().platform();
+        for (String s : new String[] {"df", "ams"}) {
+            if (name.equalsIgnoreCase(s) || name.equalsIgnoreCase(s + "@" + platform)) {
+                return AID.local(s, platform);
+            }
+        }
+        return null;
+    }
+
     private String sendFor(Map<String, String> p) {
         Performative perf = Performative.fromWireName(p.getOrDefault("performative", "").trim());
         if (perf == null) {
@@ -350,7 +364,7 @@ final class ConsoleAgent extends Agent {
             if (n.isEmpty()) {
                 continue;
             }
-            m.addReceiver(new AID(listed(n, known)));
+            m.addReceiver(service(n) != null ? service(n) : new AID(listed(n, known)));
         }
         if (m.getReceivers().isEmpty()) {
             throw new IllegalArgumentException("say who receives it: one or more agents' names, separated by commas");

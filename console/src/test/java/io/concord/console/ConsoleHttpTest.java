@@ -126,6 +126,15 @@ class ConsoleHttpTest {
         r = post("/api/agents/start", "name=x&class=java.lang.String", true);
         assertEquals(400, r.statusCode());
         assertTrue(r.body().contains("java.lang.String is not an agent"), r.body());
+        // The DF and the AMS, by local or full name, as JADE's DummyAgent reaches them: answered into the mail.
+        r = post("/api/agents/send", "performative=REQUEST&receivers=ams&content=agents&conversation=to-ams", true);
+        assertEquals(200, r.statusCode(), r.body());
+        r = post("/api/agents/send", "performative=REQUEST&receivers=df@console-http&content=search+template%3Dt%3Dnothing&conversation=to-df", true);
+        assertEquals(200, r.statusCode(), r.body());
+        for (int i = 0; i < 2_000 && !(answered("to-ams") && answered("to-df")); i++) {
+            Thread.sleep(10);   // a poll of the mail the console shows, until both answers are in
+        }
+        assertTrue(answered("to-ams") && answered("to-df"), "the DF and the AMS answered: " + get("/api/mail").body());
         r = post("/api/agents/send", "performative=SHOUT&receivers=x", true);
         assertEquals(400, r.statusCode());
         assertTrue(r.body().contains("no performative 'SHOUT'"), r.body());
@@ -135,6 +144,20 @@ class ConsoleHttpTest {
         assertEquals(400, get("/api/recordings/..%2Fpom.xml").statusCode());
         assertEquals(404, get("/api/recordings/none.jsonl").statusCode());
         assertEquals(404, post("/api/agents/explode", "", true).statusCode());
+    }
+
+    /** Whether the console's mail holds an answer received in that conversation. */
+    private static boolean answered(String conversation) throws Exception {
+        com.fasterxml.jackson.databind.JsonNode mail = new com.fasterxml.jackson.databind.ObjectMapper().readTree(get("/api/mail").body());
+        if (mail == null || !mail.isArray()) {
+            return false;
+        }
+        for (com.fasterxml.jackson.databind.JsonNode e : mail) {
+            if (e.path("dir").asText().equals("received") && e.path("conversation").asText().equals(conversation)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private static HttpResponse<String> post(String path, String form, boolean header) throws Exception {
