@@ -172,7 +172,14 @@ public final class HospitalDemo {
             }));
         }
         if ("ward".equals(role)) {
-            ward(map, o);
+            try {
+                ward(map, o);
+            } catch (Exception e) {
+                // One line, no stack trace: the launcher prints it and stops every JVM of the demo.
+                System.out.println(WARD_FAILED + " " + oneLine(e));
+                System.out.flush();
+                System.exit(3);
+            }
             return;
         } else if ("staff".equals(role)) {
             ok = staff(o);
@@ -481,16 +488,27 @@ public final class HospitalDemo {
                 }
             }
         }, "demo-stop-children"));
-        CountDownLatch wardReady = new CountDownLatch(1);
+        CompletableFuture<String> wardStart = new CompletableFuture<>();
+        AtomicReference<String> wardFailure = new AtomicReference<>();
         pump(ward, "ward ", line -> {
             seen.accept("[ward ] " + line);
             if (line.contains("ward ready")) {
-                wardReady.countDown();
+                wardStart.complete(null);
+            } else if (line.startsWith(WARD_FAILED)) {
+                wardFailure.set(line.substring(WARD_FAILED.length()).trim());
             }
         });
-        if (!wardReady.await(60, TimeUnit.SECONDS)) {
-            OUT.println("The ward did not start within 60 s.");
-            ward.destroyForcibly();
+        ward.onExit().thenRun(() -> wardStart.complete(wardFailure.get() != null ? wardFailure.get()
+                : "its JVM ended (exit code " + ward.exitValue() + ")"));
+        String failed;
+        try {
+            failed = wardStart.get(60, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            failed = "it did not start within 60 s";
+        }
+        if (failed != null) {
+            ward.destroyForcibly().waitFor(20, TimeUnit.SECONDS);
+            OUT.println("The ward could not start: " + failed);
             return false;
         }
         Process staff = spawn("staff", o);
@@ -505,6 +523,12 @@ public final class HospitalDemo {
             }
         });
         staff.onExit().thenRun(() -> batch.complete(staff.exitValue() == 0));
+        // A ward that dies ends the demo: the staff's transports could only wait for it.
+        ward.onExit().thenRun(() -> {
+            if (batch.complete(false)) {
+                wardFailure.compareAndSet(null, "its JVM ended (exit code " + ward.exitValue() + ")");
+            }
+        });
         boolean ok;
         try {
             ok = batch.get((long) (o.maxSeconds() / o.speed()) + 120, TimeUnit.SECONDS);
@@ -522,8 +546,23 @@ public final class HospitalDemo {
                 p.destroyForcibly();
             }
         }
+        if (wardFailure.get() != null) {
+            OUT.println("The ward stopped: " + wardFailure.get());
+            return false;
+        }
         OUT.println(ok ? "Every transport of --tasks was done." : "Not every transport of --tasks was done.");
         return ok;
+    }
+
+    /** What the ward's JVM says, before it exits, when it cannot start or goes on no longer: the reason follows. */
+    static final String WARD_FAILED = "ward: cannot go on:";
+
+    /** A failure in one line: its message, else its class; the cause's message where the failure only wraps it. */
+    static String oneLine(Throwable e) {
+        Throwable t = e instanceof java.util.concurrent.ExecutionException || e instanceof java.util.concurrent.CompletionException
+                ? (e.getCause() == null ? e : e.getCause()) : e;
+        String m = t.getMessage();
+        return (m == null || m.isBlank() ? t.getClass().getSimpleName() : m).replace('\n', ' ');
     }
 
     /** What the staff's JVM says when its own transports have ended: then "every transport was done" or "not every...". */
@@ -596,7 +635,14 @@ public final class HospitalDemo {
             if (o.record() != null) {
                 cc = cc.withRecordings(o.record().toAbsolutePath().getParent());
             }
-            Console c = Console.start(platform, cc);
+            Console c;
+            try {
+                c = Console.start(platform, cc);
+            } catch (RuntimeException e) {
+                platform.close();
+                throw new IllegalStateException("--console " + o.console() + ": " + oneLine(e)
+                        + " (another program holds the port? give another: --console 127.0.0.1:7790)", e);
+            }
             c.addView(new HospitalView(world, hospital, desk));
             OUT.println("console: " + c.uri() + "  (the hospital, the platform, the safety counters and the sniffer)");
             if (o.record() != null) {
@@ -607,14 +653,27 @@ public final class HospitalDemo {
         }
         AtomicReference<SerialChair> serialChair = new AtomicReference<>();
         if (o.serial() != null) {
-            // chair1 is on its serial port; the world keeps the doors (and any other chairs).
+            // chair1 is on its serial port; the world keeps the doors (and any other chairs). A port
+            // that cannot be opened stops the ward (and the demo) with why.
+            CompletableFuture<Void> opened = new CompletableFuture<>();
             rt.execute(() -> {
-                SerialChair c = SerialChair.open(rt,
-                        SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(map.parking().get(0), 90))
-                                .withKey(o.pairKey() == null ? null : PairingKey.read(o.pairKey())));
-                serialChair.set(c);
-                hospital.addChair(platform, map, o.augmented() ? new AugmentedChair(c, world) : c, log);
+                try {
+                    SerialChair c = SerialChair.open(rt,
+                            SerialChair.Settings.of(o.serial(), "chair1").withStart(world.poseAt(map.parking().get(0), 90))
+                                    .withKey(o.pairKey() == null ? null : PairingKey.read(o.pairKey())));
+                    serialChair.set(c);
+                    hospital.addChair(platform, map, o.augmented() ? new AugmentedChair(c, world) : c, log);
+                    opened.complete(null);
+                } catch (RuntimeException e) {
+                    opened.completeExceptionally(e);
+                }
             });
+            try {
+                opened.get(30, TimeUnit.SECONDS);
+            } catch (java.util.concurrent.ExecutionException | TimeoutException e) {
+                platform.close();
+                throw e;
+            }
         }
         CountDownLatch stopped = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {

@@ -225,6 +225,93 @@ class HospitalDemoTest {
         }
     }
 
+    /** The launcher, run to its end: its exit code and what it printed; every JVM it started has ended too. */
+    private record Ended(int exit, List<String> out) {
+        String tail() {
+            return String.join("\n", out.subList(Math.max(0, out.size() - 30), out.size()));
+        }
+    }
+
+    private static Ended launch(java.util.function.Consumer<Process> meanwhile, String... args) throws Exception {
+        List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), Demo.class.getName()));
+        cmd.addAll(List.of(args));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        List<ProcessHandle> seenChildren = new java.util.concurrent.CopyOnWriteArrayList<>();
+        List<String> out = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
+        Thread reader = new Thread(() -> {
+            try (java.io.BufferedReader r = p.inputReader()) {
+                for (String line; (line = r.readLine()) != null; ) {
+                    out.add(line);
+                    p.descendants().forEach(d -> {
+                        if (!seenChildren.contains(d)) {
+                            seenChildren.add(d);
+                        }
+                    });
+                }
+            } catch (java.io.IOException e) {
+                // ended
+            }
+        });
+        reader.setDaemon(true);
+        reader.start();
+        try {
+            meanwhile.accept(p);
+            assertTrue(p.waitFor(300, java.util.concurrent.TimeUnit.SECONDS), "the launcher ended");
+            reader.join(10_000);
+            for (ProcessHandle child : seenChildren) {
+                child.onExit().get(60, java.util.concurrent.TimeUnit.SECONDS);
+                assertTrue(!child.isAlive(), "a JVM of the demo was left running: " + child.info());
+            }
+            return new Ended(p.exitValue(), List.copyOf(out));
+        } finally {
+            p.descendants().forEach(ProcessHandle::destroyForcibly);
+            p.destroyForcibly();
+        }
+    }
+
+    /** A serial port that does not exist: the demo stops with one line saying so, a non-zero exit, no JVM left behind. */
+    @Test
+    void aSerialPortThatDoesNotExistStopsTheDemoWithOneLine() throws Exception {
+        Ended e = launch(p -> { }, "hospital", "--serial", "/dev/concord-no-such-port", "--picture", "target/pictures/noport.png");
+        assertTrue(e.exit() != 0, "a non-zero exit: " + e.tail());
+        assertTrue(e.out().stream().anyMatch(l -> l.startsWith("The ward could not start: ") && l.contains("/dev/concord-no-such-port")),
+                e.tail());
+        assertTrue(e.out().stream().noneMatch(l -> l.contains("ward ready") || l.contains("\tat ")), "no start, no stack trace: " + e.tail());
+    }
+
+    /** The console's port held by another program: the same. */
+    @Test
+    void aConsolePortInUseStopsTheDemoWithOneLine(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        try (java.net.ServerSocket taken = new java.net.ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
+            Ended e = launch(p -> { }, "hospital", "--console", "127.0.0.1:" + taken.getLocalPort(), "--operator-key",
+                    dir.resolve("op.key").toString(), "--picture", "target/pictures/portinuse.png");
+            assertTrue(e.exit() != 0, "a non-zero exit: " + e.tail());
+            assertTrue(e.out().stream().anyMatch(l -> l.startsWith("The ward could not start: --console 127.0.0.1:" + taken.getLocalPort())),
+                    e.tail());
+            assertTrue(e.out().stream().noneMatch(l -> l.contains("\tat ") || l.contains("Exception in thread")), "no stack trace: " + e.tail());
+        }
+    }
+
+    /** A ward that dies mid-run (kill -9): the launcher says so, stops the staff's JVM and exits non-zero. */
+    @Test
+    void aWardThatDiesStopsTheDemo() throws Exception {
+        Ended e = launch(p -> {
+            long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(120);
+            while (System.nanoTime() < end) {
+                var ward = p.descendants().filter(d -> d.info().arguments().map(a -> java.util.Arrays.asList(a).contains("ward"))
+                        .orElse(false)).findFirst();
+                if (ward.isPresent() && p.descendants().count() >= 2) {
+                    ward.get().destroyForcibly();
+                    return;
+                }
+                Thread.onSpinWait();
+            }
+        }, "hospital", "--speed", "5", "--picture", "target/pictures/warddies.png");
+        assertTrue(e.exit() != 0, "a non-zero exit: " + e.tail());
+        assertTrue(e.out().stream().anyMatch(l -> l.startsWith("The ward stopped: ")), e.tail());
+    }
+
     /**
      * A clean start prints no warning: what is expected at start (the copies sent against loss, a
      * handshake's second answer) is counted, not warned about; a security reviewer reads a WARN as

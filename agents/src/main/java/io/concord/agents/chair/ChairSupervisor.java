@@ -37,9 +37,10 @@ import java.util.TreeMap;
  * chair as {@link ChairDriver#holdMotion()} (the driver forgets its last command), and the armed
  * state as {@link ChairDriver#releaseMotion()}.
  *
- * <p>A fault that recurs is not resumed by the agents for ever: the {@link Repeats}th hold of one
- * agent-resumable cause (a lost link, a watchdog trip, a frozen host) within its window holds the
- * chair for an operator ({@link Hold#repeated()}), with the count in its reason.
+ * <p>A fault that recurs is not resumed by the agents for ever: the {@link Repeats}th lost link
+ * (a cable, a board whose clock drifts out of its tolerance) within its window holds the chair for
+ * an operator ({@link Hold#repeated()}), with the count in its reason. A watchdog trip or a frozen
+ * host, the host being late on a busy machine, is resumed by the agents every time: slow is not dead.
  *
  * <p>Confined to the loop of the runtime that drives the chair, as every driver is. The
  * {@link Defence}s are there for tests: each hazard's test switches its defence off and watches
@@ -509,7 +510,10 @@ public final class ChairSupervisor implements ChairDriver {
      * often it recurred within the window (then an operator must).
      */
     private String repeated(Cause cause) {
-        if (!cause.agentMayResume() || !defences.contains(Defence.REPEATS_NEED_OPERATOR)) {
+        // Only the link's faults recur towards an operator: a watchdog trip or a frozen host is the
+        // host being late (a busy machine), which the agents resume every time (slow is not dead);
+        // a link that keeps dropping (a cable, a board's clock out of its tolerance) is not.
+        if (cause != Cause.LINK || !defences.contains(Defence.REPEATS_NEED_OPERATOR)) {
             return null;
         }
         long now = clock.nanoTime() / 1_000_000;

@@ -336,30 +336,29 @@ class ChairSupervisorTest {
         assertEquals(10L, s.counts().get("link-down"));
     }
 
+    /** A frozen host is a busy machine: the hold is the agent's to end, every time (slow is not dead). */
     @Test
-    void aHostFrozenHoldsMotionAndTheAgentMayResumeItThreeTimesAWindowAtMost() {
+    void aHostFrozenHoldsMotionAndTheAgentResumesItEveryTime() {
         FakeChair c = new FakeChair();
         ManualClock clock = new ManualClock();
         Heard heard = new Heard();
         ChairSupervisor s = armedOn(c, all(), heard, clock);
-        for (int i = 1; i <= 3; i++) {
+        for (int i = 1; i <= 5; i++) {
             c.event(ChairEvent.Kind.HOST_FROZEN, "the heartbeat ran 172 ms after its last");
             assertEquals(ChairSupervisor.Cause.HOST_FROZEN, s.hold().cause());
             assertEquals("hold HOST_FROZEN", heard.said.get(heard.said.size() - 1));
             s.drive(50, 50);
-            assertEquals("neutral", c.last());
-            if (i < 3) {
-                assertTrue(s.hold().agentMayResume(), s.hold().toString());
-                assertNull(s.resume("the control agent"));
-                c.event(ChairEvent.Kind.ARMED, null);
-                c.reading(false);
-                c.reading(false);
-                s.drive(50, 50);
-                assertEquals("drive 50,50", c.last());
-            }
+            assertEquals("neutral", c.last(), "held: neutral only");
+            assertTrue(s.hold().agentMayResume(), s.hold().toString());
+            assertNull(s.hold().repeated(), "freeze " + i + " is not a recurring fault of the chair");
+            assertNull(s.resume("the control agent"));
+            c.event(ChairEvent.Kind.ARMED, null);
+            c.reading(false);
+            c.reading(false);
+            s.drive(50, 50);
+            assertEquals("drive 50,50", c.last());
             clock.advanceNs(60_000_000_000L);
         }
-        assertEquals("the 3rd host freeze within 10 minutes", s.hold().repeated());
-        assertEquals(3L, s.counts().get("host-frozen"));
+        assertEquals(5L, s.counts().get("host-frozen"));
     }
 }
