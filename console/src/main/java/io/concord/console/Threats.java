@@ -27,8 +27,8 @@ final class Threats {
     /** The threat a drop reason counts against. */
     static String of(String reason) {
         switch (reason) {
-            case "copy" -> {
-                return COPIES;
+            case "copy", "handshake-late" -> {
+                return COPIES;   // sent on purpose against loss, or a second answer to a retried hello
             }
             case "foreign-key", "foreign-platform" -> {
                 return OTHER_PLATFORMS;

@@ -14,6 +14,7 @@ class ThreatsTest {
         assertEquals(Threats.COPIES, Threats.ORDER.get(0), "shown first, apart");
         assertEquals("repetition", Threats.of("repeated"), "a frame the sequence window delivered already");
         assertEquals("repetition", Threats.of("replayed-handshake"));
+        assertEquals(Threats.of("copy"), Threats.of("handshake-late"), "a second answer to a retried hello is expected, as a copy is");
         assertEquals("corruption", Threats.of("bad-tag"));
         assertEquals(Threats.OTHER_PLATFORMS, Threats.of("foreign-key"), "another platform's frame, skipped by its key's id");
         assertEquals(Threats.OTHER_PLATFORMS, Threats.of("foreign-platform"), "another platform of the same key, skipped by its name");

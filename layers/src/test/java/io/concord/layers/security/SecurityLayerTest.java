@@ -409,7 +409,9 @@ class SecurityLayerTest {
         carry(a, A_ADDR, b);
         assertEquals("one", text(b.pollUp()));
         deliver(resealed(reply), B_ADDR, a);
-        assertEquals(1, a.drops().get("replayed-handshake"), a.drops().toString());
+        // A second reply to the hello answered already: the peer answered a retried hello twice,
+        // or someone replays it; either way it changes nothing, and is counted apart (not warned).
+        assertEquals(1, a.drops().get("handshake-late"), a.drops().toString());
         a.sendDown(body("two", "b@p"));
         carry(a, A_ADDR, b);
         assertEquals("two", text(b.pollUp()));
