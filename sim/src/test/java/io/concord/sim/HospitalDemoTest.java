@@ -270,6 +270,15 @@ class HospitalDemoTest {
         }
     }
 
+    /** A process's command line as /proc has it (arguments between NULs), or "" once it is gone. */
+    private static String commandLine(ProcessHandle h) {
+        try {
+            return new String(Files.readAllBytes(Path.of("/proc", Long.toString(h.pid()), "cmdline")), java.nio.charset.StandardCharsets.UTF_8);
+        } catch (java.io.IOException e) {
+            return "";
+        }
+    }
+
     /** A serial port that does not exist: the demo stops with one line saying so, a non-zero exit, no JVM left behind. */
     @Test
     void aSerialPortThatDoesNotExistStopsTheDemoWithOneLine() throws Exception {
@@ -299,13 +308,17 @@ class HospitalDemoTest {
         Ended e = launch(p -> {
             long end = System.nanoTime() + java.util.concurrent.TimeUnit.SECONDS.toNanos(120);
             while (System.nanoTime() < end) {
-                var ward = p.descendants().filter(d -> d.info().arguments().map(a -> java.util.Arrays.asList(a).contains("ward"))
-                        .orElse(false)).findFirst();
+                var ward = p.descendants().filter(d -> commandLine(d).contains("\0ward\0")).findFirst();
                 if (ward.isPresent() && p.descendants().count() >= 2) {
                     ward.get().destroyForcibly();
                     return;
                 }
-                Thread.onSpinWait();
+                try {
+                    Thread.sleep(20);   // a poll of the launcher's children, with a deadline
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
             }
         }, "hospital", "--speed", "5", "--picture", "target/pictures/warddies.png");
         assertTrue(e.exit() != 0, "a non-zero exit: " + e.tail());

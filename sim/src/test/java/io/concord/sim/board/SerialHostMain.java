@@ -14,9 +14,6 @@ public final class SerialHostMain {
         rt.execute(() -> {
             SerialChair chair = SerialChair.open(rt, SerialChair.Settings.of(args[0], "chair"));
             chair.drive(0, 0);
-            // No supervisor here: the host arms the driver itself, as a supervisor's resume does (a
-            // new session sends only neutral until then).
-            chair.releaseMotion();
             long start = rt.nowNs();
             // As an agent does: a command at every reading (the driver's heartbeat repeats only a
             // command confirmed within its deadline); neutral first, then 20 % after 300 ms.
@@ -24,6 +21,11 @@ public final class SerialHostMain {
                 if (rt.nowNs() - start < 300_000_000L) {
                     chair.drive(0, 0);
                 } else {
+                    // No supervisor here: the host arms the driver itself, as a supervisor's resume
+                    // does once the board reads armed (a new session sends only neutral until then).
+                    if (chair.motionHeld()) {
+                        chair.releaseMotion();
+                    }
                     chair.drive(20, 20);
                 }
             });
