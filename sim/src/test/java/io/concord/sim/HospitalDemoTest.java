@@ -315,7 +315,7 @@ class HospitalDemoTest {
                 }
                 try {
                     Thread.sleep(20);   // a poll of the launcher's children, with a deadline
-                } catch (InterruptedException e) {
+                } catch (InterruptedException stopped) {
                     Thread.currentThread().interrupt();
                     return;
                 }
