@@ -141,7 +141,7 @@ final class AgentManagement {
             if (action.action() instanceof Search s) {
                 content = new Result(action, df ? searchDf(ctx, s) : searchAms(ctx, s));
             } else if (df && action.action() instanceof Register reg) {
-                register(reg.description(), m.getSender());
+                register(reg.description(), m.getSender(), ctx.platformName());
                 content = new Done(action);
             } else if (df && action.action() instanceof Deregister d) {
                 deregister(d.description(), m.getSender());
@@ -247,14 +247,22 @@ final class AgentManagement {
         leaseUntil.remove(key);
     }
 
-    private void register(Object description, AID sender) {
+    private void register(Object description, AID sender, String platform) {
         if (!(description instanceof DfAgentDescription d) || d.name() == null) {
             throw new IllegalArgumentException("register needs a df-agent-description with a :name");
+        }
+        if (platform.equalsIgnoreCase(d.name().platform())) {
+            throw new IllegalArgumentException(d.name().name() + " is an agent of this platform: it registers through its own "
+                    + "container, never over HTTP");
+        }
+        if (sender == null || !d.name().name().equalsIgnoreCase(sender.name())) {
+            throw new IllegalArgumentException("an agent of another platform registers itself only: the description names "
+                    + d.name().name() + ", the request comes from " + (sender == null ? "nobody" : sender.name()));
         }
         long now = epochMs.getAsLong();
         expire(now);
         String key = d.name().name().toLowerCase(Locale.ROOT);
-        String by = sender == null ? "" : sender.name().toLowerCase(Locale.ROOT);
+        String by = sender.name().toLowerCase(Locale.ROOT);
         String holder = registrant.get(key);
         if (holder != null && !holder.equals(by)) {
             throw new IllegalArgumentException("already-registered: " + d.name().name() + " was registered by another agent");

@@ -115,6 +115,13 @@ public class ControlAgent extends Agent implements ChairListener {
 
     @Override
     protected void setup() {
+        // An agent that drives a chair is not killed by a message: any holder of the platform key
+        // is a member, and a member may ask any other agent to leave (the observation service).
+        io.concord.layers.observe.ObserverLayer observer = runtime().layer(getAID(), io.concord.layers.observe.ObserverLayer.class);
+        if (observer != null && authority.checks()) {
+            observer.guard(Policy.Service.OBSERVE_KILL, getLocalName() + " drives " + chair.name()
+                    + ": it is not killed by a message; stop it where it runs (its ward's JVM, or the console there)");
+        }
         Platform.of(this).register(ServiceDescription.of(Services.TRANSPORT, getLocalName()).withProperty("chair", chair.name()));
         asks = new Asks(this);
         addBehaviour(asks);
@@ -277,11 +284,17 @@ public class ControlAgent extends Agent implements ChairListener {
 
     /**
      * Builds this agent without a defence: only for the tests that show what the defence stands
-     * against ({@link Defence#AUTHORITY}: anyone's resume-request resumes the chair). Before it starts.
+     * against ({@link Defence#AUTHORITY}: anyone's resume-request resumes the chair, any member's
+     * kill ends the agent). Before it starts, or on its loop.
      */
     public ControlAgent withoutDefences(Defence... off) {
         if (java.util.List.of(off).contains(Defence.AUTHORITY)) {
             authority.policy(Policy.allowingEverything());
+            io.concord.layers.observe.ObserverLayer observer = getAID() == null ? null
+                    : runtime().layer(getAID(), io.concord.layers.observe.ObserverLayer.class);
+            if (observer != null) {
+                observer.guard(Policy.Service.OBSERVE_KILL, null);   // started already: its guard goes too
+            }
         }
         return this;
     }

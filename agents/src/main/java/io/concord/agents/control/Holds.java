@@ -177,18 +177,17 @@ final class Holds implements ChairSupervisor.Observer {
         String why;
         try {
             ResumeRequest r = WheelchairMessage.decode(m, ResumeRequest.class);
-            // As the console's form answers: a chair that is not held has nothing to resume.
-            if (supervisor.armed()) {
+            // Who asks comes first: whoever may not resume learns nothing of the chair's state.
+            ResumeAuthority.Verdict v = authority.ofMessage(m, r.order(), supervisor.name(), platform.get());
+            if (!v.allowed()) {
+                why = v.refusal();
+                agent.say("refuses the resume of " + supervisor.name() + " asked by " + m.getSender().name() + ": " + why);
+            } else if (supervisor.armed()) {
+                // As the console's form answers: a chair that is not held has nothing to resume.
                 why = supervisor.name() + " is not held: it is armed and drives as its tasks ask; nothing to resume";
             } else {
-                ResumeAuthority.Verdict v = authority.ofMessage(m, r.order(), supervisor.name(), platform.get());
-                if (!v.allowed()) {
-                    why = v.refusal();
-                    agent.say("refuses the resume of " + supervisor.name() + " asked by " + m.getSender().name() + ": " + why);
-                } else {
-                    String by = r.by() != null && !r.by().isBlank() && !r.by().equals(v.operator()) ? v.operator() + " (" + r.by() + ")" : v.operator();
-                    why = resume(by + " via " + m.getSender().localName());
-                }
+                String by = r.by() != null && !r.by().isBlank() && !r.by().equals(v.operator()) ? v.operator() + " (" + r.by() + ")" : v.operator();
+                why = resume(by + " via " + m.getSender().localName());
             }
         } catch (IllegalArgumentException e) {
             why = e.getMessage();   // a request that does not read resumes nothing

@@ -40,6 +40,11 @@ final class ResumeAuthority {
         this.policy = p;
     }
 
+    /** Whether the authority checks are on (off only in a test's agent built without them). */
+    boolean checks() {
+        return policy.checks();
+    }
+
     /** Refusals so far by kind ({@code foreign}, {@code unsigned}, {@code bad-order}). */
     Map<String, Long> refusals() {
         return new TreeMap<>(refusals);

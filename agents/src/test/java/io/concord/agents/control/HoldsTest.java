@@ -186,6 +186,10 @@ class HoldsTest {
         AclMessage ask = new AclMessage(Performative.REQUEST).setSender(new AID("console@test"));
         ask.setContent(new ResumeRequest("nurse Ada").encode());
         holds.resumeAsked(ask);
+        assertTrue(WheelchairMessage.reasonOf(sent.get(sent.size() - 1)).contains("only an operator may resume"),
+                "who asks comes first: a key holder learns nothing of the chair's state: " + sent.get(sent.size() - 1).getContent());
+        ask.setContent(new ResumeRequest("nurse Ada", ADA.sign("resume", "chair1", nowMs).encode()).encode());
+        holds.resumeAsked(ask);
         assertEquals(Performative.REFUSE, sent.get(sent.size() - 1).getPerformative());
         assertTrue(WheelchairMessage.reasonOf(sent.get(sent.size() - 1)).contains("is not held"), sent.get(sent.size() - 1).getContent());
 

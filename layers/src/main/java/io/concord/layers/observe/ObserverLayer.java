@@ -70,6 +70,8 @@ public final class ObserverLayer extends Layer {
 
     private final Map<String, Sniffer> sniffers = new LinkedHashMap<>();
     private final Policy policy;
+    /** Services this agent refuses to every other agent, members included, with why (an agent that drives a chair). */
+    private final Map<Policy.Service, String> guarded = new java.util.EnumMap<>(Policy.Service.class);
 
     /** With the documented policy: members only. */
     public ObserverLayer() {
@@ -105,6 +107,20 @@ public final class ObserverLayer extends Layer {
     @Override
     public void stop(LayerContext c) {
         sniffers.clear();
+    }
+
+    /**
+     * This agent refuses {@code service} to every agent, members of the platform included (a
+     * control agent that drives a chair refuses {@code kill}: it is stopped where it runs, never by a
+     * message that any holder of the platform key could send). The refusal says {@code why}; null
+     * ends the guard. Loop only; a stack built without {@code Defence.AUTHORITY} ignores it.
+     */
+    public void guard(Policy.Service service, String why) {
+        if (why == null) {
+            guarded.remove(service);
+        } else if (policy.checks()) {
+            guarded.put(service, why);
+        }
     }
 
     /** Subscribers now (tests, the console). */
@@ -143,6 +159,10 @@ public final class ObserverLayer extends Layer {
 
     private void serve(AclMessage m) {
         Policy.Decision d = policy.decide(Policy.principalOf(m, ctx.host().platformName()), Policy.serviceOf(m));
+        String own = guarded.get(Policy.serviceOf(m));
+        if (d.allowed() && own != null) {
+            d = new Policy.Decision(false, own);
+        }
         if (!d.allowed()) {
             ctx.host().drops().record(ctx.host().nodeName(), name(), "not-authorized", m.getSender().name() + ": " + d.reason());
             if (m.getPerformative() != Performative.CANCEL) {

@@ -56,6 +56,23 @@ class ResumeAuthorityTest {
             });
         }
 
+        /** The observation service's REQUEST kill, as the console sends it. */
+        AclMessage kill(String who) throws InterruptedException {
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(new AID(who));
+            m.setOntology("concord-observe");
+            m.setContent("kill");
+            m.setConversationId("kill-" + who);
+            return exchange(m);
+        }
+
+        private AclMessage exchange(AclMessage m) throws InterruptedException {
+            runtime().execute(() -> send(m));
+            AclMessage a = answers.poll(20, TimeUnit.SECONDS);
+            assertNotNull(a, "answered");
+            return a;
+        }
+
         AclMessage ask(ResumeRequest r) throws InterruptedException {
             AclMessage m = new AclMessage(Performative.REQUEST);
             m.addReceiver(new AID("control-chair1@hospital"));
@@ -127,6 +144,12 @@ class ResumeAuthorityTest {
             assertEquals(Performative.INFORM, a.getPerformative(), "an operator's order carried by a member: " + a.getContent());
             w.board.awaitStatus(st -> moved(st) > stopped + 0.2, 30_000, "the chair to drive on after the operator's resume");
             w.awaitSaid("resumes T1 (decided by an operator at the console (nurse at the desk) via mallory)", 10_000);
+
+            // Nor does a member kill the agent that drives the chair (the observation service's kill).
+            a = mallory.kill("control-chair1@hospital");
+            assertEquals(Performative.REFUSE, a.getPerformative(), a.getContent());
+            assertTrue(a.getContent().contains("is not killed by a message"), a.getContent());
+            assertTrue(w.call(() -> w.rt.agents().contains(new AID("control-chair1@hospital"))), "the control agent runs");
         }
     }
 
@@ -140,6 +163,8 @@ class ResumeAuthorityTest {
             AclMessage a = mallory.ask(new ResumeRequest("mallory"));
             assertEquals(Performative.INFORM, a.getPerformative(), a.getContent());
             w.board.awaitStatus(st -> moved(st) > stopped + 0.2, 30_000, "the hazard: the chair drives off on mallory's word");
+            a = mallory.kill("control-chair1@hospital");
+            assertEquals(Performative.AGREE, a.getPerformative(), "the hazard: a member kills the agent that drives the chair: " + a);
         }
     }
 }
