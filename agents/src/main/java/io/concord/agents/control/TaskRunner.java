@@ -341,7 +341,14 @@ final class TaskRunner {
         if (asideTo >= 0) {
             say("cannot make way to node " + asideTo + ": " + why);
             asideTo = -1;
-            follower.clear();
+            if (active == null) {
+                follower.clear();
+                return;
+            }
+            // The task goes on from where the chair stands: a chair with a task never stands for
+            // good because its step aside was taken back (issue 47: it held its node, and the chairs
+            // waiting for it waited for ever, in silence).
+            resumeTask(follower.here(), why);
             return;
         }
         if (active == null) {
@@ -353,6 +360,13 @@ final class TaskRunner {
         }
         follower.trim();
         replan(follower.here(), "the traffic agent cannot grant the route (" + why + ")");
+    }
+
+    /** Plans the active task on from {@code here} (after a step aside that ended anywhere but where it was to). */
+    private void resumeTask(int here, String why) {
+        int goal = active.state == TaskView.State.TO_PICKUP ? active.from : active.to;
+        follower.hold(List.of(here));
+        replanTo(here, goal, "the step aside did not happen (" + why + ")");
     }
 
     /** The traffic agent's order to step aside for another chair: a plan to the node it names, then on from there. */
