@@ -553,8 +553,7 @@ public sealed interface WheelchairMessage {
 
     /**
      * INFORM {@code stalled}, traffic -> Medical: the alarm of the fleet monitor. {@code chair} (its
-     * agent's name) has work to do and has made no progress (no node left, no grant, no farther
-     * clearance) for {@code seconds} s; {@code waits} says what it waits for (its route and who is in
+     * agent's name) has work to do and has made no progress (left no node) for {@code seconds} s; {@code waits} says what it waits for (its route and who is in
      * the way, its turn at a node and who is ahead, or nothing the traffic agent holds back).
      */
     @Element(name = "stalled")

@@ -84,8 +84,8 @@ final class Reservations<T> {
     }
 
     /**
-     * The fleet monitor's alarm: {@code chair} has work and has made no progress since
-     * {@code sinceMs} (no node left, no grant, no farther clearance); {@code waitsFor} says for what.
+     * The fleet monitor's alarm: {@code chair} has work and has made no progress (left no node) since
+     * {@code sinceMs}, for {@code forMs}; {@code waitsFor} says for what.
      */
     public record Stalled<T>(String chair, long sinceMs, long forMs, String waitsFor) implements Outcome<T> {
     }
@@ -187,7 +187,10 @@ final class Reservations<T> {
         return Map.copyOf(progressAt);
     }
 
-    /** The chair made progress (a grant, a farther clearance, a node left): its alarm, if any, ends. */
+    /**
+     * The chair made progress: it left a node (a grant or a clearance is not progress until the chair
+     * drives on it). Its alarm, if any, ends.
+     */
     private void progressed(String chair, List<Outcome<T>> out) {
         if (progressAt.containsKey(chair)) {
             progressAt.put(chair, clock);
@@ -509,7 +512,6 @@ final class Reservations<T> {
 
     private void grant(Wait<T> w, List<Outcome<T>> out) {
         waiting.remove(w.chair());
-        progressed(w.chair(), out);
         List<long[]> keys = w.keys();
         hold(w.chair(), flat(keys));
         goals.put(w.chair(), w.path().get(w.path().size() - 1));
@@ -672,7 +674,6 @@ final class Reservations<T> {
         for (Map.Entry<String, Route<T>> e : routes.entrySet()) {
             Route<T> r = e.getValue();
             if (advance(e.getKey(), r)) {
-                progressed(e.getKey(), out);
                 out.add(new Clear<>(e.getKey(), r.ticket, r.path.get(r.upto)));
             }
         }

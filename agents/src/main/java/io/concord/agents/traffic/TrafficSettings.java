@@ -9,8 +9,8 @@ import java.util.Set;
  * may switch off (on this agent alone, never globally) to show what it does.
  *
  * @param rules   how routes are reserved ({@link TrafficRules#IN_ORDER} by default)
- * @param stallMs how long a chair with work may make no progress (no node left, no grant, no
- *                farther clearance) before the monitor raises its alarm, in platform milliseconds
+ * @param stallMs how long a chair with work may make no progress (leave no node) before the
+ *                monitor raises its alarm, in platform milliseconds
  * @param off     the liveness rules switched off (tests only; empty in every production path)
  */
 public record TrafficSettings(TrafficRules rules, long stallMs, Set<Rule> off) {
