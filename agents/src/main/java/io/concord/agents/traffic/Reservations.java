@@ -710,7 +710,8 @@ final class Reservations<T> {
                 if (idle.contains(h) && !aside.containsKey(h)) {
                     String why = "it is idle in the way of " + local(chair);
                     // A room only if nothing else is free: it stands where the other must go (its destination, say).
-                    moved |= makeWay(h, why, false, out) || makeWay(h, why, true, out);
+                    moved |= makeWay(h, why, false, out) || makeWay(h, why, true, out)
+                            || (anyCycle() && (makeWay(h, why, false, out, Set.of(chair)) || makeWay(h, why, true, out, Set.of(chair))));
                 }
             }
             if (moved) {
@@ -742,6 +743,17 @@ final class Reservations<T> {
                 if (makeWay(v, why, false, out) || makeWay(v, why, true, out)) {
                     broken = true;
                     break;
+                }
+            }
+            if (!broken && anyCycle()) {
+                // Gridlock: no node is free that no waiting route needs. A node only routes outside
+                // the cycle need will do: those chairs wait anyway, and the cycle moves on.
+                Set<String> members = Set.copyOf(cycle);
+                for (String v : victims) {
+                    if (makeWay(v, why, false, out, members) || makeWay(v, why, true, out, members)) {
+                        broken = true;
+                        break;
+                    }
                 }
             }
             if (!broken) {
@@ -1016,6 +1028,19 @@ final class Reservations<T> {
      * told).
      */
     private boolean makeWay(String chair, String why, boolean intoRooms, List<Outcome<T>> out) {
+        return makeWay(chair, why, intoRooms, out, null);
+    }
+
+    private boolean anyCycle() {
+        return settings.on(TrafficSettings.Rule.ANY_CYCLE);
+    }
+
+    /**
+     * As {@link #makeWay(String, String, boolean, List)}; with {@code onlyFor} not null, the node
+     * need only be off the waiting routes of those chairs (the cycle it breaks, or the chair it is in
+     * the way of) and off every granted route's end.
+     */
+    private boolean makeWay(String chair, String why, boolean intoRooms, List<Outcome<T>> out, Set<String> onlyFor) {
         List<Long> mine = held.get(chair);
         if (mine == null || mine.isEmpty() || !heard.containsKey(chair) || silent.contains(chair)) {
             return false;
@@ -1023,9 +1048,17 @@ final class Reservations<T> {
         int from = node(mine.get(0));
         Set<Integer> needed = new HashSet<>();
         for (Wait<T> w : waiting.values()) {
-            if (!w.chair().equals(chair)) {
+            if (!w.chair().equals(chair) && (onlyFor == null || onlyFor.contains(w.chair()))) {
                 needed.addAll(w.path());
             }
+        }
+        if (onlyFor != null) {
+            // The cycle's granted chairs: what is left of their routes.
+            routes.forEach((c, r) -> {
+                if (onlyFor.contains(c) && !c.equals(chair)) {
+                    needed.addAll(r.path);
+                }
+            });
         }
         goals.forEach((c, g) -> {
             if (!c.equals(chair)) {

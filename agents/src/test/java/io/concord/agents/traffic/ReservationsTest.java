@@ -388,4 +388,31 @@ class ReservationsTest {
         }
         assertEquals(0, rules.alarms());
     }
+
+    /**
+     * Admission: no chair is cleared into a node it could not leave. a is granted 1-2-3-4 behind
+     * b, granted 3-4-5 before it; b's task is dropped as it drives to 4, and it stands there idle,
+     * giving 3 back: a may stay at 2, not drive into 3, whose next node b stands on (b is sent out
+     * of the way meanwhile). With the rule off a is cleared into 3, where it would stand with nowhere
+     * to go.
+     */
+    @Test
+    void aChairIsNotClearedIntoANodeItCouldNotLeave() {
+        assertEquals(2, clearedUpToBehindAChairThatStops(TrafficSettings.standard()));
+    }
+
+    @Test
+    void withoutAdmissionAChairIsClearedIntoANodeItCouldNotLeave() {
+        assertEquals(3, clearedUpToBehindAChairThatStops(TrafficSettings.standard().without(TrafficSettings.Rule.ADMISSION)));
+    }
+
+    private static int clearedUpToBehindAChairThatStops(TrafficSettings settings) {
+        Reservations<String> rules = new Reservations<>(MAP, settings);
+        reserve(rules, "b", "tb", List.of(3), List.of(3, 4, 5), 0);
+        reserve(rules, "a", "ta", List.of(1), List.of(1, 2, 3, 4), 0); // behind b: up to 2
+        rules.heard("b", 20);
+        rules.idle("b", List.of(4), 20); // b, its task dropped on the edge to 4, stands there idle: 3 is given back
+        List<Integer> cleared = rules.cleared().get("a");
+        return cleared.get(cleared.size() - 1);
+    }
 }
