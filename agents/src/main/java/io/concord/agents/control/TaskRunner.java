@@ -392,14 +392,21 @@ final class TaskRunner {
         }
         int here = follower.here();
         boolean driving = follower.underWay() && traffic.mayDriveNow(follower.route());
-        if (driving || replanning || asideTo >= 0 || here != from) {
+        // Already on its way aside but not yet granted that way: the new order replaces the old one
+        // (refusing it, the chair asked again for the old way, and was ordered again: for ever).
+        boolean another = asideTo >= 0 && !driving && !replanning && here == from;
+        if (!another && (driving || replanning || asideTo >= 0 || here != from)) {
             say("cannot make way from node " + from + " to node " + to + (here != from ? ": it is at node " + here
-                    : ": it is under way"));
+                    : driving ? ": it is under way" : replanning ? ": it is waiting for a plan" : ": it is making way to node " + asideTo));
             traffic.release(to);
             if (!driving) {
                 traffic.reset(); // its wait was dropped for the order: asks again, or says again where it idles
             }
             return;
+        }
+        if (another && asideTo != to) {
+            say("makes way to node " + to + " instead of node " + asideTo);
+            traffic.release(asideTo);
         }
         AID planner = planner();
         if (planner == null) {

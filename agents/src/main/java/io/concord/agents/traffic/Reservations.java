@@ -147,6 +147,8 @@ final class Reservations<T> {
     private final Set<String> alarmed = new HashSet<>();
     /** chair -> when it was sent aside (its order shields a cycle it is in for {@link #ASIDE_GRACE_MS}). */
     private final Map<String, Long> asideSince = new HashMap<>();
+    /** Chairs whose step aside was called off (not there within the grace), until they make progress: not sent aside again first. */
+    private final Set<String> calledOff = new HashSet<>();
     /** Idle chairs already sent home, until they ask for a route again. */
     private final Set<String> sentHome = new HashSet<>();
     /** The time of the call being answered. */
@@ -195,6 +197,7 @@ final class Reservations<T> {
         if (progressAt.containsKey(chair)) {
             progressAt.put(chair, clock);
         }
+        calledOff.remove(chair);
         if (alarmed.remove(chair)) {
             out.add(new Note<>(local(chair) + " makes progress again"));
         }
@@ -355,6 +358,7 @@ final class Reservations<T> {
         goals.remove(chair);
         clock = nowMs;
         progressAt.remove(chair);
+        calledOff.remove(chair);
         if (alarmed.remove(chair)) {
             out.add(new Note<>(local(chair) + " is idle now"));
         }
@@ -738,6 +742,16 @@ final class Reservations<T> {
             List<String> victims = new ArrayList<>(cycle);
             victims.removeIf(routes::containsKey);
             victims.sort(null);
+            // A chair whose last step aside was called off is not sent aside again first (it could not
+            // get there, and the same order would come round for ever): a granted chair of the cycle
+            // gives its route back before it is asked again.
+            List<String> again = new ArrayList<>(victims);
+            if (anyCycle()) {
+                victims.removeIf(calledOff::contains);
+                again.removeAll(victims);
+            } else {
+                again.clear();
+            }
             boolean broken = false;
             for (String v : victims) {
                 if (makeWay(v, why, false, out) || makeWay(v, why, true, out)) {
@@ -765,6 +779,13 @@ final class Reservations<T> {
                     withdraw(granteds.get(0), why, out);
                     broken = true;
                 }
+            }
+            for (String v : again) {
+                if (broken) {
+                    break;
+                }
+                broken = makeWay(v, why, false, out) || makeWay(v, why, true, out)
+                        || makeWay(v, why, false, out, Set.copyOf(cycle)) || makeWay(v, why, true, out, Set.copyOf(cycle));
             }
             if (broken) {
                 deadlocks++;
@@ -907,6 +928,7 @@ final class Reservations<T> {
      * is taken back, FAILURE), and it counts as any other chair of the cycle.
      */
     private void cancelAside(String chair, String why, List<Outcome<T>> out) {
+        calledOff.add(chair);
         Integer target = aside.remove(chair);
         asideSince.remove(chair);
         Wait<T> w = waiting.remove(chair);
