@@ -7,6 +7,7 @@ import io.concord.agents.map.HospitalMap;
 import io.concord.agents.plan.PlannerAgent;
 import io.concord.agents.traffic.TrafficAgent;
 import io.concord.agents.traffic.TrafficRules;
+import io.concord.agents.traffic.TrafficSettings;
 import io.concord.layers.Platform;
 import io.concord.layers.authority.Operator;
 import io.concord.layers.authority.OperatorKey;
@@ -93,9 +94,14 @@ public final class Hospital {
      * ({@link TrafficRules#WHOLE_ROUTES} to compare with in the benchmark), or none if null.
      */
     public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log, TrafficRules rules) {
+        return start(platform, world, log, rules == null ? null : TrafficSettings.standard().withRules(rules));
+    }
+
+    /** As {@link #start(Platform, HospitalWorld, Consumer)}, with a traffic agent of these settings, or none if null. */
+    public static Hospital start(Platform platform, HospitalWorld world, Consumer<String> log, TrafficSettings traffic) {
         Hospital h = new Hospital();
-        if (rules != null) {
-            h.traffic = new TrafficAgent(world.map(), log, rules);
+        if (traffic != null) {
+            h.traffic = new TrafficAgent(world.map(), log, traffic);
             platform.startAgent("traffic", h.traffic);
         }
         for (WorldDoor d : world.doors()) {

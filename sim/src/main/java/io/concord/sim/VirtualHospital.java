@@ -3,6 +3,7 @@ package io.concord.sim;
 import io.concord.agents.map.HospitalMap;
 import io.concord.agents.medical.MedicalAgent;
 import io.concord.agents.traffic.TrafficRules;
+import io.concord.agents.traffic.TrafficSettings;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Platform;
@@ -35,6 +36,12 @@ public final class VirtualHospital implements AutoCloseable {
      * @param log     told every agent's log line
      */
     public VirtualHospital(HospitalMap map, long seed, FaultPlan plan, int chairs, TrafficRules traffic,
+                           MedicalAgent.Settings medicalSettings, Consumer<String> log) {
+        this(map, seed, plan, chairs, traffic == null ? null : TrafficSettings.standard().withRules(traffic), medicalSettings, log);
+    }
+
+    /** @param traffic the traffic agent's settings (its rules, the fleet monitor's limit), or null for none */
+    public VirtualHospital(HospitalMap map, long seed, FaultPlan plan, int chairs, TrafficSettings traffic,
                            MedicalAgent.Settings medicalSettings, Consumer<String> log) {
         if (chairs > map.parking().size()) {
             throw new IllegalArgumentException(chairs + " chairs, but " + map.name() + " parks " + map.parking().size());

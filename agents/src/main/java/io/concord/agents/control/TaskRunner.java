@@ -341,7 +341,14 @@ final class TaskRunner {
         if (asideTo >= 0) {
             say("cannot make way to node " + asideTo + ": " + why);
             asideTo = -1;
-            follower.clear();
+            if (active == null) {
+                follower.clear();
+                return;
+            }
+            // The task goes on from where the chair stands: a chair with a task never stands for
+            // good because its step aside was taken back (issue 47: it held its node, and the chairs
+            // waiting for it waited for ever, in silence).
+            resumeTask(follower.here(), why);
             return;
         }
         if (active == null) {
@@ -353,6 +360,13 @@ final class TaskRunner {
         }
         follower.trim();
         replan(follower.here(), "the traffic agent cannot grant the route (" + why + ")");
+    }
+
+    /** Plans the active task on from {@code here} (after a step aside that ended anywhere but where it was to). */
+    private void resumeTask(int here, String why) {
+        int goal = active.state == TaskView.State.TO_PICKUP ? active.from : active.to;
+        follower.hold(List.of(here));
+        replanTo(here, goal, "the step aside did not happen (" + why + ")");
     }
 
     /** The traffic agent's order to step aside for another chair: a plan to the node it names, then on from there. */
@@ -378,14 +392,21 @@ final class TaskRunner {
         }
         int here = follower.here();
         boolean driving = follower.underWay() && traffic.mayDriveNow(follower.route());
-        if (driving || replanning || asideTo >= 0 || here != from) {
+        // Already on its way aside but not yet granted that way: the new order replaces the old one
+        // (refusing it, the chair asked again for the old way, and was ordered again: for ever).
+        boolean another = asideTo >= 0 && !driving && !replanning && here == from;
+        if (!another && (driving || replanning || asideTo >= 0 || here != from)) {
             say("cannot make way from node " + from + " to node " + to + (here != from ? ": it is at node " + here
-                    : ": it is under way"));
+                    : driving ? ": it is under way" : replanning ? ": it is waiting for a plan" : ": it is making way to node " + asideTo));
             traffic.release(to);
             if (!driving) {
                 traffic.reset(); // its wait was dropped for the order: asks again, or says again where it idles
             }
             return;
+        }
+        if (another && asideTo != to) {
+            say("makes way to node " + to + " instead of node " + asideTo);
+            traffic.release(asideTo);
         }
         AID planner = planner();
         if (planner == null) {

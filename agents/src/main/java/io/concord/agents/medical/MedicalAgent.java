@@ -112,6 +112,23 @@ public class MedicalAgent extends Agent {
     private long next;
     /** task -> its contract net now. */
     private final Map<String, ContractNetInitiator> running = new LinkedHashMap<>();
+    /**
+     * An alarm of the fleet monitor (the traffic agent): {@code chair} has made no progress for
+     * {@code seconds}; {@code task}, the transport it holds for this agent (or null); urgent when that
+     * transport's patient is on board.
+     */
+    public record Alarm(long atMs, String chair, long seconds, String waits, String task, boolean urgent) {
+    }
+
+    private final List<Alarm> alarms = new ArrayList<>();
+    /** task -> why the chair that held it last failed it (kept for the reason of a later round nobody proposes for). */
+    private final Map<String, String> lastFailure = new LinkedHashMap<>();
+
+    /** The fleet monitor's alarms heard so far, in order. */
+    public List<Alarm> alarms() {
+        return List.copyOf(alarms);
+    }
+
     /** task -> the last progress report of the chair it was given to. */
     private final Map<String, Progress> progress = new LinkedHashMap<>();
     /** Tasks whose chair went silent with the patient on board: its result is still awaited, from that chair alone. */
@@ -153,6 +170,8 @@ public class MedicalAgent extends Agent {
         Platform.of(this).register(ServiceDescription.of(Services.MEDICAL, getLocalName()));
         Inbox.each(this, MessageTemplate.matchOntology(Services.ONTOLOGY).and(WheelchairMessage.matching(Paused.class)
                 .or(WheelchairMessage.matching(Resumed.class)).or(WheelchairMessage.matching(Progress.class))), this::statusNotice);
+        Inbox.each(this, MessageTemplate.matchOntology(Services.ONTOLOGY).and(WheelchairMessage.matching(WheelchairMessage.Stalled.class)),
+                this::stalled);
         // The result of a task whose chair went silent with the patient on board (its contract ended).
         Inbox.each(this, WheelchairMessage.matching(Done.class).or(WheelchairMessage.matching(Failed.class))
                 .and(m -> WheelchairMessage.tryDecode(m).map(w -> awaitedAboard.containsKey(taskOf(w))).orElse(false)),
@@ -239,6 +258,7 @@ public class MedicalAgent extends Agent {
             progress.remove(id);
             awaitedAboard.remove(id);
             auctionsHeld.remove(id);
+            lastFailure.remove(id);
         });
         log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
                 getLocalName(), id, from, to, priority, unloadS));
@@ -315,6 +335,37 @@ public class MedicalAgent extends Agent {
         }
         if (awaitedAboard.containsKey(p.task())) {
             log.accept(getLocalName() + ": " + m.getSender().localName() + " is heard again with " + p.task() + "'s patient at node " + p.node());
+        }
+    }
+
+    /** The fleet monitor's alarm: logged, urgent if the chair has one of this agent's patients on board. */
+    private void stalled(AclMessage m) {
+        WheelchairMessage.Stalled st;
+        try {
+            st = WheelchairMessage.decode(m, WheelchairMessage.Stalled.class);
+        } catch (IllegalArgumentException e) {
+            log.accept(getLocalName() + ": ignores a malformed alarm from " + m.getSender().name() + ": " + e.getMessage());
+            return;
+        }
+        String task = null;
+        boolean urgent = false;
+        for (Map.Entry<String, AclMessage> e : awarded.entrySet()) {
+            if (e.getValue().getSender().name().equals(st.chair()) && open.containsKey(e.getKey())) {
+                boolean aboard = patientOnBoard(e.getKey());
+                if (task == null || aboard) {
+                    task = e.getKey();
+                    urgent = aboard;
+                }
+            }
+        }
+        String chair = st.chair().contains("@") ? st.chair().substring(0, st.chair().indexOf('@')) : st.chair();
+        alarms.add(new Alarm(currentTimeMillis(), chair, st.seconds(), st.waits(), task, urgent));
+        log.accept(getLocalName() + ": " + (urgent ? "URGENT ALARM: " + task + "'s patient is on board " + chair + ", which"
+                : "ALARM: " + chair + (task == null ? "" : " (" + task + ")")) + " has made no progress for " + st.seconds()
+                + " s; it waits for " + st.waits());
+        if (task != null) {
+            audit.logged(getLocalName() + ": " + (urgent ? "urgent " : "") + "alarm for " + chair + ": no progress for " + st.seconds()
+                    + " s, waiting for " + st.waits(), currentTimeMillis());
         }
     }
 
@@ -489,8 +540,19 @@ public class MedicalAgent extends Agent {
                         log.accept(getLocalName() + ": no chair can do " + id + " after " + settings.waitForChairMs() / 1000 + " s");
                         return;
                     }
-                    f.complete(new Outcome(id, false, null, "no chair proposed", round));
-                    log.accept(getLocalName() + ": nobody can do " + id);
+                    // The real reason: what each chair said when it refused (no route, say), not just "nobody proposed".
+                    List<String> refusals = new ArrayList<>();
+                    for (AclMessage r : responses) {
+                        if (r.getPerformative() == Performative.REFUSE) {
+                            refusals.add(r.getSender().localName() + ": " + reasonOf(r));
+                        }
+                    }
+                    String why = refusals.isEmpty() ? "no chair proposed" : "no chair proposed (" + String.join("; ", refusals) + ")";
+                    if (lastFailure.containsKey(id)) {
+                        why = lastFailure.get(id) + "; then " + why;
+                    }
+                    f.complete(new Outcome(id, false, null, why, round));
+                    log.accept(getLocalName() + ": nobody can do " + id + (refusals.isEmpty() ? "" : ": " + String.join("; ", refusals)));
                 }
             }
 
@@ -543,6 +605,7 @@ public class MedicalAgent extends Agent {
                 if (f.isDone()) {
                     return;
                 }
+                lastFailure.put(id, why);
                 if (round >= settings.maxAuctions()) {
                     f.complete(new Outcome(id, false, winner.getSender().localName(), why, round));
                 } else {

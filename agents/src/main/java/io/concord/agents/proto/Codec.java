@@ -69,6 +69,7 @@ final class Codec {
         under(Release.class, INFORM);
         under(Idle.class, INFORM);
         under(MakeWay.class, INFORM);
+        under(Stalled.class, INFORM);
         List<Class<?>> elements = new ArrayList<>(UNDER.keySet());
         elements.add(Proposal.Pending.class);
         elements.sort(java.util.Comparator.comparing(Class::getName));

@@ -92,6 +92,7 @@ public sealed interface WheelchairMessage {
         default void onRelease(Release w, AclMessage m) { unknown(w.verb(), m); }
         default void onIdle(Idle w, AclMessage m) { unknown(w.verb(), m); }
         default void onMakeWay(MakeWay w, AclMessage m) { unknown(w.verb(), m); }
+        default void onStalled(Stalled w, AclMessage m) { unknown(w.verb(), m); }
     }
 
     /** A message that says why (a refusal, a failure, a pause). */
@@ -547,6 +548,19 @@ public sealed interface WheelchairMessage {
 
         public void to(Handler h, AclMessage m) {
             h.onMakeWay(this, m);
+        }
+    }
+
+    /**
+     * INFORM {@code stalled}, traffic -> Medical: the alarm of the fleet monitor. {@code chair} (its
+     * agent's name) has work to do and has made no progress (left no node) for {@code seconds} s; {@code waits} says what it waits for (its route and who is in
+     * the way, its turn at a node and who is ahead, or nothing the traffic agent holds back).
+     */
+    @Element(name = "stalled")
+    record Stalled(@Slot(mandatory = true) String chair, long seconds, @Slot(mandatory = true) String waits)
+            implements WheelchairMessage, Concept {
+        public void to(Handler h, AclMessage m) {
+            h.onStalled(this, m);
         }
     }
 

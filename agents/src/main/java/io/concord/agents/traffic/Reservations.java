@@ -83,6 +83,16 @@ final class Reservations<T> {
     public record Note<T>(String text) implements Outcome<T> {
     }
 
+    /**
+     * The fleet monitor's alarm: {@code chair} has work and has made no progress (left no node) since
+     * {@code sinceMs}, for {@code forMs}; {@code waitsFor} says for what.
+     */
+    public record Stalled<T>(String chair, long sinceMs, long forMs, String waitsFor) implements Outcome<T> {
+    }
+
+    /** How long a chair sent aside shields a cycle it is in before the cycle is broken by the other rules. */
+    public static final long ASIDE_GRACE_MS = 30_000;
+
     /** A route waiting for its grant; {@code keys}: what it takes at each node, worked out once (see {@link #keys}). */
     private record Wait<T>(String chair, List<Integer> path, List<long[]> keys, T ticket, long since, boolean aside) {
     }
@@ -114,6 +124,7 @@ final class Reservations<T> {
     /** The map's parking places: where an idle chair stands best. */
     private final Set<Integer> parking;
     private final TrafficRules rules;
+    private final TrafficSettings settings;
     /**
      * What is reserved, a key for each: a node ({@link #whole}), or one lane of a node chairs may
      * pass through in lanes (a two-lane corridor: {@link HospitalMap#laneAxis}), whose whole is
@@ -130,6 +141,19 @@ final class Reservations<T> {
     private final Set<String> idle = new HashSet<>();
     private final Set<String> silent = new HashSet<>();
     private final Map<String, Long> heard = new HashMap<>();
+    /** chair -> when it last made progress, for every chair with work (not idle): the fleet monitor. */
+    private final Map<String, Long> progressAt = new TreeMap<>();
+    /** Chairs the monitor has raised its alarm for, until they make progress again. */
+    private final Set<String> alarmed = new HashSet<>();
+    /** chair -> when it was sent aside (its order shields a cycle it is in for {@link #ASIDE_GRACE_MS}). */
+    private final Map<String, Long> asideSince = new HashMap<>();
+    /** Chairs whose step aside was called off (not there within the grace), until they make progress: not sent aside again first. */
+    private final Set<String> calledOff = new HashSet<>();
+    /** Idle chairs already sent home, until they ask for a route again. */
+    private final Set<String> sentHome = new HashSet<>();
+    /** The time of the call being answered. */
+    private long clock;
+    private long alarms;
     /** chair -> the nodes it last said it stands on, less those it has given back since. */
     private final Map<String, List<Integer>> standing = new HashMap<>();
     /** chair -> its route granted in order, with its ticket and how far it may drive (index into the path). */
@@ -144,9 +168,39 @@ final class Reservations<T> {
      * @param rules how; {@link TrafficRules#NONE} only in tests
      */
     public Reservations(HospitalMap map, TrafficRules rules) {
+        this(map, TrafficSettings.standard().withRules(rules));
+    }
+
+    /** With liveness settings (the monitor's limit; tests switch rules off). */
+    public Reservations(HospitalMap map, TrafficSettings settings) {
         this.map = map;
         this.parking = Set.copyOf(map.parking());
-        this.rules = rules;
+        this.rules = settings.rules();
+        this.settings = settings;
+    }
+
+    /** Alarms the fleet monitor has raised so far. */
+    public long alarms() {
+        return alarms;
+    }
+
+    /** For each chair with work: when it last made progress (the fleet monitor's view). */
+    public Map<String, Long> lastProgress() {
+        return Map.copyOf(progressAt);
+    }
+
+    /**
+     * The chair made progress: it left a node (a grant or a clearance is not progress until the chair
+     * drives on it). Its alarm, if any, ends.
+     */
+    private void progressed(String chair, List<Outcome<T>> out) {
+        if (progressAt.containsKey(chair)) {
+            progressAt.put(chair, clock);
+        }
+        calledOff.remove(chair);
+        if (alarmed.remove(chair)) {
+            out.add(new Note<>(local(chair) + " makes progress again"));
+        }
     }
 
     // ---- what it can tell -----------------------------------------------------------------------
@@ -253,6 +307,9 @@ final class Reservations<T> {
             }
         }
         List<Outcome<T>> out = new ArrayList<>();
+        clock = nowMs;
+        progressAt.putIfAbsent(chair, nowMs);
+        sentHome.remove(chair);
         Integer target = aside.get(chair);
         List<Long> keep = wholes(at);
         boolean stepping = asked && target != null && path.contains(target);
@@ -281,6 +338,10 @@ final class Reservations<T> {
     /** A chair has left a node. */
     public List<Outcome<T>> release(String chair, int node, long nowMs) {
         List<Outcome<T>> out = new ArrayList<>();
+        clock = nowMs;
+        if (holds(chair, node)) {
+            progressed(chair, out);
+        }
         giveBack(chair, node);
         review(nowMs, out);
         return out;
@@ -295,6 +356,12 @@ final class Reservations<T> {
         standing.put(chair, new ArrayList<>(at));
         idle.add(chair);
         goals.remove(chair);
+        clock = nowMs;
+        progressAt.remove(chair);
+        calledOff.remove(chair);
+        if (alarmed.remove(chair)) {
+            out.add(new Note<>(local(chair) + " is idle now"));
+        }
         review(nowMs, out);
         return out;
     }
@@ -307,6 +374,7 @@ final class Reservations<T> {
     /** Time passed: grants what has freed, moves idle chairs out of the way, breaks deadlocks, handles silent chairs. */
     public List<Outcome<T>> review(long nowMs) {
         List<Outcome<T>> out = new ArrayList<>();
+        clock = nowMs;
         review(nowMs, out);
         return out;
     }
@@ -469,10 +537,34 @@ final class Reservations<T> {
      */
     private boolean advance(String chair, Route<T> r) {
         int before = r.upto;
-        while (r.upto + 1 < r.path.size() && heads(chair, r.keys.get(r.upto + 1)) && (r.upto > 0 || setsOff(chair, r))) {
+        while (r.upto + 1 < r.path.size() && heads(chair, r.keys.get(r.upto + 1)) && (r.upto > 0 || setsOff(chair, r))
+                && admitted(chair, r, r.upto + 1) == null) {
             r.upto++;
         }
         return r.upto != before;
+    }
+
+    /**
+     * Admission: the chair that would stand still at node {@code path[i]}'s next node, keeping the
+     * chair from driving into {@code path[i]} (it could not leave it: the next node of its route is
+     * held, ahead of it, by a chair that will not drive on), or null if it may. Its route's end is
+     * always admitted: it stays there.
+     */
+    private String admitted(String chair, Route<T> r, int i) {
+        if (!settings.on(TrafficSettings.Rule.ADMISSION) || rules != TrafficRules.IN_ORDER || i + 1 >= r.path.size()) {
+            return null;
+        }
+        for (long k : r.keys.get(i + 1)) {
+            for (String h : holders.getOrDefault(k, Set.of())) {
+                if (h.equals(chair)) {
+                    break; // the rest of the queue is behind it
+                }
+                if (!passes(h, k)) {
+                    return h;
+                }
+            }
+        }
+        return null;
     }
 
     private boolean setsOff(String chair, Route<T> r) {
@@ -521,6 +613,13 @@ final class Reservations<T> {
                     if (h != null && !h.equals(chair) && !out.contains(h)) {
                         out.add(h);
                     }
+                }
+            }
+            if (out.isEmpty() && (r.upto > 0 || setsOff(chair, r))) {
+                // Held back by admission: it waits for the chair that stands where it would have to go next.
+                String h = admitted(chair, r, r.upto + 1);
+                if (h != null) {
+                    out.add(h);
                 }
             }
         }
@@ -615,26 +714,60 @@ final class Reservations<T> {
                 if (idle.contains(h) && !aside.containsKey(h)) {
                     String why = "it is idle in the way of " + local(chair);
                     // A room only if nothing else is free: it stands where the other must go (its destination, say).
-                    moved |= makeWay(h, why, false, out) || makeWay(h, why, true, out);
+                    moved |= makeWay(h, why, false, out) || makeWay(h, why, true, out)
+                            || (anyCycle() && (makeWay(h, why, false, out, Set.of(chair)) || makeWay(h, why, true, out, Set.of(chair))));
                 }
             }
             if (moved) {
                 continue;
             }
             List<String> cycle = cycle(chair);
-            if (cycle.isEmpty() || cycle.stream().anyMatch(aside::containsKey)) {
+            if (cycle.isEmpty()) {
                 continue;
+            }
+            List<String> shielding = cycle.stream().filter(aside::containsKey).toList();
+            if (!shielding.isEmpty()) {
+                // A chair of it is on its way aside: the cycle ends when it gets there. Unless it
+                // has not, within the grace: then its order no longer shields the cycle.
+                if (!settings.on(TrafficSettings.Rule.ANY_CYCLE)
+                        || shielding.stream().anyMatch(c -> now - asideSince.getOrDefault(c, now) < ASIDE_GRACE_MS)) {
+                    continue;
+                }
+                for (String c : shielding) {
+                    cancelAside(c, "deadlock " + cycle.stream().map(Reservations::local).toList(), out);
+                }
             }
             String why = "deadlock " + cycle.stream().map(Reservations::local).toList();
             // A chair that stands still steps aside; one granted a route ahead of others cannot (it is under way).
             List<String> victims = new ArrayList<>(cycle);
             victims.removeIf(routes::containsKey);
             victims.sort(null);
+            // A chair whose last step aside was called off is not sent aside again first (it could not
+            // get there, and the same order would come round for ever): a granted chair of the cycle
+            // gives its route back before it is asked again.
+            List<String> again = new ArrayList<>(victims);
+            if (anyCycle()) {
+                victims.removeIf(calledOff::contains);
+                again.removeAll(victims);
+            } else {
+                again.clear();
+            }
             boolean broken = false;
             for (String v : victims) {
                 if (makeWay(v, why, false, out) || makeWay(v, why, true, out)) {
                     broken = true;
                     break;
+                }
+            }
+            if (!broken && anyCycle()) {
+                // Gridlock: no node is free that no waiting route needs. A node only routes outside
+                // the cycle need will do: those chairs wait anyway, and the cycle moves on.
+                Set<String> members = Set.copyOf(cycle);
+                for (String v : victims) {
+                    if (makeWay(v, why, false, out, members) || makeWay(v, why, true, out, members)) {
+                        broken = true;
+                        break;
+                    }
                 }
             }
             if (!broken) {
@@ -647,12 +780,175 @@ final class Reservations<T> {
                     broken = true;
                 }
             }
+            for (String v : again) {
+                if (broken) {
+                    break;
+                }
+                broken = makeWay(v, why, false, out) || makeWay(v, why, true, out)
+                        || makeWay(v, why, false, out, Set.copyOf(cycle)) || makeWay(v, why, true, out, Set.copyOf(cycle));
+            }
             if (broken) {
                 deadlocks++;
             } else {
                 unbroken++;
             }
         }
+        home(out);
+        monitor(now, out);
+    }
+
+    /**
+     * The fleet monitor: every chair with work that has made no progress for the limit raises an
+     * alarm, once until it makes progress again, naming what it waits for.
+     */
+    private void monitor(long now, List<Outcome<T>> out) {
+        if (!settings.on(TrafficSettings.Rule.ALARM)) {
+            return;
+        }
+        for (Map.Entry<String, Long> e : progressAt.entrySet()) {
+            String chair = e.getKey();
+            if (now - e.getValue() >= settings.stallMs() && !idle.contains(chair) && alarmed.add(chair)) {
+                alarms++;
+                out.add(new Stalled<>(chair, e.getValue(), now - e.getValue(), waitDescription(chair)));
+            }
+        }
+    }
+
+    /** What a chair waits for, in words, for the alarm. */
+    private String waitDescription(String chair) {
+        if (silent.contains(chair)) {
+            return "nothing: it is silent";
+        }
+        Wait<T> w = waiting.get(chair);
+        if (w != null) {
+            return "its route " + w.path() + (w.aside() ? " aside" : "") + " (in the way: " + blockers(w).stream().map(Reservations::local).toList() + ")";
+        }
+        Route<T> r = routes.get(chair);
+        if (r != null && r.next() >= 0) {
+            List<String> ahead = waitsFor(chair);
+            if (!ahead.isEmpty()) {
+                return "its turn at node " + r.next() + " of its route " + r.path + " (ahead: " + ahead.stream().map(Reservations::local).toList() + ")";
+            }
+            return "nothing the traffic agent holds back: it may drive to node " + r.path.get(r.upto) + " of " + r.path
+                    + " (a door, its sensors, the chair itself)";
+        }
+        return "nothing the traffic agent holds back: it stands at " + standing.getOrDefault(chair, List.of())
+                + " with no route asked (a plan, a door, its patient, a hold)";
+    }
+
+    /**
+     * Idle chairs go home: one idle off the map's parking places (in a patient's room, say) is sent to
+     * the nearest parking place nobody holds or needs, by hops over free nodes, ties in the map's
+     * order of places; once until it asks for a route again.
+     */
+    private void home(List<Outcome<T>> out) {
+        if (!settings.on(TrafficSettings.Rule.HOME) || parking.isEmpty() || rules != TrafficRules.IN_ORDER) {
+            return;
+        }
+        for (String chair : new ArrayList<>(new java.util.TreeSet<>(idle))) {
+            List<Long> mine = held.get(chair);
+            if (sentHome.contains(chair) || aside.containsKey(chair) || mine == null || mine.isEmpty() || silent.contains(chair)) {
+                continue;
+            }
+            int at = node(mine.get(0));
+            if (parking.contains(at)) {
+                continue;
+            }
+            sentHome.add(chair);
+            goHome(chair, at, out);
+        }
+    }
+
+    private void goHome(String chair, int from, List<Outcome<T>> out) {
+        Map<Integer, Integer> prev = new HashMap<>();
+        ArrayDeque<Integer> q = new ArrayDeque<>(List.of(from));
+        prev.put(from, from);
+        Set<Integer> needed = needed(chair);
+        List<Integer> order = map.parking();
+        int best = -1;
+        while (!q.isEmpty() && best < 0) {
+            // one ring of hops at a time: the first ring with a free place, its first by the map's order
+            List<Integer> ring = new ArrayList<>(q);
+            q.clear();
+            List<Integer> next = new ArrayList<>();
+            for (int u : ring) {
+                for (Edge e : map.edgesAt(u)) {
+                    int v = e.other(u);
+                    if (!prev.containsKey(v) && freeFor(chair, v)) {
+                        prev.put(v, u);
+                        next.add(v);
+                    }
+                }
+            }
+            int bestRank = Integer.MAX_VALUE;
+            for (int v : next) {
+                int rank = order.indexOf(v);
+                if (rank >= 0 && !needed.contains(v) && rank < bestRank) {
+                    best = v;
+                    bestRank = rank;
+                }
+            }
+            q.addAll(next);
+        }
+        if (best < 0) {
+            out.add(new Note<>(local(chair) + " is idle at node " + from + ", off the parking places, and none is free to go to"));
+            return;
+        }
+        List<Integer> path = new ArrayList<>();
+        for (int v = best; v != from; v = prev.get(v)) {
+            path.add(0, v);
+        }
+        idle.remove(chair);
+        hold(chair, wholes(List.of(best)));
+        aside.put(chair, best);
+        asideSince.put(chair, clock);
+        out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
+        out.add(new Note<>(local(chair) + " goes home from node " + from + " to parking place " + best + " (it is idle)"));
+    }
+
+    /** The nodes other chairs need: every waiting route's, every granted route's end. */
+    private Set<Integer> needed(String chair) {
+        Set<Integer> needed = new HashSet<>();
+        for (Wait<T> w : waiting.values()) {
+            if (!w.chair().equals(chair)) {
+                needed.addAll(w.path());
+            }
+        }
+        goals.forEach((c, g) -> {
+            if (!c.equals(chair)) {
+                needed.add(g);
+            }
+        });
+        return needed;
+    }
+
+    /**
+     * A chair sent aside that has not got there within the grace, in a cycle: its order ends (the
+     * node kept for it is given back unless it stands there; its route there, granted or waiting,
+     * is taken back, FAILURE), and it counts as any other chair of the cycle.
+     */
+    private void cancelAside(String chair, String why, List<Outcome<T>> out) {
+        calledOff.add(chair);
+        Integer target = aside.remove(chair);
+        asideSince.remove(chair);
+        Wait<T> w = waiting.remove(chair);
+        if (w != null) {
+            out.add(new Failed<>(chair, w.ticket(), why + ": the step aside to node " + target + " is called off, ask again", null));
+        }
+        Route<T> r = routes.get(chair);
+        List<Integer> body = body(chair, r != null ? r.path.get(r.upto) : null);
+        if (r != null) {
+            routes.remove(chair);
+            goals.remove(chair);
+            out.add(new Failed<>(chair, r.ticket, why + ": the step aside to node " + target + " is called off, ask again", null));
+        }
+        if (!body.isEmpty()) {
+            keepOnly(chair, body);
+        } else if (target != null && !standing.getOrDefault(chair, List.of()).contains(target)) {
+            giveBack(chair, target);
+        }
+        out.add(new Note<>(local(chair) + " has not made way to node " + target + " within " + ASIDE_GRACE_MS / 1000
+                + " s; the order is called off, keeping " + body + " (" + why + ")"));
     }
 
     /**
@@ -754,6 +1050,19 @@ final class Reservations<T> {
      * told).
      */
     private boolean makeWay(String chair, String why, boolean intoRooms, List<Outcome<T>> out) {
+        return makeWay(chair, why, intoRooms, out, null);
+    }
+
+    private boolean anyCycle() {
+        return settings.on(TrafficSettings.Rule.ANY_CYCLE);
+    }
+
+    /**
+     * As {@link #makeWay(String, String, boolean, List)}; with {@code onlyFor} not null, the node
+     * need only be off the waiting routes of those chairs (the cycle it breaks, or the chair it is in
+     * the way of) and off every granted route's end.
+     */
+    private boolean makeWay(String chair, String why, boolean intoRooms, List<Outcome<T>> out, Set<String> onlyFor) {
         List<Long> mine = held.get(chair);
         if (mine == null || mine.isEmpty() || !heard.containsKey(chair) || silent.contains(chair)) {
             return false;
@@ -761,9 +1070,17 @@ final class Reservations<T> {
         int from = node(mine.get(0));
         Set<Integer> needed = new HashSet<>();
         for (Wait<T> w : waiting.values()) {
-            if (!w.chair().equals(chair)) {
+            if (!w.chair().equals(chair) && (onlyFor == null || onlyFor.contains(w.chair()))) {
                 needed.addAll(w.path());
             }
+        }
+        if (onlyFor != null) {
+            // The cycle's granted chairs: what is left of their routes.
+            routes.forEach((c, r) -> {
+                if (onlyFor.contains(c) && !c.equals(chair)) {
+                    needed.addAll(r.path);
+                }
+            });
         }
         goals.forEach((c, g) -> {
             if (!c.equals(chair)) {
@@ -809,6 +1126,7 @@ final class Reservations<T> {
         idle.remove(chair);
         hold(chair, wholes(List.of(best)));
         aside.put(chair, best);
+        asideSince.put(chair, clock);
         moves++;
         out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
         out.add(new Note<>(local(chair) + " makes way from node " + from + " to node " + best + " (" + why + ")"));

@@ -78,9 +78,17 @@ public class TrafficAgent extends Agent {
      * traffic agent's rules.
      */
     public TrafficAgent(HospitalMap map, Consumer<String> log, TrafficRules rules) {
+        this(map, log, TrafficSettings.standard().withRules(rules));
+    }
+
+    /**
+     * With liveness settings: the fleet monitor's limit, and (tests only) liveness rules switched
+     * off on this agent. Fixed at construction.
+     */
+    public TrafficAgent(HospitalMap map, Consumer<String> log, TrafficSettings settings) {
         this.map = map;
         this.log = log;
-        this.rules = new Reservations<>(map, rules);
+        this.rules = new Reservations<>(map, settings);
     }
 
     @Override
@@ -133,6 +141,16 @@ public class TrafficAgent extends Agent {
     /** Deadlocks broken (by moving a chair of each aside, or taking a grant back). */
     public long deadlocks() {
         return rules.deadlocks();
+    }
+
+    /** Alarms the fleet monitor has raised (a chair with work and no progress for the limit). */
+    public long alarms() {
+        return rules.alarms();
+    }
+
+    /** The fleet monitor's view: for each chair with work, when (platform time) it last made progress. */
+    public Map<String, Long> lastProgress() {
+        return rules.lastProgress();
     }
 
     /** Reviews (one a second at most) that found a deadlock nobody could break then: see {@code Reservations}. */
@@ -241,7 +259,25 @@ public class TrafficAgent extends Agent {
                 send(m);
             } else if (o instanceof Reservations.Note<AclMessage> n) {
                 log.accept(getLocalName() + ": " + n.text());
+            } else if (o instanceof Reservations.Stalled<AclMessage> st) {
+                alarm(st);
             }
+        }
+    }
+
+    /** The fleet monitor's alarm: in the log, and to every Medical agent in the yellow pages. */
+    private void alarm(Reservations.Stalled<AclMessage> st) {
+        long seconds = st.forMs() / 1000;
+        log.accept(getLocalName() + ": ALARM " + Reservations.local(st.chair()) + " has made no progress for " + seconds
+                + " s; it waits for " + st.waitsFor());
+        for (io.concord.layers.platform.AgentEntry e : Platform.of(this).searchCopy(ServiceDescription.ofType(Services.MEDICAL))) {
+            AID to = e.aid();
+            AclMessage m = new AclMessage(Performative.INFORM);
+            m.addReceiver(to);
+            m.setOntology(Services.ONTOLOGY);
+            m.setLanguage(Services.LANGUAGE);
+            m.setContent(new WheelchairMessage.Stalled(st.chair(), seconds, st.waitsFor()).encode());
+            send(m);
         }
     }
 

@@ -94,7 +94,9 @@ class WheelchairMessageTest {
             new Case(new ReserveWaits(List.of("control-chair2")), AGREE, "((reserve-waits :held-by (sequence control-chair2)))"),
             new Case(new Release(7), INFORM, "((release :node 7))"),
             new Case(new Idle(List.of(26)), INFORM, "((idle :at (sequence 26)))"),
-            new Case(new MakeWay(26, 25, List.of(10, 25)), INFORM, "((make-way :from 26 :path (sequence 10 25) :to 25))"));
+            new Case(new MakeWay(26, 25, List.of(10, 25)), INFORM, "((make-way :from 26 :path (sequence 10 25) :to 25))"),
+            new Case(new Stalled("control-chair2@hospital", 120, "its turn at node 8 (ahead: [control-chair1])"), INFORM,
+                    "((stalled :chair control-chair2@hospital :seconds 120 :waits \"its turn at node 8 (ahead: [control-chair1])\"))"));
 
     @Test
     void everyRecordIsWrittenAsTheProtocolSaysAndReadBackEqual() {

@@ -244,4 +244,175 @@ class ReservationsTest {
         assertEquals(List.of(new Granted<>("b", "tb", List.of(2, 3, 4), null)), out);
         assertEquals(List.of("a", "b"), off.holders().get(3));
     }
+
+    // ---- liveness (issue 47) ---------------------------------------------------------------------
+
+    /**
+     * A cycle through a chair sent aside that does not get there: a stands on 2 and b on 4, each
+     * asking through the other (a deadlock); a is sent aside to the dead end 1. Before it moves, c
+     * appears on 1 and asks for a route through 2: a's way aside waits for c, c waits for a. While a
+     * is on its way (the grace), the cycle is left to end by itself; after it, a's order is called
+     * off and the cycle is broken by the other rules (a steps aside to 6 instead).
+     */
+    @Test
+    void aCycleThroughAChairSentAsideIsBrokenOnceItsGraceIsOver() {
+        List<Outcome<String>> moved = cycleThroughAChairSentAside(r);
+        assertEquals(List.of(new MakeWay<>("a", 2, 6, List.of(3, 6))), only(moved, MakeWay.class), moved.toString());
+        assertTrue(moved.stream().anyMatch(o -> o instanceof Failed<String> f && f.chair().equals("a") && f.reason().contains("called off")), moved.toString());
+    }
+
+    /** The same with the rule off (a cycle with a chair sent aside is left alone, as before): nobody moves, ever. */
+    @Test
+    void withoutTheRuleACycleThroughAChairSentAsideIsNeverBroken() {
+        Reservations<String> off = new Reservations<>(MAP, TrafficSettings.standard().without(TrafficSettings.Rule.ANY_CYCLE));
+        List<Outcome<String>> moved = cycleThroughAChairSentAside(off);
+        assertEquals(List.of(), only(moved, MakeWay.class), "stuck for good: " + off.waits());
+    }
+
+    private static List<Outcome<String>> cycleThroughAChairSentAside(Reservations<String> rules) {
+        reserve(rules, "a", "ta", List.of(2), List.of(2), 0);
+        reserve(rules, "b", "tb", List.of(4), List.of(4), 0);
+        reserve(rules, "a", "ta2", List.of(2), List.of(2, 3, 4), 1);
+        List<Outcome<String>> first = reserve(rules, "b", "tb2", List.of(4), List.of(4, 3, 2), 2);
+        assertEquals(List.of(new MakeWay<>("a", 2, 1, List.of(1))), only(first, MakeWay.class), first.toString());
+        // c appears on 1 before a gets there, and asks for a route through 2, where a stands.
+        reserve(rules, "c", "tc", List.of(1), List.of(1), 3);
+        rules.heard("a", 4);
+        rules.reserve("a", "ta3", List.of(2), List.of(2, 1), true, 4); // a's way aside, to 1
+        reserve(rules, "c", "tc2", List.of(1), List.of(1, 2, 3), 5);
+        List<Outcome<String>> during = new java.util.ArrayList<>();
+        for (long t = 6_000; t < Reservations.ASIDE_GRACE_MS; t += 1_000) {
+            heardAll(rules, t);
+            during.addAll(rules.review(t));
+        }
+        assertEquals(List.of(), only(during, MakeWay.class), "within the grace, a is on its way aside: " + during);
+        List<Outcome<String>> after = new java.util.ArrayList<>();
+        for (long t = Reservations.ASIDE_GRACE_MS; t < 10 * Reservations.ASIDE_GRACE_MS; t += 1_000) {
+            heardAll(rules, t);
+            after.addAll(rules.review(t));
+        }
+        return after;
+    }
+
+    private static void heardAll(Reservations<String> rules, long t) {
+        for (String c : List.of("a", "b", "c")) {
+            rules.heard(c, t);
+        }
+    }
+
+    static final HospitalMap PARKED = HospitalMap.parse(CORRIDOR.replace("""
+                {"id": "ward", "kind": "ward", "name": "Ward", "polygon": [[0, 0], [30, 0], [30, 12], [0, 12]]}
+            """, """
+                {"id": "ward", "kind": "ward", "name": "Ward", "polygon": [[0, 0], [30, 0], [30, 12], [0, 12]]},
+                {"id": "r6", "kind": "room", "ward": "ward", "polygon": [[10, 7], [16, 7], [16, 12], [10, 12]]}
+            """).replace("""
+              ]
+            }
+            """, """
+              ],
+              "parking": [5, 1]
+            }
+            """), "test");
+
+    /**
+     * An idle chair goes home: idle in the patient's room (6), it is sent to the nearest parking
+     * place nobody holds: 1 and 5 are both three hops away, and the map names 5 first. Once there,
+     * idle again, it stays.
+     */
+    @Test
+    void anIdleChairInAPatientsRoomGoesToTheNearestFreeParkingPlace() {
+        Reservations<String> rules = new Reservations<>(PARKED, TrafficSettings.standard());
+        rules.heard("a", 0);
+        List<Outcome<String>> out = rules.idle("a", List.of(6), 0);
+        assertEquals(List.of(new MakeWay<>("a", 6, 5, List.of(3, 4, 5))), only(out, MakeWay.class), out.toString());
+        rules.heard("a", 10);
+        rules.reserve("a", "home", List.of(6), List.of(6, 3, 4, 5), true, 10);
+        for (int n : List.of(6, 3, 4)) {
+            rules.release("a", n, 20);
+        }
+        assertEquals(List.of(), only(rules.idle("a", List.of(5), 30), MakeWay.class), "home: it stays");
+        // Another idle in the room goes to 1: 5 is taken.
+        rules.heard("b", 40);
+        assertEquals(List.of(new MakeWay<>("b", 6, 1, List.of(3, 2, 1))), only(rules.idle("b", List.of(6), 40), MakeWay.class));
+    }
+
+    /** The same with the rule off: the chair stays in the patient's room. */
+    @Test
+    void withoutTheRuleAnIdleChairStaysInThePatientsRoom() {
+        Reservations<String> rules = new Reservations<>(PARKED, TrafficSettings.standard().without(TrafficSettings.Rule.HOME));
+        rules.heard("a", 0);
+        List<Outcome<String>> out = new java.util.ArrayList<>(rules.idle("a", List.of(6), 0));
+        for (long t = 1_000; t < 600_000; t += 1_000) {
+            rules.heard("a", t);
+            out.addAll(rules.review(t));
+        }
+        assertEquals(List.of(), only(out, MakeWay.class));
+    }
+
+    /**
+     * The fleet monitor: a chair with work that makes no progress for the limit is reported once,
+     * naming what it waits for (here its turn behind b, who stands where it must go); it makes
+     * progress (b leaves) and the alarm ends; idle chairs are never reported.
+     */
+    @Test
+    void aChairWithWorkAndNoProgressForTheLimitRaisesOneAlarmNamingWhatItWaitsFor() {
+        Reservations<String> rules = new Reservations<>(MAP, TrafficSettings.standard());
+        reserve(rules, "b", "tb", List.of(3), List.of(3), 0); // b stands on 3, with work (loading, say)
+        reserve(rules, "a", "ta", List.of(1), List.of(1, 2, 3, 4), 0);
+        rules.heard("c", 0);
+        rules.idle("c", List.of(5), 0);
+        List<Reservations.Stalled<String>> alarms = new java.util.ArrayList<>();
+        for (long t = 1_000; t <= 300_000; t += 1_000) {
+            for (String c : List.of("a", "b", "c")) {
+                rules.heard(c, t);
+            }
+            alarms.addAll(only(rules.review(t), Reservations.Stalled.class).stream().map(x -> (Reservations.Stalled<String>) x).toList());
+        }
+        assertEquals(List.of("a", "b"), alarms.stream().map(Reservations.Stalled::chair).sorted().toList(), "once each, never the idle c: " + alarms);
+        Reservations.Stalled<String> a = alarms.stream().filter(x -> x.chair().equals("a")).findFirst().orElseThrow();
+        assertEquals(120_000, a.forMs());
+        assertEquals("its route [1, 2, 3, 4] (in the way: [b])", a.waitsFor());
+        assertEquals(2, rules.alarms());
+    }
+
+    /** With the alarm off, the same wait is never reported. */
+    @Test
+    void withoutTheAlarmTheSameWaitIsNeverReported() {
+        Reservations<String> rules = new Reservations<>(MAP, TrafficSettings.standard().without(TrafficSettings.Rule.ALARM));
+        reserve(rules, "b", "tb", List.of(3), List.of(3), 0);
+        reserve(rules, "a", "ta", List.of(1), List.of(1, 2, 3, 4), 0);
+        for (long t = 1_000; t <= 300_000; t += 1_000) {
+            rules.heard("a", t);
+            rules.heard("b", t);
+            assertEquals(List.of(), only(rules.review(t), Reservations.Stalled.class));
+        }
+        assertEquals(0, rules.alarms());
+    }
+
+    /**
+     * Admission: no chair is cleared into a node it could not leave. a is granted 1-2-3-4 behind
+     * b, granted 3-4-5 before it; b's task is dropped as it drives to 4, and it stands there idle,
+     * giving 3 back: a may stay at 2, not drive into 3, whose next node b stands on (b is sent out
+     * of the way meanwhile). With the rule off a is cleared into 3, where it would stand with nowhere
+     * to go.
+     */
+    @Test
+    void aChairIsNotClearedIntoANodeItCouldNotLeave() {
+        assertEquals(2, clearedUpToBehindAChairThatStops(TrafficSettings.standard()));
+    }
+
+    @Test
+    void withoutAdmissionAChairIsClearedIntoANodeItCouldNotLeave() {
+        assertEquals(3, clearedUpToBehindAChairThatStops(TrafficSettings.standard().without(TrafficSettings.Rule.ADMISSION)));
+    }
+
+    private static int clearedUpToBehindAChairThatStops(TrafficSettings settings) {
+        Reservations<String> rules = new Reservations<>(MAP, settings);
+        reserve(rules, "b", "tb", List.of(3), List.of(3, 4, 5), 0);
+        reserve(rules, "a", "ta", List.of(1), List.of(1, 2, 3, 4), 0); // behind b: up to 2
+        rules.heard("b", 20);
+        rules.idle("b", List.of(4), 20); // b, its task dropped on the edge to 4, stands there idle: 3 is given back
+        List<Integer> cleared = rules.cleared().get("a");
+        return cleared.get(cleared.size() - 1);
+    }
 }

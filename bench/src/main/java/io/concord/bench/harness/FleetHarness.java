@@ -40,7 +40,7 @@ public final class FleetHarness {
     public record Outcome(String map, int nodes, int chairs, TrafficRules rules, double simHours, int done, int failed,
                           double waitMeanS, double waitP95S, double decisionP99Us, long decisions, double chairHoursWaiting,
                           long contacts, double cpuSPerSimHour, long movedAside, long deadlocks, long deadlockedReviews,
-                          Map<String, Double> waitingFor) {
+                          Map<String, Double> waitingFor, long stalls, long alarms) {
         public double donePerHour() {
             return done / simHours;
         }
@@ -93,6 +93,12 @@ public final class FleetHarness {
             long end = start + (long) (simSeconds * 1000);
             double waitingChairS = 0;
             Map<String, Double> waitingFor = new java.util.TreeMap<>();
+            // Stalls (issue 47): a chair with a task quiet (no 0.5 m driven, no new phase) for 120 s
+            // whose quiet spell the fleet monitor did not report (an alarm in it, or within 15 s of its limit).
+            Map<String, double[]> quiet = new HashMap<>();
+            List<String[]> spells = new ArrayList<>();
+            Map<String, List<Long>> alarmedAt = new HashMap<>();
+            int alarmsHeard = 0;
             while (true) {
                 now[0] = h.world.worldTimeNs() / 1_000_000;
                 if (now[0] >= end) {
@@ -113,6 +119,27 @@ public final class FleetHarness {
                     }
                 }
                 h.sim.runFor(1_000);
+                long tNow = h.world.worldTimeNs() / 1_000_000;
+                List<MedicalAgent.Alarm> heard = h.medical.alarms();
+                for (; alarmsHeard < heard.size(); alarmsHeard++) {
+                    alarmedAt.computeIfAbsent(heard.get(alarmsHeard).chair(), k -> new ArrayList<>()).add(tNow);
+                }
+                for (ControlAgent c : h.hospital.controls()) {
+                    TaskView active = c.tasks().stream().filter(t -> t.state().compareTo(TaskView.State.TO_PICKUP) >= 0
+                            && t.state().compareTo(TaskView.State.UNLOADING) <= 0).findFirst().orElse(null);
+                    if (active == null) {
+                        quiet.remove(c.getLocalName());
+                    } else {
+                        var pose = c.pose();
+                        double[] q = quiet.get(c.getLocalName());
+                        if (q == null || Math.hypot(pose.x() - q[0], pose.y() - q[1]) > 0.5 || q[3] != active.state().ordinal()) {
+                            quiet.put(c.getLocalName(), new double[] {pose.x(), pose.y(), tNow, active.state().ordinal(), 0});
+                        } else if (tNow - q[2] >= 120_000 && q[4] == 0) {
+                            q[4] = 1;
+                            spells.add(new String[] {c.getLocalName(), Long.toString((long) q[2])});
+                        }
+                    }
+                }
                 for (ControlAgent c : h.hospital.controls()) {
                     SimChair chair = h.world.chair(c.getLocalName().substring("control-".length()));
                     double[] p = chair.powers();
@@ -124,6 +151,10 @@ public final class FleetHarness {
                     }
                 }
             }
+            long stalls = spells.stream().filter(sp -> {
+                long from = Long.parseLong(sp[1]);
+                return alarmedAt.getOrDefault(sp[0], List.of()).stream().noneMatch(a -> a >= from && a <= from + 135_000);
+            }).count();
             double cpuS = (cpu.getCurrentThreadCpuTime() - cpu0) / 1e9;
             double hours = (now[0] - start) / 3.6e6;
             long[] decisions = h.hospital.traffic() == null ? new long[0] : h.hospital.traffic().decisionTimesNs();
@@ -138,7 +169,8 @@ public final class FleetHarness {
                     waitingChairS / 3600, h.world.collisionCount(), cpuS / hours,
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().moves(),
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks(),
-                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlockReviewsUnbroken(), waitingFor);
+                    h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlockReviewsUnbroken(), waitingFor, stalls,
+                    h.medical.alarms().size());
         }
     }
 
@@ -220,9 +252,11 @@ public final class FleetHarness {
 
     public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT fleet map=%s nodes=%d chairs=%d rules=%s done_per_hour=%.1f failed=%d wait_mean_s=%.0f "
-                        + "wait_p95_s=%.0f decision_p99_us=%.1f chair_hours_waiting=%.2f contacts=%d cpu_s_per_sim_hour=%.1f moved_aside=%d waiting_for=%s",
+                        + "wait_p95_s=%.0f decision_p99_us=%.1f chair_hours_waiting=%.2f contacts=%d cpu_s_per_sim_hour=%.1f moved_aside=%d "
+                        + "stalls=%d alarms=%d waiting_for=%s",
                 o.map(), o.nodes(), o.chairs(), o.rules(), o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(),
-                o.decisionP99Us(), o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside(), hours(o.waitingFor()));
+                o.decisionP99Us(), o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside(), o.stalls(), o.alarms(),
+                hours(o.waitingFor()));
     }
 
     /** Chair-hours by reason, to two places. */

@@ -967,7 +967,10 @@ public final class MapGenerator {
             for (int c = 0; c < cols; c++) {
                 ids[r][c] = l.node(row.get(c)[0], side.y(LOBBY_FIRST + r * LOBBY_PITCH), "Lobby, row " + (r + 1) + ", place " + (c + 1),
                         Role.HALL, "lobby");
-                l.edge(r == 0 ? rowIds[c] : ids[r - 1][c], ids[r][c], null);
+                // A depot joins the corridor at its middle column only: one exit for every chair parked in it.
+                if (r > 0 || !shape.depot() || c == cols / 2) {
+                    l.edge(r == 0 ? rowIds[c] : ids[r - 1][c], ids[r][c], null);
+                }
                 if (c > 0) {
                     l.edge(ids[r][c - 1], ids[r][c], null);
                 }

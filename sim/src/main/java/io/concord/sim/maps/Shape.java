@@ -15,8 +15,16 @@ package io.concord.sim.maps;
  *                   (2 m wide, one chair's lane)
  * @param parking    how many parking places (corridor and hall nodes where chairs start and
  *                   stand idle) the map names
+ * @param depot      whether the lobby (whose nodes are the first parking places) is a depot: its
+ *                   grid joins the corridor at one node only, so that the chairs parked there all
+ *                   leave through one exit (issue 47)
  */
-public record Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking) {
+public record Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking, boolean depot) {
+
+    /** A shape whose lobby is open to its corridor at every column (no depot). */
+    public Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking) {
+        this(name, nodes, wards, ring, wings, bottleneck, parking, false);
+    }
 
     /** Checks the numbers, naming the wrong one. */
     public Shape {
@@ -55,16 +63,24 @@ public record Shape(String name, int nodes, int wards, boolean ring, int wings, 
 
     /** The same shape with or without a ring ward. */
     public Shape withRing(boolean ring) {
-        return new Shape(name + (ring ? "+ring" : "-ring"), nodes, wards, ring, wings, bottleneck, parking);
+        return new Shape(name + (ring ? "+ring" : "-ring"), nodes, wards, ring, wings, bottleneck, parking, depot);
     }
 
     /** The same shape with another node count (and as many parking places, if they still fit). */
     public Shape withNodes(int nodes) {
-        return new Shape(name + "@" + nodes, nodes, wards, ring, wings, bottleneck, Math.min(parking, nodes / 3));
+        return new Shape(name + "@" + nodes, nodes, wards, ring, wings, bottleneck, Math.min(parking, nodes / 3), depot);
     }
 
     /** The same shape with another number of parking places. */
     public Shape withParking(int parking) {
-        return new Shape(name, nodes, wards, ring, wings, bottleneck, parking);
+        return new Shape(name, nodes, wards, ring, wings, bottleneck, parking, depot);
+    }
+
+    /**
+     * The same shape with its lobby a depot: the lobby's grid of parking places joins the corridor
+     * at one node, the only way in or out for the chairs parked there.
+     */
+    public Shape withDepot() {
+        return new Shape(name + "+depot", nodes, wards, ring, wings, bottleneck, parking, true);
     }
 }

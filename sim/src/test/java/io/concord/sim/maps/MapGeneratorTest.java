@@ -67,6 +67,22 @@ class MapGeneratorTest {
         }
     }
 
+    /** A depot (issue 47): the lobby, whose places are the first parking places, joins the corridor at one node; the map keeps every rule. */
+    @Test
+    void depotMapsHaveTheirShapeAndOneExit() {
+        for (Shape s : List.of(Shape.small().withDepot(), Shape.medium().withDepot(), Shape.large().withDepot())) {
+            everySeed(s, Math.max(1, SEEDS / 10));
+            for (long seed = FIRST; seed < FIRST + Math.max(1, SEEDS / 10); seed++) {
+                HospitalMap map = MapGenerator.map(seed, s);
+                long exits = map.nodes().stream().filter(n -> "lobby".equals(n.area()))
+                        .flatMap(n -> map.edgesAt(n.id()).stream().map(e -> map.node(e.other(n.id()))))
+                        .filter(o -> !"lobby".equals(o.area()) && !o.area().startsWith("store")).count();
+                assertEquals(1, exits, s.name() + " seed " + seed + ": one way out of the lobby");
+                assertTrue("lobby".equals(map.node(map.parking().get(0)).area()), "the first parking place is in the depot");
+            }
+        }
+    }
+
     @Test
     void theSameSeedGivesTheSameTextAndOtherSeedsOtherMaps() {
         for (Shape s : List.of(Shape.small(), Shape.medium(), Shape.large())) {

@@ -56,8 +56,11 @@ class FleetSoakTest {
                 r.sim.runFor(15_000);
             }
             r.sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), LIMIT_MS);
-            // Let the last chair say it is idle.
+            // Let the last chair say it is idle, and the idle ones drive home (issue 47).
             r.sim.runFor(5_000);
+            if (r.hospital.traffic() != null) {
+                r.sim.runUntil(() -> r.hospital.traffic().waits().isEmpty(), 600_000);
+            }
             List<MedicalAgent.Outcome> out = new ArrayList<>();
             for (CompletableFuture<MedicalAgent.Outcome> f : fs) {
                 out.add(f.isDone() ? f.join() : null);

@@ -128,7 +128,8 @@ class HospitalAgentsTest {
             var f = r.medical.transport(3, 99, 0, 30);
             assertTrue(r.sim.runUntil(f::isDone, 60_000));
             assertFalse(f.join().done());
-            assertEquals("no chair proposed", f.join().reason());
+            // The real reason, the chair's own (issue 47: it once said only "no chair proposed").
+            assertEquals("no chair proposed (control-chair1: unknown node 99)", f.join().reason());
             assertTrue(r.log.contains("medical: control-chair1 refuses T1: unknown node 99"), String.join("\n", r.log));
         }
     }

@@ -1,6 +1,7 @@
 package io.concord.sim.scenario;
 
 import io.concord.agents.medical.MedicalAgent;
+import io.concord.agents.traffic.TrafficSettings;
 import io.concord.agents.proto.Services;
 import io.concord.agents.proto.WheelchairMessage.Here;
 import io.concord.agents.proto.WheelchairMessage.Release;
@@ -132,6 +133,50 @@ class PatientOnBoardTest {
             MedicalAgent.Outcome o = f.join();
             assertTrue(o.done(), o.toString());
             assertEquals(1, o.auctions(), o.toString());
+        }
+    }
+
+    /**
+     * The fleet monitor (issue 47): held up after loading (node 10 of its way to the drop-off is
+     * held) for longer than the limit (120 s of hospital time), the chair raises an alarm: in the
+     * traffic agent's log, naming what it waits for, and to the Medical agent, which marks it urgent
+     * since the chair has T1's patient on board.
+     */
+    @Test
+    void aChairHeldPastTheLimitWithAPatientOnBoardRaisesAnUrgentAlarm() {
+        List<MedicalAgent.Alarm> alarms = heldWithThePatientOnBoard(TrafficSettings.standard());
+        MedicalAgent.Alarm a = alarms.stream().filter(x -> "T1".equals(x.task())).findFirst().orElse(null);
+        assertTrue(a != null, "an alarm for T1's chair: " + alarms);
+        assertTrue(a.urgent(), "urgent: the patient is on board: " + a);
+        assertTrue(a.seconds() >= 120, a.toString());
+        assertTrue(a.waits().contains("node 10") && a.waits().contains("blocker"), "it names what it waits for: " + a.waits());
+    }
+
+    /** The same with the monitor's alarm switched off on this traffic agent: nobody is told. */
+    @Test
+    void withoutTheMonitorNobodyIsToldOfTheChairHeldWithItsPatient() {
+        List<MedicalAgent.Alarm> alarms = heldWithThePatientOnBoard(TrafficSettings.standard().without(TrafficSettings.Rule.ALARM));
+        assertEquals(List.of(), alarms.stream().filter(x -> "T1".equals(x.task())).toList(), "no alarm without the rule");
+    }
+
+    private static List<MedicalAgent.Alarm> heldWithThePatientOnBoard(TrafficSettings traffic) {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(ScenarioTest.MAP, 2010, FaultPlan.NONE, 2, traffic, MedicalAgent.Settings.standard())) {
+            Blocker blocker = new Blocker(10);
+            r.platform.startAgent("blocker", blocker);
+            r.sim.runFor(1_000);
+            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 60);
+            assertTrue(r.sim.runUntil(() -> logged(r, "(the patient is on board)"), 600_000), "the patient got on; log:\n" + tail(r));
+            r.sim.runFor(200_000);
+            assertFalse(f.isDone(), "still held");
+            List<MedicalAgent.Alarm> alarms = r.medical.alarms();
+            if (traffic.on(TrafficSettings.Rule.ALARM)) {
+                assertTrue(logged(r, "traffic: ALARM"), "in the traffic agent's log too; log:\n" + tail(r));
+                assertTrue(logged(r, "URGENT ALARM: T1's patient is on board"), "and the Medical agent's; log:\n" + tail(r));
+            }
+            blocker.leave();
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), "the transport ended; log:\n" + tail(r));
+            assertTrue(f.join().done(), f.join().toString());
+            return alarms;
         }
     }
 }

@@ -58,6 +58,13 @@ class ScenarioTest {
 
         /** A run on {@code map} whose traffic agent keeps {@code rules} (none if null). */
         Run(HospitalMap map, long seed, FaultPlan plan, int chairs, TrafficRules traffic, MedicalAgent.Settings medicalSettings) {
+            this(map, seed, plan, chairs, traffic == null ? null : io.concord.agents.traffic.TrafficSettings.standard().withRules(traffic),
+                    medicalSettings);
+        }
+
+        /** A run on {@code map} whose traffic agent has these settings (none if null). */
+        Run(HospitalMap map, long seed, FaultPlan plan, int chairs, io.concord.agents.traffic.TrafficSettings traffic,
+            MedicalAgent.Settings medicalSettings) {
             VirtualHospital v = new VirtualHospital(map, seed, plan, chairs, traffic, medicalSettings, log::add);
             sim = v.sim;
             rt = v.runtime;
