@@ -420,6 +420,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         return state;
     }
 
+    /** The agent's life-cycle state as an object (its name: {@code Active}, {@code Waiting}, ...). */
+    public AgentState getAgentState() {
+        return AgentState.getInstance(state);
+    }
+
     // ---- identity ----------------------------------------------------------------------------
 
     public final AID getAID() {
