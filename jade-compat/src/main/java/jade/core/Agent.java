@@ -107,6 +107,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             public boolean onOwnThread(Agent a) {
                 return Thread.currentThread() == a.thread;
             }
+
+            @Override
+            public boolean ending(Agent a) {
+                return a.deleteRequested || a.state == AP_DELETED;
+            }
         });
     }
 
@@ -169,6 +174,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         this.host = new Host(this::deliver);
         io.concord.core.acl.AID concordAid = e.startHost(localName, host, arguments);
         this.aid = new AID(concordAid.name(), AID.ISGUID);
+        e.jadeAgent(localName, this);
         this.thread = Engine.newAgentThread(localName, this);
         thread.start();
         try {
@@ -199,6 +205,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             }
         } finally {
             state = AP_DELETED;
+            engine.jadeAgent(getLocalName(), null);
             host.doDelete();
             ended.countDown();
         }
@@ -461,7 +468,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
 
     /** Where the agent lives: its container. */
     public Location here() {
-        return container == null ? null : new ContainerID(container.getName(), null);
+        try {
+            return container == null ? null : new ContainerID(container.getContainerName(), null);
+        } catch (jade.wrapper.ControllerException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     public final void setArguments(Object[] args) {
@@ -552,6 +563,10 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         if (m.getSender() == null) {
             m = (ACLMessage) msg.clone();
             m.setSender(aid);
+        }
+        if (io.concord.jadecompat.internal.Ams.handles(m)) {
+            io.concord.jadecompat.internal.Ams.serve(this, engine, m);
+            return;
         }
         host.send(Convert.toConcord(dfLink.outgoing(m, getDefaultDF())));
     }

@@ -11,10 +11,10 @@ public class AgentContainer extends ContainerController implements PlatformContr
         super(engine, name);
     }
 
-    /** The container's name. */
+    /** The platform's name, as JADE's {@code PlatformController.getName()} (the container's: {@link #getContainerName()}). */
     @Override
     public String getName() {
-        return name();
+        return getPlatformName();
     }
 
     /**
@@ -24,7 +24,7 @@ public class AgentContainer extends ContainerController implements PlatformContr
     @Override
     public void start() throws ControllerException {
         if (!isJoined()) {
-            throw new ControllerException("the container " + getName() + " was killed; it cannot start again");
+            throw new ControllerException("the container " + name() + " was killed; it cannot start again");
         }
     }
 
