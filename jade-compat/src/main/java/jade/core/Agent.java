@@ -173,7 +173,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         this.container = c;
         this.host = new Host(this::deliver);
         io.concord.core.acl.AID concordAid = e.startHost(localName, host, arguments);
-        this.aid = new AID(concordAid.name(), AID.ISGUID);
+        this.aid = new AID(io.concord.jadecompat.internal.Names.decode(concordAid.name()), AID.ISGUID);
         e.jadeAgent(localName, this);
         this.thread = Engine.newAgentThread(localName, this);
         thread.start();

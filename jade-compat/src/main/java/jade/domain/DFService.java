@@ -134,7 +134,7 @@ public class DFService {
             if (max >= 0 && result.size() >= max) {
                 break;
             }
-            if (dfd.getName() != null && !dfd.getName().getName().equalsIgnoreCase(e.name())) {
+            if (dfd.getName() != null && !dfd.getName().getName().equalsIgnoreCase(io.concord.jadecompat.internal.Names.decode(e.name()))) {
                 continue;
             }
             if (!templates.isEmpty() && !io.concord.layers.platform.ServiceDescription.offersAll(e.services(), templates)) {

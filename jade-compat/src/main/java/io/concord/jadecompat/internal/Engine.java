@@ -174,7 +174,8 @@ public final class Engine {
     public java.util.List<String> agentNames() {
         java.util.List<String> l = new java.util.ArrayList<>();
         for (AID a : platform.runtime().agents()) {
-            l.add(a.name().contains("@") ? a.name().substring(0, a.name().lastIndexOf('@')) : a.name());
+            String n = a.name().contains("@") ? a.name().substring(0, a.name().lastIndexOf('@')) : a.name();
+            l.add(Names.decode(n));
         }
         return l;
     }
@@ -186,12 +187,12 @@ public final class Engine {
 
     /** Starts a Concord agent for a JADE agent; returns its AID. */
     public AID startHost(String localName, Host host, Object[] args) {
-        return platform.startAgent(localName, host, args == null ? new Object[0] : args);
+        return platform.startAgent(Names.encodeLocal(localName), host, args == null ? new Object[0] : args);
     }
 
     /** True if a Concord agent of this name runs here. */
     public boolean hosts(String localName) {
-        AID a = AID.local(localName, platform.name());
+        AID a = AID.local(Names.encodeLocal(localName), platform.name());
         return platform.runtime().agents().contains(a);
     }
 
