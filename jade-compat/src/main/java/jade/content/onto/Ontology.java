@@ -231,6 +231,16 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
         properties.computeIfAbsent(c, k -> new ConcurrentHashMap<>()).put(slot, new Property(getter, setter, elementType));
     }
 
+    /**
+     * JADE lets an ontology's concept slots be used as functions in content
+     * ({@code AbsConceptSlotFunction}); concord-jade does not support them, and says so here
+     * rather than accept content it could not read.
+     */
+    protected void useConceptSlotsAsFunctions() {
+        throw new UnsupportedOperationException("ontology " + getName() + ": concept slots as functions (AbsConceptSlotFunction) "
+                + "are not supported by concord-jade");
+    }
+
     /** The accessors of that slot on that class: recorded, or found by JavaBean naming. */
     Property property(Class<?> c, String slot) throws OntologyException {
         for (Class<?> k = c; k != null; k = k.getSuperclass()) {
