@@ -206,6 +206,7 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         } finally {
             state = AP_DELETED;
             engine.jadeAgent(getLocalName(), null);
+            io.concord.jadecompat.internal.Topics.ended(getLocalName());
             host.doDelete();
             ended.countDown();
         }
@@ -432,6 +433,20 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         return AgentState.getInstance(state);
     }
 
+    /**
+     * The helper of a platform service: {@code jade.core.messaging.TopicManagement} (topics) is
+     * supported; any other service throws a {@link ServiceException} saying so.
+     */
+    public ServiceHelper getHelper(String serviceName) throws ServiceException {
+        if (jade.core.messaging.TopicManagementHelper.SERVICE_NAME.equals(serviceName)) {
+            ServiceHelper h = new io.concord.jadecompat.internal.Topics();
+            h.init(this);
+            return h;
+        }
+        throw new ServiceException("the service " + serviceName + " is not supported by concord-jade (topics are: "
+                + jade.core.messaging.TopicManagementHelper.SERVICE_NAME + ")");
+    }
+
     // ---- identity ----------------------------------------------------------------------------
 
     public final AID getAID() {
@@ -567,6 +582,17 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         if (io.concord.jadecompat.internal.Ams.handles(m)) {
             io.concord.jadecompat.internal.Ams.serve(this, engine, m);
             return;
+        }
+        java.util.List<AID> notTopics = io.concord.jadecompat.internal.Topics.deliver(engine, m);
+        if (notTopics != null) {
+            if (notTopics.isEmpty()) {
+                return;
+            }
+            m = (ACLMessage) m.clone();
+            m.clearAllReceiver();
+            for (AID r : notTopics) {
+                m.addReceiver(r);
+            }
         }
         host.send(Convert.toConcord(dfLink.outgoing(m, getDefaultDF())));
     }
