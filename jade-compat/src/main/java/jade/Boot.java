@@ -188,11 +188,9 @@ public class Boot {
             return new Object[0];
         }
         List<String> args = new ArrayList<>();
+        // As JADE's Boot: split at every comma, each argument trimmed, quotes kept as written
         for (String a : text.split(",")) {
             String t = a.trim();
-            if (t.length() >= 2 && t.startsWith("\"") && t.endsWith("\"")) {
-                t = t.substring(1, t.length() - 1);
-            }
             if (!t.isEmpty()) {
                 args.add(t);
             }

@@ -168,28 +168,30 @@ public class AID implements jade.util.leap.Comparable, jade.util.leap.Serializab
     /** The AID in FIPA SL: {@code ( agent-identifier :name n :addresses (sequence ...))}. */
     @Override
     public String toString() {
+        // JADE 4.3's layout, space for space (seen from its output)
         StringBuilder b = new StringBuilder("( agent-identifier ");
         if (name != null) {
-            b.append(":name ").append(name);
+            b.append(":name ").append(name).append(' ');
         }
         if (!addresses.isEmpty()) {
-            b.append(" :addresses (sequence");
+            b.append(" :addresses (sequence ");
             for (Object a : addresses.toArray()) {
-                b.append(' ').append(a);
+                b.append(a).append(' ');
             }
             b.append(")");
         }
         if (!resolvers.isEmpty()) {
-            b.append(" :resolvers (sequence");
+            b.append(" :resolvers (sequence ");
             for (Object r : resolvers.toArray()) {
-                b.append(' ').append(r);
+                b.append(r).append(' ');
             }
             b.append(")");
         }
-        for (String k : userDefSlots.stringPropertyNames()) {
-            b.append(" :X-").append(k).append(' ').append(userDefSlots.getProperty(k));
+        for (java.util.Enumeration<Object> e = userDefSlots.keys(); e.hasMoreElements(); ) {
+            String k = String.valueOf(e.nextElement());
+            b.append(" :X-").append(k).append(' ').append(userDefSlots.getProperty(k)).append(' ');
         }
-        return b.append(" )").toString();
+        return b.append(")").toString();
     }
 
     @Override

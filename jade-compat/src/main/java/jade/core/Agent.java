@@ -107,6 +107,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             public boolean onOwnThread(Agent a) {
                 return Thread.currentThread() == a.thread;
             }
+
+            @Override
+            public boolean ending(Agent a) {
+                return a.deleteRequested || a.state == AP_DELETED;
+            }
         });
     }
 
@@ -168,7 +173,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         this.container = c;
         this.host = new Host(this::deliver);
         io.concord.core.acl.AID concordAid = e.startHost(localName, host, arguments);
-        this.aid = new AID(concordAid.name(), AID.ISGUID);
+        this.aid = new AID(io.concord.jadecompat.internal.Names.decode(concordAid.name()), AID.ISGUID);
+        e.jadeAgent(localName, this);
         this.thread = Engine.newAgentThread(localName, this);
         thread.start();
         try {
@@ -199,6 +205,8 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
             }
         } finally {
             state = AP_DELETED;
+            engine.jadeAgent(getLocalName(), null);
+            io.concord.jadecompat.internal.Topics.ended(getLocalName());
             host.doDelete();
             ended.countDown();
         }
@@ -420,6 +428,25 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         return state;
     }
 
+    /** The agent's life-cycle state as an object (its name: {@code Active}, {@code Waiting}, ...). */
+    public AgentState getAgentState() {
+        return AgentState.getInstance(state);
+    }
+
+    /**
+     * The helper of a platform service: {@code jade.core.messaging.TopicManagement} (topics) is
+     * supported; any other service throws a {@link ServiceException} saying so.
+     */
+    public ServiceHelper getHelper(String serviceName) throws ServiceException {
+        if (jade.core.messaging.TopicManagementHelper.SERVICE_NAME.equals(serviceName)) {
+            ServiceHelper h = new io.concord.jadecompat.internal.Topics();
+            h.init(this);
+            return h;
+        }
+        throw new ServiceException("the service " + serviceName + " is not supported by concord-jade (topics are: "
+                + jade.core.messaging.TopicManagementHelper.SERVICE_NAME + ")");
+    }
+
     // ---- identity ----------------------------------------------------------------------------
 
     public final AID getAID() {
@@ -456,7 +483,11 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
 
     /** Where the agent lives: its container. */
     public Location here() {
-        return container == null ? null : new ContainerID(container.getName(), null);
+        try {
+            return container == null ? null : new ContainerID(container.getContainerName(), null);
+        } catch (jade.wrapper.ControllerException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     public final void setArguments(Object[] args) {
@@ -547,6 +578,21 @@ public class Agent implements Runnable, jade.util.leap.Serializable {
         if (m.getSender() == null) {
             m = (ACLMessage) msg.clone();
             m.setSender(aid);
+        }
+        if (io.concord.jadecompat.internal.Ams.handles(m)) {
+            io.concord.jadecompat.internal.Ams.serve(this, engine, m);
+            return;
+        }
+        java.util.List<AID> notTopics = io.concord.jadecompat.internal.Topics.deliver(engine, m);
+        if (notTopics != null) {
+            if (notTopics.isEmpty()) {
+                return;
+            }
+            m = (ACLMessage) m.clone();
+            m.clearAllReceiver();
+            for (AID r : notTopics) {
+                m.addReceiver(r);
+            }
         }
         host.send(Convert.toConcord(dfLink.outgoing(m, getDefaultDF())));
     }

@@ -1,7 +1,7 @@
 package jade.core;
 
 /** Where an agent can be: a container. */
-public interface Location extends jade.util.leap.Serializable {
+public interface Location extends jade.util.leap.Serializable, jade.content.Concept {
     String getID();
 
     String getName();

@@ -36,6 +36,15 @@ public class DFService {
 
     private static final java.util.concurrent.atomic.AtomicLong SUBSCRIPTIONS = new java.util.concurrent.atomic.AtomicLong();
 
+    /** Each registered agent's lease, as its registration stands now (a new register or modify replaces it). */
+    private static final Map<Agent, Object> LEASES = java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
+    private static final java.util.concurrent.ScheduledExecutorService LEASE_TIMER =
+            java.util.concurrent.Executors.newSingleThreadScheduledExecutor(r -> {
+                Thread t = new Thread(r, "concord-jade-df-leases");
+                t.setDaemon(true);
+                return t;
+            });
+
     public DFService() {
     }
 
@@ -57,8 +66,38 @@ public class DFService {
             REGISTERED.remove(a);
             throw e;
         }
+        lease(a, dfd);
         dfd.setName(who);
         return dfd;
+    }
+
+    /**
+     * The DF removes a registration whose lease time (if any) has passed, as JADE's DF does: the
+     * agent is then unregistered (it may register again). A later register or modify replaces the lease.
+     */
+    private static void lease(Agent a, DFAgentDescription dfd) {
+        Object token = new Object();
+        LEASES.put(a, token);
+        if (dfd.getLeaseTime() == null) {
+            return;
+        }
+        long delay = Math.max(0, dfd.getLeaseTime().getTime() - System.currentTimeMillis());
+        LEASE_TIMER.schedule(() -> {
+            synchronized (LEASES) {
+                if (LEASES.get(a) != token) {
+                    return;
+                }
+                LEASES.remove(a);
+            }
+            if (REGISTERED.remove(a) != null) {
+                try {
+                    call(a, PlatformServices::deregister);
+                } catch (FIPAException | RuntimeException e) {
+                    // the agent has gone, and its registration with it
+                    LEASES.remove(a);
+                }
+            }
+        }, delay, java.util.concurrent.TimeUnit.MILLISECONDS);
     }
 
     public static void deregister(Agent a) throws FIPAException {
@@ -82,6 +121,7 @@ public class DFService {
         if (REGISTERED.remove(a) == null) {
             throw new FailureException("(not-registered)");
         }
+        LEASES.remove(a);
         call(a, PlatformServices::deregister);
     }
 
@@ -97,6 +137,7 @@ public class DFService {
             throw new FailureException("(not-registered)");
         }
         call(a, ps -> ps.modify(toConcord(dfd).toArray(io.concord.layers.platform.ServiceDescription[]::new)));
+        lease(a, dfd);
         dfd.setName(who);
         return dfd;
     }
@@ -134,7 +175,7 @@ public class DFService {
             if (max >= 0 && result.size() >= max) {
                 break;
             }
-            if (dfd.getName() != null && !dfd.getName().getName().equalsIgnoreCase(e.name())) {
+            if (dfd.getName() != null && !dfd.getName().getName().equalsIgnoreCase(io.concord.jadecompat.internal.Names.decode(e.name()))) {
                 continue;
             }
             if (!templates.isEmpty() && !io.concord.layers.platform.ServiceDescription.offersAll(e.services(), templates)) {

@@ -1,6 +1,7 @@
 package jade.proto;
 
 import jade.core.Agent;
+import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.DataStore;
 import jade.core.behaviours.SimpleBehaviour;
 import jade.domain.FIPAAgentManagement.FailureException;
@@ -26,6 +27,8 @@ public class AchieveREResponder extends SimpleBehaviour implements FIPANames.Int
     public final String RESULT_NOTIFICATION_KEY = "__result-notification" + hashCode();
 
     private MessageTemplate template;
+    private Behaviour requestStep;
+    private Behaviour resultStep;
 
     /** A template for the requests of a protocol: its name and its first performative(s). */
     public static MessageTemplate createMessageTemplate(String iprotocol) {
@@ -61,14 +64,22 @@ public class AchieveREResponder extends SimpleBehaviour implements FIPANames.Int
             return;
         }
         getDataStore().put(REQUEST_KEY, request);
-        ACLMessage response = Replies.answer(request, () -> handleRequest(request),
-                ACLMessage.NOT_UNDERSTOOD, ACLMessage.REFUSE);
-        getDataStore().put(RESPONSE_KEY, response);
+        ACLMessage response;
+        if (States.run(this, requestStep, getDataStore(), RESPONSE_KEY)) {
+            response = (ACLMessage) getDataStore().get(RESPONSE_KEY);
+        } else {
+            response = Replies.answer(request, () -> handleRequest(request), ACLMessage.NOT_UNDERSTOOD, ACLMessage.REFUSE);
+            getDataStore().put(RESPONSE_KEY, response);
+        }
         Replies.send(myAgent, response, request);
         if (response == null || response.getPerformative() == ACLMessage.AGREE) {
-            ACLMessage result = Replies.answer(request, () -> prepareResultNotification(request, response),
-                    ACLMessage.FAILURE);
-            getDataStore().put(RESULT_NOTIFICATION_KEY, result);
+            ACLMessage result;
+            if (States.run(this, resultStep, getDataStore(), RESULT_NOTIFICATION_KEY)) {
+                result = (ACLMessage) getDataStore().get(RESULT_NOTIFICATION_KEY);
+            } else {
+                result = Replies.answer(request, () -> prepareResultNotification(request, response), ACLMessage.FAILURE);
+                getDataStore().put(RESULT_NOTIFICATION_KEY, result);
+            }
             Replies.send(myAgent, result, request);
         }
     }
@@ -103,6 +114,29 @@ public class AchieveREResponder extends SimpleBehaviour implements FIPANames.Int
     protected ACLMessage prepareResultNotification(ACLMessage request, ACLMessage response) throws FailureException {
         System.out.println("prepareResultNotification() method not re-defined");
         return null;
+    }
+
+    /**
+     * Puts a behaviour in place of {@link #handleRequest}/{@link #prepareResponse}: it reads the
+     * request under {@link #REQUEST_KEY} and puts its answer (or nothing) under {@link #RESPONSE_KEY}
+     * of the data store it is given. It runs on the spot, to its end, for each request.
+     */
+    public void registerHandleRequest(Behaviour b) {
+        requestStep = b;
+    }
+
+    /** As {@link #registerHandleRequest} (JADE's two names for the one step). */
+    public void registerPrepareResponse(Behaviour b) {
+        registerHandleRequest(b);
+    }
+
+    /**
+     * Puts a behaviour in place of {@link #prepareResultNotification}: it reads
+     * {@link #REQUEST_KEY} and {@link #RESPONSE_KEY} and puts the result under
+     * {@link #RESULT_NOTIFICATION_KEY}. It runs on the spot, to its end, after each AGREE (or no answer).
+     */
+    public void registerPrepareResultNotification(Behaviour b) {
+        resultStep = b;
     }
 
     /** Serves another template from now on. */

@@ -1,6 +1,7 @@
 package jade.proto;
 
 import jade.core.Agent;
+import jade.core.behaviours.Behaviour;
 import jade.core.behaviours.DataStore;
 import jade.core.behaviours.SimpleBehaviour;
 import jade.domain.FIPAAgentManagement.FailureException;
@@ -29,6 +30,10 @@ public class ContractNetResponder extends SimpleBehaviour {
     private ACLMessage cfp;
     private ACLMessage propose;
     private MessageTemplate decision;
+    private Behaviour cfpStep;
+    private Behaviour acceptStep;
+    private Behaviour rejectStep;
+    private Behaviour outOfSequenceStep;
 
     /** A template for the CFPs of a protocol. */
     public static MessageTemplate createMessageTemplate(String iprotocol) {
@@ -67,8 +72,12 @@ public class ContractNetResponder extends SimpleBehaviour {
     private void onCfp(ACLMessage m) {
         cfp = m;
         getDataStore().put(CFP_KEY, m);
-        ACLMessage reply = Replies.answer(m, () -> handleCfp(m),
-                ACLMessage.REFUSE, ACLMessage.FAILURE, ACLMessage.NOT_UNDERSTOOD);
+        ACLMessage reply;
+        if (States.run(this, cfpStep, getDataStore(), REPLY_KEY)) {
+            reply = (ACLMessage) getDataStore().get(REPLY_KEY);
+        } else {
+            reply = Replies.answer(m, () -> handleCfp(m), ACLMessage.REFUSE, ACLMessage.FAILURE, ACLMessage.NOT_UNDERSTOOD);
+        }
         if (reply != null) {
             Replies.complete(reply, m);
             getDataStore().put(PROPOSE_KEY, reply);
@@ -89,12 +98,19 @@ public class ContractNetResponder extends SimpleBehaviour {
         getDataStore().put(REPLY_KEY, m);
         if (m.getPerformative() == ACLMessage.ACCEPT_PROPOSAL) {
             getDataStore().put(ACCEPT_PROPOSAL_KEY, m);
-            ACLMessage result = Replies.answer(m, () -> handleAcceptProposal(cfp, propose, m), ACLMessage.FAILURE);
+            ACLMessage result;
+            if (States.run(this, acceptStep, getDataStore(), REPLY_KEY)) {
+                result = (ACLMessage) getDataStore().get(REPLY_KEY);
+            } else {
+                result = Replies.answer(m, () -> handleAcceptProposal(cfp, propose, m), ACLMessage.FAILURE);
+            }
             Replies.send(myAgent, result, m);
         } else if (m.getPerformative() == ACLMessage.REJECT_PROPOSAL) {
             getDataStore().put(REJECT_PROPOSAL_KEY, m);
-            handleRejectProposal(cfp, propose, m);
-        } else {
+            if (!States.run(this, rejectStep, getDataStore(), null)) {
+                handleRejectProposal(cfp, propose, m);
+            }
+        } else if (!States.run(this, outOfSequenceStep, getDataStore(), null)) {
             handleOutOfSequence(cfp, propose, m);
         }
         end();
@@ -147,6 +163,39 @@ public class ContractNetResponder extends SimpleBehaviour {
     /** A conversation ended (after a result, a rejection, or an answer other than PROPOSE). */
     protected void sessionTerminated() {
         // JADE's documented default: nothing.
+    }
+
+    /**
+     * Puts a behaviour in place of {@link #handleCfp}: it reads the CFP under {@link #CFP_KEY} and
+     * puts its answer (PROPOSE, REFUSE, ...) under {@link #REPLY_KEY}. Registered steps run on the spot, to their end.
+     */
+    public void registerHandleCfp(Behaviour b) {
+        cfpStep = b;
+    }
+
+    /** As {@link #registerHandleCfp} (JADE's older name). */
+    public void registerPrepareResponse(Behaviour b) {
+        registerHandleCfp(b);
+    }
+
+    /** In place of {@link #handleAcceptProposal}: reads {@link #CFP_KEY}, {@link #PROPOSE_KEY}, {@link #ACCEPT_PROPOSAL_KEY}; puts the result under {@link #REPLY_KEY}. */
+    public void registerHandleAcceptProposal(Behaviour b) {
+        acceptStep = b;
+    }
+
+    /** As {@link #registerHandleAcceptProposal} (JADE's older name). */
+    public void registerPrepareResultNotification(Behaviour b) {
+        registerHandleAcceptProposal(b);
+    }
+
+    /** In place of {@link #handleRejectProposal}: reads {@link #REJECT_PROPOSAL_KEY}. */
+    public void registerHandleRejectProposal(Behaviour b) {
+        rejectStep = b;
+    }
+
+    /** In place of {@link #handleOutOfSequence}: reads the message under {@link #REPLY_KEY}. */
+    public void registerHandleOutOfSequence(Behaviour b) {
+        outOfSequenceStep = b;
     }
 
     /** Serves another template. */

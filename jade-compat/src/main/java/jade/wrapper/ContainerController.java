@@ -17,6 +17,7 @@ public class ContainerController {
     public ContainerController(Engine engine, String containerName) {
         this.engine = engine;
         this.containerName = containerName;
+        engine.addContainer(containerName, this);
     }
 
     /** The controller of an agent created in this container. */

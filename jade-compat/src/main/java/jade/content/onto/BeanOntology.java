@@ -40,7 +40,8 @@ import java.util.jar.JarFile;
  * {@code short} (and boxes), {@code float}/{@code double}, {@code boolean}, {@code Date},
  * {@code byte[]}, {@link AID}, another bean (added too when not yet in the ontology),
  * {@code jade.util.leap.List}/{@code Set} or {@code java.util.List}/{@code Set} of those (element
- * class from {@link AggregateSlot#type()} or the generic type), {@code Object} for any term.
+ * class from {@link AggregateSlot#type()} or the generic type), arrays of those (sequences; {@code byte[]} is a byte
+ * sequence), enums (a concept named by the enum with a {@code name} slot, as JADE writes them), {@code Object} for any term.
  */
 public class BeanOntology extends Ontology {
     private static final long serialVersionUID = 1L;
@@ -167,7 +168,19 @@ public class BeanOntology extends Ontology {
         boolean set = jade.util.leap.Set.class.isAssignableFrom(type) || java.util.Set.class.isAssignableFrom(type);
         Class<?> elementType = null;
         String where = owner.getName() + "." + p.getter().getName();
-        if (list || set || jade.util.leap.Collection.class.isAssignableFrom(type) || java.util.Collection.class.isAssignableFrom(type)) {
+        if (type.isArray() && type != byte[].class) {
+            // An array is a sequence of its component type, as JADE writes it
+            AggregateSlot a = p.aggregate();
+            elementType = type.getComponentType();
+            int cardMin = a != null ? a.cardMin() : 0;
+            int cardMax = a != null ? a.cardMax() : ObjectSchema.UNLIMITED;
+            boolean mandatory = cardMin > 0 || (p.slot() != null && p.slot().mandatory());
+            ObjectSchema es = slotSchema(elementType, where);
+            if (!(es instanceof TermSchema)) {
+                throw new BeanOntologyException(where + ": an array holds terms, not " + elementType.getSimpleName());
+            }
+            addAggregate(schema, p.slotName(), (TermSchema) es, cardMin, cardMax, "sequence", mandatory);
+        } else if (list || set || jade.util.leap.Collection.class.isAssignableFrom(type) || java.util.Collection.class.isAssignableFrom(type)) {
             if (!list && !set) {
                 throw new BeanOntologyException(where + ": an aggregate must be a List or a Set");
             }
@@ -225,8 +238,32 @@ public class BeanOntology extends Ontology {
         if (Concept.class.isAssignableFrom(type) || Predicate.class.isAssignableFrom(type)) {
             return schemaFor(type, true);
         }
+        if (type.isEnum()) {
+            return enumSchema(type, where);
+        }
         throw new BeanOntologyException(where + ": no schema for type " + type.getName());
     }
+
+    /**
+     * An enum's schema, as JADE makes it: a concept named by the enum's simple name with one
+     * mandatory string slot {@code name}, the constant's name: {@code (Size :name LARGE)}.
+     */
+    private ObjectSchema enumSchema(Class<?> type, String where) throws OntologyException {
+        ObjectSchema existing = getSchema(type);
+        if (existing != null) {
+            return existing;
+        }
+        if (getSchema(type.getSimpleName()) != null) {
+            throw new BeanOntologyException(where + ": two schemas named " + type.getSimpleName() + " (" + type.getName() + ")");
+        }
+        ConceptSchema schema = new ConceptSchema(type.getSimpleName());
+        add(schema, type);
+        schema.add(ENUM_NAME, (TermSchema) BasicOntology.getInstance().getSchema(BasicOntology.STRING));
+        return schema;
+    }
+
+    /** The slot of an enum's schema that holds the constant's name. */
+    static final String ENUM_NAME = "name";
 
     private static List<Class<?>> classesOf(String packageName) throws BeanOntologyException {
         String path = packageName.replace('.', '/');

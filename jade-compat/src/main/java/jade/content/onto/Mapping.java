@@ -87,6 +87,13 @@ final class Mapping {
         if (v instanceof FalseProposition) {
             return new AbsPrimitive(Boolean.FALSE);
         }
+        if (v instanceof Enum<?> e) {
+            ObjectSchema schema = schemaOf(e.getDeclaringClass());
+            if (schema == null) {
+                throw new OntologyException("no schema in ontology " + onto.getName() + " for enum " + e.getDeclaringClass().getName());
+            }
+            return new AbsCompound(schema.getTypeName(), List.of(new AbsCompound.Slot(BeanOntology.ENUM_NAME, new AbsPrimitive(e.name()))));
+        }
         List<Object> elements = elements(v);
         if (elements != null) {
             String type = aggregateType != null ? aggregateType
@@ -132,6 +139,12 @@ final class Mapping {
         }
         if (v instanceof Collection<?> c) {
             out.addAll(c);
+            return out;
+        }
+        if (v.getClass().isArray() && !(v instanceof byte[])) {
+            for (int i = 0; i < java.lang.reflect.Array.getLength(v); i++) {
+                out.add(java.lang.reflect.Array.get(v, i));
+            }
             return out;
         }
         return null;
@@ -309,6 +322,14 @@ final class Mapping {
             throw new OntologyException(where + ": expected a " + s.getTypeName() + ", got a " + a.type());
         }
         ObjectSchema elementSchema = schema instanceof AggregateSchema s ? s.getElementsSchema() : null;
+        if (expected.isArray() && expected != byte[].class) {
+            Class<?> component = expected.getComponentType();
+            Object array = java.lang.reflect.Array.newInstance(component, a.elements().size());
+            for (int i = 0; i < a.elements().size(); i++) {
+                java.lang.reflect.Array.set(array, i, value(a.elements().get(i), component, null, elementSchema, where));
+            }
+            return array;
+        }
         Class<?> et = elementType != null ? elementType : classOf(elementSchema);
         if (Number.class.isAssignableFrom(box(et))) {
             et = Object.class; // as JADE: an aggregate's numbers stay Long and Double, whatever the generic type says
@@ -501,6 +522,18 @@ final class Mapping {
         Class<?> cls = onto.getClassForElement(name);
         if (cls == null) {
             throw new OntologyException(where + ": no Java class for " + name + " in ontology " + onto.getName());
+        }
+        if (cls.isEnum()) {
+            AbsObject n = c.isNamed() ? c.get(BeanOntology.ENUM_NAME) : (c.slots().isEmpty() ? null : c.slots().get(0).value());
+            if (!(n instanceof AbsPrimitive p) || !(p.value() instanceof String constant)) {
+                throw new OntologyException(where + ": " + name + " needs its :" + BeanOntology.ENUM_NAME + " (a string)");
+            }
+            for (Object k : cls.getEnumConstants()) {
+                if (((Enum<?>) k).name().equals(constant)) {
+                    return k;
+                }
+            }
+            throw new OntologyException(where + ": " + constant + " is not a constant of " + cls.getName());
         }
         String[] names = schema.getNames();
         if (!c.isNamed() && c.slots().size() > names.length) {

@@ -231,6 +231,16 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
         properties.computeIfAbsent(c, k -> new ConcurrentHashMap<>()).put(slot, new Property(getter, setter, elementType));
     }
 
+    /**
+     * JADE lets an ontology's concept slots be used as functions in content
+     * ({@code AbsConceptSlotFunction}); concord-jade does not support them, and says so here
+     * rather than accept content it could not read.
+     */
+    protected void useConceptSlotsAsFunctions() {
+        throw new UnsupportedOperationException("ontology " + getName() + ": concept slots as functions (AbsConceptSlotFunction) "
+                + "are not supported by concord-jade");
+    }
+
     /** The accessors of that slot on that class: recorded, or found by JavaBean naming. */
     Property property(Class<?> c, String slot) throws OntologyException {
         for (Class<?> k = c; k != null; k = k.getSuperclass()) {
@@ -276,11 +286,9 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
         }
         Method getter = null;
         for (String prefix : new String[]{"get", "is"}) {
-            try {
-                getter = c.getMethod(prefix + base);
+            getter = publicMethod(c, prefix + base, -1);
+            if (getter != null) {
                 break;
-            } catch (NoSuchMethodException e) {
-                // try the next form
             }
         }
         if (getter == null) {
@@ -290,43 +298,56 @@ public class Ontology implements jade.util.leap.Serializable, ContentOntology {
             }
             throw new OntologyException("no getter get" + base + "() for slot :" + slot + " in class " + c.getName());
         }
-        Method setter;
-        try {
-            setter = c.getMethod("set" + base, getter.getReturnType());
-        } catch (NoSuchMethodException e) {
+        Method setter = publicMethod(c, "set" + base, 1);
+        if (setter != null && setter.getParameterTypes()[0] != getter.getReturnType()) {
+            try {
+                setter = c.getMethod(setter.getName(), getter.getReturnType());
+            } catch (NoSuchMethodException e) {
+                setter = null;
+            }
+        }
+        if (setter == null) {
             throw new OntologyException("no setter set" + base + "(" + getter.getReturnType().getSimpleName()
                     + ") for slot :" + slot + " in class " + c.getName());
         }
         return new Property(getter, setter, elementType(getter.getGenericReturnType()));
     }
 
+    /**
+     * The public method of that name (its exact case first, then ignoring case, as JADE finds a
+     * slot's accessors: a slot {@code NAME} is read with {@code getName}) with no parameters
+     * ({@code arity} -1) or that many; null if none.
+     */
+    private static Method publicMethod(Class<?> c, String name, int arity) {
+        Method caseless = null;
+        for (Method m : c.getMethods()) {
+            if (m.getParameterCount() != Math.max(arity, 0) || !m.getName().equalsIgnoreCase(name)) {
+                continue;
+            }
+            if (m.getName().equals(name)) {
+                return m;
+            }
+            if (caseless == null) {
+                caseless = m;
+            }
+        }
+        return caseless;
+    }
+
     /** JADE's older aggregate accessors: {@code getAllX()}, {@code addX(e)}, {@code clearAllX()}. */
     private static Property allAndAdd(Class<?> c, String base) {
-        try {
-            Method all = c.getMethod("getAll" + base);
-            if (!java.util.Iterator.class.isAssignableFrom(all.getReturnType())) {
-                return null;
-            }
-            Method add = null;
-            for (Method m : c.getMethods()) {
-                if (m.getName().equals("add" + base) && m.getParameterCount() == 1) {
-                    add = m;
-                }
-            }
-            if (add == null) {
-                return null;
-            }
-            Method clear = null;
-            try {
-                clear = c.getMethod("clearAll" + base);
-            } catch (NoSuchMethodException e) {
-                // no clearer: elements are added to what the object has
-            }
-            Class<?> element = add.getParameterTypes()[0];
-            return new Property(all, add, element == Object.class ? null : element, clear);
-        } catch (NoSuchMethodException e) {
+        Method all = publicMethod(c, "getAll" + base, -1);
+        if (all == null || !java.util.Iterator.class.isAssignableFrom(all.getReturnType())) {
             return null;
         }
+        Method add = publicMethod(c, "add" + base, 1);
+        if (add == null) {
+            return null;
+        }
+        // no clearer (null): elements are added to what the object has
+        Method clear = publicMethod(c, "clearAll" + base, -1);
+        Class<?> element = add.getParameterTypes()[0];
+        return new Property(all, add, element == Object.class ? null : element, clear);
     }
 
     static Class<?> elementType(Type t) {

@@ -18,7 +18,6 @@ public abstract class Behaviour implements jade.util.leap.Serializable {
     protected static final int NOTIFY_UP = 0;
     protected static final int NOTIFY_DOWN = 1;
 
-    private static int counter;
 
     /** The agent this behaviour belongs to. */
     protected Agent myAgent;
@@ -34,17 +33,18 @@ public abstract class Behaviour implements jade.util.leap.Serializable {
     private volatile String executionState = STATE_READY;
     private DataStore dataStore;
 
+    /**
+     * A behaviour named, as JADE names it by default, after its class's name without the package
+     * and enclosing classes ({@code Outer$Inner}: {@code Inner}; an anonymous class {@code Outer$1}: {@code 1}).
+     */
     public Behaviour() {
-        myName = "Behaviour" + nextId();
+        String className = getClass().getName();
+        myName = className.substring(Math.max(className.lastIndexOf('.'), className.lastIndexOf('$')) + 1);
     }
 
     public Behaviour(Agent a) {
         this();
         myAgent = a;
-    }
-
-    private static synchronized int nextId() {
-        return counter++;
     }
 
     public final void setBehaviourName(String name) {

@@ -22,7 +22,8 @@ public class FSMBehaviour extends SerialBehaviour {
     private final Map<String, Map<Integer, Transition>> transitions = new HashMap<>();
     private final Map<String, Transition> defaults = new HashMap<>();
     private String firstName;
-    private String currentName;
+    /** The name of the state running now (protected, as JADE's). */
+    protected String currentName;
     private int lastExitValue;
 
     private record Transition(String destination, String[] toBeReset) {
@@ -35,7 +36,9 @@ public class FSMBehaviour extends SerialBehaviour {
         super(a);
     }
 
+    /** Adds a state; the state's behaviour takes the state's name, as in JADE. */
     public void registerState(Behaviour state, String name) {
+        state.setBehaviourName(name);
         states.put(name, state);
         registerAsChild(state);
     }

@@ -424,45 +424,47 @@ public class ACLMessage implements Cloneable, jade.util.leap.Serializable {
     /** The message in FIPA's string form (as JADE prints it, one slot a line). */
     @Override
     public String toString() {
+        // JADE 4.3's layout, space for space (seen from its output; programs print messages to trace them)
         StringBuilder b = new StringBuilder("(").append(getPerformative(performative)).append('\n');
         if (sender != null) {
             b.append(" :sender  ").append(sender).append('\n');
         }
         if (!receivers.isEmpty()) {
-            b.append(" :receiver  (set");
+            b.append(" :receiver  (set ");
             for (Object r : receivers.toArray()) {
-                b.append(' ').append(r);
+                b.append(r).append(' ');
             }
-            b.append(" )\n");
+            b.append(")\n");
         }
         if (!replyTo.isEmpty()) {
-            b.append(" :reply-to  (set");
+            b.append(" :reply-to  (set \n");
             for (Object r : replyTo.toArray()) {
-                b.append(' ').append(r);
+                b.append(r).append(' ');
             }
-            b.append(" )\n");
+            b.append(")\n");
         }
         String c = getContent();
-        if (c != null) {
+        if (c != null && !c.isEmpty()) {
             b.append(" :content  \"").append(c.trim().replace("\"", "\\\"")).append("\" \n");
         }
-        slot(b, "reply-with", replyWith);
-        slot(b, "in-reply-to", inReplyTo);
-        slot(b, "encoding", encoding);
-        slot(b, "language", language);
-        slot(b, "ontology", ontology);
-        slot(b, "reply-by", getReplyBy());
-        slot(b, "protocol", protocol);
-        slot(b, "conversation-id", conversationId);
-        for (String k : userParams.stringPropertyNames()) {
-            slot(b, "X-" + k, userParams.getProperty(k));
+        slot(b, "reply-with", replyWith, " ");
+        slot(b, "in-reply-to", inReplyTo, " ");
+        slot(b, "encoding", encoding, " ");
+        slot(b, "language", language, " ");
+        slot(b, "ontology", ontology, " ");
+        slot(b, "reply-by", getReplyBy(), "\n");
+        slot(b, "protocol", protocol, "\n");
+        slot(b, "conversation-id", conversationId, " ");
+        for (java.util.Enumeration<Object> e = userParams.keys(); e.hasMoreElements(); ) {
+            String k = String.valueOf(e.nextElement());
+            b.append(':').append(k.startsWith("X-") ? k : "X-" + k).append(' ').append(userParams.getProperty(k)).append(' ');
         }
         return b.append(")").toString();
     }
 
-    private static void slot(StringBuilder b, String name, String v) {
+    private static void slot(StringBuilder b, String name, String v, String end) {
         if (v != null) {
-            b.append(" :").append(name).append("  ").append(v).append('\n');
+            b.append(" :").append(name).append("  ").append(v).append(end);
         }
     }
 }

@@ -42,4 +42,7 @@ public abstract class AgentAccess {
 
     /** True if the caller runs on the agent's own thread. */
     public abstract boolean onOwnThread(Agent a);
+
+    /** True once the agent was asked to end ({@code doDelete}, a kill): the AMS no longer lists it. */
+    public abstract boolean ending(Agent a);
 }

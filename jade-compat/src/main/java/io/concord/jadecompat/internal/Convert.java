@@ -27,7 +27,7 @@ public final class Convert {
                 slots.put(k, a.getAllUserDefinedSlot().getProperty(k));
             }
         }
-        return new io.concord.core.acl.AID(a.getName(), addresses, resolvers, slots);
+        return new io.concord.core.acl.AID(Names.encodeFull(a.getName()), addresses, resolvers, slots);
     }
 
     /**
@@ -36,7 +36,7 @@ public final class Convert {
      * left out, as a JADE platform without an MTP shows none.
      */
     public static AID toJade(io.concord.core.acl.AID a) {
-        AID r = new AID(a.name(), AID.ISGUID);
+        AID r = new AID(Names.decode(a.name()), AID.ISGUID);
         for (String addr : a.addresses()) {
             if (!addr.startsWith("udp://") && !addr.startsWith("tcp://")) {
                 r.addAddresses(addr);

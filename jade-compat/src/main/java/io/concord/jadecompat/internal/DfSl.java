@@ -222,7 +222,7 @@ public final class DfSl {
     /** A JADE description of a Concord yellow-pages entry (no services: the agent deregistered). */
     public static DFAgentDescription toJade(AgentEntry e) {
         DFAgentDescription d = new DFAgentDescription();
-        d.setName(new AID(e.name(), AID.ISGUID));
+        d.setName(new AID(Names.decode(e.name()), AID.ISGUID));
         for (io.concord.layers.platform.ServiceDescription s : e.services()) {
             ServiceDescription j = new ServiceDescription();
             j.setType(s.type());

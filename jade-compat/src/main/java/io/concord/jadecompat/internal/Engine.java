@@ -35,6 +35,12 @@ public final class Engine {
     private static Engine current;
 
     private final Platform platform;
+    /** The containers of this JVM by name, in the order made (for the AMS: create-agent, query, shutdown). */
+    private final java.util.Map<String, jade.wrapper.ContainerController> containers = new java.util.concurrent.ConcurrentSkipListMap<>();
+    /** The JADE agents of this JVM by local name (for the AMS: their states, kill). */
+    private final java.util.Map<String, jade.core.Agent> jadeAgents = new java.util.concurrent.ConcurrentHashMap<>();
+    /** The local names of JADE agents of this JVM that have ended (until one of that name starts again). */
+    private final java.util.Set<String> ended = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     private Engine(Platform platform) {
         this.platform = platform;
@@ -112,6 +118,68 @@ public final class Engine {
         return null;
     }
 
+    /** A container of this JVM was made. */
+    public void addContainer(String name, jade.wrapper.ContainerController c) {
+        containers.put(name, c);
+    }
+
+    /** The container of this name, or null. */
+    public jade.wrapper.ContainerController container(String name) {
+        return containers.get(name);
+    }
+
+    /** Every container of this JVM. */
+    public java.util.List<jade.wrapper.ContainerController> containers() {
+        return new java.util.ArrayList<>(containers.values());
+    }
+
+    /** A JADE agent started (or, with {@code null}, ended) here. */
+    public void jadeAgent(String localName, jade.core.Agent a) {
+        if (a == null) {
+            jadeAgents.remove(localName);
+            ended.add(localName);
+        } else {
+            ended.remove(localName);
+            jadeAgents.put(localName, a);
+        }
+    }
+
+    /**
+     * The local names of the platform's agents (those running here), in start order, without the
+     * JADE agents of this JVM that were asked to end or have ended (Concord's runtime may list
+     * them a little longer; JADE's AMS does not).
+     */
+    public java.util.List<String> liveAgentNames() {
+        java.util.List<String> l = new java.util.ArrayList<>();
+        for (String n : agentNames()) {
+            jade.core.Agent a = jadeAgents.get(n);
+            if (!ended.contains(n) && (a == null || !AgentAccess.get().ending(a))) {
+                l.add(n);
+            }
+        }
+        return l;
+    }
+
+    /** The JADE agent of this local name running in this JVM, or null. */
+    public jade.core.Agent jadeAgent(String localName) {
+        return jadeAgents.get(localName);
+    }
+
+    /** The JADE agents running in this JVM. */
+    public java.util.List<jade.core.Agent> jadeAgents() {
+        return new java.util.ArrayList<>(jadeAgents.values());
+    }
+
+    /** The local names of the platform's agents (those running here), in start order. */
+    public java.util.List<String> agentNames() {
+        java.util.List<String> l = new java.util.ArrayList<>();
+        for (AID a : platform.runtime().agents()) {
+            String n = a.name().contains("@") ? a.name().substring(0, a.name().lastIndexOf('@')) : a.name();
+            l.add(Names.decode(n));
+        }
+        return l;
+    }
+
     /** The platform's name. */
     public String platformName() {
         return platform.name();
@@ -119,12 +187,12 @@ public final class Engine {
 
     /** Starts a Concord agent for a JADE agent; returns its AID. */
     public AID startHost(String localName, Host host, Object[] args) {
-        return platform.startAgent(localName, host, args == null ? new Object[0] : args);
+        return platform.startAgent(Names.encodeLocal(localName), host, args == null ? new Object[0] : args);
     }
 
     /** True if a Concord agent of this name runs here. */
     public boolean hosts(String localName) {
-        AID a = AID.local(localName, platform.name());
+        AID a = AID.local(Names.encodeLocal(localName), platform.name());
         return platform.runtime().agents().contains(a);
     }
 

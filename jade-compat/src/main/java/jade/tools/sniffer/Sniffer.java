@@ -1,0 +1,21 @@
+package jade.tools.sniffer;
+
+import io.concord.jadecompat.internal.ToolStandIn;
+
+/**
+ * A stand-in for JADE's Sniffer (jade.tools.sniffer.Sniffer): started under JADE's class name (from {@code jade.Boot -agents}
+ * or {@code createNewAgent}), it says once on standard error what Concord offers instead (its web
+ * console) and ends, so that the launcher goes on.
+ */
+public class Sniffer extends jade.core.Agent {
+    private static final long serialVersionUID = 1L;
+
+    public Sniffer() {
+        super();
+    }
+
+    @Override
+    protected void setup() {
+        ToolStandIn.standIn(this, "JADE's Sniffer (jade.tools.sniffer.Sniffer)");
+    }
+}

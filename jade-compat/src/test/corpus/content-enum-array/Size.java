@@ -1,0 +1,4 @@
+/** An enum slot's type. */
+public enum Size {
+    SMALL, MEDIUM, LARGE
+}

@@ -1,0 +1,110 @@
+import jade.core.AID;
+import jade.core.Agent;
+import jade.core.behaviours.SequentialBehaviour;
+import jade.domain.FIPANames;
+import jade.lang.acl.ACLMessage;
+import jade.proto.AchieveREInitiator;
+import jade.proto.ContractNetInitiator;
+import jade.proto.SimpleAchieveREInitiator;
+
+import java.util.Vector;
+
+/** Asks the server for squares (SimpleAchieveREInitiator), a cube, and runs two contract nets, one after the other. */
+public class Client extends Agent {
+    private ACLMessage request(String ontology, String content) {
+        ACLMessage m = new ACLMessage(ACLMessage.REQUEST);
+        m.addReceiver(new AID("server", AID.ISLOCALNAME));
+        m.setProtocol(FIPANames.InteractionProtocol.FIPA_REQUEST);
+        m.setOntology(ontology);
+        m.setContent(content);
+        return m;
+    }
+
+    private SimpleAchieveREInitiator square(String n) {
+        return new SimpleAchieveREInitiator(this, request("square", n)) {
+            @Override
+            protected ACLMessage prepareRequest(ACLMessage msg) {
+                System.out.println("client: asking the square of " + msg.getContent());
+                return msg;
+            }
+
+            @Override
+            protected void handleAgree(ACLMessage agree) {
+                System.out.println("client: agreed");
+            }
+
+            @Override
+            protected void handleRefuse(ACLMessage refuse) {
+                System.out.println("client: refused");
+            }
+
+            @Override
+            protected void handleInform(ACLMessage inform) {
+                System.out.println("client: square " + inform.getContent());
+            }
+
+            @Override
+            protected void handleAllResultNotifications(Vector notifications) {
+                System.out.println("client: " + notifications.size() + " result(s)");
+            }
+        };
+    }
+
+    private ContractNetInitiator buy(String what, boolean accept) {
+        ACLMessage cfp = new ACLMessage(ACLMessage.CFP);
+        cfp.addReceiver(new AID("server", AID.ISLOCALNAME));
+        cfp.setProtocol(FIPANames.InteractionProtocol.FIPA_CONTRACT_NET);
+        cfp.setConversationId("buy-" + what);
+        cfp.setContent(what);
+        return new ContractNetInitiator(this, cfp) {
+            @Override
+            protected void handleAllResponses(Vector responses, Vector acceptances) {
+                for (Object o : responses) {
+                    ACLMessage r = (ACLMessage) o;
+                    System.out.println("client: " + ACLMessage.getPerformative(r.getPerformative()) + " " + r.getContent());
+                    if (r.getPerformative() == ACLMessage.PROPOSE) {
+                        ACLMessage a = r.createReply();
+                        a.setPerformative(accept ? ACLMessage.ACCEPT_PROPOSAL : ACLMessage.REJECT_PROPOSAL);
+                        acceptances.add(a);
+                    }
+                }
+            }
+
+            @Override
+            protected void handleInform(ACLMessage inform) {
+                System.out.println("client: " + inform.getContent());
+            }
+        };
+    }
+
+    @Override
+    protected void setup() {
+        SequentialBehaviour s = new SequentialBehaviour(this) {
+            @Override
+            public int onEnd() {
+                myAgent.doDelete();
+                return 0;
+            }
+        };
+        s.addSubBehaviour(square("7"));
+        s.addSubBehaviour(square("-1"));
+        s.addSubBehaviour(new AchieveREInitiator(this, request("cube", "3")) {
+            @Override
+            protected void handleInform(ACLMessage inform) {
+                System.out.println("client: cube " + inform.getContent());
+            }
+        });
+        s.addSubBehaviour(buy("tea", true));
+        s.addSubBehaviour(buy("salt", false));
+        s.addSubBehaviour(new jade.core.behaviours.WakerBehaviour(this, 300) {
+            // lets the server print its rejection before the next CFP
+        });
+        s.addSubBehaviour(buy("gold", true));
+        addBehaviour(s);
+    }
+
+    @Override
+    protected void takeDown() {
+        System.exit(0);
+    }
+}
