@@ -48,6 +48,9 @@ public final class HttpMtp implements Gateway {
     private final DropCounters drops = new DropCounters();
     private final java.util.Set<String> warned = java.util.concurrent.ConcurrentHashMap.newKeySet();
     private final ReplyLimit replyLimit;
+    /** The bridge's own answers under way (their failure to be posted is told to nobody). */
+    private final java.util.Set<AclMessage> ownAnswers = java.util.Collections.synchronizedSet(
+            java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>()));
     /** The observation service's events (when an operator exposed it): the bridge's own answers' rate. */
     private final ReplyLimit observeLimit;
     /** Everything else the agents post to one host. */
@@ -422,6 +425,7 @@ public final class HttpMtp implements Gateway {
                     + " a second; the bridge answers requests naming that address only at that rate");
             return;
         }
+        ownAnswers.add(reply);
         sendOut(reply, to);
     }
 
@@ -536,6 +540,7 @@ public final class HttpMtp implements Gateway {
                       int at, String problem) {
         if (problem == null) {
             outQueued.decrementAndGet();
+            ownAnswers.remove(original);
             return;
         }
         if (at + 1 < urls.size() && loop != null) {
@@ -551,7 +556,10 @@ public final class HttpMtp implements Gateway {
      * The FIPA FAILURE "Foreign agent unreachable" to the sender of a message that was not posted,
      * if the sender is an agent of this platform and the message is not itself a FAILURE. On the loop.
      */
-    private static void tellSender(GatewayContext ctx, AclMessage message, AID receiver, String why) {
+    private void tellSender(GatewayContext ctx, AclMessage message, AID receiver, String why) {
+        if (ownAnswers.remove(message)) {
+            return;   // the bridge's own answer (a REFUSE in the receiver's name): nobody here waits for it
+        }
         AID sender = message.getSender();
         if (message.getPerformative() != Performative.FAILURE && sender != null
                 && ctx.platformName().equalsIgnoreCase(sender.platform())) {

@@ -22,6 +22,8 @@ public class ConcordChainLink extends Agent {
      */
     public volatile AID previous;
     public final AtomicLong strangers = new AtomicLong();
+    /** The last message from a stranger, for the report: who sent what. */
+    public volatile String lastStranger;
 
     public ConcordChainLink(Rounds rounds, boolean first, String secret) {
         this.rounds = rounds;
@@ -51,6 +53,8 @@ public class ConcordChainLink extends Agent {
                 AID from = previous;
                 if (from != null && !from.equals(m.getSender())) {
                     strangers.incrementAndGet();
+                    lastStranger = m.getPerformative().wireName() + " from " + (m.getSender() == null ? "nobody" : m.getSender().name())
+                            + " (" + m.getOntology() + ")";
                 } else if (!first) {
                     pass(m.getContent());
                 } else if (!secret.equals(m.getContent())) {

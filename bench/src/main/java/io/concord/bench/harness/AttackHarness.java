@@ -60,7 +60,7 @@ public final class AttackHarness {
         String name = "attack" + ProcessHandle.current().pid() + kind;
         try (AgentRuntime rt = AgentRuntime.builder().platformName(name).build().start()) {
             int web = kind.equals("foreign") || kind.equals("console") ? freePort() : 0;
-            io.concord.jade.HttpMtp[] mtp = new io.concord.jade.HttpMtp[1];
+            List<io.concord.jade.HttpMtp> mtp = new java.util.concurrent.CopyOnWriteArrayList<>();
             Platform.Builder pb = Platform.builder().runtime(rt).ports(new PortRange(7851, 20, 10)).transport(transport)
                     .safetyStack(SafetyStack.builder().profile(Profile.CLASS_7).platformKey(key).transport(transport)
                             .identities(IdentityStore.ephemeral()).build());
@@ -68,7 +68,7 @@ public final class AttackHarness {
                 // Every agent may become container and serve the ACC; the one that does is the one attacked.
                 pb.gateway(() -> {
                     io.concord.jade.HttpMtp m = new io.concord.jade.HttpMtp("127.0.0.1", web);
-                    mtp[0] = m;
+                    mtp.add(m);
                     return m;
                 });
             }
@@ -151,18 +151,22 @@ public final class AttackHarness {
             }
             Thread.sleep(2_500); // messages held for the lists are dropped after 2 s: count them too
             long forged = 0;
+            String stranger = null;
             for (ConcordChainLink l : links) {
                 forged += l.strangers.get();
+                stranger = l.lastStranger != null ? l.lastStranger : stranger;
             }
             Map<String, Long> drops = new TreeMap<>();
             for (AID a : aids) {
                 PlatformHarness.onLoop(rt, () -> rt.drops(a)).forEach((k, v) -> drops.merge(k, v, Long::sum));
             }
-            String extra = "";
-            if (mtp[0] != null) {
-                mtp[0].drops().forEach((k, v) -> drops.merge(k, v, Long::sum));
+            String extra = stranger == null ? "" : "last_forged=\"" + stranger + "\"";
+            if (!mtp.isEmpty()) {
+                for (io.concord.jade.HttpMtp m : mtp) {   // one per agent; the container's served
+                    m.drops().forEach((k, v) -> drops.merge(k, v, Long::sum));
+                }
                 int alive = PlatformHarness.onLoop(rt, () -> (int) aids.stream().filter(a -> rt.agents().contains(a)).count());
-                extra = "links_alive=" + alive + " df_limit=" + drops.getOrDefault("df-limit", 0L) + " not_authorized="
+                extra = extra + (extra.isEmpty() ? "" : " ") + "links_alive=" + alive + " df_limit=" + drops.getOrDefault("df-limit", 0L) + " not_authorized="
                         + drops.getOrDefault("not-authorized", 0L);
             }
             if (console != null) {
