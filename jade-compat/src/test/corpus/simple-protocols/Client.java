@@ -9,7 +9,10 @@ import jade.proto.SimpleAchieveREInitiator;
 
 import java.util.Vector;
 
-/** Asks the server for squares (SimpleAchieveREInitiator), a cube, and runs two contract nets, one after the other. */
+/**
+ * Asks the server for squares (SimpleAchieveREInitiator), a cube, another cube whose INFORM and
+ * results registered steps handle, and runs three contract nets, one after the other.
+ */
 public class Client extends Agent {
     private ACLMessage request(String ontology, String content) {
         ACLMessage m = new ACLMessage(ACLMessage.REQUEST);
@@ -94,6 +97,22 @@ public class Client extends Agent {
                 System.out.println("client: cube " + inform.getContent());
             }
         });
+        AchieveREInitiator registered = new AchieveREInitiator(this, request("cube", "2"));
+        registered.registerHandleInform(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                ACLMessage inform = (ACLMessage) getDataStore().get(registered.REPLY_KEY);
+                System.out.println("client: the registered step read cube " + inform.getContent());
+            }
+        });
+        registered.registerHandleAllResultNotifications(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                Vector v = (Vector) getDataStore().get(registered.ALL_RESULT_NOTIFICATIONS_KEY);
+                System.out.println("client: the registered step saw " + v.size() + " result(s)");
+            }
+        });
+        s.addSubBehaviour(registered);
         s.addSubBehaviour(buy("tea", true));
         s.addSubBehaviour(buy("salt", false));
         s.addSubBehaviour(new jade.core.behaviours.WakerBehaviour(this, 300) {
