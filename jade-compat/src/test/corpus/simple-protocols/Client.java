@@ -114,6 +114,31 @@ public class Client extends Agent {
         });
         s.addSubBehaviour(registered);
         s.addSubBehaviour(buy("tea", true));
+        ACLMessage coffee = new ACLMessage(ACLMessage.CFP);
+        coffee.addReceiver(new AID("server", AID.ISLOCALNAME));
+        coffee.setProtocol(FIPANames.InteractionProtocol.FIPA_CONTRACT_NET);
+        coffee.setConversationId("buy-coffee");
+        coffee.setContent("coffee");
+        ContractNetInitiator registeredNet = new ContractNetInitiator(this, coffee);
+        registeredNet.registerHandleAllResponses(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                Vector responses = (Vector) getDataStore().get(registeredNet.ALL_RESPONSES_KEY);
+                Vector acceptances = (Vector) getDataStore().get(registeredNet.ALL_ACCEPTANCES_KEY);
+                ACLMessage offer = (ACLMessage) responses.get(0);
+                System.out.println("client: the registered step accepts " + offer.getContent());
+                ACLMessage accept = offer.createReply();
+                accept.setPerformative(ACLMessage.ACCEPT_PROPOSAL);
+                acceptances.add(accept);
+            }
+        });
+        registeredNet.registerHandleInform(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                System.out.println("client: the registered step read " + ((ACLMessage) getDataStore().get(registeredNet.REPLY_KEY)).getContent());
+            }
+        });
+        s.addSubBehaviour(registeredNet);
         s.addSubBehaviour(buy("salt", false));
         s.addSubBehaviour(new jade.core.behaviours.WakerBehaviour(this, 300) {
             // lets the server print its rejection before the next CFP
