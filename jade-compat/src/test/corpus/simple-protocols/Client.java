@@ -144,6 +144,32 @@ public class Client extends Agent {
             // lets the server print its rejection before the next CFP
         });
         s.addSubBehaviour(buy("gold", true));
+        s.addSubBehaviour(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                ACLMessage cfp = new ACLMessage(ACLMessage.CFP);
+                cfp.addReceiver(new AID("server", AID.ISLOCALNAME));
+                cfp.setProtocol(FIPANames.InteractionProtocol.FIPA_ITERATED_CONTRACT_NET);
+                cfp.setConversationId("haggle");
+                cfp.setContent("bread");
+                myAgent.send(cfp);
+                jade.lang.acl.MessageTemplate mine = jade.lang.acl.MessageTemplate.MatchConversationId("haggle");
+                ACLMessage offer = myAgent.blockingReceive(mine);
+                for (String again : new String[] {"bread, cheaper", "bread, cheaper still"}) {
+                    System.out.println("client: offered " + ACLMessage.getPerformative(offer.getPerformative()) + " " + offer.getContent());
+                    ACLMessage next = offer.createReply();
+                    next.setPerformative(ACLMessage.CFP);
+                    next.setContent(again);
+                    myAgent.send(next);
+                    offer = myAgent.blockingReceive(mine);
+                }
+                System.out.println("client: offered " + ACLMessage.getPerformative(offer.getPerformative()) + " " + offer.getContent());
+                ACLMessage accept = offer.createReply();
+                accept.setPerformative(ACLMessage.ACCEPT_PROPOSAL);
+                myAgent.send(accept);
+                System.out.println("client: " + myAgent.blockingReceive(mine).getContent());
+            }
+        });
         addBehaviour(s);
     }
 
