@@ -9,7 +9,10 @@ import jade.proto.SimpleAchieveREInitiator;
 
 import java.util.Vector;
 
-/** Asks the server for squares (SimpleAchieveREInitiator), a cube, and runs two contract nets, one after the other. */
+/**
+ * Asks the server for squares (SimpleAchieveREInitiator), a cube, another cube whose INFORM and
+ * results registered steps handle, and runs three contract nets, one after the other.
+ */
 public class Client extends Agent {
     private ACLMessage request(String ontology, String content) {
         ACLMessage m = new ACLMessage(ACLMessage.REQUEST);
@@ -94,12 +97,79 @@ public class Client extends Agent {
                 System.out.println("client: cube " + inform.getContent());
             }
         });
+        AchieveREInitiator registered = new AchieveREInitiator(this, request("cube", "2"));
+        registered.registerHandleInform(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                ACLMessage inform = (ACLMessage) getDataStore().get(registered.REPLY_KEY);
+                System.out.println("client: the registered step read cube " + inform.getContent());
+            }
+        });
+        registered.registerHandleAllResultNotifications(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                Vector v = (Vector) getDataStore().get(registered.ALL_RESULT_NOTIFICATIONS_KEY);
+                System.out.println("client: the registered step saw " + v.size() + " result(s)");
+            }
+        });
+        s.addSubBehaviour(registered);
         s.addSubBehaviour(buy("tea", true));
+        ACLMessage coffee = new ACLMessage(ACLMessage.CFP);
+        coffee.addReceiver(new AID("server", AID.ISLOCALNAME));
+        coffee.setProtocol(FIPANames.InteractionProtocol.FIPA_CONTRACT_NET);
+        coffee.setConversationId("buy-coffee");
+        coffee.setContent("coffee");
+        ContractNetInitiator registeredNet = new ContractNetInitiator(this, coffee);
+        registeredNet.registerHandleAllResponses(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                Vector responses = (Vector) getDataStore().get(registeredNet.ALL_RESPONSES_KEY);
+                Vector acceptances = (Vector) getDataStore().get(registeredNet.ALL_ACCEPTANCES_KEY);
+                ACLMessage offer = (ACLMessage) responses.get(0);
+                System.out.println("client: the registered step accepts " + offer.getContent());
+                ACLMessage accept = offer.createReply();
+                accept.setPerformative(ACLMessage.ACCEPT_PROPOSAL);
+                acceptances.add(accept);
+            }
+        });
+        registeredNet.registerHandleInform(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                System.out.println("client: the registered step read " + ((ACLMessage) getDataStore().get(registeredNet.REPLY_KEY)).getContent());
+            }
+        });
+        s.addSubBehaviour(registeredNet);
         s.addSubBehaviour(buy("salt", false));
         s.addSubBehaviour(new jade.core.behaviours.WakerBehaviour(this, 300) {
             // lets the server print its rejection before the next CFP
         });
         s.addSubBehaviour(buy("gold", true));
+        s.addSubBehaviour(new jade.core.behaviours.OneShotBehaviour(this) {
+            @Override
+            public void action() {
+                ACLMessage cfp = new ACLMessage(ACLMessage.CFP);
+                cfp.addReceiver(new AID("server", AID.ISLOCALNAME));
+                cfp.setProtocol(FIPANames.InteractionProtocol.FIPA_ITERATED_CONTRACT_NET);
+                cfp.setConversationId("haggle");
+                cfp.setContent("bread");
+                myAgent.send(cfp);
+                jade.lang.acl.MessageTemplate mine = jade.lang.acl.MessageTemplate.MatchConversationId("haggle");
+                ACLMessage offer = myAgent.blockingReceive(mine);
+                for (String again : new String[] {"bread, cheaper", "bread, cheaper still"}) {
+                    System.out.println("client: offered " + ACLMessage.getPerformative(offer.getPerformative()) + " " + offer.getContent());
+                    ACLMessage next = offer.createReply();
+                    next.setPerformative(ACLMessage.CFP);
+                    next.setContent(again);
+                    myAgent.send(next);
+                    offer = myAgent.blockingReceive(mine);
+                }
+                System.out.println("client: offered " + ACLMessage.getPerformative(offer.getPerformative()) + " " + offer.getContent());
+                ACLMessage accept = offer.createReply();
+                accept.setPerformative(ACLMessage.ACCEPT_PROPOSAL);
+                myAgent.send(accept);
+                System.out.println("client: " + myAgent.blockingReceive(mine).getContent());
+            }
+        });
         addBehaviour(s);
     }
 

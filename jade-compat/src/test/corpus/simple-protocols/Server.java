@@ -63,6 +63,35 @@ public class Server extends Agent {
         });
         addBehaviour(cube);
 
+        MessageTemplate haggles = MessageTemplate.and(MessageTemplate.MatchProtocol(FIPANames.InteractionProtocol.FIPA_ITERATED_CONTRACT_NET),
+                MessageTemplate.MatchPerformative(ACLMessage.CFP));
+        addBehaviour(new SSResponderDispatcher(this, haggles) {
+            @Override
+            protected Behaviour createResponder(ACLMessage cfp) {
+                return new jade.proto.SSIteratedContractNetResponder(myAgent, cfp) {
+                    private int price = 12;
+
+                    @Override
+                    protected ACLMessage handleCfp(ACLMessage cfp) {
+                        System.out.println("server: round for " + cfp.getContent());
+                        ACLMessage propose = cfp.createReply();
+                        propose.setPerformative(ACLMessage.PROPOSE);
+                        propose.setContent(Integer.toString(price));
+                        price -= 3;
+                        return propose;
+                    }
+
+                    @Override
+                    protected ACLMessage handleAcceptProposal(ACLMessage cfp, ACLMessage propose, ACLMessage accept) {
+                        ACLMessage inform = accept.createReply();
+                        inform.setPerformative(ACLMessage.INFORM);
+                        inform.setContent("bread for " + propose.getContent());
+                        return inform;
+                    }
+                };
+            }
+        });
+
         MessageTemplate cfps = MessageTemplate.and(MessageTemplate.MatchProtocol(FIPANames.InteractionProtocol.FIPA_CONTRACT_NET),
                 MessageTemplate.MatchPerformative(ACLMessage.CFP));
         addBehaviour(new SSResponderDispatcher(this, cfps) {

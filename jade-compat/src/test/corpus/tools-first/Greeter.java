@@ -9,7 +9,7 @@ public class Greeter extends Agent {
         ACLMessage m = new ACLMessage(ACLMessage.INFORM);
         m.addReceiver(new AID((String) getArguments()[0], AID.ISLOCALNAME));
         m.setContent("hello from " + getLocalName());
+        System.out.println(getLocalName() + " sends its greeting");
         send(m);
-        System.out.println(getLocalName() + " sent its greeting");
     }
 }

@@ -33,6 +33,8 @@ public class AchieveREInitiator extends SimpleBehaviour {
     private boolean sent;
     private boolean allResponsesHandled;
     private boolean finished;
+    /** The registered steps ({@code registerXxx(Behaviour)}) by handler name. */
+    private final java.util.Map<String, jade.core.behaviours.Behaviour> steps = new java.util.HashMap<>();
 
     public AchieveREInitiator(Agent a, ACLMessage msg) {
         this(a, msg, new DataStore());
@@ -63,7 +65,12 @@ public class AchieveREInitiator extends SimpleBehaviour {
 
     private void sendRequests() {
         sent = true;
-        Vector toSend = prepareRequests(request);
+        Vector toSend;
+        if (States.run(this, steps.get("prepareRequests"), getDataStore(), ALL_REQUESTS_KEY)) {
+            toSend = (Vector) getDataStore().get(ALL_REQUESTS_KEY);
+        } else {
+            toSend = prepareRequests(request);
+        }
         getDataStore().put(REQUEST_KEY, request);
         getDataStore().put(ALL_REQUESTS_KEY, toSend);
         getDataStore().put(ALL_RESPONSES_KEY, responses);
@@ -76,52 +83,110 @@ public class AchieveREInitiator extends SimpleBehaviour {
         Session s = conversation.sessionOf(reply, false);
         int p = reply.getPerformative();
         if (s == null || s.state == Session.DONE) {
-            handleOutOfSequence(reply);
+            step("handleOutOfSequence", reply, () -> handleOutOfSequence(reply));
             return;
         }
         if (s.state == Session.SENT && p == ACLMessage.AGREE) {
             s.state = Session.RESPONDED;
             responses.add(reply);
-            handleAgree(reply);
+            step("handleAgree", reply, () -> handleAgree(reply));
         } else if (s.state == Session.SENT && p == ACLMessage.REFUSE) {
             s.state = Session.DONE;
             responses.add(reply);
-            handleRefuse(reply);
+            step("handleRefuse", reply, () -> handleRefuse(reply));
         } else if (s.state == Session.SENT && p == ACLMessage.NOT_UNDERSTOOD) {
             s.state = Session.DONE;
             responses.add(reply);
-            handleNotUnderstood(reply);
+            step("handleNotUnderstood", reply, () -> handleNotUnderstood(reply));
         } else if (p == ACLMessage.INFORM) {
             s.state = Session.DONE;
             resultNotifications.add(reply);
-            handleInform(reply);
+            step("handleInform", reply, () -> handleInform(reply));
         } else if (p == ACLMessage.FAILURE) {
             s.state = Session.DONE;
             resultNotifications.add(reply);
-            handleFailure(reply);
+            step("handleFailure", reply, () -> handleFailure(reply));
         } else {
-            handleOutOfSequence(reply);
+            step("handleOutOfSequence", reply, () -> handleOutOfSequence(reply));
         }
     }
 
     private void checkProgress() {
         if (conversation.allAnswered() && !allResponsesHandled) {
             allResponsesHandled = true;
-            handleAllResponses(responses);
+            step("handleAllResponses", null, () -> handleAllResponses(responses));
         }
         if (conversation.allDone()) {
             finished = true;
-            handleAllResultNotifications(resultNotifications);
+            step("handleAllResultNotifications", null, () -> handleAllResultNotifications(resultNotifications));
         }
     }
 
     private void timeout() {
         if (!allResponsesHandled) {
             allResponsesHandled = true;
-            handleAllResponses(responses);
+            step("handleAllResponses", null, () -> handleAllResponses(responses));
         }
         finished = true;
-        handleAllResultNotifications(resultNotifications);
+        step("handleAllResultNotifications", null, () -> handleAllResultNotifications(resultNotifications));
+    }
+
+    /**
+     * Runs the step registered for that handler (the reply, if any, under {@link #REPLY_KEY};
+     * the vectors under {@link #ALL_RESPONSES_KEY} and {@link #ALL_RESULT_NOTIFICATIONS_KEY}), or else the handler.
+     */
+    private void step(String handler, ACLMessage reply, Runnable otherwise) {
+        if (reply != null) {
+            getDataStore().put(REPLY_KEY, reply);
+        }
+        if (!States.run(this, steps.get(handler), getDataStore(), null)) {
+            otherwise.run();
+        }
+    }
+
+    /** In place of {@link #prepareRequests}: reads {@link #REQUEST_KEY}, puts the Vector of requests under {@link #ALL_REQUESTS_KEY}. */
+    public void registerPrepareRequests(jade.core.behaviours.Behaviour b) {
+        steps.put("prepareRequests", b);
+    }
+
+    /** In place of {@link #handleAgree}: the AGREE is under {@link #REPLY_KEY}. Registered steps run on the spot, to their end. */
+    public void registerHandleAgree(jade.core.behaviours.Behaviour b) {
+        steps.put("handleAgree", b);
+    }
+
+    /** In place of {@link #handleInform}: the INFORM is under {@link #REPLY_KEY}. */
+    public void registerHandleInform(jade.core.behaviours.Behaviour b) {
+        steps.put("handleInform", b);
+    }
+
+    /** In place of {@link #handleRefuse}: the REFUSE is under {@link #REPLY_KEY}. */
+    public void registerHandleRefuse(jade.core.behaviours.Behaviour b) {
+        steps.put("handleRefuse", b);
+    }
+
+    /** In place of {@link #handleNotUnderstood}: the NOT_UNDERSTOOD is under {@link #REPLY_KEY}. */
+    public void registerHandleNotUnderstood(jade.core.behaviours.Behaviour b) {
+        steps.put("handleNotUnderstood", b);
+    }
+
+    /** In place of {@link #handleFailure}: the FAILURE is under {@link #REPLY_KEY}. */
+    public void registerHandleFailure(jade.core.behaviours.Behaviour b) {
+        steps.put("handleFailure", b);
+    }
+
+    /** In place of {@link #handleOutOfSequence}: the message is under {@link #REPLY_KEY}. */
+    public void registerHandleOutOfSequence(jade.core.behaviours.Behaviour b) {
+        steps.put("handleOutOfSequence", b);
+    }
+
+    /** In place of {@link #handleAllResponses}: the Vector is under {@link #ALL_RESPONSES_KEY}. */
+    public void registerHandleAllResponses(jade.core.behaviours.Behaviour b) {
+        steps.put("handleAllResponses", b);
+    }
+
+    /** In place of {@link #handleAllResultNotifications}: the Vector is under {@link #ALL_RESULT_NOTIFICATIONS_KEY}. */
+    public void registerHandleAllResultNotifications(jade.core.behaviours.Behaviour b) {
+        steps.put("handleAllResultNotifications", b);
     }
 
     /** The requests to send; by default the message given to the constructor. */

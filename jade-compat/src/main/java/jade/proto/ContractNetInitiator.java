@@ -40,6 +40,8 @@ public class ContractNetInitiator extends SimpleBehaviour {
     private Vector resultNotifications = new Vector();
     private int phase = SEND_CFPS;
     private boolean finished;
+    /** The registered steps ({@code registerXxx(Behaviour)}) by handler name. */
+    private final java.util.Map<String, jade.core.behaviours.Behaviour> steps = new java.util.HashMap<>();
 
     public ContractNetInitiator(Agent a, ACLMessage cfp) {
         this(a, cfp, new DataStore());
@@ -74,8 +76,13 @@ public class ContractNetInitiator extends SimpleBehaviour {
 
     private void sendCfps() {
         phase = COLLECT_RESPONSES;
-        Vector toSend = prepareCfps(cfp);
         getDataStore().put(CFP_KEY, cfp);
+        Vector toSend;
+        if (States.run(this, steps.get("prepareCfps"), getDataStore(), ALL_CFPS_KEY)) {
+            toSend = (Vector) getDataStore().get(ALL_CFPS_KEY);
+        } else {
+            toSend = prepareCfps(cfp);
+        }
         getDataStore().put(ALL_CFPS_KEY, toSend);
         getDataStore().put(ALL_RESPONSES_KEY, responses);
         getDataStore().put(ALL_ACCEPTANCES_KEY, acceptances);
@@ -87,50 +94,50 @@ public class ContractNetInitiator extends SimpleBehaviour {
     private void onResponse(ACLMessage reply) {
         Session s = conversation.sessionOf(reply, true);
         if (s == null || s.state != Session.SENT) {
-            handleOutOfSequence(reply);
+            step("handleOutOfSequence", reply, () -> handleOutOfSequence(reply));
             return;
         }
         switch (reply.getPerformative()) {
             case ACLMessage.PROPOSE -> {
                 s.state = Session.RESPONDED;
                 responses.add(reply);
-                handlePropose(reply, acceptances);
+                step("handlePropose", reply, () -> handlePropose(reply, acceptances));
             }
             case ACLMessage.REFUSE -> {
                 s.state = Session.RESPONDED;
                 responses.add(reply);
-                handleRefuse(reply);
+                step("handleRefuse", reply, () -> handleRefuse(reply));
             }
             case ACLMessage.NOT_UNDERSTOOD -> {
                 s.state = Session.RESPONDED;
                 responses.add(reply);
-                handleNotUnderstood(reply);
+                step("handleNotUnderstood", reply, () -> handleNotUnderstood(reply));
             }
             case ACLMessage.FAILURE -> {
                 s.state = Session.RESPONDED;
                 responses.add(reply);
-                handleFailure(reply);
+                step("handleFailure", reply, () -> handleFailure(reply));
             }
-            default -> handleOutOfSequence(reply);
+            default -> step("handleOutOfSequence", reply, () -> handleOutOfSequence(reply));
         }
     }
 
     private void onResult(ACLMessage reply) {
         Session s = conversation.sessionOf(reply, true);
         if (s == null || s.state != Session.SENT) {
-            handleOutOfSequence(reply);
+            step("handleOutOfSequence", reply, () -> handleOutOfSequence(reply));
             return;
         }
         if (reply.getPerformative() == ACLMessage.INFORM) {
             s.state = Session.DONE;
             resultNotifications.add(reply);
-            handleInform(reply);
+            step("handleInform", reply, () -> handleInform(reply));
         } else if (reply.getPerformative() == ACLMessage.FAILURE) {
             s.state = Session.DONE;
             resultNotifications.add(reply);
-            handleFailure(reply);
+            step("handleFailure", reply, () -> handleFailure(reply));
         } else {
-            handleOutOfSequence(reply);
+            step("handleOutOfSequence", reply, () -> handleOutOfSequence(reply));
         }
     }
 
@@ -142,13 +149,13 @@ public class ContractNetInitiator extends SimpleBehaviour {
             endResponses();
         } else if (phase == COLLECT_RESULTS) {
             finished = true;
-            handleAllResultNotifications(resultNotifications);
+            step("handleAllResultNotifications", null, () -> handleAllResultNotifications(resultNotifications));
         }
     }
 
     /** All answered (or time is up): the user picks, the acceptances go out, results are awaited. */
     private void endResponses() {
-        handleAllResponses(responses, acceptances);
+        step("handleAllResponses", null, () -> handleAllResponses(responses, acceptances));
         Map<String, Session> sessions = conversation.sessions;
         sessions.clear();
         phase = COLLECT_RESULTS;
@@ -177,6 +184,65 @@ public class ContractNetInitiator extends SimpleBehaviour {
             return;
         }
         checkProgress();
+    }
+
+    /**
+     * Runs the step registered for that handler (the reply, if any, under {@link #REPLY_KEY}; the
+     * vectors under {@link #ALL_RESPONSES_KEY}, {@link #ALL_ACCEPTANCES_KEY} (a step adds its
+     * acceptances there) and {@link #ALL_RESULT_NOTIFICATIONS_KEY}), or else the handler.
+     */
+    private void step(String handler, ACLMessage reply, Runnable otherwise) {
+        if (reply != null) {
+            getDataStore().put(REPLY_KEY, reply);
+        }
+        if (!States.run(this, steps.get(handler), getDataStore(), null)) {
+            otherwise.run();
+        }
+    }
+
+    /** In place of {@link #prepareCfps}: reads {@link #CFP_KEY}, puts the Vector of CFPs under {@link #ALL_CFPS_KEY}. Registered steps run on the spot, to their end. */
+    public void registerPrepareCfps(jade.core.behaviours.Behaviour b) {
+        steps.put("prepareCfps", b);
+    }
+
+    /** In place of {@link #handlePropose}: the PROPOSE is under {@link #REPLY_KEY}. */
+    public void registerHandlePropose(jade.core.behaviours.Behaviour b) {
+        steps.put("handlePropose", b);
+    }
+
+    /** In place of {@link #handleRefuse}: the REFUSE is under {@link #REPLY_KEY}. */
+    public void registerHandleRefuse(jade.core.behaviours.Behaviour b) {
+        steps.put("handleRefuse", b);
+    }
+
+    /** In place of {@link #handleInform}: the INFORM is under {@link #REPLY_KEY}. */
+    public void registerHandleInform(jade.core.behaviours.Behaviour b) {
+        steps.put("handleInform", b);
+    }
+
+    /** In place of {@link #handleNotUnderstood}: the message is under {@link #REPLY_KEY}. */
+    public void registerHandleNotUnderstood(jade.core.behaviours.Behaviour b) {
+        steps.put("handleNotUnderstood", b);
+    }
+
+    /** In place of {@link #handleFailure}: the FAILURE is under {@link #REPLY_KEY}. */
+    public void registerHandleFailure(jade.core.behaviours.Behaviour b) {
+        steps.put("handleFailure", b);
+    }
+
+    /** In place of {@link #handleOutOfSequence}: the message is under {@link #REPLY_KEY}. */
+    public void registerHandleOutOfSequence(jade.core.behaviours.Behaviour b) {
+        steps.put("handleOutOfSequence", b);
+    }
+
+    /** In place of {@link #handleAllResponses}: the responses under {@link #ALL_RESPONSES_KEY}, the acceptances to fill under {@link #ALL_ACCEPTANCES_KEY}. */
+    public void registerHandleAllResponses(jade.core.behaviours.Behaviour b) {
+        steps.put("handleAllResponses", b);
+    }
+
+    /** In place of {@link #handleAllResultNotifications}: the Vector is under {@link #ALL_RESULT_NOTIFICATIONS_KEY}. */
+    public void registerHandleAllResultNotifications(jade.core.behaviours.Behaviour b) {
+        steps.put("handleAllResultNotifications", b);
     }
 
     /** The CFPs to send; by default the message given to the constructor. */

@@ -31,7 +31,7 @@ public class SSContractNetResponder extends SimpleBehaviour {
     /** Where a registered step puts its answer, and where the last message received is. */
     public final String REPLY_KEY = "__reply" + hashCode();
 
-    private final ACLMessage cfp;
+    private ACLMessage cfp;
     private ACLMessage propose;
     private MessageTemplate decision;
     private boolean finished;
@@ -65,6 +65,20 @@ public class SSContractNetResponder extends SimpleBehaviour {
             return;
         }
         getDataStore().put(REPLY_KEY, m);
+        if (!checkInSequence(m)) {
+            if (!States.run(this, outOfSequenceStep, getDataStore(), null)) {
+                handleOutOfSequence(cfp, propose, m);
+            }
+            finished = true;
+            return;
+        }
+        if (iterated() && m.getPerformative() == ACLMessage.CFP) {
+            // a new round of an iterated contract net: the new CFP is answered as the first was
+            cfp = m;
+            decision = null;
+            answerCfp();
+            return;
+        }
         if (m.getPerformative() == ACLMessage.ACCEPT_PROPOSAL) {
             getDataStore().put(ACCEPT_PROPOSAL_KEY, m);
             ACLMessage result;
@@ -73,7 +87,12 @@ public class SSContractNetResponder extends SimpleBehaviour {
             } else {
                 result = Replies.answer(m, () -> handleAcceptProposal(cfp, propose, m), ACLMessage.FAILURE);
             }
-            Replies.send(myAgent, result, m);
+            if (result != null) {
+                Replies.complete(result, m);
+                beforeReply(result);
+                myAgent.send(result);
+                afterReply(result);
+            }
         } else if (m.getPerformative() == ACLMessage.REJECT_PROPOSAL) {
             getDataStore().put(REJECT_PROPOSAL_KEY, m);
             if (!States.run(this, rejectStep, getDataStore(), null)) {
@@ -96,7 +115,9 @@ public class SSContractNetResponder extends SimpleBehaviour {
         if (reply != null) {
             Replies.complete(reply, cfp);
             getDataStore().put(PROPOSE_KEY, reply);
+            beforeReply(reply);
             myAgent.send(reply);
+            afterReply(reply);
         }
         if (reply != null && reply.getPerformative() == ACLMessage.PROPOSE) {
             propose = reply;
@@ -112,6 +133,31 @@ public class SSContractNetResponder extends SimpleBehaviour {
     @Override
     public boolean done() {
         return finished;
+    }
+
+    /** Whether a CFP after the PROPOSE opens a new round (an iterated contract net); here no. */
+    boolean iterated() {
+        return false;
+    }
+
+    /**
+     * Whether a message of the conversation after the PROPOSE fits it (by default: an
+     * ACCEPT_PROPOSAL or REJECT_PROPOSAL, and a CFP in an iterated contract net); one that does
+     * not goes to {@link #handleOutOfSequence} and ends the responder.
+     */
+    protected boolean checkInSequence(ACLMessage received) {
+        int p = received.getPerformative();
+        return p == ACLMessage.ACCEPT_PROPOSAL || p == ACLMessage.REJECT_PROPOSAL || iterated() && p == ACLMessage.CFP;
+    }
+
+    /** Called just before each reply is sent. JADE's default does nothing. */
+    protected void beforeReply(ACLMessage reply) {
+        // JADE's documented default: nothing (a hook for subclasses).
+    }
+
+    /** Called just after each reply is sent. JADE's default does nothing. */
+    protected void afterReply(ACLMessage reply) {
+        // JADE's documented default: nothing (a hook for subclasses).
     }
 
     /** The answer to the CFP: PROPOSE, REFUSE or NOT_UNDERSTOOD; by default none (null), and the responder ends. */

@@ -79,6 +79,8 @@ class NoSilentMethodsTest {
             Map.entry("jade.proto.SSContractNetResponder.handleAcceptProposal", "JADE: no result by default (null), the user's hook"),
             Map.entry("jade.proto.SSContractNetResponder.handleRejectProposal", "JADE: empty default handler"),
             Map.entry("jade.proto.SSContractNetResponder.handleOutOfSequence", "JADE: empty default handler"),
+            Map.entry("jade.proto.SSContractNetResponder.beforeReply", "JADE: empty default hook (SSResponder)"),
+            Map.entry("jade.proto.SSContractNetResponder.afterReply", "JADE: empty default hook (SSResponder)"),
             Map.entry("jade.proto.SimpleAchieveREInitiator.prepareRequest", "JADE: the request as given, by default"),
             Map.entry("jade.proto.states.MsgReceiver.handleMessage", "JADE: empty default hook"),
             Map.entry("jade.core.Runtime.getVersion", "a constant: the JADE API version this jar follows"),
