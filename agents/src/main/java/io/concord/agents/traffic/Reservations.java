@@ -90,6 +90,9 @@ final class Reservations<T> {
     public record Stalled<T>(String chair, long sinceMs, long forMs, String waitsFor) implements Outcome<T> {
     }
 
+    /** How long a chair is idle off the parking places before it is sent home (a next task usually comes sooner). */
+    public static final long HOME_AFTER_MS = 30_000;
+
     /** How long a chair sent aside shields a cycle it is in before the cycle is broken by the other rules. */
     public static final long ASIDE_GRACE_MS = 30_000;
 
@@ -151,6 +154,8 @@ final class Reservations<T> {
     private final Set<String> calledOff = new HashSet<>();
     /** Idle chairs already sent home, until they ask for a route again. */
     private final Set<String> sentHome = new HashSet<>();
+    /** chair -> since when it is idle. */
+    private final Map<String, Long> idleSince = new HashMap<>();
     /** The time of the call being answered. */
     private long clock;
     private long alarms;
@@ -310,6 +315,7 @@ final class Reservations<T> {
         clock = nowMs;
         progressAt.putIfAbsent(chair, nowMs);
         sentHome.remove(chair);
+        idleSince.remove(chair);
         Integer target = aside.get(chair);
         List<Long> keep = wholes(at);
         boolean stepping = asked && target != null && path.contains(target);
@@ -355,6 +361,7 @@ final class Reservations<T> {
         hold(chair, keep);
         standing.put(chair, new ArrayList<>(at));
         idle.add(chair);
+        idleSince.putIfAbsent(chair, nowMs);
         goals.remove(chair);
         clock = nowMs;
         progressAt.remove(chair);
@@ -837,7 +844,7 @@ final class Reservations<T> {
     }
 
     /**
-     * Idle chairs go home: one idle off the map's parking places (in a patient's room, say) is sent to
+     * Idle chairs go home: one idle for {@link #HOME_AFTER_MS} off the map's parking places (in a patient's room, say) is sent to
      * the nearest parking place nobody holds or needs, by hops over free nodes, ties in the map's
      * order of places; once until it asks for a route again.
      */
@@ -851,7 +858,7 @@ final class Reservations<T> {
                 continue;
             }
             int at = node(mine.get(0));
-            if (parking.contains(at)) {
+            if (parking.contains(at) || clock - idleSince.getOrDefault(chair, clock) < HOME_AFTER_MS) {
                 continue;
             }
             sentHome.add(chair);

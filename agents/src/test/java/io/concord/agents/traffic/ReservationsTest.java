@@ -315,25 +315,34 @@ class ReservationsTest {
             """), "test");
 
     /**
-     * An idle chair goes home: idle in the patient's room (6), it is sent to the nearest parking
-     * place nobody holds: 1 and 5 are both three hops away, and the map names 5 first. Once there,
-     * idle again, it stays.
+     * An idle chair goes home: idle in the patient's room (6) for 30 s, it is sent to the nearest
+     * parking place nobody holds: 1 and 5 are both three hops away, and the map names 5 first. Once
+     * there, idle again, it stays.
      */
     @Test
     void anIdleChairInAPatientsRoomGoesToTheNearestFreeParkingPlace() {
         Reservations<String> rules = new Reservations<>(PARKED, TrafficSettings.standard());
         rules.heard("a", 0);
-        List<Outcome<String>> out = rules.idle("a", List.of(6), 0);
+        assertEquals(List.of(), only(rules.idle("a", List.of(6), 0), MakeWay.class), "not at once: a next task usually comes sooner");
+        rules.heard("a", 29_999);
+        assertEquals(List.of(), only(rules.review(29_999), MakeWay.class));
+        rules.heard("a", 30_000);
+        List<Outcome<String>> out = rules.review(30_000);
         assertEquals(List.of(new MakeWay<>("a", 6, 5, List.of(3, 4, 5))), only(out, MakeWay.class), out.toString());
-        rules.heard("a", 10);
-        rules.reserve("a", "home", List.of(6), List.of(6, 3, 4, 5), true, 10);
+        rules.heard("a", 30_010);
+        rules.reserve("a", "home", List.of(6), List.of(6, 3, 4, 5), true, 30_010);
         for (int n : List.of(6, 3, 4)) {
-            rules.release("a", n, 20);
+            rules.release("a", n, 30_020);
         }
-        assertEquals(List.of(), only(rules.idle("a", List.of(5), 30), MakeWay.class), "home: it stays");
+        rules.idle("a", List.of(5), 30_030);
+        rules.heard("a", 90_000);
+        assertEquals(List.of(), only(rules.review(90_000), MakeWay.class), "home: it stays");
         // Another idle in the room goes to 1: 5 is taken.
-        rules.heard("b", 40);
-        assertEquals(List.of(new MakeWay<>("b", 6, 1, List.of(3, 2, 1))), only(rules.idle("b", List.of(6), 40), MakeWay.class));
+        rules.heard("b", 90_000);
+        rules.idle("b", List.of(6), 90_000);
+        rules.heard("a", 120_000);
+        rules.heard("b", 120_000);
+        assertEquals(List.of(new MakeWay<>("b", 6, 1, List.of(3, 2, 1))), only(rules.review(120_000), MakeWay.class));
     }
 
     /** The same with the rule off: the chair stays in the patient's room. */

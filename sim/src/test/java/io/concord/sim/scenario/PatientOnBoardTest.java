@@ -149,7 +149,7 @@ class PatientOnBoardTest {
         assertTrue(a != null, "an alarm for T1's chair: " + alarms);
         assertTrue(a.urgent(), "urgent: the patient is on board: " + a);
         assertTrue(a.seconds() >= 120, a.toString());
-        assertTrue(a.waits().contains("node 10") && a.waits().contains("blocker"), "it names what it waits for: " + a.waits());
+        assertTrue(a.waits().contains(" 10, ") && a.waits().contains("in the way: [blocker]"), "it names what it waits for: " + a.waits());
     }
 
     /** The same with the monitor's alarm switched off on this traffic agent: nobody is told. */
