@@ -412,11 +412,7 @@ public final class HttpMtp implements Gateway {
         String host = null;
         for (String a : to.addresses()) {
             if (a.regionMatches(true, 0, "http://", 0, 7)) {
-                try {
-                    host = java.net.URI.create(a).getHost();
-                } catch (IllegalArgumentException e) {
-                    host = a;
-                }
+                host = hostOf(a);
                 break;
             }
         }

@@ -158,8 +158,9 @@ public final class ObserverLayer extends Layer {
     }
 
     private void serve(AclMessage m) {
-        Policy.Decision d = policy.decide(Policy.principalOf(m, ctx.host().platformName()), Policy.serviceOf(m));
-        String own = guarded.get(Policy.serviceOf(m));
+        Policy.Service service = Policy.serviceOf(m);
+        Policy.Decision d = policy.decide(Policy.principalOf(m, ctx.host().platformName()), service);
+        String own = guarded.get(service);
         if (d.allowed() && own != null) {
             d = new Policy.Decision(false, own);
         }
