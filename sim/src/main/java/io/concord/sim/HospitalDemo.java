@@ -540,6 +540,11 @@ public final class HospitalDemo {
                     + "transports there). Ctrl-C stops them.");
             ward.waitFor();
         }
+        // A ward that ended before the launcher stops it died: so told, whichever JVM's end was seen
+        // first (the staff's JVM may end on the ward's death before the ward's own exit is reported).
+        if (!ward.isAlive()) {
+            wardFailure.compareAndSet(null, "its JVM ended (exit code " + ward.exitValue() + ")");
+        }
         for (Process p : List.of(staff, ward)) {
             p.destroy();   // the ward's shutdown hook writes the picture
             if (!p.waitFor(20, TimeUnit.SECONDS)) {
