@@ -1147,6 +1147,11 @@ public final class BenchMain {
                 SerialBench.percentile(o.cmdToMotorUs(), 50), SerialBench.percentile(o.cmdToMotorUs(), 99), o.cmdToMotorUs().length,
                 SerialBench.percentile(o.sensorToAgentUs(), 50), SerialBench.percentile(o.sensorToAgentUs(), 99), o.sensorToAgentUs().length,
                 SerialBench.percentile(o.watchdogStopMs(), 50), SerialBench.percentile(o.watchdogStopMs(), 99), o.watchdogStopMs().length));
+        md.append(String.format(Locale.ROOT, "%nA reopen mid-drive (the board falls silent while the agents drive at 60 %%; the host "
+                        + "finds the link down, opens the port again and starts a new session): %d session(s) started, %d host frames "
+                        + "taken by the board on it before any resume, **%d of them a DRIVE other than 0, 0** (must be 0: the host "
+                        + "forgets its command at every hold, before the port is used again).%n",
+                o.reopenSessions(), o.reopenFrames(), o.reopenNonNeutralFrames()));
         HeartbeatBench.Outcome hb;
         try {
             hb = HeartbeatBench.run(full);

@@ -15,12 +15,15 @@ import java.util.function.Consumer;
  *
  * <p>Its safety rules, which no host frame can override:
  * <ul>
- *   <li>the watchdog: no valid host frame for {@link #WATCHDOG_MS} and the motors go to zero,
- *       WATCHDOG is reported, and driving needs a neutral command again;</li>
- *   <li>switch-on: until a STOP or a DRIVE of 0, 0 arrives, a non-neutral DRIVE is refused (NAK
- *       not-neutral) and the motors stay at zero;</li>
- *   <li>the e-stop wins over everything: while pressed the motors are at zero, DRIVE is refused
- *       (NAK e-stop), and driving needs a neutral command after its release;</li>
+ *   <li>armed only by an ARM (version 3), for its own boot number and its own reason for being
+ *       disarmed, with the e-stop released: no neutral command, no heartbeat arms it, so a host
+ *       fault that sends frames automatically cannot re-arm it;</li>
+ *   <li>disarmed, a DRIVE other than 0, 0 is refused (NAK not armed) and the motors stay at zero;</li>
+ *   <li>the watchdog: no valid host frame for {@link #WATCHDOG_MS} while armed and the motors go to
+ *       zero, WATCHDOG is reported, and it is disarmed;</li>
+ *   <li>switch-on disarms;</li>
+ *   <li>the e-stop wins over everything: while pressed the motors are at zero, DRIVE and ARM are
+ *       refused (NAK e-stop), and it is disarmed;</li>
  *   <li>a host's new session (a SYNC PING) disarms it: a new host never inherits motion.</li>
  * </ul>
  * Every STATE says whether it is armed and, if not, why (switch-on, watchdog, e-stop, new
@@ -53,6 +56,7 @@ public final class Board {
     private int rightPermille;
     private long accepted;
     private Consumer<String> trace;
+    private boolean armStep = true;
 
     /**
      * @param chair    the motors and sensors
@@ -69,6 +73,16 @@ public final class Board {
     }
 
     /**
+     * This board arms on any neutral command (a STOP, a DRIVE of 0, 0) as version 2 did, not only on an
+     * ARM: for the tests that show what the ARM step stands against (the host's heartbeat re-arming the
+     * board). Never in firmware.
+     */
+    public Board withoutArmStep() {
+        armStep = false;
+        return this;
+    }
+
+    /**
      * Switches on at {@code nowMs} on the board's clock with boot number {@code boot} (one more
      * than at the last switch-on): sends HELLO, motors at zero, not armed, its sequence and its
      * encoder counts from 0. Called again, it is a reboot.
@@ -81,6 +95,7 @@ public final class Board {
         seq = 0;
         lastHostMs = -1;
         tripped = false;
+        stateHz = 20;   // a restarted board sends at 20 Hz until configured again
         halt(BoardProtocol.DISARMED_SWITCH_ON);
         ChairReadings r = chair.latest();
         leftBase = r == null ? 0 : r.leftTicks();
@@ -137,7 +152,11 @@ public final class Board {
             chair.stop();
         }
         if (nowMs >= nextStateMs) {
-            nextStateMs = Math.max(nextStateMs + 1000 / stateHz, nowMs);
+            // On the configured cadence; a board late past a whole period starts it again from now (no burst).
+            nextStateMs += 1000 / stateHz;
+            if (nextStateMs <= nowMs) {
+                nextStateMs = nowMs + 1000 / stateHz;
+            }
             sendState();
         }
     }
@@ -184,19 +203,36 @@ public final class Board {
                     if (estop) {
                         send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_ESTOP, armed ? BoardProtocol.ARMED : disarmedBy));
                     } else if (neutral) {
-                        arm();
+                        if (!armStep) {
+                            arm();
+                        }
                         motors(0, 0);
                     } else if (!armed) {
-                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_NOT_NEUTRAL, armed ? BoardProtocol.ARMED : disarmedBy));
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_NOT_ARMED, disarmedBy));
                     } else {
                         motors(p[0], p[1]);
                     }
                 }
                 case Frame.Type.STOP -> {
-                    if (!estop) {
+                    if (!estop && !armStep) {
                         arm();
                     }
                     motors(0, 0);
+                }
+                case Frame.Type.ARM -> {
+                    BoardProtocol.Arm a = BoardProtocol.readArm(f);
+                    if (estop) {
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_ESTOP, disarmedBy));
+                    } else if (armed) {
+                        send(Frame.Type.ACK, 0, BoardProtocol.ack(f.seq(), 0));   // armed already: the host's repeat
+                    } else if (a.boot() != boot || a.reason() != disarmedBy) {
+                        // The host decided on another state than this one: a reboot or a new disarm since.
+                        send(Frame.Type.NAK, 0, BoardProtocol.nak(f.seq(), BoardProtocol.NAK_STALE_ARM, disarmedBy));
+                    } else {
+                        arm();
+                        motors(0, 0);
+                        send(Frame.Type.ACK, 0, BoardProtocol.ack(f.seq(), 0));
+                    }
                 }
                 case Frame.Type.CONFIGURE -> {
                     Frame.Fields r = f.fields();
@@ -304,7 +340,7 @@ public final class Board {
         return disarmedBy;
     }
 
-    /** True once a neutral command has been taken since switch-on, a trip, the e-stop or a new session. */
+    /** True once an ARM was taken since switch-on, a trip, the e-stop or a new session (or, without the ARM step, a neutral command). */
     public boolean armed() {
         return armed;
     }

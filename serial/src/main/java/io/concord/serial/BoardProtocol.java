@@ -14,17 +14,22 @@ import java.util.Set;
 public final class BoardProtocol {
     /** A range with no reading (nothing seen within the sensor's range). */
     public static final int NO_RANGE = 0xFFFF;
-    /** NAK reasons. */
-    public static final int NAK_NOT_NEUTRAL = 1;
+    /** NAK reasons: a DRIVE other than 0, 0 to a board that is not armed. */
+    public static final int NAK_NOT_ARMED = 1;
     /** NAK: the body could not be read. */
     public static final int NAK_MALFORMED = 2;
     /** NAK: the e-stop is pressed. */
     public static final int NAK_ESTOP = 3;
     /** NAK: a frame type the board does not take. */
     public static final int NAK_UNKNOWN = 4;
+    /**
+     * NAK (version 3): an ARM for another state than the board's: its boot number or its reason is not the board's
+     * now (the board restarted, or was disarmed again, after the STATE the host decided on).
+     */
+    public static final int NAK_STALE_ARM = 5;
 
-    /** The protocol's version, the first byte of HELLO. */
-    public static final int VERSION = 2;
+    /** The protocol's version, the first byte of HELLO's body (HELLO's type is 0x85 from version 3 on). */
+    public static final int VERSION = 3;
 
     /** STATE's reason: the board is armed. */
     public static final int ARMED = 0;
@@ -52,10 +57,11 @@ public final class BoardProtocol {
     /** A NAK reason in words. */
     public static String nakReason(int reason) {
         return switch (reason) {
-            case NAK_NOT_NEUTRAL -> "not neutral";
+            case NAK_NOT_ARMED -> "not armed";
             case NAK_MALFORMED -> "malformed";
             case NAK_ESTOP -> "e-stop";
             case NAK_UNKNOWN -> "unknown type";
+            case NAK_STALE_ARM -> "arm for another state";
             default -> "reason " + reason;
         };
     }
@@ -97,6 +103,29 @@ public final class BoardProtocol {
             throw new FrameException("malformed", "drive powers " + l + ", " + rt + " are outside -1000..1000 per mille");
         }
         return new int[] {l, rt};
+    }
+
+    // ---- ARM --------------------------------------------------------------------------------------
+
+    /** ARM: the board's boot number and its reason for not being armed, from the STATE the host decided on. */
+    public static byte[] arm(long boot, int reason) {
+        return new Frame.Builder().i32(boot).u8(reason).bytes();
+    }
+
+    /** An ARM's fields: the boot number and the reason it names. */
+    public record Arm(long boot, int reason) {
+    }
+
+    /** Reads an ARM; malformed if its reason is not one of STATE's reasons for being disarmed (1 to 4). */
+    public static Arm readArm(Frame f) {
+        Frame.Fields r = f.fields();
+        long boot = r.i32() & 0xFFFFFFFFL;
+        int reason = r.u8();
+        r.end();
+        if (reason < DISARMED_SWITCH_ON || reason > DISARMED_SESSION) {
+            throw new FrameException("malformed", "ARM names reason " + reason + "; a disarmed board's reasons are 1 to 4");
+        }
+        return new Arm(boot, reason);
     }
 
     // ---- CONFIGURE, PING, ACK, NAK ------------------------------------------------------------------
@@ -251,13 +280,16 @@ public final class BoardProtocol {
     public record Hello(int version, long boot, String firmware, ChairLayout layout) {
     }
 
-    /** A HELLO's version alone: its first byte (a version-1 board sends its firmware name's length there). */
+    /**
+     * A HELLO's version alone: the first byte of a HELLO (type 0x85, version 3 on); -1 for a body too short, and
+     * for the HELLO of versions 1 and 2 (type 0x82), whose first byte cannot tell them apart.
+     */
     public static int version(Frame f) {
         byte[] b = f.body();
-        return b.length == 0 ? -1 : b[0] & 0xFF;
+        return f.type() != Frame.Type.HELLO || b.length == 0 ? -1 : b[0] & 0xFF;
     }
 
-    /** Reads a version-2 HELLO; check {@link #version} first. */
+    /** Reads a version-3 HELLO's body (type 0x85); check {@link #version} first. */
     public static Hello readHello(Frame f) {
         Frame.Fields r = f.fields();
         int version = r.u8();

@@ -27,10 +27,20 @@ public record Frame(int type, int flags, int seq, long timeMs, byte[] body) {
         public static final int CONFIGURE = 0x03;
         /** Host to board: are you there (a nonce, echoed in the ACK); with SYNC, a new session, which disarms the board. */
         public static final int PING = 0x04;
+        /**
+         * Host to board (version 3): arm, for the board's boot number and the reason it is not armed, as the host's
+         * last STATE showed them; sent only when the host's supervisor resumes, never by the heartbeat.
+         */
+        public static final int ARM = 0x05;
         /** Board to host: boot number, encoders, ranges, bumper, e-stop, armed (and why not), battery, faults, and a marker fix. */
         public static final int STATE = 0x81;
-        /** Board to host: the protocol's version, the boot number, the firmware's version and the chair's layout. */
-        public static final int HELLO = 0x82;
+        /**
+         * Board to host, versions 1 and 2 only: their HELLO, whose first byte was ambiguous (a version-2 board's
+         * version, a version-1 board's firmware name's length). A host of version 3 refuses such a board.
+         */
+        public static final int OLD_HELLO = 0x82;
+        /** Board to host, from version 3: the protocol's version, the boot number, the firmware's version and the chair's layout. */
+        public static final int HELLO = 0x85;
         /** Board to host: a host frame taken. */
         public static final int ACK = 0x83;
         /** Board to host: a host frame refused, with the reason and why the board is not armed. */
@@ -46,6 +56,8 @@ public record Frame(int type, int flags, int seq, long timeMs, byte[] body) {
                 case STOP -> "STOP";
                 case CONFIGURE -> "CONFIGURE";
                 case PING -> "PING";
+                case ARM -> "ARM";
+                case OLD_HELLO -> "HELLO (version 1 or 2)";
                 case STATE -> "STATE";
                 case HELLO -> "HELLO";
                 case ACK -> "ACK";

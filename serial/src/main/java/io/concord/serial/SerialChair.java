@@ -25,7 +25,7 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.stream.Collectors;
 
 /**
- * A real chair's board over a serial port (docs/chair-protocol.md, version 2), as a
+ * A real chair's board over a serial port (docs/chair-protocol.md, version 3), as a
  * {@link ChairDriver}: the control agent drives it as it drives the simulated chair, through a
  * {@link io.concord.agents.chair.ChairSupervisor}.
  *
@@ -51,7 +51,8 @@ import java.util.stream.Collectors;
  * {@link #holdMotion()}, and a host that was frozen (nothing sent for {@link Settings#frozenMs()}
  * while the command drove: the command predates the freeze, and is never sent after it). Until
  * the supervisor resumes ({@link #releaseMotion()}) only neutral frames go out, whatever the
- * agents ask.
+ * agents ask. The board arms only on an ARM, which goes out only on the supervisor's resume
+ * ({@link #arm()}), never from the heartbeat.
  *
  * <p>When the port goes away, or the board falls silent for {@link Settings#silentMs()}, the port
  * is closed, the listener is told the chair is offline (a reading with the LINK fault, then
@@ -166,6 +167,11 @@ public final class SerialChair implements ChairDriver {
     private boolean motionHeld = true;
     /** When the last frame went to the board in this session, or -1 before the first. */
     private long lastWriteNanos = -1;
+    /** Under sendLock: when the last ARM went out, -1 for none this session. */
+    private long lastArmNanos = -1;
+    /** The last STATE taken (the loop's thread writes it): what an ARM names. */
+    private volatile BoardProtocol.State lastState;
+    private final java.util.concurrent.atomic.AtomicLong armsSent = new java.util.concurrent.atomic.AtomicLong();
     // heartbeat thread
     private final long[] gapsUs = new long[1 << 16];
     private volatile int gapCount;
@@ -306,6 +312,43 @@ public final class SerialChair implements ChairDriver {
         synchronized (sendLock) {
             motionHeld = false;
         }
+    }
+
+    /**
+     * The supervisor's resume, while the board is not armed: one ARM for the boot number and the
+     * reason the last STATE showed (at most one per {@link #ARM_REPEAT_MS}; the supervisor asks again
+     * at each reading until a STATE says armed). Nothing when the last STATE showed the board armed
+     * or its e-stop pressed, before a new session's first STATE, or with a board of another version.
+     * The heartbeat never sends an ARM. The loop's thread.
+     */
+    @Override
+    public void arm() {
+        BoardProtocol.State s = lastState;
+        if (s == null || s.armed() || s.estop() || incompatible != null) {
+            return;
+        }
+        long now = clock.nanoTime();
+        synchronized (sendLock) {
+            if (port == null || sync || lastArmNanos >= 0 && now - lastArmNanos < ARM_REPEAT_MS * 1_000_000) {
+                return;
+            }
+            lastArmNanos = now;
+            write(Frame.Type.ARM, BoardProtocol.arm(s.boot(), s.reason()));
+        }
+        armsSent.incrementAndGet();
+    }
+
+    /** True if the board's last word (a STATE, a NAK, a new boot) says it is armed. The loop's thread. */
+    public boolean boardArmed() {
+        return Boolean.TRUE.equals(boardArmed);
+    }
+
+    /** The least time between two ARMs. */
+    public static final long ARM_REPEAT_MS = 100;
+
+    /** ARM frames sent: one per resume, and again for one lost or stale. */
+    public long armsSent() {
+        return armsSent.get();
     }
 
     /** True while only neutral goes out (a hold, until the supervisor resumes). */
@@ -684,9 +727,11 @@ public final class SerialChair implements ChairDriver {
         staleAtFrame = receiver.drops().get("stale");
         droppedAtFrame = receiver.drops().total();
         driftLogged = false;
+        lastState = null;   // an ARM waits for this session's first STATE
         synchronized (sendLock) {
             // A new session never carries the last one's command: cleared before the port is used.
             neutralOnly();
+            lastArmNanos = -1;
             sync = true;
             stopSent = false;
             lastWriteNanos = -1;
@@ -770,11 +815,12 @@ public final class SerialChair implements ChairDriver {
                     }
                     runtime.execute(() -> onState(f, s));
                 }
-                case Frame.Type.HELLO -> {
+                case Frame.Type.HELLO, Frame.Type.OLD_HELLO -> {
                     int v = BoardProtocol.version(f);
                     if (v != BoardProtocol.VERSION) {
-                        String why = "the board speaks version " + v + " of the chair protocol (the first byte of its HELLO;"
-                                + " a version-1 board sends its firmware name's length there), this host speaks version "
+                        String speaks = f.type() == Frame.Type.OLD_HELLO ? "version 1 or 2 of the chair protocol (its HELLO has type 0x82)"
+                                : "version " + v + " of the chair protocol (the first byte of its HELLO)";
+                        String why = "the board speaks " + speaks + ", this host speaks version "
                                 + BoardProtocol.VERSION + ": nothing the board says is taken; update its firmware to"
                                 + " docs/chair-protocol.md version " + BoardProtocol.VERSION;
                         if (!why.equals(incompatible)) {
@@ -828,6 +874,13 @@ public final class SerialChair implements ChairDriver {
     }
 
     private void onNak(BoardProtocol.Nak n) {
+        if (n.reason() == BoardProtocol.NAK_STALE_ARM) {
+            // An ARM for a state the board has left (a reboot, a new disarm): the supervisor asks
+            // again on the next STATE, for the state it shows; not a refusal of a command.
+            LOG.info("{}: the board refused an ARM for another state (now not armed: {}); arms again on its next STATE",
+                    settings.name(), BoardProtocol.disarmedBy(n.disarmedBy()));
+            return;
+        }
         if (n.disarmedBy() != BoardProtocol.ARMED && !Boolean.FALSE.equals(boardArmed)) {
             // The refusal says the board is not armed, and why, before any STATE could: the
             // host's next neutral command may re-arm it before the next STATE is sent.
@@ -849,6 +902,7 @@ public final class SerialChair implements ChairDriver {
     }
 
     private void onState(Frame f, BoardProtocol.State s) {
+        lastState = s;
         if (!online) {
             setOnline(true);
         }

@@ -16,6 +16,7 @@ import java.util.Set;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The board's safety rules, frame by frame, on the board's own clock. */
@@ -72,6 +73,11 @@ class BoardTest {
             board.switchOn(0);
         }
 
+        /** The supervisor's resume: an ARM for the board's state as it is now (as its last STATE would show it). */
+        void arm() {
+            host(Frame.Type.ARM, 0, BoardProtocol.arm(board.boot(), board.disarmedBy()));
+        }
+
         void host(int type, int flags, byte[] body) {
             byte[] b = codec.encode(new Frame(type, flags, seq++, now, body));
             board.onBytes(b, 0, b.length, now);
@@ -109,22 +115,25 @@ class BoardTest {
     }
 
     @Test
-    void atSwitchOnANonNeutralDriveIsRefusedUntilAStop() {
+    void atSwitchOnANonNeutralDriveIsRefusedUntilAnArm() {
         Bench b = new Bench();
         assertEquals(Frame.Type.HELLO, b.fromBoard.get(0).type(), "HELLO at switch-on");
         b.drive(500, 500);
         assertEquals(0.0, b.motors.left);
-        assertEquals(List.of(BoardProtocol.NAK_NOT_NEUTRAL), b.naks());
+        assertEquals(List.of(BoardProtocol.NAK_NOT_ARMED), b.naks());
         b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(500, 400);
+        assertEquals(0.0, b.motors.left, "a STOP does not arm (version 3)");
+        b.arm();
         b.drive(500, 400);
         assertEquals(50.0, b.motors.left);
         assertEquals(40.0, b.motors.right);
     }
 
     @Test
-    void theWatchdogStopsTheMotorsAfter200MsOfSilenceAndDrivingNeedsNeutralAgain() {
+    void theWatchdogStopsTheMotorsAfter200MsOfSilenceAndDrivingNeedsAnArmAgain() {
         Bench b = new Bench();
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.drive(300, 300);
         b.at(150);
         assertEquals(30.0, b.motors.left, "still within 200 ms");
@@ -138,8 +147,11 @@ class BoardTest {
         assertTrue(b.lastState().faults().contains(ChairFault.WATCHDOG));
         b.drive(300, 300);
         assertFalse(b.board.tripped(), "a valid frame clears the trip");
-        assertEquals(0.0, b.motors.left, "but driving needs a neutral command first");
+        assertEquals(0.0, b.motors.left, "but driving needs an ARM first");
         b.drive(0, 0);
+        b.drive(300, 300);
+        assertEquals(0.0, b.motors.left, "a neutral DRIVE does not arm");
+        b.arm();
         b.drive(300, 300);
         assertEquals(30.0, b.motors.left);
         b.at(450);
@@ -149,13 +161,13 @@ class BoardTest {
     @Test
     void theEstopWinsOverEverything() {
         Bench b = new Bench();
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.drive(600, 600);
         assertEquals(60.0, b.motors.left);
         b.board.estop(true, 10);
         assertEquals(0.0, b.motors.left);
         b.drive(600, 600);
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.drive(600, 600);
         assertEquals(0.0, b.motors.left, "no command moves it while the e-stop is pressed");
         assertTrue(b.naks().contains(BoardProtocol.NAK_ESTOP));
@@ -163,8 +175,11 @@ class BoardTest {
         assertTrue(b.lastState().estop());
         b.board.estop(false, 70);
         b.drive(600, 600);
-        assertEquals(0.0, b.motors.left, "released: neutral first");
+        assertEquals(0.0, b.motors.left, "released: an ARM first");
         b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.drive(600, 600);
+        assertEquals(0.0, b.motors.left, "a STOP does not arm");
+        b.arm();
         b.drive(600, 600);
         assertEquals(60.0, b.motors.left);
     }
@@ -172,7 +187,7 @@ class BoardTest {
     @Test
     void aStaleOrRepeatedHostFrameDoesNotDrive() {
         Bench b = new Bench();
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.at(100);
         // A DRIVE stamped 300 ms before the host's clock says now: delayed on the way.
         byte[] late = b.codec.encode(new Frame(Frame.Type.DRIVE, 0, b.seq++, -200 & 0xFFFFFFFFL, BoardProtocol.drive(800, 800)));
@@ -190,7 +205,7 @@ class BoardTest {
     @Test
     void aMalformedDriveIsRefusedAndChangesNothing() {
         Bench b = new Bench();
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.drive(100, 100);
         b.host(Frame.Type.DRIVE, 0, new byte[] {1, 2, 3});
         assertEquals(10.0, b.motors.left);
@@ -206,7 +221,7 @@ class BoardTest {
         b.at(0);
         assertFalse(b.lastState().armed());
         assertEquals(BoardProtocol.DISARMED_SWITCH_ON, b.lastState().reason());
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.at(50);
         assertTrue(b.lastState().armed());
         assertEquals(BoardProtocol.ARMED, b.lastState().reason());
@@ -230,7 +245,7 @@ class BoardTest {
     @Test
     void aSyncDisarmsTheBoard() {
         Bench b = new Bench();
-        b.host(Frame.Type.STOP, 0, new byte[0]);
+        b.arm();
         b.drive(400, 400);
         assertEquals(40.0, b.motors.left);
         b.host(Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(9));
@@ -238,7 +253,7 @@ class BoardTest {
         assertFalse(b.board.armed());
         assertEquals(BoardProtocol.DISARMED_SESSION, b.board.disarmedBy());
         b.drive(400, 400);
-        assertEquals(0.0, b.motors.left, "driving needs neutral again");
+        assertEquals(0.0, b.motors.left, "driving needs an ARM again");
     }
 
     /** A reboot: the next boot number, seq 0, counts from 0, not armed. */
@@ -258,5 +273,96 @@ class BoardTest {
         assertEquals(2, b.lastState().boot());
         assertFalse(b.lastState().armed());
         assertEquals(BoardProtocol.DISARMED_SWITCH_ON, b.lastState().reason());
+    }
+
+    /**
+     * The board's own rule, independent of the host: no neutral command arms it, however many, after
+     * switch-on, a watchdog trip, an e-stop's release or a new session; only an ARM for its state.
+     * Shown to fail on a board that arms on neutral, as version 2 did (the host's heartbeat re-armed it).
+     */
+    @Test
+    void noHeartbeatArmsTheBoardOnlyAnArm() {
+        neutralNeverArms(new Bench());
+        Bench v2 = new Bench();
+        v2.board.withoutArmStep();
+        assertThrows(AssertionError.class, () -> neutralNeverArms(v2), "a board that arms on neutral is re-armed by the heartbeat");
+    }
+
+    private static void neutralNeverArms(Bench b) {
+        long t = 0;
+        for (String after : List.of("switch-on", "watchdog", "e-stop", "new session")) {
+            switch (after) {
+                case "watchdog" -> {
+                    b.arm();
+                    assertTrue(b.board.armed(), "armed by the ARM");
+                    b.at(t += 250);
+                }
+                case "e-stop" -> {
+                    b.board.estop(true, t += 10);
+                    b.board.estop(false, t += 10);
+                }
+                case "new session" -> {
+                    b.arm();
+                    b.host(Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(7));
+                }
+                default -> { }
+            }
+            // A second of the heartbeat: STOP once, then DRIVE 0, 0 every 50 ms.
+            b.host(Frame.Type.STOP, 0, new byte[0]);
+            for (int i = 0; i < 20; i++) {
+                b.at(t += 50);
+                b.drive(0, 0);
+            }
+            assertFalse(b.board.armed(), "armed by the host's neutral frames after " + after);
+            b.drive(300, 300);
+            assertEquals(0.0, b.motors.left, "driven after " + after + " with no ARM");
+            b.arm();
+            b.drive(300, 300);
+            assertEquals(30.0, b.motors.left, "the ARM for its state arms it after " + after);
+            b.host(Frame.Type.STOP, 0, new byte[0]);
+        }
+    }
+
+    /** An ARM names the state it was decided on: another boot, another reason, or the e-stop pressed, and it is refused. */
+    @Test
+    void anArmForAnotherStateIsRefused() {
+        Bench b = new Bench();
+        b.host(Frame.Type.ARM, 0, BoardProtocol.arm(b.board.boot() + 1, b.board.disarmedBy()));
+        b.host(Frame.Type.ARM, 0, BoardProtocol.arm(b.board.boot(), BoardProtocol.DISARMED_WATCHDOG));
+        assertFalse(b.board.armed());
+        assertEquals(List.of(BoardProtocol.NAK_STALE_ARM, BoardProtocol.NAK_STALE_ARM), b.naks());
+        b.board.estop(true, 5);
+        b.arm();
+        assertFalse(b.board.armed(), "the e-stop is pressed");
+        assertEquals(BoardProtocol.NAK_ESTOP, b.naks().get(2));
+        b.host(Frame.Type.ARM, 0, BoardProtocol.arm(b.board.boot(), 9));
+        assertEquals(BoardProtocol.NAK_MALFORMED, b.naks().get(3), "a reason that is no reason");
+        b.board.estop(false, 10);
+        b.arm();
+        assertTrue(b.board.armed());
+        int naks = b.naks().size();
+        b.host(Frame.Type.ARM, 0, BoardProtocol.arm(b.board.boot(), BoardProtocol.DISARMED_ESTOP));
+        assertTrue(b.board.armed(), "a repeated ARM when armed is only acknowledged");
+        assertEquals(naks, b.naks().size());
+    }
+
+    /** The state rate: a SYNC keeps what CONFIGURE set; a restart goes back to 20 Hz until configured. */
+    @Test
+    void theStateRateSurvivesASyncNotARestart() {
+        Bench b = new Bench();
+        b.host(Frame.Type.CONFIGURE, 0, BoardProtocol.configure(50));
+        b.host(Frame.Type.PING, Frame.SYNC, BoardProtocol.ping(3));
+        assertEquals(50, states(b, 1_000, 2_000), "50 Hz after the SYNC");
+        b.board.switchOn(2, 2_000);
+        assertEquals(20, states(b, 2_000, 3_000), "20 Hz after a restart");
+    }
+
+    private static int states(Bench b, long from, long to) {
+        b.board.tick(from);
+        b.fromBoard.clear();
+        for (long t = from + 1; t <= to; t++) {
+            b.board.tick(t);
+        }
+        return (int) b.fromBoard.stream().filter(f -> f.type() == Frame.Type.STATE).count();
     }
 }

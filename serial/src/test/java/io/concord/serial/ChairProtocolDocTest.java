@@ -53,6 +53,7 @@ class ChairProtocolDocTest {
             case "STOP" -> Frame.Type.STOP;
             case "CONFIGURE" -> Frame.Type.CONFIGURE;
             case "PING" -> Frame.Type.PING;
+            case "ARM" -> Frame.Type.ARM;
             case "STATE" -> Frame.Type.STATE;
             case "HELLO" -> Frame.Type.HELLO;
             case "ACK" -> Frame.Type.ACK;
@@ -64,7 +65,7 @@ class ChairProtocolDocTest {
     @Test
     void everyVectorEncodesToItsBytesAndDecodesBack() throws IOException {
         List<Vector> vs = vectors();
-        assertEquals(12, vs.size(), "the document's vectors");
+        assertEquals(14, vs.size(), "the document's vectors");
         for (Vector v : vs) {
             FrameCodec codec = new FrameCodec(v.key());
             Frame f = new Frame(type(v.type()), v.flags(), v.seq(), v.time(), v.body());
@@ -99,19 +100,23 @@ class ChairProtocolDocTest {
         assertEquals(BoardProtocol.ARMED, fixed.reason());
         assertEquals(new Pose(12.345, -6.789, 1.5708), fixed.fix());
         BoardProtocol.Hello h = BoardProtocol.readHello(new Frame(Frame.Type.HELLO, 0, 0, 0, vs.get(7).body()));
-        assertEquals(2, h.version());
+        assertEquals(3, h.version());
         assertEquals(3, h.boot());
-        assertEquals("fw 2", h.firmware());
+        assertEquals("fw 3", h.firmware());
         assertEquals("front", h.layout().sensors().get(0).name());
         assertEquals(0.17, h.layout().wheelRadiusM(), 1e-9);
         BoardProtocol.Hello longName = BoardProtocol.readHello(new Frame(Frame.Type.HELLO, 0, 0, 0, vs.get(8).body()));
         assertEquals("x".repeat(250), longName.firmware());
         assertEquals((byte) 0xFF, vs.get(8).wire()[8], "the 254-byte block's code");
         assertArrayEquals(vs.get(9).body(), BoardProtocol.ack(3, 0));
-        assertArrayEquals(vs.get(10).body(), BoardProtocol.nak(4, BoardProtocol.NAK_NOT_NEUTRAL, BoardProtocol.DISARMED_WATCHDOG));
-        assertEquals(new BoardProtocol.Nak(4, BoardProtocol.NAK_NOT_NEUTRAL, BoardProtocol.DISARMED_WATCHDOG),
+        assertArrayEquals(vs.get(10).body(), BoardProtocol.nak(4, BoardProtocol.NAK_NOT_ARMED, BoardProtocol.DISARMED_WATCHDOG));
+        assertEquals(new BoardProtocol.Nak(4, BoardProtocol.NAK_NOT_ARMED, BoardProtocol.DISARMED_WATCHDOG),
                 BoardProtocol.readNak(new Frame(Frame.Type.NAK, 0, 9, 123_470, vs.get(10).body())));
-        assertEquals(1, vs.get(11).raw()[1], "the keyed vector's flags byte has the MAC bit");
+        assertArrayEquals(vs.get(11).body(), BoardProtocol.arm(3, BoardProtocol.DISARMED_ESTOP));
+        assertEquals(new BoardProtocol.Arm(3, BoardProtocol.DISARMED_ESTOP),
+                BoardProtocol.readArm(new Frame(Frame.Type.ARM, 0, 12, 5_200, vs.get(11).body())));
+        assertArrayEquals(vs.get(12).body(), BoardProtocol.nak(12, BoardProtocol.NAK_STALE_ARM, BoardProtocol.DISARMED_SWITCH_ON));
+        assertEquals(1, vs.get(13).raw()[1], "the keyed vector's flags byte has the MAC bit");
     }
 
     @Test

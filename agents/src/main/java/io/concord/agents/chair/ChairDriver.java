@@ -47,6 +47,16 @@ public interface ChairDriver {
     default void releaseMotion() {
     }
 
+    /**
+     * The supervisor's decision to resume, while the board is not armed: a driver whose board arms
+     * only on an explicit step (the serial chair's ARM, docs/chair-protocol.md version 3) sends it,
+     * for the board's state its last reading showed. Only the supervisor calls this, on a resume
+     * and while it waits for the board to say it is armed; no heartbeat and no neutral command ever
+     * arms a board. The default does nothing (a chair that {@link #reportsArming() reports no arming}).
+     */
+    default void arm() {
+    }
+
     /** The latest state report, or null before the first. */
     ChairReadings latest();
 
@@ -54,8 +64,8 @@ public interface ChairDriver {
     boolean online();
 
     /**
-     * True if the chair has a board that arms (docs/chair-protocol.md): it drives only after a
-     * neutral command since its last switch-on, watchdog trip, e-stop or new session, says whether
+     * True if the chair has a board that arms (docs/chair-protocol.md): it drives only after an
+     * {@link #arm() ARM} since its last switch-on, watchdog trip, e-stop or new session, says whether
      * it is armed in each reading, and refuses commands with events ({@link ChairListener#onEvent}).
      * A simulated chair does not: it is always armed, unless its e-stop is pressed.
      */

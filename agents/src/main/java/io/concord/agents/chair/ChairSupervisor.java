@@ -322,6 +322,8 @@ public final class ChairSupervisor implements ChairDriver {
         chair.stop();
         if (!chair.reportsArming()) {
             becomeArmed();
+        } else if (!boardArmed) {
+            chair.arm();   // the only way the board arms: this decision, never a heartbeat
         }
         return null;
     }
@@ -397,6 +399,9 @@ public final class ChairSupervisor implements ChairDriver {
             holdFor(Cause.WATCHDOG, "the board reports its watchdog fault");
         }
         if (state == State.ARMING) {
+            if (!boardArmed && !estopPressed) {
+                chair.arm();   // again while it is not armed: an ARM lost on the wire, or one for a state since replaced
+            }
             armedReadings = boardArmed && !estopPressed ? armedReadings + 1 : 0;
             // Two readings: the first may have left the board before it took the neutral command.
             if (armedReadings >= 2) {

@@ -39,7 +39,13 @@ public final class SerialBench {
     }
 
     /** Each measurement's samples, in microseconds (watchdog: milliseconds). */
-    public record Outcome(double[] cmdToMotorUs, double[] sensorToAgentUs, double[] watchdogStopMs) {
+    /**
+     * @param reopenFrames          host frames the board took on the session after a reopen mid-drive, before any resume
+     * @param reopenNonNeutralFrames of those, DRIVEs other than 0, 0 (the hazard: the last command sent again; must be 0)
+     * @param reopenSessions        sessions the host started after the reopen (1: the reopen happened)
+     */
+    public record Outcome(double[] cmdToMotorUs, double[] sensorToAgentUs, double[] watchdogStopMs, int reopenFrames,
+                          int reopenNonNeutralFrames, int reopenSessions) {
     }
 
     /** Motors that note when each power arrives. */
@@ -102,6 +108,8 @@ public final class SerialBench {
                 bp.writeBytes(bytes, bytes.length);
             });
             AtomicBoolean stop = new AtomicBoolean();
+            // A cable's glitch: while muted the board hears nothing and says nothing.
+            AtomicBoolean mute = new AtomicBoolean();
             Thread boardThread = new Thread(() -> {
                 byte[] buf = new byte[512];
                 board.switchOn(0);
@@ -111,6 +119,10 @@ public final class SerialBench {
                     int avail = bp.bytesAvailable();
                     int n = avail > 0 ? bp.readBytes(buf, Math.min(avail, buf.length)) : 0;
                     long now = (System.nanoTime() - t0) / 1_000_000;
+                    if (mute.get()) {
+                        LockSupport.parkNanos(100_000);
+                        continue;
+                    }
                     if (n > 0) {
                         board.onBytes(buf, 0, n, now);
                     }
@@ -126,6 +138,7 @@ public final class SerialBench {
             int samples = full ? 400 : 100;
             List<Double> sensor = Collections.synchronizedList(new ArrayList<>());
             List<Double> cmd = new ArrayList<>();
+            int[] reopen = new int[3];
             try (Platform platform = Platform.builder().name("bench").build()) {
                 AgentRuntime rt = platform.runtime();
                 CountDownLatch open = new CountDownLatch(1);
@@ -145,13 +158,9 @@ public final class SerialBench {
                 while (sensor.size() < 1) {
                     Thread.sleep(10);
                 }
-                // No supervisor here: the bench arms the driver itself, as a supervisor's resume does
-                // (a new session sends only neutral until then).
-                rt.execute(() -> {
-                    chair[0].stop();
-                    chair[0].releaseMotion();
-                });
-                Thread.sleep(100);
+                // No supervisor here: the bench resumes the driver itself, as a supervisor does: an ARM,
+                // and once the board reads armed the commands (a new session sends only neutral until then).
+                arm(rt, chair[0]);
                 // Drive commands: each power its own value, so that its arrival is its own.
                 for (int i = -WARM_UP; i < samples; i++) {
                     int pct = 1 + (i + WARM_UP) % 99;
@@ -177,6 +186,44 @@ public final class SerialBench {
                 while (sensor.size() < samples) {
                     Thread.sleep(10);
                 }
+                // A reopen mid-drive: the agents drive at 60 % (confirming every 20 ms); the board falls
+                // silent; the host finds the link down, opens the port again and starts a new session.
+                // Until a resume, the board must take nothing but neutral from it.
+                AtomicBoolean agents = new AtomicBoolean(true);
+                Thread driving = new Thread(() -> {
+                    while (agents.get()) {
+                        rt.execute(() -> chair[0].drive(60, 60));
+                        LockSupport.parkNanos(20_000_000);
+                    }
+                }, "bench-agents");
+                driving.setDaemon(true);
+                driving.start();
+                long drivenBy = System.nanoTime() + 2_000_000_000L;
+                while (motors.left != 600 && System.nanoTime() < drivenBy) {
+                    Thread.sleep(5);
+                }
+                long sessions = chair[0].sessions();
+                java.util.concurrent.atomic.AtomicInteger taken = new java.util.concurrent.atomic.AtomicInteger();
+                java.util.concurrent.atomic.AtomicInteger nonNeutral = new java.util.concurrent.atomic.AtomicInteger();
+                mute.set(true);
+                long reopenBy = System.nanoTime() + 5_000_000_000L;
+                while (chair[0].sessions() == sessions && System.nanoTime() < reopenBy) {
+                    Thread.sleep(5);
+                }
+                board.setTrace(line -> {
+                    taken.incrementAndGet();
+                    if (line.startsWith("DRIVE ") && !line.startsWith("DRIVE 0,0 ")) {
+                        nonNeutral.incrementAndGet();
+                    }
+                });
+                mute.set(false);
+                Thread.sleep(1_000);   // a second of the new session, held: the bench's window, not a test's wait
+                agents.set(false);
+                driving.join();
+                board.setTrace(null);
+                reopen[0] = taken.get();
+                reopen[1] = nonNeutral.get();
+                reopen[2] = (int) (chair[0].sessions() - sessions);
                 CountDownLatch closed = new CountDownLatch(1);
                 rt.execute(() -> {
                     chair[0].close();
@@ -198,8 +245,9 @@ public final class SerialBench {
                 motors.zeroAtNs = 0;
                 long last = 0;
                 for (int k = 0; k < 4; k++) {
-                    int type = k == 0 ? Frame.Type.STOP : Frame.Type.DRIVE;
-                    byte[] body = k == 0 ? new byte[0] : BoardProtocol.drive(400, 400);
+                    // An ARM for the board's state (a watchdog trip since the last round), then DRIVEs.
+                    int type = k == 0 ? Frame.Type.ARM : Frame.Type.DRIVE;
+                    byte[] body = k == 0 ? BoardProtocol.arm(board.boot(), Math.max(1, board.disarmedBy())) : BoardProtocol.drive(400, 400);
                     byte[] b = codec.encode(new Frame(type, seq == 0 ? Frame.SYNC : 0, seq++ & 0xFFFF, (System.nanoTime() - h0) / 1_000_000, body));
                     hp.writeBytes(b, b.length);
                     last = System.nanoTime();
@@ -231,7 +279,34 @@ public final class SerialBench {
             }
             return new Outcome(cmd.stream().mapToDouble(Double::doubleValue).toArray(),
                     sensor.stream().limit(samples).mapToDouble(Double::doubleValue).toArray(),
-                    watchdog.stream().mapToDouble(Double::doubleValue).toArray());
+                    watchdog.stream().mapToDouble(Double::doubleValue).toArray(), reopen[0], reopen[1], reopen[2]);
+        }
+    }
+
+    /** The supervisor's resume, done by hand: ARMs until the board reads armed, then the commands go out. */
+    private static void arm(AgentRuntime rt, SerialChair chair) throws InterruptedException {
+        long by = System.nanoTime() + 10_000_000_000L;
+        while (true) {
+            CountDownLatch asked = new CountDownLatch(1);
+            boolean[] armed = new boolean[1];
+            rt.execute(() -> {
+                chair.stop();
+                armed[0] = chair.boardArmed();
+                if (!armed[0]) {
+                    chair.arm();
+                } else {
+                    chair.releaseMotion();
+                }
+                asked.countDown();
+            });
+            asked.await();
+            if (armed[0]) {
+                return;
+            }
+            if (System.nanoTime() > by) {
+                throw new IllegalStateException("the bench's board did not arm within 10 s");
+            }
+            Thread.sleep(20);
         }
     }
 
@@ -249,9 +324,11 @@ public final class SerialBench {
 
     public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT serial cmd_to_motor_us=%.0f cmd_to_motor_p99_us=%.0f sensor_to_agent_us=%.0f "
-                        + "sensor_to_agent_p99_us=%.0f watchdog_stop_ms=%.1f watchdog_stop_p99_ms=%.1f samples=%d,%d,%d",
+                        + "sensor_to_agent_p99_us=%.0f watchdog_stop_ms=%.1f watchdog_stop_p99_ms=%.1f samples=%d,%d,%d"
+                        + " reopen_nonneutral_frames=%d reopen_frames=%d reopen_sessions=%d",
                 percentile(o.cmdToMotorUs(), 50), percentile(o.cmdToMotorUs(), 99), percentile(o.sensorToAgentUs(), 50),
                 percentile(o.sensorToAgentUs(), 99), percentile(o.watchdogStopMs(), 50), percentile(o.watchdogStopMs(), 99),
-                o.cmdToMotorUs().length, o.sensorToAgentUs().length, o.watchdogStopMs().length);
+                o.cmdToMotorUs().length, o.sensorToAgentUs().length, o.watchdogStopMs().length, o.reopenNonNeutralFrames(),
+                o.reopenFrames(), o.reopenSessions());
     }
 }

@@ -45,12 +45,13 @@ import java.util.concurrent.ConcurrentLinkedQueue;
  * session), {@code mute MS} (the board's frames to the host are lost for MS ms while it still
  * hears the host: the host takes the link for lost), {@code trace on|off} (one line per host frame
  * taken: {@code rx DRIVE 600,600 seq=12 t=5030 armed=true motors=600,600}, t the host's time in
- * it), {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
+ * it), {@code arm-on-neutral} (a faulty firmware: from now on any neutral command arms the board, as
+ * version 2 did; for the tests that show what the ARM step stands against), {@code quit}. When the port goes away (unplugged), the board waits for it to return; its motors
  * are at zero by its watchdog meanwhile.
  */
 public final class BoardEmulator {
     /** The firmware version it reports. */
-    public static final String FIRMWARE = "concord-board-emulator 2";
+    public static final String FIRMWARE = "concord-board-emulator 3";
 
     private final SerialPort[] port = new SerialPort[1];
     private final String path;
@@ -239,6 +240,7 @@ public final class BoardEmulator {
             case "estop off" -> board.estop(false, nowMs());
             case "trip" -> tripWhenDriving = true;
             case "drop-sync" -> dropSync = true;
+            case "arm-on-neutral" -> board.withoutArmStep();
             case "trace on" -> board.setTrace(l -> {
                 out.println("rx " + l);
                 out.flush();

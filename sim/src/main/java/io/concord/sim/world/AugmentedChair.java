@@ -101,6 +101,11 @@ public final class AugmentedChair implements ChairDriver {
     }
 
     @Override
+    public void arm() {
+        real.arm();
+    }
+
+    @Override
     public String whyOffline() {
         return real.whyOffline();
     }

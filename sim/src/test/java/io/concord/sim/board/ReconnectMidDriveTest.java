@@ -115,6 +115,11 @@ class ReconnectMidDriveTest {
         }
 
         @Override
+        public void arm() {
+            serial.arm();
+        }
+
+        @Override
         public ChairReadings latest() {
             return serial.latest();
         }

@@ -21,8 +21,13 @@ public final class SerialHostMain {
                 if (rt.nowNs() - start < 300_000_000L) {
                     chair.drive(0, 0);
                 } else {
-                    // No supervisor here: the host arms the driver itself, as a supervisor's resume
-                    // does once the board reads armed (a new session sends only neutral until then).
+                    // No supervisor here: the host resumes itself, as a supervisor does: an ARM for
+                    // the board's state, then, once a reading says armed, the agents' commands
+                    // (a new session sends only neutral until then).
+                    if (!chair.boardArmed()) {
+                        chair.arm();
+                        return;
+                    }
                     if (chair.motionHeld()) {
                         chair.releaseMotion();
                     }

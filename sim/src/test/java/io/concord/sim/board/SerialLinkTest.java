@@ -175,7 +175,7 @@ class SerialLinkTest {
                     15_000, "the driver to come back: " + events);
             assertEquals(List.of("online", "reading", "link fault", "offline", "online", "reading"), events);
             assertTrue(onLoop(rt, chair::online));
-            assertEquals("concord-board-emulator 2", chair.firmware());
+            assertEquals("concord-board-emulator 3", chair.firmware());
         }
     }
 
@@ -202,9 +202,19 @@ class SerialLinkTest {
                 assertEquals("0,0", s.get("motors"), s.toString());
                 assertTrue(Double.parseDouble(s.get("moved")) < 0.01, "the chair stands: " + s);
                 assertEquals("false", s.get("armed"));
-                send.accept(Frame.Type.STOP, new byte[0]);
+                // Neither a STOP nor a DRIVE of 0, 0 arms it (version 3): a heartbeat cannot.
+                for (int i = 0; i < 10; i++) {
+                    send.accept(i == 0 ? Frame.Type.STOP : Frame.Type.DRIVE, i == 0 ? new byte[0] : BoardProtocol.drive(0, 0));
+                    Thread.sleep(50);   // the heartbeat's pace
+                }
                 send.accept(Frame.Type.DRIVE, BoardProtocol.drive(500, 500));
-                board.awaitStatus(st -> st.get("motors").equals("500,500"), 5_000, "the board to take the drive after a STOP");
+                Map<String, String> neutral = board.status();
+                assertEquals("false", neutral.get("armed"), "neutral frames do not arm: " + neutral);
+                assertEquals("0,0", neutral.get("motors"), neutral.toString());
+                // The supervisor's resume: an ARM for the board's state as its STATE shows it.
+                send.accept(Frame.Type.ARM, BoardProtocol.arm(Long.parseLong(neutral.get("boot")), BoardProtocol.DISARMED_SWITCH_ON));
+                send.accept(Frame.Type.DRIVE, BoardProtocol.drive(500, 500));
+                board.awaitStatus(st -> st.get("motors").equals("500,500"), 5_000, "the board to take the drive after an ARM");
             } finally {
                 p.closePort();
             }
@@ -283,7 +293,8 @@ class SerialLinkTest {
                 });
                 FrameCodec codec = new FrameCodec();
                 var layout = io.concord.agents.chair.ChairLayout.standard();
-                byte[] hello = codec.encode(new Frame(Frame.Type.HELLO, 0, 0, 0, BoardProtocol.hello(3, 1, "old board", layout)));
+                // A version-2 board: its HELLO has type 0x82.
+                byte[] hello = codec.encode(new Frame(Frame.Type.OLD_HELLO, 0, 0, 0, BoardProtocol.hello(2, 1, "old board", layout)));
                 p.writeBytes(hello, hello.length);
                 int[] mm = new int[layout.sensors().size()];
                 for (int i = 1; i <= 5; i++) {
@@ -293,8 +304,9 @@ class SerialLinkTest {
                 }
                 Pty.await(() -> chair.incompatible() != null && chair.drops().get("incompatible") >= 5, 10_000,
                         "the host to refuse the board: " + chair.drops());
-                assertTrue(chair.incompatible().contains("the board speaks version 3 of the chair protocol"), chair.incompatible());
-                assertTrue(chair.incompatible().contains("this host speaks version 2"), chair.incompatible());
+                assertTrue(chair.incompatible().contains("the board speaks version 1 or 2 of the chair protocol (its HELLO has type 0x82)"),
+                        chair.incompatible());
+                assertTrue(chair.incompatible().contains("this host speaks version 3"), chair.incompatible());
                 assertTrue(!onLoop(rt, chair::online), "never online");
                 assertEquals(List.of("INCOMPATIBLE"), events);
             } finally {
