@@ -441,6 +441,11 @@ public final class SerialChair implements ChairDriver {
         return nakCount.get();
     }
 
+    @Override
+    public java.util.Map<String, Long> linkDrops() {
+        return receiver.drops().snapshot();
+    }
+
     /** The board's firmware version, from its HELLO, or null. */
     public String firmware() {
         return firmware;

@@ -692,6 +692,8 @@ public final class HospitalDemo {
                     SerialChair s = serialChair.get();
                     if (s != null) {
                         s.close();   // a STOP now, rather than the board's watchdog 200 ms after the last frame
+                        OUT.println(s.name() + "'s link: " + s.accepted() + " board frames taken, " + s.framesSent() + " sent, "
+                                + s.sessions() + " session(s); dropped: " + (s.drops().total() == 0 ? "none" : s.drops()));
                     }
                     writePicture(world, o);
                     OUT.printf(Locale.ROOT, "%.1f s of hospital; %d collisions.%n", world.worldTimeNs() / 1e9, world.collisionCount());

@@ -679,6 +679,8 @@ public final class HospitalView implements ConsoleView {
                 seen.append(seen.length() == 0 ? "" : ", ").append(k).append(' ').append(v);
             }
         });
+        // The link's dropped frames by reason (a serial chair): a technician's first clue (stale: a clock; corrupt: a cable).
+        s.linkDrops().forEach((k, v) -> seen.append(seen.length() == 0 ? "" : ", ").append("dropped ").append(k).append(' ').append(v));
         return seen.length() == 0 ? state : state + " (" + seen + ")";
     }
 

@@ -81,6 +81,14 @@ public interface ChairDriver {
         return null;
     }
 
+    /**
+     * The frames the link to the chair dropped, by reason ({@code stale}, {@code corrupt}, {@code mac}...), for an
+     * operator's safety column and the log; empty for a chair with no link (the simulated one).
+     */
+    default java.util.Map<String, Long> linkDrops() {
+        return java.util.Map.of();
+    }
+
     /** Sets the one listener told of every report (replacing any before); null removes it. */
     void setListener(ChairListener listener);
 }

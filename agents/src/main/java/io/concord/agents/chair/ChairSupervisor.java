@@ -376,6 +376,11 @@ public final class ChairSupervisor implements ChairDriver {
     }
 
     @Override
+    public Map<String, Long> linkDrops() {
+        return chair.linkDrops();
+    }
+
+    @Override
     public void setListener(ChairListener l) {
         this.listener = l;
     }

@@ -111,6 +111,11 @@ public final class AugmentedChair implements ChairDriver {
     }
 
     @Override
+    public java.util.Map<String, Long> linkDrops() {
+        return real.linkDrops();
+    }
+
+    @Override
     public ChairReadings latest() {
         return latest;
     }
