@@ -37,9 +37,18 @@ import java.util.function.Supplier;
  *     ...
  * }
  * }</pre>
+ *
+ * <p><b>Loops.</b> A platform runs its agents on one event loop (one thread) unless
+ * {@link Builder#loops(int)} asks for more: then each agent is owned by one loop for life (its
+ * behaviours, timers and stack run only there), placed round-robin or where
+ * {@link #startAgentOn} puts it. Agents of one loop hand messages over in memory; agents of two
+ * loops reach each other as agents of two JVMs do, through their stacks and the loopback, in
+ * parallel. {@link #runtime()} is the first loop's; an agent's own is {@code agent.runtime()}.
  */
 public final class Platform implements AutoCloseable {
     private final AgentRuntime runtime;
+    private final List<AgentRuntime> loops;
+    private final java.util.concurrent.atomic.AtomicInteger nextLoop = new java.util.concurrent.atomic.AtomicInteger();
     private final boolean ownsRuntime;
     private final PortRange ports;
     private final Supplier<List<Layer>> stack;
@@ -47,8 +56,9 @@ public final class Platform implements AutoCloseable {
     private volatile AutoCloseable console;
     private final Policy policy;
 
-    private Platform(Builder b, AgentRuntime runtime, boolean owns) {
-        this.runtime = runtime;
+    private Platform(Builder b, List<AgentRuntime> loops, boolean owns) {
+        this.runtime = loops.get(0);
+        this.loops = List.copyOf(loops);
         this.ownsRuntime = owns;
         this.ports = b.ports;
         this.transport = b.transport;
@@ -99,8 +109,24 @@ public final class Platform implements AutoCloseable {
         private PlatformKey key;
         private String console;
         private PrintStream consoleOut = System.out;
+        private int loops = 1;
 
         private Builder() {
+        }
+
+        /**
+         * Runs the agents on {@code n} event loops (threads) of this JVM, 1 to 256; 1 by default.
+         * {@code loops(Platform.CORES)} puts every core to work. Agents are placed round-robin
+         * ({@link Platform#startAgentOn} chooses); each stays on its loop for life. Not with
+         * {@link #runtime(AgentRuntime)}: a runtime of the caller's is one loop.
+         */
+        public Builder loops(int n) {
+            if (n < 1 || n > 256) {
+                throw new IllegalArgumentException("loops(" + n + "): a platform runs on 1 to 256 loops (Platform.CORES is "
+                        + CORES + " here)");
+            }
+            this.loops = n;
+            return this;
         }
 
         /**
@@ -243,13 +269,20 @@ public final class Platform implements AutoCloseable {
                         + " runtime (AgentRuntime.builder().platformName(\"" + name + "\"), or Simulation.platformName(\"" + name
                         + "\") before newRuntime), or leave name(...) out");
             }
+            if (runtime != null && loops > 1) {
+                throw new IllegalArgumentException("loops(" + loops + ") with runtime(...): a runtime of your own is one loop; "
+                        + "leave runtime(...) out to let the platform make its loops, or loops(...) out to run on yours");
+            }
             Platform p;
             if (runtime != null) {
-                p = new Platform(this, runtime, false);
+                p = new Platform(this, List.of(runtime), false);
             } else {
-                AgentRuntime rt = AgentRuntime.builder().platformName(name).host(host).transport(transport).build();
-                p = new Platform(this, rt, true);
-                rt.start();
+                List<AgentRuntime> made = new ArrayList<>();
+                for (int i = 0; i < loops; i++) {
+                    made.add(AgentRuntime.builder().platformName(name).host(host).transport(transport).build());
+                }
+                p = new Platform(this, made, true);
+                made.forEach(AgentRuntime::start);
             }
             if (consoles != null) {
                 try {
@@ -270,8 +303,33 @@ public final class Platform implements AutoCloseable {
      * @throws IllegalStateException if the port range is full (the message says how to widen it)
      */
     public AID startAgent(String localName, Agent agent, Object... args) {
+        return startAgentOn(Math.floorMod(nextLoop.getAndIncrement(), loops.size()), localName, agent, args);
+    }
+
+    /**
+     * As {@link #startAgent}, on loop {@code loop} (0 to {@link #loops()} - 1): agents that talk
+     * most to each other go on one loop, where their messages are handed over in memory.
+     */
+    public AID startAgentOn(int loop, String localName, Agent agent, Object... args) {
+        if (loop < 0 || loop >= loops.size()) {
+            throw new IllegalArgumentException("loop " + loop + ": this platform runs " + loops.size() + " loop(s), 0 to "
+                    + (loops.size() - 1));
+        }
         AgentOptions o = AgentOptions.defaults().withPortRange(ports).withStack(stack).withTransport(transport);
-        return runtime.startAgentWith(localName, agent, o, args);
+        return loops.get(loop).startAgentWith(localName, agent, o, args);
+    }
+
+    /** The cores of this machine, for {@link Builder#loops(int)}. */
+    public static final int CORES = Runtime.getRuntime().availableProcessors();
+
+    /** How many loops run this platform's agents here. */
+    public int loops() {
+        return loops.size();
+    }
+
+    /** The runtime of each loop, the first being {@link #runtime()}. */
+    public List<AgentRuntime> runtimes() {
+        return loops;
     }
 
     /** Who may do what on this platform (what its builder exposed to agents of other platforms). */
@@ -284,7 +342,7 @@ public final class Platform implements AutoCloseable {
         return console;
     }
 
-    /** The runtime that runs this platform's agents here. */
+    /** The runtime that runs this platform's agents here (with several loops, the first loop's). */
     public AgentRuntime runtime() {
         return runtime;
     }
@@ -324,7 +382,9 @@ public final class Platform implements AutoCloseable {
             }
         }
         if (ownsRuntime) {
-            runtime.close();
+            for (int i = loops.size() - 1; i >= 0; i--) {
+                loops.get(i).close();
+            }
         }
     }
 }
