@@ -720,13 +720,20 @@ public final class BenchMain {
                 + "nothing is acknowledged, so its rate is what arrives. Received messages counted over " + window + " s after "
                 + warm + " s; then the senders stop, and what was sent and never arrived is `lost`.",
                 "Messages received per second"));
-        md.append("| shape | JVMs | bytes | Concord msg/s | JADE msg/s | UDP msg/s | Concord / JADE | Concord / UDP | lost (Concord / JADE) | Concord senders paused |\n")
-                .append("|---|---|---|---|---|---|---|---|---|---|\n");
+        int cores = Math.max(2, Runtime.getRuntime().availableProcessors());
+        md.append("In one JVM Concord runs twice: on one loop, and on " + cores + " loops (" + cores + " runtimes of one platform in "
+                + "the JVM, as `Platform.Builder.loops(" + cores + ")` makes them). Each sender sits on its receiver's loop, pair i on "
+                + "loop i mod " + cores + ", so its messages are handed over in memory: `16pairs` spreads over the loops, while "
+                + "`1to1` and `16to1` have one receiver and so one loop's work.\n\n");
+        md.append("| shape | JVMs | bytes | Concord msg/s | Concord, " + cores + " loops | JADE msg/s | UDP msg/s | Concord / JADE | "
+                        + cores + " loops / 1 loop | Concord / UDP | lost (Concord / JADE) | Concord senders paused |\n")
+                .append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (String mode : List.of("onejvm", "processes")) {
             for (String shape : List.of("1to1", "16to1", "16pairs")) {
                 for (int bytes : List.of(100, 1000)) {
                     Map<String, ThroughputHarness.Result> r = new TreeMap<>();
-                    for (String platform : List.of("concord", "jade", "udp")) {
+                    List<String> peers = mode.equals("onejvm") ? List.of("concord", "concord-loops", "jade", "udp") : List.of("concord", "jade", "udp");
+                    for (String platform : peers) {
                         try {
                             r.put(platform, ThroughputHarness.run(platform, shape, mode.equals("processes"),
                                     bytes, warm, window));
@@ -737,16 +744,24 @@ public final class BenchMain {
                     double c = r.get("concord").msgsPerS();
                     double j = r.get("jade").msgsPerS();
                     double u = r.get("udp").msgsPerS();
-                    System.out.printf(Locale.ROOT, "RESULT throughput %s %s %d concord_msgs_s=%.0f jade_msgs_s=%.0f udp_msgs_s=%.0f ratio=%.2f udp_ratio=%.2f concord_lost=%d%n",
-                            shape, mode, bytes, c, j, u, c / j, c / u, r.get("concord").lost());
-                    md.append(String.format(Locale.ROOT, "| %s | %s | %d | %.0f | %.0f | %.0f | %.2f | %.2f | %d / %d | %d |%n", shape,
-                            mode, bytes, c, j, u, c / j, c / u, r.get("concord").lost(), r.get("jade").lost(), r.get("concord").pauses()));
+                    double cl = r.containsKey("concord-loops") ? r.get("concord-loops").msgsPerS() : Double.NaN;
+                    System.out.printf(Locale.ROOT, "RESULT throughput %s %s %d concord_msgs_s=%.0f jade_msgs_s=%.0f udp_msgs_s=%.0f ratio=%.2f udp_ratio=%.2f concord_lost=%d%s%n",
+                            shape, mode, bytes, c, j, u, c / j, c / u, r.get("concord").lost(),
+                            Double.isNaN(cl) ? "" : String.format(Locale.ROOT, " concord_loops=%d concord_loops_msgs_s=%.0f loops_ratio=%.2f loops_lost=%d",
+                                    cores, cl, cl / c, r.get("concord-loops").lost()));
+                    md.append(String.format(Locale.ROOT, "| %s | %s | %d | %.0f | %s | %.0f | %.0f | %.2f | %s | %.2f | %d / %d | %d |%n", shape,
+                            mode, bytes, c, Double.isNaN(cl) ? "" : String.format(Locale.ROOT, "%.0f", cl), j, u, c / j,
+                            Double.isNaN(cl) ? "" : String.format(Locale.ROOT, "%.2f", cl / c), c / u, r.get("concord").lost(), r.get("jade").lost(),
+                            r.get("concord").pauses()));
                     String group = shape + " " + bytes + "B";
                     if (!groups.contains(group)) {
                         groups.add(group);
                     }
                     Map<String, List<Double>> perMode = bars.computeIfAbsent(mode, k -> new LinkedHashMap<>());
                     perMode.computeIfAbsent("Concord", k -> new ArrayList<>()).add(c);
+                    if (!Double.isNaN(cl)) {
+                        perMode.computeIfAbsent("Concord, " + cores + " loops", k -> new ArrayList<>()).add(cl);
+                    }
                     perMode.computeIfAbsent("JADE", k -> new ArrayList<>()).add(j);
                     perMode.computeIfAbsent("UDP", k -> new ArrayList<>()).add(u);
                 }

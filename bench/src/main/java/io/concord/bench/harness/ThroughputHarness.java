@@ -82,6 +82,39 @@ public final class ThroughputHarness {
                                 pauses.get(10, TimeUnit.SECONDS), rt.drops());
                     }
                 }
+                case "concord-loops" -> {
+                    // One JVM on as many loops as cores: pair i (sender and receiver) on loop i % N, so
+                    // a pair's messages are handed over in memory on its own loop, the pairs in parallel.
+                    int n = Math.max(2, Runtime.getRuntime().availableProcessors());
+                    List<AgentRuntime> loops = new ArrayList<>();
+                    try {
+                        for (int i = 0; i < n; i++) {
+                            loops.add(Platforms.concord(Platforms.CONCORD_CLASS7));
+                        }
+                        List<AID> to = new ArrayList<>();
+                        for (int i = 0; i < r; i++) {
+                            to.add(loops.get(i % n).startAgent("r" + i, new ConcordReceiver()));
+                        }
+                        for (int i = 0; i < s; i++) {
+                            loops.get((i % r) % n).startAgent("s" + i, new ConcordSender(to.get(i % r), bytes));
+                        }
+                        double rate = measure(received, warmS, measureS);
+                        long got = drain(received);
+                        long paused = 0;
+                        Map<String, Long> drops = new java.util.TreeMap<>();
+                        for (AgentRuntime rt : loops) {
+                            CompletableFuture<Long> pauses = new CompletableFuture<>();
+                            rt.execute(() -> pauses.complete(rt.pauses()));
+                            paused += pauses.get(10, TimeUnit.SECONDS);
+                            rt.drops().forEach((k, v) -> drops.merge(k, v, Long::sum));
+                        }
+                        return new Result(platform, shape, processes, bytes, rate, Counters.SENT.get(), got, paused, drops);
+                    } finally {
+                        for (AgentRuntime rt : loops) {
+                            rt.close();
+                        }
+                    }
+                }
                 case "jade" -> {
                     try (JadePlatform jade = new JadePlatform()) {
                         if (processes) {
