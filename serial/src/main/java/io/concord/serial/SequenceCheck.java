@@ -25,11 +25,20 @@ final class SequenceCheck {
     /** Milliseconds the reference may have grown by since it was set, at the drift tolerance. */
     private double slack;
     private long lastLocalMs;
-    /** The measured drift: the offset and local time of the first frame since the reset, and of the last in order (stale or not). */
-    private volatile int firstOffset;
-    private volatile long firstLocalMs;
-    private volatile int lastOffset;
-    private volatile long lastSeenMs;
+    /**
+     * The measured drift, from the lower envelope of the offsets (the frames least delayed on the
+     * wire): the least offset of the first second since the reset, and the least of the latest
+     * second's window, each with its local time. A frame held up on the wire (bytes waiting in a
+     * port's buffer when it opens) raises its offset, never the envelope.
+     */
+    private long firstLocalMs;
+    private volatile int earlyMin;
+    private volatile long earlyAt;
+    private long windowStart;
+    private int windowMin;
+    private long windowMinAt;
+    private volatile int lateMin;
+    private volatile long lateAt;
 
     /** @param maxAgeMs frames delayed more than this are stale; the drift tolerance is {@link #DRIFT} */
     public SequenceCheck(long maxAgeMs) {
@@ -56,10 +65,14 @@ final class SequenceCheck {
             refOffset = offset;
             slack = 0;
             lastLocalMs = localMs;
-            firstOffset = offset;
             firstLocalMs = localMs;
-            lastOffset = offset;
-            lastSeenMs = localMs;
+            earlyMin = offset;
+            earlyAt = localMs;
+            windowStart = localMs;
+            windowMin = offset;
+            windowMinAt = localMs;
+            lateMin = offset;
+            lateAt = localMs;
             return null;
         }
         int ahead = (f.seq() - last) & 0xFFFF;
@@ -69,8 +82,7 @@ final class SequenceCheck {
         if (ahead > 32_768) {
             return "out-of-order";
         }
-        lastOffset = offset;
-        lastSeenMs = localMs;
+        measure(offset, localMs);
         long dt = localMs - lastLocalMs;
         if (dt > 0) {
             slack += drift * dt;
@@ -94,26 +106,47 @@ final class SequenceCheck {
         last = -1;
         refOffset = 0;
         slack = 0;
-        firstLocalMs = 0;
-        lastSeenMs = 0;
+        earlyAt = 0;
+        lateAt = 0;
+    }
+
+    /** Keeps the offsets' lower envelope: the first second's least, and the latest window's least (stale or not). */
+    private void measure(int offset, long localMs) {
+        if (localMs - firstLocalMs < 1_000) {
+            if (offset - earlyMin < 0) {
+                earlyMin = offset;
+                earlyAt = localMs;
+                }
+        }
+        if (localMs - windowStart >= 1_000) {
+            windowStart = localMs;
+            windowMin = offset;
+            windowMinAt = localMs;
+        } else if (offset - windowMin < 0) {
+            windowMin = offset;
+            windowMinAt = localMs;
+        }
+        lateMin = windowMin;
+        lateAt = windowMinAt;
     }
 
     /**
-     * The sender's clock drift against this end's, measured from the first frame since the reset
-     * to the last one in order (stale or not): the growth of the offset over the time passed. 0.03
-     * is a sender's clock 3 % slow, -0.01 one 1 % fast; NaN before a second has passed. The frames'
-     * delays on the wire blur it by their jitter over the span. Any thread.
+     * The sender's clock drift against this end's, measured since the reset on the offsets' lower
+     * envelope: the growth from the least offset of the first second to the least of the latest
+     * second (frames in order, stale or not), over the time between them. 0.03 is a sender's clock
+     * 3 % slow, -0.01 one 1 % fast; NaN before a second separates them. The wire's jitter blurs it
+     * by its least delay only. Any thread.
      */
     public double drift() {
         long span = driftSpanMs();
         if (span < 1_000) {
             return Double.NaN;
         }
-        return (lastOffset - firstOffset) / (double) span;
+        return (lateMin - earlyMin) / (double) span;
     }
 
     /** The time the drift is measured over, in ms of this end's clock. */
     public long driftSpanMs() {
-        return lastSeenMs - firstLocalMs;
+        return lateAt - earlyAt;
     }
 }

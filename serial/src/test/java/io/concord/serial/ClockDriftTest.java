@@ -82,4 +82,23 @@ class ClockDriftTest {
         assertTrue(o.hostStale() > 10_000, o.toString());
         assertTrue(o.longestSilenceMs() > 500, "the link would be down: " + o);
     }
+
+    /**
+     * A session whose first frame sat 600 ms on the wire (bytes waiting in the port's buffer when
+     * it opened), then a board 10 % slow: the drift is read as 10 %, not blurred by the first frame's
+     * delay (measured from the first frame, it read 0.7 % over 6.8 s over real ptys).
+     */
+    @Test
+    void theDriftIsMeasuredOnTheLeastDelayedFramesNotTheFirst() {
+        SequenceCheck check = new SequenceCheck(500);
+        // host ms 1000: a frame the board stamped at 400 (600 ms late); then one every 50 ms, on time.
+        check.check(new Frame(Frame.Type.STATE, 0, 1, 400, new byte[0]), 1_000);
+        double boardMs = 1_000;
+        for (int i = 2; i < 130; i++) {
+            long host = 1_000 + (i - 1) * 50L;
+            boardMs += 50 * 0.9;
+            check.check(new Frame(Frame.Type.STATE, 0, i, Math.round(boardMs), new byte[0]), host);
+        }
+        assertEquals(0.10, check.drift(), 0.005, "measured over " + check.driftSpanMs() + " ms");
+    }
 }

@@ -17,7 +17,7 @@ import java.util.EnumSet;
  * The ward's host in a process of its own, for the tests that freeze it: the wheelchair's agents on
  * the chair's port, a transport from node 19 to node 3 once they are ready; every line of their
  * log on standard output. Arguments: the port, {@code all} or {@code none} (the supervisor's
- * defences), the command deadline in ms, and optionally the serial driver's defences to switch
+ * defences; or {@code all-but:NAME,...}, every {@link ChairSupervisor.Defence} but those), the command deadline in ms, and optionally the serial driver's defences to switch
  * off (comma-separated {@link SerialChair.Defence} names). On standard input: {@code resume}.
  */
 public final class SafetyHostMain {
@@ -26,7 +26,15 @@ public final class SafetyHostMain {
 
     public static void main(String[] args) throws Exception {
         String port = args[0];
-        boolean defences = args[1].equals("all");
+        java.util.Set<ChairSupervisor.Defence> defences = args[1].equals("all") ? EnumSet.allOf(ChairSupervisor.Defence.class)
+                : EnumSet.noneOf(ChairSupervisor.Defence.class);
+        if (args[1].startsWith("all-but:")) {
+            defences = EnumSet.allOf(ChairSupervisor.Defence.class);
+            for (String d : args[1].substring("all-but:".length()).split(",")) {
+                defences.remove(ChairSupervisor.Defence.valueOf(d.trim()));
+            }
+        }
+        java.util.Set<ChairSupervisor.Defence> supervisorDefences = defences;
         long deadline = Long.parseLong(args[2]);
         java.util.Set<SerialChair.Defence> driver = EnumSet.allOf(SerialChair.Defence.class);
         if (args.length > 3) {
@@ -49,8 +57,7 @@ public final class SafetyHostMain {
         rt.execute(() -> {
             SerialChair serial = SerialChair.openWithDefences(rt, SerialChair.Settings.of(port, "chair1").withStart(doors.poseAt(19, 90))
                     .withCommandDeadlineMs(deadline), driver);
-            sup[0] = ChairSupervisor.withDefences(serial, defences ? EnumSet.allOf(ChairSupervisor.Defence.class)
-                    : EnumSet.noneOf(ChairSupervisor.Defence.class));
+            sup[0] = ChairSupervisor.withDefences(serial, supervisorDefences);
             opened.countDown();
         });
         opened.await();
