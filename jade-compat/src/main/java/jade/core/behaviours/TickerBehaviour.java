@@ -38,7 +38,9 @@ public abstract class TickerBehaviour extends SimpleBehaviour {
         if (left <= 0) {
             tickCount++;
             onTick();
-            wakeupTime = fixedPeriod ? wakeupTime + period : now + period;
+            // As JADE's: the next tick a period after this one ended (a tick longer than the period
+            // does not make the next one due at once and starve the agent's other behaviours).
+            wakeupTime = fixedPeriod ? wakeupTime + period : Engine.nowMs() + period;
             left = wakeupTime - Engine.nowMs();
             if (left <= 0) {
                 left = 1;
