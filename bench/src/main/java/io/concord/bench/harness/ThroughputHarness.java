@@ -115,6 +115,16 @@ public final class ThroughputHarness {
                         }
                     }
                 }
+                case "pekko" -> {
+                    if (processes) {
+                        throw new IllegalArgumentException("Pekko runs in one JVM only here (no remoting in the bench)");
+                    }
+                    try (io.concord.bench.throughput.PekkoPeer pekko = new io.concord.bench.throughput.PekkoPeer(s, r, bytes)) {
+                        double rate = measure(pekko::received, warmS, measureS);
+                        long got = drain(pekko::received);
+                        return new Result(platform, shape, false, bytes, rate, Counters.SENT.get(), got, 0, Map.of());
+                    }
+                }
                 case "jade" -> {
                     try (JadePlatform jade = new JadePlatform()) {
                         if (processes) {
