@@ -43,6 +43,16 @@ public final class VirtualHospital implements AutoCloseable {
     /** @param traffic the traffic agent's settings (its rules, the fleet monitor's limit), or null for none */
     public VirtualHospital(HospitalMap map, long seed, FaultPlan plan, int chairs, TrafficSettings traffic,
                            MedicalAgent.Settings medicalSettings, Consumer<String> log) {
+        this(map, seed, plan, chairs, traffic, medicalSettings, log, ChairConfig.standard().withWatchdog(0.3),
+                HospitalWorld.builder(map).seed(seed));
+    }
+
+    /**
+     * @param chair every chair's model (the hospital's: {@code ChairConfig.standard().withWatchdog(0.3)})
+     * @param world the world's settings, on {@code map} and {@code seed}
+     */
+    public VirtualHospital(HospitalMap map, long seed, FaultPlan plan, int chairs, TrafficSettings traffic,
+                           MedicalAgent.Settings medicalSettings, Consumer<String> log, ChairConfig chair, HospitalWorld.Builder worldSettings) {
         if (chairs > map.parking().size()) {
             throw new IllegalArgumentException(chairs + " chairs, but " + map.name() + " parks " + map.parking().size());
         }
@@ -51,9 +61,9 @@ public final class VirtualHospital implements AutoCloseable {
         runtime = sim.newRuntime("h1");
         platform = Platform.builder().runtime(runtime).ports(new PortRange(7001, 200, 10))
                 .safetyStack(SafetyStack.builder().profile(Profile.CLOSED).build()).build();
-        world = HospitalWorld.builder(map).seed(seed).build();
+        world = worldSettings.build();
         for (int i = 0; i < chairs; i++) {
-            world.addChair("chair" + (i + 1), ChairConfig.standard().withWatchdog(0.3), world.poseAt(map.parking().get(i), 90));
+            world.addChair("chair" + (i + 1), chair, world.poseAt(map.parking().get(i), 90));
         }
         world.attach(runtime);
         hospital = Hospital.start(platform, world, log, traffic);

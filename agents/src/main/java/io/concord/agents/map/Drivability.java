@@ -15,8 +15,9 @@ import java.util.function.ToDoubleFunction;
  * them, and of the doors' leaves.
  *
  * <ul>
- *   <li>An edge is at most {@value #MAX_EDGE_M} m long: odometry drifts with the distance, and a
- *       chair 0.5 m off its line at the end of a long edge turns into a wall.</li>
+ *   <li>An edge may be of any length: one longer than {@link HospitalMap#OPEN_LOOP_M} m has floor
+ *       markers along it ({@link HospitalMap#edgeMarkers()}), since odometry drifts with the
+ *       distance, and a chair 0.5 m off its line at the end of a 10 m edge turned into a wall.</li>
  *   <li>A node is at least {@value #NODE_WALL_M} m from every wall's face (a chair turning there
  *       reaches {@value #TURN_REACH_M} m); an edge at least {@value #EDGE_WALL_M} m (half the
  *       chair's width and 0.1 m).</li>
@@ -44,8 +45,6 @@ import java.util.function.ToDoubleFunction;
  * gives them. The default hospital passes; so does every generated map.
  */
 final class Drivability {
-    /** The longest edge, metres. */
-    static final double MAX_EDGE_M = 6.0;
     /** The least distance from a node to a wall's face, metres. */
     static final double NODE_WALL_M = 0.8;
     /** The least distance from an edge to a wall's face, metres. */
@@ -74,13 +73,6 @@ final class Drivability {
     /** Every problem found, each naming its element; empty if the map can be driven. */
     static List<String> problems(HospitalMap map) {
         List<String> out = new ArrayList<>();
-        for (Edge e : map.edges()) {
-            double len = e.length(map);
-            if (len > MAX_EDGE_M + 1e-9) {
-                out.add("edge " + e.a() + "-" + e.b() + " is " + m(len) + " m long; keep edges at most " + m(MAX_EDGE_M)
-                        + " m (add a node on it): odometry drifts with the distance driven");
-            }
-        }
         for (Place n : places(map)) {
             Wall w = nearest(map.walls(), x -> face(n.at(), x));
             if (w != null && face(n.at(), w) < NODE_WALL_M) {

@@ -138,10 +138,26 @@ public final class HospitalMap {
     }
 
     /**
-     * Where the floor markers are, which a chair reads to find its place again: every node, and
-     * at a node with lanes each lane's point too.
+     * The longest a chair drives on its odometry alone: an edge up to this long has floor markers
+     * at its ends only; a longer one has markers along it too ({@link #edgeMarkers()}).
+     */
+    public static final double OPEN_LOOP_M = 6.0;
+    /** The most two floor markers along a long edge are apart. */
+    public static final double EDGE_MARKER_SPACING_M = 3.0;
+
+    /**
+     * Where the floor markers are, which a chair reads to find its place again: every node, at a
+     * node with lanes each lane's point too, and along every edge longer than {@link #OPEN_LOOP_M}
+     * ({@link #edgeMarkers()}).
      */
     public List<Point> markers() {
+        List<Point> out = nodeMarkers();
+        out.addAll(edgeMarkers());
+        return out;
+    }
+
+    /** The markers at the nodes and their lanes' points. */
+    public List<Point> nodeMarkers() {
         List<Point> out = new ArrayList<>();
         for (Node n : nodeList) {
             out.add(n.at());
@@ -150,6 +166,39 @@ public final class HospitalMap {
             if (laned(n.id())) {
                 out.add(lanePoint(n.id(), 0));
                 out.add(lanePoint(n.id(), 1));
+            }
+        }
+        return out;
+    }
+
+    /**
+     * The markers along the edges longer than {@link #OPEN_LOOP_M}, so that no chair drives more
+     * than {@link #EDGE_MARKER_SPACING_M} between two: evenly spaced, on the edge's line (and on
+     * both lanes' lines, {@link #LANE_OFFSET_M} either side, on an edge of two lanes). Odometry's
+     * heading drift grows the error off the line with the square of the distance driven; the
+     * markers bound that distance. On a real floor, put a marker at each.
+     */
+    public List<Point> edgeMarkers() {
+        List<Point> out = new ArrayList<>();
+        for (Edge e : edges()) {
+            double len = e.length(this);
+            if (len <= OPEN_LOOP_M + 1e-9) {
+                continue;
+            }
+            Point a = node(e.a()).at();
+            Point b = node(e.b()).at();
+            double ux = (b.x() - a.x()) / len;
+            double uy = (b.y() - a.y()) / len;
+            int n = (int) Math.ceil(len / EDGE_MARKER_SPACING_M - 1e-9);
+            for (int k = 1; k < n; k++) {
+                double x = a.x() + ux * len * k / n;
+                double y = a.y() + uy * len * k / n;
+                if (e.lanes() == 2) {
+                    out.add(new Point(x - uy * LANE_OFFSET_M, y + ux * LANE_OFFSET_M));
+                    out.add(new Point(x + uy * LANE_OFFSET_M, y - ux * LANE_OFFSET_M));
+                } else {
+                    out.add(new Point(x, y));
+                }
             }
         }
         return out;

@@ -64,10 +64,20 @@ class DrivabilityTest {
             """;
 
     @Test
+    void aLongEdgeHasFloorMarkersAlongItNoChairDrivesOver3MOnOdometryAlone() {
+        HospitalMap map = HospitalMap.parse(BAD, "undrivable");
+        // Edge 1-2 runs 9.8 m from (2, 2) to (11.8, 2): four stretches of 2.45 m, three markers between its ends.
+        List<Point> along = map.edgeMarkers();
+        assertEquals(List.of(new Point(4.45, 2), new Point(6.9, 2), new Point(9.35, 2)),
+                along.stream().map(p -> new Point(Math.round(p.x() * 100) / 100.0, Math.round(p.y() * 100) / 100.0)).toList());
+        assertTrue(map.markers().containsAll(along) && map.markers().containsAll(map.nodeMarkers()));
+        assertEquals(map.nodeMarkers().size() + 3, map.markers().size());
+    }
+
+    @Test
     void eachRuleFlagsWhatBreaksItNamingTheElement() {
         List<String> problems = HospitalMap.parse(BAD, "undrivable").warnings();
         List<String> expected = List.of(
-                "edge 1-2 is 9.8 m long",
                 "node 3 at (3.6, 3.2) is in the swing of door 'H1'",
                 "edge 1-3 passes 0 m from the swing of door 'H1'",
                 "node 3 is 0.8 m from the opening of door 'H1' (edge 3-4)",

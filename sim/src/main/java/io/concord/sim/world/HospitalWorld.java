@@ -65,6 +65,7 @@ public final class HospitalWorld {
     private static final int POSITION_ITERATIONS = 3;
 
     private final HospitalMap map;
+    private final java.util.List<io.concord.agents.map.Point> markers;
     private final double stepHz;
     private final double dtS;
     private final float dt;
@@ -95,6 +96,7 @@ public final class HospitalWorld {
 
     private HospitalWorld(Builder b) {
         this.map = b.map;
+        this.markers = java.util.List.copyOf(b.edgeMarkers ? b.map.markers() : b.map.nodeMarkers());
         this.stepHz = b.stepHz;
         this.dtS = 1.0 / b.stepHz;
         this.dt = (float) dtS;
@@ -141,6 +143,7 @@ public final class HospitalWorld {
         private long seed = 1;
         private double stepHz = 60;
         private boolean doors = true;
+        private boolean edgeMarkers = true;
 
         private Builder(HospitalMap map) {
             if (map == null) {
@@ -170,6 +173,16 @@ public final class HospitalWorld {
             return this;
         }
 
+        /**
+         * Test-only: {@code false} lays floor markers at the nodes alone, none along the long
+         * edges ({@link HospitalMap#edgeMarkers()}), so that a test can show what the markers
+         * along them prevent. Never for a hospital.
+         */
+        public Builder edgeMarkers(boolean on) {
+            this.edgeMarkers = on;
+            return this;
+        }
+
         /** The world. */
         public HospitalWorld build() {
             return new HospitalWorld(this);
@@ -181,6 +194,11 @@ public final class HospitalWorld {
     /** The map the world was built from. */
     public HospitalMap map() {
         return map;
+    }
+
+    /** The floor markers a chair reads here: the map's ({@link HospitalMap#markers()}). */
+    public java.util.List<io.concord.agents.map.Point> markers() {
+        return markers;
     }
 
     /** Steps a second of world time. */

@@ -39,7 +39,7 @@ public final class SimChair implements ChairDriver {
     private static final double MARKER_RANGE_M = 0.8;
 
     private final HospitalWorld world;
-    /** The map's floor markers: its nodes, and at a node with lanes each lane's point. */
+    /** The world's floor markers: the map's nodes, at a node with lanes each lane's point, and along the long edges. */
     private final java.util.List<io.concord.agents.map.Point> markers;
     private final String name;
     private final ChairConfig config;
@@ -98,7 +98,7 @@ public final class SimChair implements ChairDriver {
     SimChair(HospitalWorld world, String name, ChairConfig config, Body body, org.jbox2d.dynamics.joints.FrictionJoint brake,
              Pose start, SplittableRandom random) {
         this.world = world;
-        this.markers = world.map().markers();
+        this.markers = world.markers();
         this.brake = brake;
         this.name = name;
         this.config = config;
