@@ -1037,18 +1037,23 @@ public final class BenchMain {
                 + "the world, every agent and the network. Each point twice, with the traffic agent's rules in order (the "
                 + "default) and with whole routes (the rules before). Patients' wait: from the request to the chair at their "
                 + "door. Decision: one call of the traffic agent's rules (a request, a release, a review), wall time. Chair-hours "
-                + "waiting: a chair with a task under way standing still (for a route, its turn, a door), sampled each second.",
+                + "waiting: a chair with a task under way standing still (for a route, its turn, a door), sampled each second. "
+                + "The medium map is run twice: as generated, and with a depot (`Shape.withDepot()`: its lobby's parking places "
+                + "behind one node, every chair starting there). Past estimate: a delivered ride's time from the award to the "
+                + "delivery less the cost its chair proposed (the seconds it said the patient would take to be delivered): the "
+                + "quote's error, median and p95. Stalls: a chair with a task and no progress for 120 s that raised no alarm.",
                 "Simulated time, wall-clock CPU"));
         md.append("| map | nodes | chairs | rules | done / sim h | failed | wait mean s | wait p95 s | decision p99 µs | decisions | "
-                + "chair-h waiting | waiting for (chair-h) | contacts | CPU s / sim h | moved aside | deadlocks broken | reviews in an unbroken deadlock |\n");
-        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                + "chair-h waiting | waiting for (chair-h) | contacts | CPU s / sim h | moved aside | deadlocks broken | reviews in an unbroken deadlock | "
+                + "past estimate median s | past estimate p95 s | stalls |\n");
+        md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         List<FleetHarness.Outcome> all = new ArrayList<>();
         for (io.concord.sim.maps.Shape shape : List.of(io.concord.sim.maps.Shape.small(), io.concord.sim.maps.Shape.medium(),
-                io.concord.sim.maps.Shape.large())) {
+                io.concord.sim.maps.Shape.medium().withDepot(), io.concord.sim.maps.Shape.large())) {
             HospitalMap map = FleetHarness.map(shape);
             for (int chairs : List.of(1, 5, 10, 20)) {
                 if (chairs > map.parking().size()) {
-                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | | | |%n", shape.name(),
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | - | (the map parks %d) | | | | | | | | | | | | | | | |%n", shape.name(),
                             map.nodes().size(), chairs, map.parking().size()));
                     continue;
                 }
@@ -1057,11 +1062,11 @@ public final class BenchMain {
                     FleetHarness.Outcome o = FleetHarness.run(map, chairs, rules, seconds, 37);
                     System.out.println(FleetHarness.describe(o));
                     all.add(o);
-                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %s | %d | %.1f | %d | %d | %d |%n",
+                    md.append(String.format(Locale.ROOT, "| %s | %d | %d | %s | %.1f | %d | %.0f | %.0f | %.1f | %d | %.2f | %s | %d | %.1f | %d | %d | %d | %.0f | %.0f | %d |%n",
                             shape.name(), o.nodes(), chairs, rules == io.concord.agents.traffic.TrafficRules.IN_ORDER ? "in order" : "whole routes",
                             o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(), o.decisionP99Us(), o.decisions(),
                             o.chairHoursWaiting(), FleetHarness.hours(o.waitingFor()), o.contacts(), o.cpuSPerSimHour(), o.movedAside(),
-                            o.deadlocks(), o.deadlockedReviews()));
+                            o.deadlocks(), o.deadlockedReviews(), o.pastMedianS(), o.pastP95S(), o.stalls()));
                 }
             }
         }

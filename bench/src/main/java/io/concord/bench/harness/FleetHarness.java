@@ -36,11 +36,13 @@ import java.util.regex.Pattern;
 public final class FleetHarness {
     private static final Pattern REQUESTED = Pattern.compile("^medical: transport (T\\d+) from node");
     private static final Pattern LOADING = Pattern.compile("^medical: (T\\d+) on control-chair\\d+: loading at node");
+    private static final Pattern PROPOSES = Pattern.compile("^medical: (control-chair\\d+) proposes cost ([0-9.]+), path [0-9.]+ for (T\\d+)");
+    private static final Pattern ACCEPT = Pattern.compile("^medical: ACCEPT (control-chair\\d+) for (T\\d+)");
 
     public record Outcome(String map, int nodes, int chairs, TrafficRules rules, double simHours, int done, int failed,
                           double waitMeanS, double waitP95S, double decisionP99Us, long decisions, double chairHoursWaiting,
                           long contacts, double cpuSPerSimHour, long movedAside, long deadlocks, long deadlockedReviews,
-                          Map<String, Double> waitingFor, long stalls, long alarms) {
+                          Map<String, Double> waitingFor, long stalls, long alarms, double pastMedianS, double pastP95S) {
         public double donePerHour() {
             return done / simHours;
         }
@@ -64,6 +66,11 @@ public final class FleetHarness {
         int[] rooms = rooms(map);
         Map<String, Long> requestedMs = new HashMap<>();
         List<Double> waitsS = new ArrayList<>();
+        // A ride past its estimate: from the award to the delivery, less the cost the winner proposed
+        // (its seconds until the patient is delivered).
+        Map<String, Double> proposed = new HashMap<>();
+        Map<String, double[]> awarded = new HashMap<>(); // task -> {award ms, estimate s}
+        List<Double> pastS = new ArrayList<>();
         long[] now = {0};
         ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
         try (VirtualHospital h = new VirtualHospital(map, seed, FaultPlan.NONE, chairs, rules, MedicalAgent.Settings.standard(),
@@ -71,6 +78,19 @@ public final class FleetHarness {
                     Matcher m = REQUESTED.matcher(line);
                     if (m.find()) {
                         requestedMs.put(m.group(1), now[0]);
+                        return;
+                    }
+                    m = PROPOSES.matcher(line);
+                    if (m.find()) {
+                        proposed.put(m.group(3) + " " + m.group(1), Double.parseDouble(m.group(2)));
+                        return;
+                    }
+                    m = ACCEPT.matcher(line);
+                    if (m.find()) {
+                        Double cost = proposed.get(m.group(2) + " " + m.group(1));
+                        if (cost != null) {
+                            awarded.put(m.group(2), new double[] {now[0], cost});
+                        }
                         return;
                     }
                     m = LOADING.matcher(line);
@@ -109,6 +129,10 @@ public final class FleetHarness {
                         return false;
                     }
                     counts[f.join().done() ? 0 : 1]++;
+                    double[] a = awarded.remove(f.join().task());
+                    if (f.join().done() && a != null) {
+                        pastS.add((now[0] - a[0]) / 1000.0 - a[1]);
+                    }
                     return true;
                 });
                 while (open.size() < outstanding) {
@@ -170,7 +194,8 @@ public final class FleetHarness {
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().moves(),
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlocks(),
                     h.hospital.traffic() == null ? 0 : h.hospital.traffic().deadlockReviewsUnbroken(), waitingFor, stalls,
-                    h.medical.alarms().size());
+                    h.medical.alarms().size(), SerialBench.percentile(pastS.stream().mapToDouble(Double::doubleValue).toArray(), 50),
+                    SerialBench.percentile(pastS.stream().mapToDouble(Double::doubleValue).toArray(), 95));
         }
     }
 
@@ -253,10 +278,10 @@ public final class FleetHarness {
     public static String describe(Outcome o) {
         return String.format(Locale.ROOT, "RESULT fleet map=%s nodes=%d chairs=%d rules=%s done_per_hour=%.1f failed=%d wait_mean_s=%.0f "
                         + "wait_p95_s=%.0f decision_p99_us=%.1f chair_hours_waiting=%.2f contacts=%d cpu_s_per_sim_hour=%.1f moved_aside=%d "
-                        + "stalls=%d alarms=%d waiting_for=%s",
+                        + "stalls=%d alarms=%d ride_past_estimate_median_s=%.0f ride_past_estimate_p95_s=%.0f waiting_for=%s",
                 o.map(), o.nodes(), o.chairs(), o.rules(), o.donePerHour(), o.failed(), o.waitMeanS(), o.waitP95S(),
                 o.decisionP99Us(), o.chairHoursWaiting(), o.contacts(), o.cpuSPerSimHour(), o.movedAside(), o.stalls(), o.alarms(),
-                hours(o.waitingFor()));
+                o.pastMedianS(), o.pastP95S(), hours(o.waitingFor()));
     }
 
     /** Chair-hours by reason, to two places. */
