@@ -43,9 +43,11 @@ public final class DropCounters {
 
     /**
      * Reasons that are part of normal operation, never warned about: a copy sent on purpose against
-     * loss, a second answer to a handshake retried while the first answer was on its way.
+     * loss, a second answer to a handshake retried while the first answer was on its way, a message
+     * to an agent nobody knows (its sender is told by the AMS's FAILURE, as in JADE, which prints
+     * nothing either).
      */
-    private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy", "handshake-late");
+    private static final java.util.Set<String> EXPECTED = java.util.Set.of("copy", "handshake-late", "unknown-receiver");
     /**
      * Reasons warned about once per process, not once per agent: frames of another platform
      * sharing the port range reach every agent of this one alike ({@code foreign-key} under
