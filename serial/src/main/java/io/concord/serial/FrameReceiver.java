@@ -99,6 +99,11 @@ final class FrameReceiver {
             drops.count("malformed");
             return;
         }
+        if (!fromBoard && (f.flags() & Frame.SYNC) != 0 && f.type() != Frame.Type.PING) {
+            // A SYNC skips the sequence and delay checks: only on a PING (which disarms), never on a command.
+            drops.count("malformed");
+            return;
+        }
         if (fromBoard) {
             long b = f.type() == Frame.Type.HELLO && BoardProtocol.version(f) != BoardProtocol.VERSION ? -1 : BoardProtocol.boot(f);
             if (b >= 0 && b != boot) {

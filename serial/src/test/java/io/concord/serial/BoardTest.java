@@ -256,6 +256,23 @@ class BoardTest {
         assertEquals(0.0, b.motors.left, "driving needs an ARM again");
     }
 
+    /**
+     * A SYNC skips the sequence and delay checks, so it is taken on a PING alone (which disarms):
+     * a DRIVE flagged SYNC, old and out of order, is dropped as malformed and drives nothing.
+     */
+    @Test
+    void aSyncOnACommandIsMalformedNotASession() {
+        Bench b = new Bench();
+        b.arm();
+        b.at(100);
+        b.host(Frame.Type.STOP, 0, new byte[0]);
+        byte[] forged = b.codec.encode(new Frame(Frame.Type.DRIVE, Frame.SYNC, 3, 10, BoardProtocol.drive(800, 800)));
+        b.board.onBytes(forged, 0, forged.length, 100);
+        assertEquals(0.0, b.motors.left, "no motion from a SYNC that is not a PING");
+        assertEquals(1, b.board.drops().get("malformed"));
+        assertTrue(b.board.armed(), "and no session either: nothing changed");
+    }
+
     /** A reboot: the next boot number, seq 0, counts from 0, not armed. */
     @Test
     void aRebootSaysItsNewBootNumberAndStartsItsCountsAgain() {
