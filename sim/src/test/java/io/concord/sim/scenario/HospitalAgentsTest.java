@@ -403,7 +403,7 @@ class HospitalAgentsTest {
             assertTrue(old.getContent().startsWith("content is not FIPA-SL"), old.getContent());
             AclMessage other = await(r, ward.ask("medical", "((teleport :to 9))"));
             assertEquals(Performative.NOT_UNDERSTOOD, other.getPerformative());
-            assertEquals("unknown request 'teleport'; the Medical agent takes transport-request (docs/wheelchair-protocol.md)", other.getContent());
+            assertEquals("unknown request 'teleport'; the Medical agent takes transport-request and cancel-request (docs/wheelchair-protocol.md)", other.getContent());
             AclMessage toChair = await(r, ward.ask("control-chair1", "((teleport :to 9))"));
             assertEquals(Performative.NOT_UNDERSTOOD, toChair.getPerformative(), "a control agent answers too");
         }
