@@ -113,7 +113,7 @@ class HospitalConsoleTest {
         browser.until(d -> {
             try {
                 String row = d.findElement(By.cssSelector("#audit tr[data-key='T1']")).getText();
-                return row.contains("desk@hospital-ui (desk-1), console client 127.0.0.1:") && row.contains("control-chair1");
+                return row.contains("desk@hospital-ui (desk-1), operator an operator at the console, console client 127.0.0.1:") && row.contains("control-chair1");
             } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
                 return false;
             }
