@@ -48,6 +48,9 @@ public final class HospitalView implements ConsoleView {
     private final FrontDesk desk;
     private final ObjectMapper json = new ObjectMapper();
     private final double[] bounds;
+    /** A serial chair's pose at the last snapshot (board time in ns, x, y), for its speed; and the speed then. Loop thread. */
+    private final Map<String, double[]> serialPoses = new java.util.HashMap<>();
+    private final Map<String, String> serialSpeeds = new java.util.HashMap<>();
 
     /** The agent behind the form: asks the Medical agent, keeps what it answered. */
     public static final class FrontDesk extends Agent {
@@ -670,13 +673,42 @@ public final class HospitalView implements ConsoleView {
             Pose p = ctl.pose();
             String task = "idle";
             for (TaskView t : ctl.tasks()) {
-                if (t.state().ordinal() >= TaskView.State.QUEUED.ordinal() && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
+                if (task.equals("idle") && t.state().ordinal() >= TaskView.State.QUEUED.ordinal()
+                        && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
                     task = t.id() + " " + t.state().name().toLowerCase(Locale.ROOT);
-                    break;
+                }
+                tasks.add(json.createArrayNode().add(name).add(t.id()).add(t.from() + " → " + t.to())
+                        .add(t.state().name().toLowerCase(Locale.ROOT)).add(String.format(Locale.ROOT, "%.0f s", t.costS()))
+                        .add(t.reason() == null ? "" : t.reason()));
+            }
+            String speed = "";
+            var r = ctl.supervisor().latest();
+            if (p != null && r != null) {
+                // The chair's own pose, from one snapshot to the next, over the board's clock.
+                double[] before = serialPoses.put(name, new double[] {r.timeNs(), p.x(), p.y()});
+                if (before != null && r.timeNs() > before[0]) {
+                    double v = Math.hypot(p.x() - before[1], p.y() - before[2]) / ((r.timeNs() - before[0]) / 1e9);
+                    speed = String.format(Locale.ROOT, "%.2f m/s", v < 0.005 ? 0.0 : v);
+                    serialSpeeds.put(name, speed);
+                } else {
+                    speed = serialSpeeds.getOrDefault(name, "");
                 }
             }
+            if (p != null) {
+                // Drawn as a simulated chair is: its body, heading, name, and a red ring while its supervisor holds it.
+                String safety = ctl.supervisor().state().name().toLowerCase(Locale.ROOT);
+                boolean stopped = !safety.equals("armed");
+                ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
+                        .put("color", colour(name)).put("stroke", stopped ? "#c0392b" : "#ffffff").put("strokeWidth", stopped ? 0.16 : 0.05)
+                        .put("id", "chair-" + name).put("title", name + " (serial)" + (stopped ? ": " + safety(ctl) : ""));
+                body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()))
+                        .put("safety", safety).put("serial", "true");
+                line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
+                shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330")
+                        .put("text", name);
+            }
             chairs.add(json.createArrayNode().add(name + " (serial)")
-                    .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add("")
+                    .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add(speed)
                     .add(task).add(safety(ctl)));
         }
         ArrayNode tables = o.putArray("tables");
