@@ -48,6 +48,9 @@ public final class HospitalView implements ConsoleView {
     private final FrontDesk desk;
     private final ObjectMapper json = new ObjectMapper();
     private final double[] bounds;
+    /** A serial chair's pose at the last snapshot (board time in ns, x, y), for its speed; and the speed then. Loop thread. */
+    private final Map<String, double[]> serialPoses = new java.util.HashMap<>();
+    private final Map<String, String> serialSpeeds = new java.util.HashMap<>();
 
     /** The agent behind the form: asks the Medical agent, keeps what it answered. */
     public static final class FrontDesk extends Agent {
@@ -58,6 +61,13 @@ public final class HospitalView implements ConsoleView {
         private final List<Asked> asked = new ArrayList<>();
         /** desk id -> where the request came from (the console's client), for the audit trail. */
         private final Map<String, String> origins = new java.util.HashMap<>();
+        /** desk id -> the operator behind the request (the console's operator key's name), for the audit trail. */
+        private final Map<String, String> operators = new java.util.HashMap<>();
+        /** A cancel asked here: its conversation, the transport, where it stands, what the Medical agent said. */
+        record Cancel(String id, String task, String state, String detail) {
+        }
+
+        private final List<Cancel> cancels = new ArrayList<>();
         /** The Medical agent's last audit answer: its transports, newest first. */
         private volatile com.fasterxml.jackson.databind.JsonNode audit;
         /** The transport whose story was asked for, and the story as the Medical agent answered it. */
@@ -71,7 +81,10 @@ public final class HospitalView implements ConsoleView {
         @Override
         protected void setup() {
             Inbox.each(this, MessageTemplate.matchPerformative(Performative.INFORM).and(MessageTemplate.matchConversationId("audit")), this::audited);
-            Inbox.each(this, MessageTemplate.not(MessageTemplate.matchConversationId("audit")), this::answered);
+            Inbox.each(this, MessageTemplate.not(MessageTemplate.matchConversationId("audit"))
+                    .and(m -> m.getConversationId() != null && m.getConversationId().startsWith("cancel-")), this::cancelAnswered);
+            Inbox.each(this, MessageTemplate.not(MessageTemplate.matchConversationId("audit"))
+                    .and(m -> m.getConversationId() == null || !m.getConversationId().startsWith("cancel-")), this::answered);
         }
 
         /** Asks the Medical agent for its audit trail, at most every two seconds (while the view is drawn). Loop thread. */
@@ -153,6 +166,50 @@ public final class HospitalView implements ConsoleView {
             return origins.getOrDefault(deskId, "");
         }
 
+        /** The operator behind the desk's request, or empty. */
+        String operator(String deskId) {
+            return operators.getOrDefault(deskId, "");
+        }
+
+        /**
+         * Asks the Medical agent to withdraw a transport the desk asked for ({@code cancel-request});
+         * its answer shows in the table of cancels. Loop thread.
+         */
+        String cancel(String task, String reason) {
+            AID medical = medical();
+            if (medical == null) {
+                throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
+            }
+            String id = "cancel-" + (cancels.size() + 1);
+            AclMessage m = new AclMessage(Performative.REQUEST);
+            m.addReceiver(medical);
+            m.setConversationId(id);
+            m.setOntology(Services.ONTOLOGY);
+            m.setLanguage(Services.LANGUAGE);
+            m.setContent(new WheelchairMessage.CancelRequest(task, reason).encode());
+            send(m);
+            cancels.add(new Cancel(id, task, "asked", "to " + medical.localName()));
+            if (cancels.size() > 200) {
+                cancels.remove(0);
+            }
+            auditDueMs = 0;
+            return "asked " + medical.localName() + " to withdraw " + task + " (" + id + ")";
+        }
+
+        /** The Medical agent's AGREE (withdrawn) or REFUSE (why not) to a cancel asked here. */
+        private void cancelAnswered(AclMessage m) {
+            for (int i = 0; i < cancels.size(); i++) {
+                Cancel c = cancels.get(i);
+                if (c.id().equals(m.getConversationId())) {
+                    String state = m.getPerformative() == Performative.AGREE ? "withdrawn"
+                            : m.getPerformative() == Performative.REFUSE ? "refused" : c.state();
+                    String why = m.getPerformative() == Performative.REFUSE ? WheelchairMessage.reasonOf(m) : "by " + m.getSender().localName();
+                    cancels.set(i, new Cancel(c.id(), c.task(), state, why == null ? String.valueOf(m.getContent()) : why));
+                    auditDueMs = 0;
+                }
+            }
+        }
+
         /** The Medical agent's AGREE, INFORM, FAILURE or REFUSE to one of the desk's requests. */
         private void answered(AclMessage m) {
             for (int i = 0; i < asked.size(); i++) {
@@ -192,6 +249,11 @@ public final class HospitalView implements ConsoleView {
 
         /** As {@link #ask(int, int, double, double)}, noting where the request came from (the console's client). */
         String ask(int from, int to, double priority, double unloadS, String origin) {
+            return ask(from, to, priority, unloadS, origin, "");
+        }
+
+        /** As {@link #ask(int, int, double, double, String)}, noting the operator behind it too (the console's operator key's name). */
+        String ask(int from, int to, double priority, double unloadS, String origin, String operator) {
             AID medical = medical();
             if (medical == null) {
                 throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
@@ -206,6 +268,7 @@ public final class HospitalView implements ConsoleView {
             send(m);
             asked.add(new Asked(id, from, to, priority, "asked", "to " + medical.localName()));
             origins.put(id, origin);
+            operators.put(id, operator);
             auditDueMs = 0;   // the new transport shows in the audit at the next snapshot
             if (asked.size() > 200) {
                 asked.remove(0);
@@ -246,7 +309,7 @@ public final class HospitalView implements ConsoleView {
 
     @Override
     public List<String> actions() {
-        return List.of("transport", "resume", "story");
+        return List.of("transport", "resume", "story", "cancel", "stop-all");
     }
 
     @Override
@@ -260,21 +323,79 @@ public final class HospitalView implements ConsoleView {
             }
             return desk.askStory(p.getOrDefault("task", "").trim());
         }
-        int from = integer(p, "from");
-        int to = integer(p, "to");
+        if (action.equals("cancel")) {
+            return cancel(p.getOrDefault("task", "").trim(), p.getOrDefault("reason", "").trim(), who(p));
+        }
+        if (action.equals("stop-all")) {
+            return stopAll(who(p));
+        }
+        HospitalMap map = world.map();
+        int from = map.nodeNamed(p.getOrDefault("from", ""));
+        int to = map.nodeNamed(p.getOrDefault("to", ""));
         double priority = number(p, "priority", 0);
         double unload = number(p, "unload", 60);
-        HospitalMap map = world.map();
-        if (!map.hasNode(from) || !map.hasNode(to)) {
-            throw new IllegalArgumentException("no node " + (map.hasNode(from) ? to : from) + " in " + map.name());
-        }
         if (priority < 0 || priority > 3 || unload < 0 || unload > 3_600) {
             throw new IllegalArgumentException("priority is 0 to 3 and unload 0 to 3600 s");
         }
         if (desk == null) {
             throw new IllegalArgumentException("this view has no front desk (a recording of a run): nothing to ask");
         }
-        return desk.ask(from, to, priority, unload, p.getOrDefault(io.concord.console.ConsoleView.CLIENT, ""));
+        return desk.ask(from, to, priority, unload, p.getOrDefault(io.concord.console.ConsoleView.CLIENT, ""), hospital.operatorKey().name());
+    }
+
+    /** Who acts: the console's operator (its operator key's name) and the browser's address. */
+    private String who(Map<String, String> p) {
+        String client = p.getOrDefault(io.concord.console.ConsoleView.CLIENT, "");
+        return "operator " + hospital.operatorKey().name() + (client.isEmpty() ? "" : " at console client " + client);
+    }
+
+    /**
+     * Withdraws a transport, keeping the rule that a patient on board is never left: refused at
+     * once if a chair of this ward has its patient on board (the Medical agent refuses it too,
+     * whatever the console says); otherwise the front desk asks the Medical agent, which answers
+     * in the table of cancels and ends the transport in the audit trail.
+     */
+    private String cancel(String task, String reason, String who) {
+        if (!task.matches("T\\d{1,9}")) {
+            throw new IllegalArgumentException("a transport is named by the Medical agent's id, T and a number (the audit trail's task column); got '"
+                    + task + "'");
+        }
+        for (ControlAgent ctl : hospital.controls()) {
+            for (TaskView t : ctl.tasks()) {
+                if (t.id().equals(task) && (t.state() == TaskView.State.LOADING || t.state() == TaskView.State.TO_DROPOFF
+                        || t.state() == TaskView.State.UNLOADING)) {
+                    throw new IllegalArgumentException(task + " is not cancelled: its patient is on board " + ctl.supervisor().name() + " ("
+                            + t.state().name().toLowerCase(Locale.ROOT).replace('_', '-') + "), which drives on to the drop-off at node " + t.to()
+                            + "; a transport with its patient on board is never withdrawn");
+                }
+            }
+        }
+        if (desk == null) {
+            throw new IllegalArgumentException("this view has no front desk (a recording of a run): nothing to cancel");
+        }
+        return desk.cancel(task, (reason.isEmpty() ? "cancelled at the console" : reason) + " (" + who + ")");
+    }
+
+    /**
+     * Stops every chair of the ward: each supervisor holds it as an operator's stop, which only an
+     * operator's Resume releases (the agents never resume it by themselves).
+     */
+    private String stopAll(String who) {
+        List<String> stopped = new ArrayList<>();
+        for (ControlAgent ctl : hospital.controls()) {
+            var sup = ctl.supervisor();
+            if (ctl.runtime().inLoop()) {
+                sup.holdByOperator("stop all by " + who);
+            } else {
+                ctl.runtime().execute(() -> sup.holdByOperator("stop all by " + who));
+            }
+            stopped.add(sup.name());
+        }
+        if (stopped.isEmpty()) {
+            throw new IllegalArgumentException("no chair in this ward to stop");
+        }
+        return "stopped " + stopped.size() + (stopped.size() == 1 ? " chair" : " chairs") + " (" + String.join(", ", stopped)
+                + "): each stays held until an operator resumes it";
     }
 
     /** An operator's decision that a held chair may drive again (its supervisor re-arms it; docs/chair-safety.md). */
@@ -402,14 +523,6 @@ public final class HospitalView implements ConsoleView {
                 ring.put("id", "reserved-" + id);
                 ring.putObject("data").put("queue", String.join(",", names));
             }
-        }
-    }
-
-    private static int integer(Map<String, String> p, String k) {
-        try {
-            return Integer.parseInt(p.getOrDefault(k, "").trim());
-        } catch (NumberFormatException e) {
-            throw new IllegalArgumentException(k + " must be a node number, got '" + p.getOrDefault(k, "") + "'");
         }
     }
 
@@ -560,13 +673,42 @@ public final class HospitalView implements ConsoleView {
             Pose p = ctl.pose();
             String task = "idle";
             for (TaskView t : ctl.tasks()) {
-                if (t.state().ordinal() >= TaskView.State.QUEUED.ordinal() && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
+                if (task.equals("idle") && t.state().ordinal() >= TaskView.State.QUEUED.ordinal()
+                        && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
                     task = t.id() + " " + t.state().name().toLowerCase(Locale.ROOT);
-                    break;
+                }
+                tasks.add(json.createArrayNode().add(name).add(t.id()).add(t.from() + " → " + t.to())
+                        .add(t.state().name().toLowerCase(Locale.ROOT)).add(String.format(Locale.ROOT, "%.0f s", t.costS()))
+                        .add(t.reason() == null ? "" : t.reason()));
+            }
+            String speed = "";
+            var r = ctl.supervisor().latest();
+            if (p != null && r != null) {
+                // The chair's own pose, from one snapshot to the next, over the board's clock.
+                double[] before = serialPoses.put(name, new double[] {r.timeNs(), p.x(), p.y()});
+                if (before != null && r.timeNs() > before[0]) {
+                    double v = Math.hypot(p.x() - before[1], p.y() - before[2]) / ((r.timeNs() - before[0]) / 1e9);
+                    speed = String.format(Locale.ROOT, "%.2f m/s", v < 0.005 ? 0.0 : v);
+                    serialSpeeds.put(name, speed);
+                } else {
+                    speed = serialSpeeds.getOrDefault(name, "");
                 }
             }
+            if (p != null) {
+                // Drawn as a simulated chair is: its body, heading, name, and a red ring while its supervisor holds it.
+                String safety = ctl.supervisor().state().name().toLowerCase(Locale.ROOT);
+                boolean stopped = !safety.equals("armed");
+                ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
+                        .put("color", colour(name)).put("stroke", stopped ? "#c0392b" : "#ffffff").put("strokeWidth", stopped ? 0.16 : 0.05)
+                        .put("id", "chair-" + name).put("title", name + " (serial)" + (stopped ? ": " + safety(ctl) : ""));
+                body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()))
+                        .put("safety", safety).put("serial", "true");
+                line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
+                shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330")
+                        .put("text", name);
+            }
             chairs.add(json.createArrayNode().add(name + " (serial)")
-                    .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add("")
+                    .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add(speed)
                     .add(task).add(safety(ctl)));
         }
         ArrayNode tables = o.putArray("tables");
@@ -577,6 +719,11 @@ public final class HospitalView implements ConsoleView {
             asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
         }
         table(tables, "transports", "Transports asked here", List.of("id", "from → to", "state", "detail"), asked);
+        ArrayNode cancelled = json.createArrayNode();
+        for (FrontDesk.Cancel c : desk == null ? List.<FrontDesk.Cancel>of() : List.copyOf(desk.cancels)) {
+            cancelled.add(json.createArrayNode().add(c.id()).add(c.task()).add(c.state()).add(c.detail()));
+        }
+        table(tables, "cancels", "Cancels asked here", List.of("id", "task", "state", "detail"), cancelled);
         table(tables, "bids", "The chairs' tasks and bids (the Medical agent's auctions)", List.of("chair", "task", "from → to", "state", "cost", "reason"), tasks);
         if (desk != null) {
             desk.refreshAudit();
@@ -585,14 +732,21 @@ public final class HospitalView implements ConsoleView {
         ArrayNode forms = o.putArray("forms");
         ObjectNode f = forms.addObject().put("title", "Ask for a transport").put("action", "transport").put("button", "Ask the Medical agent");
         ArrayNode fields = f.putArray("fields");
-        fields.addObject().put("name", "from").put("label", "from node").put("value", "3");
-        fields.addObject().put("name", "to").put("label", "to node").put("value", "9");
+        fields.addObject().put("name", "from").put("label", "from node or room").put("value", "3");
+        fields.addObject().put("name", "to").put("label", "to node or room").put("value", "9");
         fields.addObject().put("name", "priority").put("label", "priority (0, 1.5, 3)").put("value", "3");
         fields.addObject().put("name", "unload").put("label", "load/unload s").put("value", "30");
         ObjectNode r = forms.addObject().put("title", "Resume a held chair (after an e-stop, a reboot, a refusal)").put("action", "resume")
                 .put("button", "Resume");
         r.putArray("fields").addObject().put("name", "chair").put("label", "chair").put("value",
                 hospital.controls().isEmpty() ? "chair1" : hospital.controls().get(0).supervisor().name());
+        ObjectNode c = forms.addObject().put("title", "Cancel a transport (not once its patient is on board)").put("action", "cancel")
+                .put("button", "Cancel the transport");
+        ArrayNode cf = c.putArray("fields");
+        cf.addObject().put("name", "task").put("label", "transport (T1...)").put("value", "T1");
+        cf.addObject().put("name", "reason").put("label", "why").put("value", "");
+        forms.addObject().put("title", "Stop every chair (each stays held until an operator resumes it)").put("action", "stop-all")
+                .put("button", "Stop all chairs").putArray("fields");
         return o.toString();
     }
 
@@ -618,7 +772,9 @@ public final class HospitalView implements ConsoleView {
                 String by = t.path("askedBy").asText();
                 String conv = t.path("conversation").asText();
                 String origin = desk.origin(conv);
-                String asker = by + (conv.isEmpty() ? "" : " (" + conv + ")") + (origin.isEmpty() ? "" : ", console client " + origin);
+                String operator = desk.operator(conv);
+                String asker = by + (conv.isEmpty() ? "" : " (" + conv + ")") + (operator.isEmpty() ? "" : ", operator " + operator)
+                        + (origin.isEmpty() ? "" : ", console client " + origin);
                 ArrayNode r = rows.addArray().add(t.path("task").asText()).add(asker).add(clock(t.path("askedAtMs").asLong()))
                         .add(t.path("from").asInt() + " → " + t.path("to").asInt()).add(t.path("chair").asText());
                 ArrayNode c = csv.addArray().add(t.path("task").asText()).add(by).add(conv).add(origin).add(iso(t.path("askedAtMs").asLong()))
@@ -631,7 +787,7 @@ public final class HospitalView implements ConsoleView {
                 }
                 long end = t.path("endedAtMs").asLong(-1);
                 r.add(clock(end)).add(t.path("outcome").asText()).add(t.path("reason").asText());
-                c.add(iso(end)).add(t.path("outcome").asText()).add(t.path("reason").asText());
+                c.add(iso(end)).add(t.path("outcome").asText()).add(t.path("reason").asText()).add(operator);
             }
         }
         ObjectNode t = table(tables, "audit", "Audit trail (the Medical agent's; click a transport for its story)",
@@ -642,7 +798,7 @@ public final class HospitalView implements ConsoleView {
         ObjectNode x = t.putObject("csv");
         ArrayNode cols = x.putArray("columns");
         List.of("task", "asked_by", "conversation", "origin", "asked_at", "from", "to", "priority", "chair", "auctions", "awarded",
-                "to_pickup", "loading", "to_dropoff", "unloading", "ended", "outcome", "reason").forEach(cols::add);
+                "to_pickup", "loading", "to_dropoff", "unloading", "ended", "outcome", "reason", "operator").forEach(cols::add);
         x.set("rows", csv);
         com.fasterxml.jackson.databind.JsonNode st = desk.story;
         if (desk.storyOf != null) {

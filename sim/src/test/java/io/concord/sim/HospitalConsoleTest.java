@@ -113,7 +113,7 @@ class HospitalConsoleTest {
         browser.until(d -> {
             try {
                 String row = d.findElement(By.cssSelector("#audit tr[data-key='T1']")).getText();
-                return row.contains("desk@hospital-ui (desk-1), console client 127.0.0.1:") && row.contains("control-chair1");
+                return row.contains("desk@hospital-ui (desk-1), operator an operator at the console, console client 127.0.0.1:") && row.contains("control-chair1");
             } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
                 return false;
             }
@@ -248,6 +248,128 @@ class HospitalConsoleTest {
                 }
             }
         }
+    }
+
+    /**
+     * The operator's actions in the browser: a transport asked by room names (an unknown name
+     * refused, naming the rooms); Stop all holds every chair, the idle one too, until the
+     * operator resumes each; a transport cancelled while its chair drives to the pick-up, ended
+     * in the audit trail with the operator's name; a transport whose patient is on board is not
+     * cancelled, by the console nor by the Medical agent, each saying why.
+     */
+    @Test
+    void theOperatorAsksByRoomStopsEveryChairAndCancelsATransportButNeverLeavesAPatient() throws Exception {
+        HospitalMap map = HospitalMap.defaultHospital();
+        try (Platform platform = Platform.builder().name("hospital-ops").ports(new PortRange(7721, 80, 10)).build()) {
+            HospitalWorld world = HospitalWorld.builder(map).seed(2010).build();
+            io.concord.sim.world.SimChair chair1 = world.addChair("chair1", ChairConfig.standard(), world.poseAt(19, 90));
+            io.concord.sim.world.SimChair chair2 = world.addChair("chair2", ChairConfig.standard(), world.poseAt(23, 90));
+            Hospital hospital = Hospital.start(platform, world, line -> { });
+            hospital.operatorKey(io.concord.layers.authority.OperatorKey.generate("nurse Ada"));
+            world.attach(platform.runtime(), 4);
+            platform.startAgent("medical", new MedicalAgent(line -> { }));
+            HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
+            platform.startAgent("desk", desk);
+            try (Console console = Console.start(platform, Console.Config.port(0));
+                 Browser browser = new Browser()) {
+                console.addView(new HospitalView(world, hospital, desk));
+                while (!onLoop(platform, hospital::ready)) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+                // The actions keep the console's guards: a GET is 405 (Allow: POST), a POST without the page's header 403.
+                java.net.http.HttpClient http = java.net.http.HttpClient.newHttpClient();
+                for (String action : java.util.List.of("cancel", "stop-all")) {
+                    java.net.http.HttpResponse<String> get = http.send(java.net.http.HttpRequest.newBuilder(
+                            java.net.URI.create(console.uri() + "api/views/hospital/" + action)).GET().build(),
+                            java.net.http.HttpResponse.BodyHandlers.ofString());
+                    assertTrue(get.statusCode() == 405 && get.headers().firstValue("Allow").orElse("").equals("POST"), action + ": " + get.statusCode());
+                    java.net.http.HttpResponse<String> bare = http.send(java.net.http.HttpRequest.newBuilder(
+                            java.net.URI.create(console.uri() + "api/views/hospital/" + action)).POST(java.net.http.HttpRequest.BodyPublishers.ofString("task=T1"))
+                            .header("Content-Type", "application/x-www-form-urlencoded").build(), java.net.http.HttpResponse.BodyHandlers.ofString());
+                    assertTrue(bare.statusCode() == 403, action + " without the header: " + bare.statusCode());
+                }
+                browser.driver.get(console.uri());
+                browser.until(d -> d.findElement(By.cssSelector("nav button[data-view='hospital']"))).click();
+                // Rooms by name: an unknown one is refused, naming the rooms; A2 and B7 are nodes 3 and 9.
+                field(browser, "from", "Z9");
+                browser.driver.findElement(By.id("action-transport")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith("no node or room 'Z9' in ")
+                        && d.findElement(By.id("view-said")).getText().contains("rooms: A1, A2, A3"));
+                field(browser, "from", "A2");
+                field(browser, "to", "Room B7");
+                browser.driver.findElement(By.id("action-transport")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith("asked medical for a transport from node 3 to node 9"));
+                browser.until(d -> d.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T1") && l.contains("to_pickup")));
+                // Stop all: both chairs held by the operator's stop, on the page and on the map.
+                browser.driver.findElement(By.id("action-stop-all")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText()
+                        .equals("stopped 2 chairs (chair1, chair2): each stays held until an operator resumes it"));
+                browser.until(d -> d.findElement(By.id("chairs")).getText().lines()
+                        .filter(l -> l.contains("held: an operator stopped it (stop all by operator nurse Ada at console client 127.0.0.1:")
+                                && l.contains("needs Resume")).count() == 2);
+                browser.until(d -> d.findElements(By.cssSelector("circle[id^='chair-chair'][data-safety='held'][stroke='#c0392b']")).size() == 2);
+                browser.screenshot("hospital-stop-all");
+                double held1 = onLoop(platform, chair1::distanceTravelled);
+                double held2 = onLoop(platform, chair2::distanceTravelled);
+                double t0 = onLoop(platform, () -> world.worldTimeNs() / 1e9);
+                while (onLoop(platform, () -> world.worldTimeNs() / 1e9) < t0 + 3) {
+                    Thread.sleep(20);   // polling the loop, not waiting for time to pass
+                }
+                assertTrue(onLoop(platform, chair1::distanceTravelled) - held1 < 0.05, "stopped, not resumed: chair1 stands");
+                assertTrue(onLoop(platform, chair2::distanceTravelled) - held2 < 0.05, "stopped: chair2 stands");
+                // Neither agent resumed its chair by itself, with a task (chair1) or without (chair2).
+                for (String c : java.util.List.of("chair1", "chair2")) {
+                    assertTrue(onLoop(platform, () -> hospital.control(c).supervisor().state()) == io.concord.agents.chair.ChairSupervisor.State.HELD,
+                            c + " is still held by the operator's stop");
+                }
+                assertTrue(browser.driver.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T1") && l.contains("to_pickup")),
+                        "T1 was stopped on its way to the pick-up: " + browser.driver.findElement(By.id("bids")).getText());
+                // Cancelled on its way to the pick-up: withdrawn, the chair drops it, the audit says who.
+                field(browser, "task", "T1");
+                field(browser, "reason", "the patient went home");
+                browser.driver.findElement(By.id("action-cancel")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().equals("asked medical to withdraw T1 (cancel-1)"));
+                browser.until(d -> d.findElement(By.id("cancels")).getText().lines().anyMatch(l -> l.contains("cancel-1") && l.contains("withdrawn")));
+                browser.until(d -> d.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T1") && l.contains("cancelled")));
+                browser.until(d -> {
+                    String row = d.findElement(By.cssSelector("#audit tr[data-key='T1']")).getText();
+                    return row.contains("desk@hospital-ops (desk-1), operator nurse Ada, console client 127.0.0.1:")
+                            && row.contains("withdrawn: the patient went home (operator nurse Ada at console client 127.0.0.1:");
+                });
+                // The operator resumes each chair.
+                for (String c : java.util.List.of("chair1", "chair2")) {
+                    field(browser, "chair", c);
+                    browser.driver.findElement(By.id("action-resume")).click();
+                    browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith(c + " resumes"));
+                }
+                browser.until(d -> d.findElement(By.id("chairs")).getText().lines().filter(l -> l.contains(" armed")).count() == 2);
+                // A transport whose patient is on board is never withdrawn: the console refuses, saying why ...
+                field(browser, "from", "A2");
+                field(browser, "to", "B7");
+                field(browser, "unload", "900");
+                browser.driver.findElement(By.id("action-transport")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith("asked medical for a transport from node 3 to node 9 (desk-2)"));
+                browser.until(d -> d.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T2") && l.contains("loading")));
+                field(browser, "task", "T2");
+                browser.driver.findElement(By.id("action-cancel")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().matches(
+                        "T2 is not cancelled: its patient is on board chair[12] \\(loading\\), which drives on to the drop-off at node 9; .*"));
+                // ... and so does the Medical agent, asked over ACL whatever the console checked.
+                onLoop(platform, () -> desk.cancel("T2", "asked past the console"));
+                browser.until(d -> d.findElement(By.id("cancels")).getText().lines().anyMatch(l -> l.contains("cancel-2") && l.contains("refused")
+                        && l.contains("T2's patient is on board control-chair")));
+                assertTrue(browser.driver.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T2") && l.contains("loading")),
+                        "T2 goes on: " + browser.driver.findElement(By.id("bids")).getText());
+                browser.screenshot("hospital-operator");
+            }
+        }
+    }
+
+    /** Types a value into the view's form field of that name. */
+    private static void field(Browser browser, String name, String value) {
+        WebElement in = browser.until(d -> d.findElement(By.cssSelector("#view-form input[name='" + name + "']")));
+        in.clear();
+        in.sendKeys(value);
     }
 
     private static <T> T onLoop(Platform platform, java.util.function.Supplier<T> s) throws Exception {

@@ -76,7 +76,9 @@ public final class ChairSupervisor implements ChairDriver {
         /** The e-stop was pressed (and may since have been released). */
         ESTOP(3, false),
         /** The board started again: its motors at zero, its counts and odometry from scratch. */
-        REBOOT(4, false);
+        REBOOT(4, false),
+        /** An operator stopped it ({@link #holdByOperator}, the console's Stop all): only an operator's resume releases it. */
+        OPERATOR(3, false);
 
         private final int rank;
         private final boolean agentMayResume;
@@ -123,6 +125,7 @@ public final class ChairSupervisor implements ChairDriver {
                 case REFUSED -> "the board refused a command";
                 case ESTOP -> "the e-stop was pressed";
                 case REBOOT -> "the board restarted";
+                case OPERATOR -> "an operator stopped it";
             } + (detail == null || detail.isEmpty() ? "" : " (" + detail + ")")
                     + (repeated == null ? "" : "; " + repeated + ": an operator must resume it");
         }
@@ -189,6 +192,9 @@ public final class ChairSupervisor implements ChairDriver {
     private boolean boardArmed;
     private int armedReadings;
     private String decidedBy;
+
+    /** Who stopped the chair for an operator ({@link #holdByOperator}) since its last resume, or null. */
+    private String operatorStop;
 
     /** Supervises {@code chair} with every defence on, on the system's clock, {@link Repeats#STANDARD}. */
     public ChairSupervisor(ChairDriver chair) {
@@ -296,6 +302,30 @@ public final class ChairSupervisor implements ChairDriver {
     }
 
     /**
+     * An operator's stop (the console's Stop all): motion is held as for an e-stop, and only an
+     * operator's resume releases it; the agents never resume it by themselves, task or none, nor
+     * after a link that drops and comes back meanwhile. A chair that is offline now is held so as
+     * soon as its link is back.
+     *
+     * @param who who stopped it, for the log and the hold's words ("stop all by nurse Ada")
+     */
+    public void holdByOperator(String who) {
+        count("operator-stop");
+        operatorStop = who;
+        if (state == State.OFFLINE) {
+            hold = new Hold(hold.cause(), hold.detail(), "stopped by an operator (" + who + ")");
+            LOG.warn("{}: offline; held for an operator once its link is back: {}", chair.name(), who);
+            return;
+        }
+        holdFor(Cause.OPERATOR, who);
+    }
+
+    /** Who stopped the chair for an operator ({@link #holdByOperator}) since its last resume, or null. */
+    public String operatorStop() {
+        return operatorStop;
+    }
+
+    /**
      * Decides that motion may resume: neutral goes out, and the agents' commands reach the motors
      * once the board says it is armed. Null if it is resuming (or armed already), else why not.
      *
@@ -312,6 +342,7 @@ public final class ChairSupervisor implements ChairDriver {
             return chair.name() + "'s e-stop is still pressed: release it first";
         }
         count("resume");
+        operatorStop = null;
         if (hold.repeated() != null) {
             recent.remove(hold.cause()); // an operator decided: the count of that fault starts again
         }
@@ -426,7 +457,9 @@ public final class ChairSupervisor implements ChairDriver {
             count("link-down");
             state = State.OFFLINE;
             chair.holdMotion();
-            hold = new Hold(Cause.LINK, linkLoss == null ? "no word from the chair" : linkLoss, repeated(Cause.LINK));
+            String repeated = repeated(Cause.LINK);
+            hold = new Hold(Cause.LINK, linkLoss == null ? "no word from the chair" : linkLoss,
+                    operatorStop != null ? "stopped by an operator before (" + operatorStop + ")" : repeated);
             linkLoss = null;
             LOG.warn("{}: holds motion: {}", chair.name(), hold);
             if (observer != null) {

@@ -154,7 +154,8 @@ final class Holds implements ChairSupervisor.Observer {
         ChairSupervisor.Hold h = supervisor.hold();
         if (h.agentMayResume()) {
             supervisor.resume(name.get() + " (" + h + ")");
-        } else if (!agent.hasWork() && h.repeated() == null) {
+        } else if (!agent.hasWork() && h.repeated() == null && h.cause() != ChairSupervisor.Cause.OPERATOR
+                && supervisor.operatorStop() == null) {
             // A fault that recurs waits for an operator even with no task: the next task would meet it.
             supervisor.resume(name.get() + " (" + h + "; no task accepted)");
         }

@@ -410,6 +410,42 @@ public final class HospitalMap {
         return nodes.containsKey(id);
     }
 
+    /**
+     * The node a person names: a node's number ({@code 3}), or a patient's room by its name
+     * ({@code A2}, {@code Room A2}, {@code a2}: the room's name, with or without its first word,
+     * or its id, in any case), which gives the room's first node in map order.
+     *
+     * @throws IllegalArgumentException naming the map's rooms, for a name that is no node nor room
+     */
+    public int nodeNamed(String nodeOrRoom) {
+        String t = nodeOrRoom == null ? "" : nodeOrRoom.trim();
+        if (t.matches("\\d{1,9}")) {
+            int id = Integer.parseInt(t);
+            if (!hasNode(id)) {
+                throw new IllegalArgumentException("no node " + id + " in " + name);
+            }
+            return id;
+        }
+        List<String> rooms = new ArrayList<>();
+        for (Area a : areas) {
+            if (a.kind() != Area.Kind.ROOM) {
+                continue;
+            }
+            String short_ = a.name().contains(" ") ? a.name().substring(a.name().indexOf(' ') + 1) : a.name();
+            rooms.add(short_);
+            if (t.equalsIgnoreCase(a.name()) || t.equalsIgnoreCase(short_) || t.equalsIgnoreCase(a.id())) {
+                for (Node n : nodeList) {
+                    if (a.id().equals(n.area())) {
+                        return n.id();
+                    }
+                }
+                throw new IllegalArgumentException(a.name() + " has no node of the route graph in " + name);
+            }
+        }
+        throw new IllegalArgumentException("no node or room '" + t + "' in " + name + (rooms.isEmpty() ? " (it has no rooms)"
+                : "; rooms: " + String.join(", ", rooms)) + "; or a node's number");
+    }
+
     /** The node with this id. */
     public Node node(int id) {
         Node n = nodes.get(id);

@@ -133,6 +133,8 @@ public class MedicalAgent extends Agent {
     private final Map<String, Progress> progress = new LinkedHashMap<>();
     /** Tasks whose chair went silent with the patient on board: its result is still awaited, from that chair alone. */
     private final Map<String, Consumer<AclMessage>> awaitedAboard = new LinkedHashMap<>();
+    /** task -> who asked for it (an agent's full name): a member cancels only its own. */
+    private final Map<String, String> askers = new LinkedHashMap<>();
     /** task -> auctions held (conversation ids stay unique while a task waits for a chair). */
     private final Map<String, Integer> auctionsHeld = new LinkedHashMap<>();
 
@@ -206,9 +208,12 @@ public class MedicalAgent extends Agent {
                 send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
             }
         });
+        MessageTemplate cancels = MessageTemplate.matchPerformative(Performative.REQUEST)
+                .and(WheelchairMessage.matching(WheelchairMessage.CancelRequest.class));
+        Inbox.each(this, cancels, this::cancelRequested);
         // Any other REQUEST is answered, saying what is wrong or what this agent takes.
-        Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST).and(MessageTemplate.not(requests)),
-                m -> WheelchairMessage.notTaken(m, "the Medical agent takes transport-request", this::send));
+        Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST).and(MessageTemplate.not(requests.or(cancels))),
+                m -> WheelchairMessage.notTaken(m, "the Medical agent takes transport-request and cancel-request", this::send));
     }
 
     /** How a transport asked for by REQUEST ended, for whoever asked. */
@@ -248,6 +253,7 @@ public class MedicalAgent extends Agent {
         CompletableFuture<Outcome> f = new CompletableFuture<>();
         open.put(id, f);
         audit.asked(id, askedBy, conversation, currentTimeMillis(), from, to, priority);
+        askers.put(id, askedBy);
         f.whenComplete((o, e) -> {
             if (o != null) {
                 audit.ended(id, o.done(), o.chair(), o.reason(), currentTimeMillis());
@@ -259,6 +265,7 @@ public class MedicalAgent extends Agent {
             awaitedAboard.remove(id);
             auctionsHeld.remove(id);
             lastFailure.remove(id);
+            askers.remove(id);
         });
         log.accept(String.format(Locale.ROOT, "%s: transport %s from node %d to node %d, priority %.1f, unload %.0f s",
                 getLocalName(), id, from, to, priority, unloadS));
@@ -389,36 +396,73 @@ public class MedicalAgent extends Agent {
     /**
      * Withdraws a transport (the staff changed their mind): the chair it was given to gets a
      * CANCEL and stops driving it; the transport ends, not done, with the reason. False if it has
-     * ended already. Thread-safe.
+     * ended already, or if its patient is on board (then the chair drives on to the drop-off).
+     * Thread-safe.
      */
     public CompletableFuture<Boolean> cancel(String task, String why) {
-        CompletableFuture<Boolean> r = new CompletableFuture<>();
-        Runnable run = () -> {
-            CompletableFuture<Outcome> f = open.get(task);
-            if (f == null) {
-                r.complete(false);
-                return;
-            }
-            AclMessage winner = awarded.get(task);
-            if (patientOnBoard(task)) {
-                log.accept(getLocalName() + ": " + task + " is not withdrawn (" + why + "): its patient is on board "
-                        + winner.getSender().localName() + ", which drives on to the drop-off");
-                r.complete(false);
-                return;
-            }
-            if (winner != null) {
-                withdraw(task, winner);
-            }
-            log.accept(getLocalName() + ": " + task + " withdrawn: " + why);
-            f.complete(new Outcome(task, false, winner == null ? null : winner.getSender().localName(), "withdrawn: " + why, 0));
-            r.complete(true);
-        };
+        return withdrawal(task, why).thenApply(refused -> refused == null);
+    }
+
+    /**
+     * As {@link #cancel}, saying why not: completes with null once the transport is withdrawn, or
+     * with the reason it is not (it has ended or is unknown; its patient is on board). Thread-safe.
+     */
+    public CompletableFuture<String> withdrawal(String task, String why) {
+        CompletableFuture<String> r = new CompletableFuture<>();
+        Runnable run = () -> r.complete(cancelOnLoop(task, why));
         if (runtime().inLoop()) {
             run.run();
         } else {
             runtime().execute(run);
         }
         return r;
+    }
+
+    /** Withdraws {@code task}: null if done, else why not. Loop thread. */
+    private String cancelOnLoop(String task, String why) {
+        CompletableFuture<Outcome> f = open.get(task);
+        if (f == null) {
+            return "no transport " + task + " under way (it has ended, or there is none of that id)";
+        }
+        AclMessage winner = awarded.get(task);
+        if (patientOnBoard(task)) {
+            log.accept(getLocalName() + ": " + task + " is not withdrawn (" + why + "): its patient is on board "
+                    + winner.getSender().localName() + ", which drives on to the drop-off");
+            return task + "'s patient is on board " + winner.getSender().localName() + " (" + progress.get(task).phase()
+                    + " at node " + progress.get(task).node() + "): it drives on to the drop-off; a transport with its patient on board is never withdrawn";
+        }
+        if (winner != null) {
+            withdraw(task, winner);
+        }
+        log.accept(getLocalName() + ": " + task + " withdrawn: " + why);
+        f.complete(new Outcome(task, false, winner == null ? null : winner.getSender().localName(), "withdrawn: " + why, 0));
+        return null;
+    }
+
+    /**
+     * A member's REQUEST {@code cancel-request}: only for a transport it asked for itself (the
+     * policy's condition for a member), answered AGREE with its own text once withdrawn, or REFUSE
+     * with why not.
+     */
+    private void cancelRequested(AclMessage m) {
+        try {
+            WheelchairMessage.CancelRequest c = WheelchairMessage.decode(m, WheelchairMessage.CancelRequest.class);
+            Policy.Decision may = Policy.defaults().decide(Policy.principalOf(m, getAID().platform()), Policy.Service.TRANSPORT_CANCEL);
+            String refused = !may.allowed() ? may.reason()
+                    : !open.containsKey(c.task()) ? "no transport " + c.task() + " under way (it has ended, or there is none of that id)"
+                    : !m.getSender().name().equals(askers.get(c.task()))
+                    ? m.getSender().name() + " did not ask for " + c.task() + " (" + askers.get(c.task()) + " did): a member cancels only the transports it asked for"
+                    : cancelOnLoop(c.task(), (c.reason() == null || c.reason().isBlank() ? "no reason given" : c.reason())
+                            + " (asked by " + m.getSender().localName() + ")");
+            if (refused != null) {
+                log.accept(getLocalName() + ": refuses to cancel " + c.task() + " for " + m.getSender().name() + ": " + refused);
+                send(m.createReply().setPerformative(Performative.REFUSE).setContent(new Refused(c.task(), null, refused, false).encode()));
+            } else {
+                send(m.createReply().setPerformative(Performative.AGREE).setContent(m.getContent()));
+            }
+        } catch (IllegalArgumentException e) {
+            send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
+        }
     }
 
     /** Tells the chair whose proposal was accepted that the task is no longer its. */

@@ -40,6 +40,7 @@ final class Codec {
         under(Award.class, ACCEPT_PROPOSAL);
         under(Rejection.class, REJECT_PROPOSAL);
         under(Withdrawal.class, CANCEL);
+        under(CancelRequest.class, REQUEST, AGREE);
         under(Done.class, INFORM);
         under(Failed.class, FAILURE);
         under(Paused.class, INFORM);

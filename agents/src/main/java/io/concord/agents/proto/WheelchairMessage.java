@@ -62,6 +62,7 @@ public sealed interface WheelchairMessage {
         default void onAward(Award w, AclMessage m) { unknown(w.verb(), m); }
         default void onRejection(Rejection w, AclMessage m) { unknown(w.verb(), m); }
         default void onWithdrawal(Withdrawal w, AclMessage m) { unknown(w.verb(), m); }
+        default void onCancelRequest(CancelRequest w, AclMessage m) { unknown(w.verb(), m); }
         default void onDone(Done w, AclMessage m) { unknown(w.verb(), m); }
         default void onFailed(Failed w, AclMessage m) { unknown(w.verb(), m); }
         default void onPaused(Paused w, AclMessage m) { unknown(w.verb(), m); }
@@ -199,6 +200,19 @@ public sealed interface WheelchairMessage {
     record Withdrawal(@Slot(mandatory = true) String task) implements WheelchairMessage, AgentAction {
         public void to(Handler h, AclMessage m) {
             h.onWithdrawal(this, m);
+        }
+    }
+
+    /**
+     * REQUEST {@code cancel-request}, to the Medical agent: withdraw a transport ({@code task}, its
+     * id, T and a number) for {@code reason}; answered AGREE with this very text once withdrawn, or
+     * REFUSE ({@link Refused}) saying why not: the transport has ended, its patient is on board,
+     * or the sender did not ask for it (a member cancels only the transports it asked for).
+     */
+    @Element(name = "cancel-request")
+    record CancelRequest(@Slot(mandatory = true) String task, String reason) implements WheelchairMessage, AgentAction {
+        public void to(Handler h, AclMessage m) {
+            h.onCancelRequest(this, m);
         }
     }
 

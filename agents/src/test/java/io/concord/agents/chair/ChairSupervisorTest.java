@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -259,6 +260,45 @@ class ChairSupervisorTest {
         oc.listener.onOnline(true);
         off.drive(50, 50);
         assertEquals("drive 50,50", oc.last());
+    }
+
+    /**
+     * An operator's stop (the console's Stop all) holds an armed chair as an e-stop does: the agent
+     * may not resume it, not even after a link lost and found meanwhile; a chair offline when
+     * stopped is held so when its link is back; the operator's resume releases it.
+     */
+    @Test
+    void anOperatorsStopHoldsUntilAnOperatorResumesAcrossALinkLostAndFound() {
+        FakeChair c = new FakeChair();
+        ChairSupervisor s = armedOn(c, all(), new Heard());
+        s.holdByOperator("stop all by operator nurse Ada");
+        assertEquals(ChairSupervisor.State.HELD, s.state());
+        assertEquals("an operator stopped it (stop all by operator nurse Ada)", s.hold().toString());
+        assertFalse(s.hold().agentMayResume());
+        s.drive(50, 50);
+        assertEquals("neutral", c.last());
+        c.online = false;
+        c.listener.onOnline(false);
+        c.online = true;
+        c.listener.onOnline(true);
+        assertEquals(ChairSupervisor.State.HELD, s.state());
+        assertFalse(s.hold().agentMayResume(), "a link lost and found does not let the agent resume an operator's stop: " + s.hold());
+        assertTrue(s.hold().toString().contains("stopped by an operator before (stop all by operator nurse Ada)"), s.hold().toString());
+        assertNull(s.resume("operator nurse Ada"));
+        assertNull(s.operatorStop());
+        c.event(ChairEvent.Kind.ARMED, null);
+        c.reading(false);
+        c.reading(false);
+        s.drive(50, 50);
+        assertEquals("drive 50,50", c.last());
+        // Offline when stopped: held for an operator once the link is back.
+        c.online = false;
+        c.listener.onOnline(false);
+        s.holdByOperator("stop all by operator nurse Ada");
+        c.online = true;
+        c.listener.onOnline(true);
+        assertEquals(ChairSupervisor.State.HELD, s.state());
+        assertFalse(s.hold().agentMayResume(), s.hold().toString());
     }
 
     // ---- faults that recur -----------------------------------------------------------------------

@@ -77,6 +77,22 @@ class HospitalMapTest {
         assertEquals(6, m.walls().size(), "a path of five points is four walls, plus two");
     }
 
+    /** A node is named by its number or its room's name (A2, Room A2, a2); anything else is refused naming the rooms. */
+    @Test
+    void aNodeIsNamedByItsNumberOrItsRoom() {
+        HospitalMap m = HospitalMap.defaultHospital();
+        assertEquals(3, m.nodeNamed("3"));
+        assertEquals(3, m.nodeNamed("A2"));
+        assertEquals(3, m.nodeNamed(" room a2 "));
+        assertEquals(9, m.nodeNamed("Room B7"));
+        assertEquals(9, m.nodeNamed("b7"));
+        assertEquals(14, m.nodeNamed("A1"));
+        assertEquals("no node 99 in " + m.name(), assertThrows(IllegalArgumentException.class, () -> m.nodeNamed("99")).getMessage());
+        String e = assertThrows(IllegalArgumentException.class, () -> m.nodeNamed("Lobby")).getMessage();
+        assertTrue(e.startsWith("no node or room 'Lobby' in " + m.name() + "; rooms: A1, A2, A3, A4, A5, A6, A7, A8, B1, ") && e.endsWith("B8; or a node's number"), e);
+        assertThrows(IllegalArgumentException.class, () -> m.nodeNamed(""));
+    }
+
     @Test
     void theDefaultHospitalHasTwoWardsJoinedByCorridorsAndEnoughNodes() {
         HospitalMap m = HospitalMap.defaultHospital();

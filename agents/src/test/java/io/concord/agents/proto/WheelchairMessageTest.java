@@ -50,6 +50,8 @@ class WheelchairMessageTest {
             new Case(new Award("T1"), ACCEPT_PROPOSAL, "((award :task T1))"),
             new Case(new Rejection("T1"), REJECT_PROPOSAL, "((rejection :task T1))"),
             new Case(new Withdrawal("T4"), CANCEL, "((withdrawal :task T4))"),
+            new Case(new CancelRequest("T4", "the patient went home"), REQUEST, "((cancel-request :reason \"the patient went home\" :task T4))"),
+            new Case(new CancelRequest("T4", null), AGREE, "((cancel-request :task T4))"),
             new Case(new Done("T1", 9, null, null), INFORM, "((transport-done :node 9 :task T1))"),
             new Case(new Done("T1", null, "chair1", ""), INFORM, "((transport-done :chair chair1 :reason \"\" :task T1))"),
             new Case(new Failed("T1", null, "chair1 has been offline for 30.0 s"), FAILURE, "((transport-failed :reason \"chair1 has been offline for 30.0 s\" :task T1))"),

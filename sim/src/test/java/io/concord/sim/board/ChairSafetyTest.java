@@ -52,6 +52,8 @@ class ChairSafetyTest {
         final ChairSupervisor supervisor;
         final ControlAgent control;
         final MedicalAgent medical;
+        /** The ward's world: its doors (the chair is not in it: it is on the serial port). */
+        final HospitalWorld world;
         final List<String> log = Collections.synchronizedList(new ArrayList<>());
 
         Ward(Path dir, Set<Defence> defences, MedicalAgent.Settings medicalSettings, String... emulatorOptions) throws Exception {
@@ -64,6 +66,7 @@ class ChairSafetyTest {
             platform = Platform.builder().name("hospital").build();
             rt = platform.runtime();
             HospitalWorld doors = HospitalWorld.builder(MAP).seed(1).build();
+            world = doors;
             hospital = Hospital.start(platform, doors, log::add);
             doors.attach(rt);
             serial = call(() -> SerialChair.open(rt, SerialChair.Settings.of(pty.host.toString(), "chair1").withStart(doors.poseAt(19, 90))));

@@ -286,6 +286,15 @@ class HospitalAgentsTest {
             assertTrue(r.log.contains("control-chair1: ignores a CANCEL of T1 from stranger@hospital: only medical@hospital, who gave it, "
                     + "may withdraw it"), String.join("\n", ScenarioTest.tail(r.log, 10)));
             assertEquals(TaskView.State.TO_PICKUP, r.hospital.control("chair1").tasks().get(0).state());
+            // A member that did not ask for it cannot have the Medical agent withdraw it either.
+            AclMessage refused = await(r, p.ask("medical", "((cancel-request :task T1 :reason \"not mine\"))"));
+            assertEquals(Performative.REFUSE, refused.getPerformative(), refused.getContent());
+            assertEquals("stranger@hospital did not ask for T1 (medical@hospital did): a member cancels only the transports it asked for",
+                    WheelchairMessage.reasonOf(refused));
+            AclMessage unknown = await(r, p.ask("medical", "((cancel-request :task T7))"));
+            assertEquals(Performative.REFUSE, unknown.getPerformative(), unknown.getContent());
+            assertTrue(WheelchairMessage.reasonOf(unknown).startsWith("no transport T7 under way"), unknown.getContent());
+            assertEquals(TaskView.State.TO_PICKUP, r.hospital.control("chair1").tasks().get(0).state());
             // The staff withdraw it: the chair stops and drops it.
             var withdrawn = r.medical.cancel("T1", "the patient went home");
             assertTrue(r.sim.runUntil(withdrawn::isDone, 1_000) && withdrawn.join());
@@ -403,7 +412,7 @@ class HospitalAgentsTest {
             assertTrue(old.getContent().startsWith("content is not FIPA-SL"), old.getContent());
             AclMessage other = await(r, ward.ask("medical", "((teleport :to 9))"));
             assertEquals(Performative.NOT_UNDERSTOOD, other.getPerformative());
-            assertEquals("unknown request 'teleport'; the Medical agent takes transport-request (docs/wheelchair-protocol.md)", other.getContent());
+            assertEquals("unknown request 'teleport'; the Medical agent takes transport-request and cancel-request (docs/wheelchair-protocol.md)", other.getContent());
             AclMessage toChair = await(r, ward.ask("control-chair1", "((teleport :to 9))"));
             assertEquals(Performative.NOT_UNDERSTOOD, toChair.getPerformative(), "a control agent answers too");
         }
