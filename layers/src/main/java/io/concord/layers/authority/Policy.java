@@ -76,7 +76,7 @@ public final class Policy {
         /** The console's pages, lists and event streams. */
         CONSOLE_READ("console-read", "the console's pages and event streams"),
         /** The console's actions on agents: start, kill, send, record. */
-        CONSOLE_ACTION("console-action", "the console's actions: start, kill, send, transport, record");
+        CONSOLE_ACTION("console-action", "the console's actions: start, kill, send, transport, cancel, stop all, resume, record");
 
         private final String key;
         private final String said;
