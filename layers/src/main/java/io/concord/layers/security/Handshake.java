@@ -346,6 +346,12 @@ final class Handshake {
                 ctx.drop(env, "handshake-late", "a second reply from " + name + " to a hello it answered already");
                 return;
             }
+            if (known != null && known.supersededChallenge != null && Arrays.equals(known.supersededChallenge, echo)) {
+                // The hellos crossed: the peer's handshake, answered by this agent, was confirmed
+                // first, and the peer's answer to this agent's own hello comes after. It changes nothing.
+                ctx.drop(env, "handshake-late", "a reply from " + name + " to a hello of this agent made needless by the crossed handshake");
+                return;
+            }
             ctx.drop(env, "replayed-handshake", "a reply from " + name + " to no hello of this agent under way");
             return;
         }
@@ -460,6 +466,9 @@ final class Handshake {
     private void confirmed(LayerContext ctx, long src, Pair pair, Pair.Pending sent) {
         pair.pending.clear();
         pair.confirmedHello = sent.helloChallenge();
+        if (pair.challenge != null) {
+            pair.supersededChallenge = pair.challenge;
+        }
         pair.challenge = null;
         use(ctx, pair, sent.keyBytes());
         flush(ctx, pair);

@@ -29,6 +29,11 @@ final class Pair {
     byte[] challenge;
     /** The challenge of this agent's last hello that was answered: another reply to it is late, not a replay. */
     byte[] answeredChallenge;
+    /**
+     * This agent's own hello's challenge when the peer's handshake, which it answered, was confirmed
+     * first (hellos crossed): the peer's answer to it may still come, late, not a replay.
+     */
+    byte[] supersededChallenge;
     /** Replies this agent sent, each waiting for the peer's confirmation. */
     final ArrayDeque<Pending> pending = new ArrayDeque<>();
     /** The challenge of the last hello whose key was confirmed: a copy of it is a replay. */
