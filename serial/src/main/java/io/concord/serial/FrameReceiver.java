@@ -95,12 +95,9 @@ final class FrameReceiver {
             drops.count("wrong-direction");
             return;
         }
-        if (fromBoard && (f.flags() & Frame.SYNC) != 0) {
-            drops.count("malformed");
-            return;
-        }
-        if (!fromBoard && (f.flags() & Frame.SYNC) != 0 && f.type() != Frame.Type.PING) {
-            // A SYNC skips the sequence and delay checks: only on a PING (which disarms), never on a command.
+        if ((f.flags() & Frame.SYNC) != 0 && (fromBoard || f.type() != Frame.Type.PING)) {
+            // Only the host starts sessions, and only with a PING (which disarms): a SYNC skips the
+            // sequence and delay checks, so it never comes on a command.
             drops.count("malformed");
             return;
         }

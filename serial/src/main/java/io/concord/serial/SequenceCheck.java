@@ -35,10 +35,8 @@ final class SequenceCheck {
     private volatile int earlyMin;
     private volatile long earlyAt;
     private long windowStart;
-    private int windowMin;
-    private long windowMinAt;
-    private volatile int lateMin;
-    private volatile long lateAt;
+    private volatile int windowMin;
+    private volatile long windowMinAt;
 
     /** @param maxAgeMs frames delayed more than this are stale; the drift tolerance is {@link #DRIFT} */
     public SequenceCheck(long maxAgeMs) {
@@ -71,8 +69,6 @@ final class SequenceCheck {
             windowStart = localMs;
             windowMin = offset;
             windowMinAt = localMs;
-            lateMin = offset;
-            lateAt = localMs;
             return null;
         }
         int ahead = (f.seq() - last) & 0xFFFF;
@@ -107,7 +103,7 @@ final class SequenceCheck {
         refOffset = 0;
         slack = 0;
         earlyAt = 0;
-        lateAt = 0;
+        windowMinAt = 0;
     }
 
     /** Keeps the offsets' lower envelope: the first second's least, and the latest window's least (stale or not). */
@@ -126,8 +122,6 @@ final class SequenceCheck {
             windowMin = offset;
             windowMinAt = localMs;
         }
-        lateMin = windowMin;
-        lateAt = windowMinAt;
     }
 
     /**
@@ -142,11 +136,11 @@ final class SequenceCheck {
         if (span < 1_000) {
             return Double.NaN;
         }
-        return (lateMin - earlyMin) / (double) span;
+        return (windowMin - earlyMin) / (double) span;
     }
 
     /** The time the drift is measured over, in ms of this end's clock. */
     public long driftSpanMs() {
-        return lateAt - earlyAt;
+        return windowMinAt - earlyAt;
     }
 }

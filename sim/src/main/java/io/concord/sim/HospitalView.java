@@ -362,8 +362,7 @@ public final class HospitalView implements ConsoleView {
         }
         for (ControlAgent ctl : hospital.controls()) {
             for (TaskView t : ctl.tasks()) {
-                if (t.id().equals(task) && (t.state() == TaskView.State.LOADING || t.state() == TaskView.State.TO_DROPOFF
-                        || t.state() == TaskView.State.UNLOADING)) {
+                if (t.id().equals(task) && t.state().patientOnBoard()) {
                     throw new IllegalArgumentException(task + " is not cancelled: its patient is on board " + ctl.supervisor().name() + " ("
                             + t.state().name().toLowerCase(Locale.ROOT).replace('_', '-') + "), which drives on to the drop-off at node " + t.to()
                             + "; a transport with its patient on board is never withdrawn");
@@ -638,25 +637,14 @@ public final class HospitalView implements ConsoleView {
                     path.put("id", "route-" + c.name());
                 }
             }
-            // A chair its supervisor holds (e-stop, trip, reboot, refusal) or has lost: a red ring round it, and why in its title.
-            String safety = ctl == null ? "armed" : ctl.supervisor().state().name().toLowerCase(Locale.ROOT);
-            boolean stopped = !safety.equals("armed");
-            ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
-                    .put("color", colour(c.name())).put("stroke", stopped ? "#c0392b" : "#ffffff").put("strokeWidth", stopped ? 0.16 : 0.05)
-                    .put("id", "chair-" + c.name()).put("title", c.name() + (stopped && ctl != null ? ": " + safety(ctl) : ""));
-            body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()))
-                    .put("safety", safety);
-            line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
-            shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330").put("text", c.name());
+            drawChair(shapes, c.name(), p, ctl, false);
             TaskView current = null;
             if (ctl != null) {
                 for (TaskView t : ctl.tasks()) {
                     if (current == null && t.state().ordinal() >= TaskView.State.QUEUED.ordinal() && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
                         current = t;
                     }
-                    tasks.add(json.createArrayNode().add(c.name()).add(t.id()).add(t.from() + " → " + t.to())
-                            .add(t.state().name().toLowerCase(Locale.ROOT)).add(String.format(Locale.ROOT, "%.0f s", t.costS()))
-                            .add(t.reason() == null ? "" : t.reason()));
+                    tasks.add(bidRow(c.name(), t));
                 }
             }
             chairs.add(json.createArrayNode().add(c.name()).add(String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y()))
@@ -677,9 +665,7 @@ public final class HospitalView implements ConsoleView {
                         && t.state().ordinal() <= TaskView.State.UNLOADING.ordinal()) {
                     task = t.id() + " " + t.state().name().toLowerCase(Locale.ROOT);
                 }
-                tasks.add(json.createArrayNode().add(name).add(t.id()).add(t.from() + " → " + t.to())
-                        .add(t.state().name().toLowerCase(Locale.ROOT)).add(String.format(Locale.ROOT, "%.0f s", t.costS()))
-                        .add(t.reason() == null ? "" : t.reason()));
+                tasks.add(bidRow(name, t));
             }
             String speed = "";
             var r = ctl.supervisor().latest();
@@ -695,17 +681,7 @@ public final class HospitalView implements ConsoleView {
                 }
             }
             if (p != null) {
-                // Drawn as a simulated chair is: its body, heading, name, and a red ring while its supervisor holds it.
-                String safety = ctl.supervisor().state().name().toLowerCase(Locale.ROOT);
-                boolean stopped = !safety.equals("armed");
-                ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
-                        .put("color", colour(name)).put("stroke", stopped ? "#c0392b" : "#ffffff").put("strokeWidth", stopped ? 0.16 : 0.05)
-                        .put("id", "chair-" + name).put("title", name + " (serial)" + (stopped ? ": " + safety(ctl) : ""));
-                body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x())).put("y", String.format(Locale.ROOT, "%.2f", p.y()))
-                        .put("safety", safety).put("serial", "true");
-                line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
-                shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330")
-                        .put("text", name);
+                drawChair(shapes, name, p, ctl, true);
             }
             chairs.add(json.createArrayNode().add(name + " (serial)")
                     .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add(speed)
@@ -820,6 +796,33 @@ public final class HospitalView implements ConsoleView {
     }
 
     /** What the chair's safety supervisor says: armed, or held and why, with who may resume it. */
+    /**
+     * A chair on the map, simulated or serial alike: its body in its colour, its heading, its name,
+     * and a red ring while its supervisor holds it (e-stop, trip, reboot, refusal, an operator's
+     * stop) or has lost it, with why in its title.
+     */
+    private void drawChair(ArrayNode shapes, String name, Pose p, ControlAgent ctl, boolean serial) {
+        String safety = ctl == null ? "armed" : ctl.supervisor().state().name().toLowerCase(Locale.ROOT);
+        boolean stopped = !safety.equals("armed");
+        ObjectNode body = shapes.addObject().put("type", "circle").put("x", p.x()).put("y", p.y()).put("r", 0.45)
+                .put("color", colour(name)).put("stroke", stopped ? "#c0392b" : "#ffffff").put("strokeWidth", stopped ? 0.16 : 0.05)
+                .put("id", "chair-" + name).put("title", name + (serial ? " (serial)" : "") + (stopped && ctl != null ? ": " + safety(ctl) : ""));
+        ObjectNode data = body.putObject("data").put("x", String.format(Locale.ROOT, "%.2f", p.x()))
+                .put("y", String.format(Locale.ROOT, "%.2f", p.y())).put("safety", safety);
+        if (serial) {
+            data.put("serial", "true");
+        }
+        line(shapes, "#ffffff", 0.12, p.x(), p.y(), p.x() + 0.45 * Math.cos(p.heading()), p.y() + 0.45 * Math.sin(p.heading()));
+        shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330").put("text", name);
+    }
+
+    /** A row of "The chairs' tasks and bids": the chair, the task, its way, its state, its cost, why it ended. */
+    private ArrayNode bidRow(String chair, TaskView t) {
+        return json.createArrayNode().add(chair).add(t.id()).add(t.from() + " → " + t.to())
+                .add(t.state().name().toLowerCase(Locale.ROOT)).add(String.format(Locale.ROOT, "%.0f s", t.costS()))
+                .add(t.reason() == null ? "" : t.reason());
+    }
+
     private static String safety(ControlAgent ctl) {
         var s = ctl.supervisor();
         String state = switch (s.state()) {

@@ -49,7 +49,7 @@ final class Task {
 
     /** True from the moment the chair is at the patient until the patient is off: nobody else may take it. */
     boolean patientOnBoard() {
-        return state == TaskView.State.LOADING || state == TaskView.State.TO_DROPOFF || state == TaskView.State.UNLOADING;
+        return state.patientOnBoard();
     }
 
     /**

@@ -17,5 +17,12 @@ public record TaskView(String id, int from, int to, double priority, double unlo
                        double pathS, String reason) {
 
     /** The states of a task, in order. */
-    public enum State { EVALUATING, PROPOSED, REFUSED, QUEUED, TO_PICKUP, LOADING, TO_DROPOFF, UNLOADING, DONE, FAILED, CANCELLED }
+    public enum State {
+        EVALUATING, PROPOSED, REFUSED, QUEUED, TO_PICKUP, LOADING, TO_DROPOFF, UNLOADING, DONE, FAILED, CANCELLED;
+
+        /** True from the moment the chair is at the patient until the patient is off: the transport is never withdrawn then. */
+        public boolean patientOnBoard() {
+            return this == LOADING || this == TO_DROPOFF || this == UNLOADING;
+        }
+    }
 }

@@ -340,16 +340,11 @@ final class Handshake {
             return;
         }
         if (type == HELLO_REPLY && (known == null || known.challenge == null || !Arrays.equals(known.challenge, echo))) {
-            if (known != null && known.answeredChallenge != null && Arrays.equals(known.answeredChallenge, echo)) {
-                // The peer answered this agent's hello more than once (a retry crossed its reply):
-                // the first answer was taken; this one changes nothing, and is no replay.
-                ctx.drop(env, "handshake-late", "a second reply from " + name + " to a hello it answered already");
-                return;
-            }
-            if (known != null && known.supersededChallenge != null && Arrays.equals(known.supersededChallenge, echo)) {
-                // The hellos crossed: the peer's handshake, answered by this agent, was confirmed
-                // first, and the peer's answer to this agent's own hello comes after. It changes nothing.
-                ctx.drop(env, "handshake-late", "a reply from " + name + " to a hello of this agent made needless by the crossed handshake");
+            // A late answer to a hello of this agent's, not a replay, changes nothing: the peer answered
+            // it more than once (a retry crossed its reply), or the hellos crossed and the peer's
+            // handshake, which this agent answered, was confirmed first.
+            if (known != null && (Arrays.equals(known.answeredChallenge, echo) || Arrays.equals(known.supersededChallenge, echo))) {
+                ctx.drop(env, "handshake-late", "a reply from " + name + " to a hello of this agent answered already or made needless");
                 return;
             }
             ctx.drop(env, "replayed-handshake", "a reply from " + name + " to no hello of this agent under way");
