@@ -295,7 +295,9 @@ public final class FleetHarness {
     public static Map<String, TreeMap<Integer, Double>> series(List<Outcome> outcomes, java.util.function.ToDoubleFunction<Outcome> value) {
         Map<String, TreeMap<Integer, Double>> out = new java.util.LinkedHashMap<>();
         for (Outcome o : outcomes) {
-            String name = o.nodes() + " nodes, " + (o.rules() == TrafficRules.IN_ORDER ? "in order" : "whole routes");
+            // One line a map: the depot variant of a shape has the same nodes as the shape.
+            String name = o.nodes() + (o.map().contains("+depot") ? " + depot" : " nodes") + ", "
+                    + (o.rules() == TrafficRules.IN_ORDER ? "in order" : "whole routes");
             out.computeIfAbsent(name, k -> new TreeMap<>()).put(o.chairs(), value.applyAsDouble(o));
         }
         return out;
