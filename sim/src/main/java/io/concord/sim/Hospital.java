@@ -69,7 +69,12 @@ public final class Hospital {
         }
     }
 
-    private Operators wardOperators() {
+    /**
+     * The operators this ward's control agents trust (the console's key and {@link #operators(List)}):
+     * give them to the Medical agent ({@code MedicalAgent.operators}) so that an operator's signed
+     * cancel withdraws any transport.
+     */
+    public Operators wardOperators() {
         List<Operator> all = new ArrayList<>(operators);
         all.add(operatorKey.operator());
         return Operators.of(all);

@@ -732,6 +732,10 @@ public final class HospitalDemo {
         // Wall time: the staff's terminal prints how long each line took a person to see, and gives up after a minute.
         long start = System.nanoTime();
         MedicalAgent medical = new MedicalAgent(line -> OUT.printf(Locale.ROOT, "%6.1f s  %s%n", (System.nanoTime() - start) / 1e9, line));
+        if (o.operatorKey() != null && Files.exists(o.operatorKey())) {
+            // The console's operator (the ward made its key before this JVM started) may cancel the staff's transports too.
+            medical.operators(io.concord.layers.authority.Operators.of(OperatorKey.load(o.operatorKey()).operator()));
+        }
         platform.startAgent("medical", medical);
         // Wait until the yellow pages list every chair.
         while (true) {

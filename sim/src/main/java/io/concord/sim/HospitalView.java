@@ -3,6 +3,8 @@ package io.concord.sim;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.concord.agents.chair.ChairFault;
+import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Pose;
 import io.concord.agents.control.ControlAgent;
 import io.concord.agents.control.TaskView;
@@ -176,6 +178,14 @@ public final class HospitalView implements ConsoleView {
          * its answer shows in the table of cancels. Loop thread.
          */
         String cancel(String task, String reason) {
+            return cancel(task, reason, null);
+        }
+
+        /**
+         * As {@link #cancel(String, String)}, with an operator's signed order ({@code cancel} of
+         * that task), with which the Medical agent withdraws any transport, not only this desk's.
+         */
+        String cancel(String task, String reason, String order) {
             AID medical = medical();
             if (medical == null) {
                 throw new IllegalArgumentException("no Medical agent in the yellow pages yet");
@@ -186,7 +196,7 @@ public final class HospitalView implements ConsoleView {
             m.setConversationId(id);
             m.setOntology(Services.ONTOLOGY);
             m.setLanguage(Services.LANGUAGE);
-            m.setContent(new WheelchairMessage.CancelRequest(task, reason).encode());
+            m.setContent(new WheelchairMessage.CancelRequest(task, reason, order).encode());
             send(m);
             cancels.add(new Cancel(id, task, "asked", "to " + medical.localName()));
             if (cancels.size() > 200) {
@@ -372,7 +382,9 @@ public final class HospitalView implements ConsoleView {
         if (desk == null) {
             throw new IllegalArgumentException("this view has no front desk (a recording of a run): nothing to cancel");
         }
-        return desk.cancel(task, (reason.isEmpty() ? "cancelled at the console" : reason) + " (" + who + ")");
+        // Signed with the console's operator key: the Medical agent withdraws the staff's transports too (the demo's --tasks).
+        String order = hospital.operatorKey().sign("cancel", task, desk.runtime().clock().epochMillis()).encode();
+        return desk.cancel(task, (reason.isEmpty() ? "cancelled at the console" : reason) + " (" + who + ")", order);
     }
 
     /**
@@ -649,6 +661,7 @@ public final class HospitalView implements ConsoleView {
             }
             chairs.add(json.createArrayNode().add(c.name()).add(String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y()))
                     .add(String.format(Locale.ROOT, "%.2f m/s", Math.abs(c.forwardSpeed()) < 0.005 ? 0.0 : c.forwardSpeed()))
+                    .add(battery(ctl))
                     .add(current == null ? "idle" : current.id() + " " + current.state().name().toLowerCase(Locale.ROOT))
                     .add(ctl == null ? "" : safety(ctl)));
         }
@@ -669,11 +682,13 @@ public final class HospitalView implements ConsoleView {
             }
             String speed = "";
             var r = ctl.supervisor().latest();
-            if (p != null && r != null) {
-                // The chair's own pose, from one snapshot to the next, over the board's clock.
-                double[] before = serialPoses.put(name, new double[] {r.timeNs(), p.x(), p.y()});
+            if (r != null) {
+                // The wheels' own travel, from one snapshot to the next, over the board's clock: the
+                // odometry integrated from the encoders, not the located pose a floor marker moves.
+                Pose odo = r.odometry();
+                double[] before = serialPoses.put(name, new double[] {r.timeNs(), odo.x(), odo.y()});
                 if (before != null && r.timeNs() > before[0]) {
-                    double v = Math.hypot(p.x() - before[1], p.y() - before[2]) / ((r.timeNs() - before[0]) / 1e9);
+                    double v = Math.hypot(odo.x() - before[1], odo.y() - before[2]) / ((r.timeNs() - before[0]) / 1e9);
                     speed = String.format(Locale.ROOT, "%.2f m/s", v < 0.005 ? 0.0 : v);
                     serialSpeeds.put(name, speed);
                 } else {
@@ -685,11 +700,11 @@ public final class HospitalView implements ConsoleView {
             }
             chairs.add(json.createArrayNode().add(name + " (serial)")
                     .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add(speed)
-                    .add(task).add(safety(ctl)));
+                    .add(battery(ctl)).add(task).add(safety(ctl)));
         }
         ArrayNode tables = o.putArray("tables");
         table(tables, "chairs", "Chairs at " + String.format(Locale.ROOT, "t = %.0f s", world.worldTimeNs() / 1e9),
-                List.of("chair", "pose", "speed", "task", "safety"), chairs);
+                List.of("chair", "pose", "speed", "battery", "task", "safety"), chairs);
         ArrayNode asked = json.createArrayNode();
         for (FrontDesk.Asked a : desk == null ? List.<FrontDesk.Asked>of() : List.copyOf(desk.asked)) {
             asked.add(json.createArrayNode().add(a.id()).add(a.from() + " → " + a.to()).add(a.state()).add(a.detail()));
@@ -795,7 +810,6 @@ public final class HospitalView implements ConsoleView {
         return ms <= 0 ? "" : java.time.Instant.ofEpochMilli(ms).toString();
     }
 
-    /** What the chair's safety supervisor says: armed, or held and why, with who may resume it. */
     /**
      * A chair on the map, simulated or serial alike: its body in its colour, its heading, its name,
      * and a red ring while its supervisor holds it (e-stop, trip, reboot, refusal, an operator's
@@ -816,6 +830,18 @@ public final class HospitalView implements ConsoleView {
         shapes.addObject().put("type", "text").put("x", p.x()).put("y", p.y() + 0.7).put("size", 0.6).put("color", "#1d2330").put("text", name);
     }
 
+    /**
+     * The battery as the chair's last report gave it (a simulated chair's model, a board's STATE
+     * frame), with "low" while the chair reports its battery-low fault; empty before any report.
+     */
+    private static String battery(ControlAgent ctl) {
+        ChairReadings r = ctl == null ? null : ctl.supervisor().latest();
+        if (r == null) {
+            return "";
+        }
+        return String.format(Locale.ROOT, "%.1f V", r.batteryVolts()) + (r.faults().contains(ChairFault.BATTERY_LOW) ? " low" : "");
+    }
+
     /** A row of "The chairs' tasks and bids": the chair, the task, its way, its state, its cost, why it ended. */
     private ArrayNode bidRow(String chair, TaskView t) {
         return json.createArrayNode().add(chair).add(t.id()).add(t.from() + " → " + t.to())
@@ -823,6 +849,7 @@ public final class HospitalView implements ConsoleView {
                 .add(t.reason() == null ? "" : t.reason());
     }
 
+    /** What the chair's safety supervisor says: armed, or held and why, with who may resume it. */
     private static String safety(ControlAgent ctl) {
         var s = ctl.supervisor();
         String state = switch (s.state()) {

@@ -67,7 +67,7 @@ public final class VirtualHospital implements AutoCloseable {
         }
         world.attach(runtime);
         hospital = Hospital.start(platform, world, log, traffic);
-        medical = new MedicalAgent(medicalSettings, log);
+        medical = new MedicalAgent(medicalSettings, log).operators(hospital.wardOperators());
         platform.startAgent("medical", medical);
     }
 

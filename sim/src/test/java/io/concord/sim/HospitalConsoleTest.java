@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.openqa.selenium.By;
 import org.openqa.selenium.WebElement;
 
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 
@@ -91,6 +92,15 @@ class HospitalConsoleTest {
                 assertTrue(!HospitalView.colour("chair1").equals(HospitalView.colour("chair2")), "each chair a colour of its own");
                 assertTrue(browser.driver.findElement(By.id("chairs")).getText().lines().noneMatch(l -> l.contains("-0.00 m/s")),
                         "a chair standing still has no sign");
+                // Every chair's battery, as its last report gave it (the simulated chair's battery model).
+                try {
+                    browser.until(d -> {
+                        List<String> rows = d.findElement(By.id("chairs")).getText().lines().filter(l -> l.matches("chair[0-9]+ .*")).toList();
+                        return !rows.isEmpty() && rows.stream().allMatch(l -> l.matches(".* m/s [0-9]+\\.[0-9] V .*"));
+                    });
+                } catch (org.openqa.selenium.TimeoutException e) {
+                    throw new AssertionError("chairs: " + browser.driver.findElement(By.id("chairs")).getText(), e);
+                }
                 browser.until(d -> d.findElements(By.cssSelector("polyline[id^='door-'][data-state='open']")).size() > 0);
                 browser.until(d -> d.findElement(By.id("transports")).getText().contains("agreed"));
                 // Resume for a chair that is not held is refused, saying so (an operator must not believe something was held).
@@ -267,7 +277,8 @@ class HospitalConsoleTest {
             Hospital hospital = Hospital.start(platform, world, line -> { });
             hospital.operatorKey(io.concord.layers.authority.OperatorKey.generate("nurse Ada"));
             world.attach(platform.runtime(), 4);
-            platform.startAgent("medical", new MedicalAgent(line -> { }));
+            MedicalAgent medical = new MedicalAgent(line -> { }).operators(hospital.wardOperators());
+            platform.startAgent("medical", medical);
             HospitalView.FrontDesk desk = new HospitalView.FrontDesk();
             platform.startAgent("desk", desk);
             try (Console console = Console.start(platform, Console.Config.port(0));
@@ -360,6 +371,17 @@ class HospitalConsoleTest {
                         && l.contains("T2's patient is on board control-chair")));
                 assertTrue(browser.driver.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T2") && l.contains("loading")),
                         "T2 goes on: " + browser.driver.findElement(By.id("bids")).getText());
+                // A transport the staff asked for at the Medical agent (as the demo's --tasks do), not at this desk:
+                // the console's cancel carries the operator's signed order, and the Medical agent withdraws it.
+                var staffs = medical.transport(map.nodeNamed("A3"), 9, 0, 60);
+                browser.until(d -> d.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T3") && l.contains("to_pickup")));
+                field(browser, "task", "T3");
+                field(browser, "reason", "the ward called it off");
+                browser.driver.findElement(By.id("action-cancel")).click();
+                browser.until(d -> d.findElement(By.id("cancels")).getText().lines().anyMatch(l -> l.contains("cancel-3") && l.contains("withdrawn")));
+                assertTrue(staffs.get(30, TimeUnit.SECONDS).reason().startsWith("withdrawn: the ward called it off (operator nurse Ada at console client 127.0.0.1:"),
+                        staffs.join().reason());
+                assertTrue(staffs.join().reason().endsWith("(by operator nurse Ada, asked by desk)"), staffs.join().reason());
                 browser.screenshot("hospital-operator");
             }
         }

@@ -13,7 +13,9 @@ import io.concord.agents.proto.WheelchairMessage.Rejection;
 import io.concord.agents.proto.WheelchairMessage.Resumed;
 import io.concord.agents.proto.WheelchairMessage.TransportCall;
 import io.concord.agents.proto.WheelchairMessage.TransportRequest;
+import io.concord.layers.authority.Operators;
 import io.concord.layers.authority.Policy;
+import io.concord.layers.authority.SignedOrder;
 import io.concord.agents.proto.WheelchairMessage.Withdrawal;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
@@ -135,6 +137,8 @@ public class MedicalAgent extends Agent {
     private final Map<String, Consumer<AclMessage>> awaitedAboard = new LinkedHashMap<>();
     /** task -> who asked for it (an agent's full name): a member cancels only its own. */
     private final Map<String, String> askers = new LinkedHashMap<>();
+    /** The operators whose signed cancel withdraws any transport (the ward's, as its control agents trust them). */
+    private volatile Operators operators = Operators.none();
     /** task -> auctions held (conversation ids stay unique while a task waits for a chair). */
     private final Map<String, Integer> auctionsHeld = new LinkedHashMap<>();
 
@@ -440,20 +444,47 @@ public class MedicalAgent extends Agent {
     }
 
     /**
-     * A member's REQUEST {@code cancel-request}: only for a transport it asked for itself (the
-     * policy's condition for a member), answered AGREE with its own text once withdrawn, or REFUSE
-     * with why not.
+     * The operators whose signed {@code cancel-request} withdraws any transport, not only the
+     * sender's own (a console's operator cancelling the staff's transport). None by default.
+     * Thread-safe.
+     */
+    public MedicalAgent operators(Operators ops) {
+        this.operators = java.util.Objects.requireNonNull(ops, "operators").copy();
+        return this;
+    }
+
+    /**
+     * A REQUEST {@code cancel-request}: a member's only for a transport it asked for itself (the
+     * policy's condition for a member); with an operator's signed order (a member carrying it), for
+     * any transport. Answered AGREE with its own text once withdrawn, or REFUSE with why not.
      */
     private void cancelRequested(AclMessage m) {
         try {
             WheelchairMessage.CancelRequest c = WheelchairMessage.decode(m, WheelchairMessage.CancelRequest.class);
-            Policy.Decision may = Policy.defaults().decide(Policy.principalOf(m, getAID().platform()), Policy.Service.TRANSPORT_CANCEL);
+            Policy.Principal who = Policy.principalOf(m, getAID().platform());
+            String operator = null;
+            String badOrder = null;
+            if (who == Policy.Principal.MEMBER && c.order() != null && !c.order().isBlank()) {
+                try {
+                    SignedOrder o = SignedOrder.parse(c.order());
+                    badOrder = operators.verify(o, "cancel", c.task(), runtime().clock().epochMillis());
+                    operator = badOrder == null ? o.operator() : null;
+                } catch (IllegalArgumentException e) {
+                    badOrder = e.getMessage();
+                }
+                who = operator != null ? Policy.Principal.OPERATOR : who;
+            }
+            Policy.Decision may = Policy.defaults().decide(who, Policy.Service.TRANSPORT_CANCEL);
+            String reason = c.reason() == null || c.reason().isBlank() ? "no reason given" : c.reason();
             String refused = !may.allowed() ? may.reason()
+                    : badOrder != null ? "the operator's order is refused: " + badOrder
                     : !open.containsKey(c.task()) ? "no transport " + c.task() + " under way (it has ended, or there is none of that id)"
+                    : operator != null ? cancelOnLoop(c.task(), reason + " (by operator " + operator + ", asked by " + m.getSender().localName() + ")")
                     : !m.getSender().name().equals(askers.get(c.task()))
-                    ? m.getSender().name() + " did not ask for " + c.task() + " (" + askers.get(c.task()) + " did): a member cancels only the transports it asked for"
-                    : cancelOnLoop(c.task(), (c.reason() == null || c.reason().isBlank() ? "no reason given" : c.reason())
-                            + " (asked by " + m.getSender().localName() + ")");
+                    ? m.getSender().name() + " did not ask for " + c.task() + " ("
+                            + (askers.containsKey(c.task()) ? askers.get(c.task()) : "the Medical agent's own staff") + " did): a member cancels only the transports "
+                            + "it asked for, an operator any (a cancel-request with :order, signed with an operator key the ward configured)"
+                    : cancelOnLoop(c.task(), reason + " (asked by " + m.getSender().localName() + ")");
             if (refused != null) {
                 log.accept(getLocalName() + ": refuses to cancel " + c.task() + " for " + m.getSender().name() + ": " + refused);
                 send(m.createReply().setPerformative(Performative.REFUSE).setContent(new Refused(c.task(), null, refused, false).encode()));

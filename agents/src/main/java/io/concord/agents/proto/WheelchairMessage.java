@@ -208,9 +208,17 @@ public sealed interface WheelchairMessage {
      * id, T and a number) for {@code reason}; answered AGREE with this very text once withdrawn, or
      * REFUSE ({@link Refused}) saying why not: the transport has ended, its patient is on board,
      * or the sender did not ask for it (a member cancels only the transports it asked for).
+     * {@code order}: an operator's signed order ({@code io.concord.layers.authority.SignedOrder},
+     * action {@code cancel}, target the task), with which any transport may be withdrawn (the
+     * staff's own, a console's), or null for a member's cancel of its own.
      */
     @Element(name = "cancel-request")
-    record CancelRequest(@Slot(mandatory = true) String task, String reason) implements WheelchairMessage, AgentAction {
+    record CancelRequest(@Slot(mandatory = true) String task, String reason, String order) implements WheelchairMessage, AgentAction {
+        /** A member's cancel of a transport it asked for itself (no operator's order). */
+        public CancelRequest(String task, String reason) {
+            this(task, reason, null);
+        }
+
         public void to(Handler h, AclMessage m) {
             h.onCancelRequest(this, m);
         }

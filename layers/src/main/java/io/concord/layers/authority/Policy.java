@@ -151,7 +151,8 @@ public final class Policy {
             Service.DF, "a foreign agent registers only within the foreign registration limits, with lease times honoured",
             Service.CHAIR_RESUME, "an operator's order signed with a key configured for the ward, fresh and not seen before, "
                     + "carried by a member (a `resume-request`) or the console",
-            Service.TRANSPORT_CANCEL, "a member only for the transports it asked for",
+            Service.TRANSPORT_CANCEL, "a member only for the transports it asked for; an operator any, by an order signed with a key "
+                    + "configured for the ward (`cancel-request :order`), its patient never left on board",
             Service.CONSOLE_ACTION, "from the console's own page (header `X-Concord-Console: 1`), with its token off loopback");
 
     private static final Policy DEFAULTS_POLICY = new Policy(EnumSet.noneOf(Service.class), true);

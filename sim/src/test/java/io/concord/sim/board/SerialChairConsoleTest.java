@@ -53,9 +53,10 @@ class SerialChairConsoleTest {
                 w.board.command("estop off");
                 browser.until(d -> d.findElements(By.cssSelector("circle#chair-chair1[data-safety='held'][stroke='#c0392b']")).size() == 1);
                 held(browser);
-                // Held, it stands: its speed falls below 5 cm/s (its odometry's noise aside).
+                // Held, it stands: its wheels turn no more (the speed is the encoders' travel, not the located pose a marker moves);
+                // its battery is the board's STATE frame's.
                 browser.until(d -> d.findElement(By.id("chairs")).getText().lines().anyMatch(l -> l.startsWith("chair1 (serial)")
-                        && l.matches(".* 0\\.0[0-4] m/s .*")));
+                        && l.matches(".* 0\\.00 m/s [0-9]+\\.[0-9] V .*")));
                 browser.screenshot("hospital-serial-held");
                 browser.until(d -> d.findElement(By.id("action-resume"))).click();
                 browser.until(d -> d.findElement(By.id("view-said")).getText().matches("(chair1 resumes|asked chair1 to resume).*"));

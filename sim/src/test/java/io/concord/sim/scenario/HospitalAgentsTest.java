@@ -289,7 +289,8 @@ class HospitalAgentsTest {
             // A member that did not ask for it cannot have the Medical agent withdraw it either.
             AclMessage refused = await(r, p.ask("medical", "((cancel-request :task T1 :reason \"not mine\"))"));
             assertEquals(Performative.REFUSE, refused.getPerformative(), refused.getContent());
-            assertEquals("stranger@hospital did not ask for T1 (medical@hospital did): a member cancels only the transports it asked for",
+            assertTrue(WheelchairMessage.reasonOf(refused).startsWith(
+                    "stranger@hospital did not ask for T1 (medical@hospital did): a member cancels only the transports it asked for, an operator any"),
                     WheelchairMessage.reasonOf(refused));
             AclMessage unknown = await(r, p.ask("medical", "((cancel-request :task T7))"));
             assertEquals(Performative.REFUSE, unknown.getPerformative(), unknown.getContent());
@@ -306,6 +307,51 @@ class HospitalAgentsTest {
             assertEquals(TaskView.State.CANCELLED, r.hospital.control("chair1").tasks().get(0).state());
             assertTrue(r.world.chair("chair1").distanceTravelled() - at < 0.05, "the chair stands");
             assertTrue(r.log.contains("control-chair1: task T1 withdrawn by medical"));
+        }
+    }
+
+    /**
+     * A transport the staff asked for (as the demo's {@code --tasks} do) is withdrawn by a member
+     * carrying an operator's signed order, once: an order of a key the ward did not configure, an
+     * order for another transport, a tampered one and the same order again are refused, each
+     * saying why, and the transport goes on until the good one.
+     */
+    @Test
+    void anOperatorsSignedCancelWithdrawsTheStaffsTransportOnce() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(12, FaultPlan.NONE, 1)) {
+            io.concord.layers.authority.OperatorKey ada = io.concord.layers.authority.OperatorKey.generate("nurse Ada");
+            io.concord.layers.authority.OperatorKey eve = io.concord.layers.authority.OperatorKey.generate("eve");
+            r.medical.operators(io.concord.layers.authority.Operators.of(ada.operator()));
+            var f = r.medical.transport(3, 9, 3, 30);
+            assertTrue(r.sim.runUntil(() -> r.log.stream().anyMatch(l -> l.startsWith("control-chair1: starts T1")), 60_000));
+            Probe p = probe(r, "desk", 1_000);
+            java.util.function.Function<String, String> refusal = order -> {
+                AclMessage a = await(r, p.ask("medical", new CancelRequest("T1", "the patient went home", order)));
+                assertEquals(Performative.REFUSE, a.getPerformative(), a.getContent());
+                return WheelchairMessage.reasonOf(a);
+            };
+            long now = r.rt.clock().epochMillis();
+            assertTrue(refusal.apply(eve.sign("cancel", "T1", now).encode()).startsWith("the operator's order is refused: eve is not an operator of this ward"));
+            assertTrue(refusal.apply(ada.sign("cancel", "T2", now).encode()).startsWith("the operator's order is refused: "));
+            assertTrue(refusal.apply(ada.sign("resume", "T1", now).encode()).startsWith("the operator's order is refused: "));
+            String good = ada.sign("cancel", "T1", now).encode();
+            String tampered = good.replace("|" + now + "|", "|" + (now + 1) + "|");
+            assertFalse(tampered.equals(good));
+            assertTrue(refusal.apply(tampered).startsWith("the operator's order is refused: "));
+            assertFalse(f.isDone(), "T1 goes on after every refusal");
+            assertEquals(TaskView.State.TO_PICKUP, r.hospital.control("chair1").tasks().get(0).state());
+            CompletableFuture<AclMessage> agreement = new CompletableFuture<>();
+            AclMessage ask = new AclMessage(Performative.REQUEST);
+            ask.addReceiver(AID.local("medical", "hospital"));
+            ask.setContent(new CancelRequest("T1", "the patient went home", good).encode());
+            p.asks.ask(ask, 30_000, agreement::complete);
+            AclMessage agreed = await(r, agreement);
+            assertEquals(Performative.AGREE, agreed.getPerformative(), agreed.getContent());
+            assertTrue(r.sim.runUntil(f::isDone, 1_000));
+            assertEquals("withdrawn: the patient went home (by operator nurse Ada, asked by desk)", f.join().reason());
+            assertTrue(r.sim.runUntil(() -> r.hospital.control("chair1").tasks().get(0).state() == TaskView.State.CANCELLED, 5_000));
+            // The same order again: seen before (and the transport has ended).
+            assertEquals(Performative.REFUSE, await(r, p.ask("medical", new CancelRequest("T1", "again", good))).getPerformative());
         }
     }
 
