@@ -375,6 +375,15 @@ class HospitalConsoleTest {
                 // the console's cancel carries the operator's signed order, and the Medical agent withdraws it.
                 var staffs = medical.transport(map.nodeNamed("A3"), 9, 0, 60);
                 browser.until(d -> d.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T3") && l.contains("to_pickup")));
+                // Stopped and resumed on its way: the Medical agent's story of T3 says who stopped it and who resumed it.
+                browser.driver.findElement(By.id("action-stop-all")).click();
+                browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith("stopped 2 chairs"));
+                browser.until(d -> d.findElements(By.cssSelector("circle[id^='chair-chair'][data-safety='held']")).size() == 2);
+                for (String c : java.util.List.of("chair1", "chair2")) {
+                    field(browser, "chair", c);
+                    browser.driver.findElement(By.id("action-resume")).click();
+                    browser.until(d -> d.findElement(By.id("view-said")).getText().startsWith(c + " resumes"));
+                }
                 field(browser, "task", "T3");
                 field(browser, "reason", "the ward called it off");
                 browser.driver.findElement(By.id("action-cancel")).click();
@@ -382,6 +391,21 @@ class HospitalConsoleTest {
                 assertTrue(staffs.get(30, TimeUnit.SECONDS).reason().startsWith("withdrawn: the ward called it off (operator nurse Ada at console client 127.0.0.1:"),
                         staffs.join().reason());
                 assertTrue(staffs.join().reason().endsWith("(by operator nurse Ada, asked by desk)"), staffs.join().reason());
+                try {
+                    browser.until(d -> {
+                        try {
+                            d.findElement(By.cssSelector("#audit tr[data-key='T3']")).click();
+                            String story = d.findElement(By.id("story")).getText();
+                            return story.contains("T3 paused on control-chair") && story.contains("stop all by operator nurse Ada at console client 127.0.0.1:")
+                                    && story.contains("T3 resumed on control-chair") && story.contains("decided by nurse Ada")
+                                    && story.contains("T3 withdrawn: the ward called it off");
+                        } catch (org.openqa.selenium.NoSuchElementException | org.openqa.selenium.StaleElementReferenceException e) {
+                            return false;
+                        }
+                    });
+                } catch (org.openqa.selenium.TimeoutException e) {
+                    throw new AssertionError("T3's story: " + browser.driver.findElement(By.id("story")).getText(), e);
+                }
                 browser.screenshot("hospital-operator");
             }
         }
