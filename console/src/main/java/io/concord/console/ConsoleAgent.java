@@ -265,7 +265,7 @@ final class ConsoleAgent extends Agent {
     // ---- an operator's actions (JADE's RMA and DummyAgent); each runs on the loop ----------------
 
     /** The console's own actions, at {@code /api/agents/{action}}. */
-    static final List<String> ACTIONS = List.of("start", "kill", "send");
+    static final List<String> ACTIONS = List.of("start", "kill", "send", "compose", "parse");
     /** Messages the console sent and received, kept for the page. */
     static final int MAIL_KEPT = 100;
     private final Deque<ObjectNode> mail = new ArrayDeque<>();
@@ -276,6 +276,8 @@ final class ConsoleAgent extends Agent {
                     p.getOrDefault("arguments", ""));
             case "kill" -> kill(p.getOrDefault("agent", "").trim());
             case "send" -> sendFor(p);
+            case "compose" -> compose(p);
+            case "parse" -> parseMessage(p.getOrDefault("text", ""));
             default -> throw new IllegalArgumentException("the console's actions are " + ACTIONS + ", not " + action);
         };
     }
@@ -352,38 +354,89 @@ final class ConsoleAgent extends Agent {
         return null;
     }
 
-    private String sendFor(Map<String, String> p) {
+    /**
+     * The message the send form describes. {@code listed}: receivers must be in the platform's lists
+     * (to send it), or any name, taken as a local name of this platform without '@' (to save it).
+     */
+    private AclMessage fromForm(Map<String, String> p, boolean listed) {
         Performative perf = Performative.fromWireName(p.getOrDefault("performative", "").trim());
         if (perf == null) {
             throw new IllegalArgumentException("no performative '" + p.get("performative") + "'; FIPA's are INFORM, REQUEST, QUERY-REF, CFP, ...");
         }
         AclMessage m = new AclMessage(perf);
-        Set<String> known = known();
+        Set<String> known = listed ? known() : Set.of();
         for (String r : p.getOrDefault("receivers", "").split(",")) {
             String n = r.trim();
             if (n.isEmpty()) {
                 continue;
             }
-            m.addReceiver(service(n) != null ? service(n) : new AID(listed(n, known)));
+            m.addReceiver(service(n) != null ? service(n) : listed ? new AID(listed(n, known))
+                    : n.contains("@") ? new AID(n) : AID.local(n, getAID().platform()));
         }
         if (m.getReceivers().isEmpty()) {
             throw new IllegalArgumentException("say who receives it: one or more agents' names, separated by commas");
         }
         m.setContent(p.getOrDefault("content", ""));
         String conv = p.getOrDefault("conversation", "").trim();
-        m.setConversationId(conv.isEmpty() ? "console-" + (++conversations) : conv);
-        for (String[] f : new String[][] {{"language", "l"}, {"ontology", "o"}, {"protocol", "p"}}) {
+        if (!conv.isEmpty()) {
+            m.setConversationId(conv);
+        }
+        for (String[] f : new String[][] {{"language", "l"}, {"ontology", "o"}, {"protocol", "p"}, {"in-reply-to", "r"}}) {
             String v = p.getOrDefault(f[0], "").trim();
             if (!v.isEmpty()) {
                 switch (f[1]) {
                     case "l" -> m.setLanguage(v);
                     case "o" -> m.setOntology(v);
+                    case "r" -> m.setInReplyTo(v);
                     default -> m.setProtocol(v);
                 }
             }
         }
         if (ObserverLayer.ONTOLOGY.equals(m.getOntology())) {
             throw new IllegalArgumentException("the ontology " + ObserverLayer.ONTOLOGY + " is the console's own; kill and sniff have their buttons");
+        }
+        return m;
+    }
+
+    /** The send form's message in FIPA's string form, to save in a file (JADE's DummyAgent's "save"). */
+    private String compose(Map<String, String> p) {
+        AclMessage m = fromForm(p, false);
+        m.setSender(new AID(getAID().name()));   // its name only: the platform's own addresses are no part of a saved message
+        return io.concord.core.codec.StringAclCodec.INSTANCE.encodeToString(m);
+    }
+
+    /**
+     * A message in FIPA's string form (a saved one, or one the console received) as the send form's
+     * fields, JSON: performative, receivers, content, conversation, language, ontology, protocol,
+     * in-reply-to; and, to reply to it, its sender and reply-with. Refused with the parser's reason.
+     */
+    private String parseMessage(String text) {
+        AclMessage m;
+        try {
+            m = io.concord.core.codec.StringAclCodec.INSTANCE.decode(text.strip());
+        } catch (io.concord.core.codec.AclParseException e) {
+            throw new IllegalArgumentException("not a FIPA ACL message in string form (" + e.getMessage()
+                    + "); a saved message reads (REQUEST :receiver (set (agent-identifier :name df@platform)) :content \"...\")");
+        }
+        ObjectNode o = json.createObjectNode();
+        o.put("performative", m.getPerformative().wireName());
+        o.put("receivers", String.join(", ", m.getReceivers().stream().map(a -> a.platform().equals(getAID().platform()) ? a.localName() : a.name()).toList()));
+        o.put("content", m.getContent() == null ? "" : m.getContent());
+        o.put("conversation", m.getConversationId() == null ? "" : m.getConversationId());
+        o.put("language", m.getLanguage() == null ? "" : m.getLanguage());
+        o.put("ontology", m.getOntology() == null ? "" : m.getOntology());
+        o.put("protocol", m.getProtocol() == null ? "" : m.getProtocol());
+        o.put("in-reply-to", m.getInReplyTo() == null ? "" : m.getInReplyTo());
+        o.put("sender", m.getSender() == null ? "" : m.getSender().platform().equals(getAID().platform()) ? m.getSender().localName() : m.getSender().name());
+        o.put("reply-with", m.getReplyWith() == null ? "" : m.getReplyWith());
+        return o.toString();
+    }
+
+    private String sendFor(Map<String, String> p) {
+        AclMessage m = fromForm(p, true);
+        Performative perf = m.getPerformative();
+        if (m.getConversationId() == null) {
+            m.setConversationId("console-" + (++conversations));
         }
         m.setReplyWith("console-r" + (++conversations));
         send(m);

@@ -35,11 +35,14 @@ class ConsoleBrowserTest {
 
     /** Offers books; agrees to every request. */
     static final class Seller extends Agent {
+        private int agreed;
+
         @Override
         protected void setup() {
             Platform.of(this).register(ServiceDescription.of("book-selling", getLocalName()));
             Inbox.each(this, MessageTemplate.matchPerformative(Performative.REQUEST),
-                    m -> send(m.createReply().setPerformative(Performative.AGREE).setContent("agreed: " + m.getContent())));
+                    m -> send(m.createReply().setPerformative(Performative.AGREE).setContent("agreed: " + m.getContent())
+                            .setReplyWith(getLocalName() + "-r" + (++agreed))));
             // An auction: a price for every call for proposals.
             Inbox.each(this, MessageTemplate.matchPerformative(Performative.CFP),
                     m -> send(m.createReply().setPerformative(Performative.PROPOSE).setContent(getLocalName().endsWith("1") ? "12" : "15")));
@@ -222,6 +225,78 @@ class ConsoleBrowserTest {
         browser.driver.switchTo().alert().accept();
         browser.until(d -> !rows("agents").contains("echo1@console-ui"));
         assertTrue(!platform.runtime().agents().contains(new AID("echo1@console-ui")), "gone from the platform");
+    }
+
+    /**
+     * JADE's DummyAgent's habits: a message to the DF by its local name is answered with the
+     * sellers it lists; the answer is replied to (the form filled as JADE's createReply fills a
+     * reply); the message is saved as a file in FIPA's string form and loaded back into the form.
+     */
+    @Test
+    void theSenderAsksTheDfRepliesAndSavesAndLoadsAMessage() throws Exception {
+        browser.driver.get(console.uri());
+        tab("platform");
+        browser.until(d -> rows("agents").contains("seller1@console-ui"));
+        fill("send-form", "performative", "REQUEST");
+        fill("send-form", "receivers", "df");
+        fill("send-form", "content", "search template=t=book-selling");
+        fill("send-form", "conversation", "ask-df");
+        browser.driver.findElement(By.id("send-message")).click();
+        try {
+            // The answer's row: its conversation, and in its title the whole message, with seller1's registration
+            // (seller2 may have been crashed by another test of this class).
+            browser.until(d -> d.findElements(By.cssSelector("#mail tbody tr[data-dir='received'][data-performative='INFORM']")).stream()
+                    .anyMatch(r -> r.getText().contains("ask-df") && r.getAttribute("title").contains("result count=")
+                            && r.getAttribute("title").contains("t=book-selling;n=seller1")));
+        } catch (org.openqa.selenium.TimeoutException e) {
+            throw new AssertionError("mail: " + browser.driver.findElements(By.cssSelector("#mail tbody tr")).stream()
+                    .map(r -> r.getAttribute("title")).toList(), e);
+        }
+        browser.screenshot("console-df-answered");
+
+        // Reply to seller1's answer: to its sender, the same conversation and protocol, in reply to its reply-with.
+        fill("send-form", "receivers", "seller1");
+        fill("send-form", "content", "a book");
+        fill("send-form", "conversation", "ask-seller");
+        fill("send-form", "protocol", "fipa-request");
+        browser.driver.findElement(By.id("send-message")).click();
+        click("#mail tbody tr[data-dir='received'][data-performative='AGREE'] button.reply");
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("a reply to seller1"));
+        WebElement form = browser.driver.findElement(By.id("send-form"));
+        assertEquals("AGREE", form.findElement(By.name("performative")).getAttribute("value"), "as JADE's createReply: the performative kept");
+        assertEquals("seller1", form.findElement(By.name("receivers")).getAttribute("value"));
+        assertEquals("ask-seller", form.findElement(By.name("conversation")).getAttribute("value"));
+        assertEquals("fipa-request", form.findElement(By.name("protocol")).getAttribute("value"));
+        assertTrue(form.findElement(By.name("in-reply-to")).getAttribute("value").matches("seller1-r[0-9]+"),
+                "in reply to the answer's own reply-with: " + form.findElement(By.name("in-reply-to")).getAttribute("value"));
+
+        // Saved: the form as one message in FIPA's string form; loaded back into an emptied form.
+        fill("send-form", "performative", "QUERY-REF");
+        fill("send-form", "content", "(price \"Dune\")");
+        browser.driver.findElement(By.id("save-message")).click();
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("saved as message.acl"));
+        String saved = browser.driver.findElement(By.id("saved-message")).getAttribute("data-text");
+        String words = saved.replaceAll("\\s+", " ");
+        assertTrue(words.startsWith("(QUERY-REF") && words.contains(":receiver (set ( agent-identifier :name seller1@console-ui ) )")
+                && words.contains(":conversation-id ask-seller") && words.contains(":protocol fipa-request")
+                && words.contains(":in-reply-to seller1-r") && !words.contains("udp://"), saved);
+        java.nio.file.Path file = java.nio.file.Files.createTempFile("message", ".acl");
+        java.nio.file.Files.writeString(file, saved + "\n");
+        for (String f : List.of("performative", "receivers", "content", "conversation", "protocol", "in-reply-to")) {
+            fill("send-form", f, "");
+        }
+        browser.driver.findElement(By.id("load-message")).sendKeys(file.toAbsolutePath().toString());
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().startsWith("loaded message"));
+        assertEquals("QUERY-REF", form.findElement(By.name("performative")).getAttribute("value"));
+        assertEquals("seller1", form.findElement(By.name("receivers")).getAttribute("value"));
+        assertEquals("(price \"Dune\")", form.findElement(By.name("content")).getAttribute("value"));
+        assertEquals("ask-seller", form.findElement(By.name("conversation")).getAttribute("value"));
+        // Not a message: the form is left as it was, and the page says why.
+        java.nio.file.Files.writeString(file, "hello");
+        browser.driver.findElement(By.id("load-message")).sendKeys(file.toAbsolutePath().toString());
+        browser.until(d -> d.findElement(By.id("agent-said")).getText().contains("not a FIPA ACL message in string form"));
+        assertEquals("QUERY-REF", form.findElement(By.name("performative")).getAttribute("value"));
+        java.nio.file.Files.delete(file);
     }
 
     /** An agent in another JVM (here: another runtime, over real sockets) is asked to leave through its observation service. */

@@ -196,12 +196,54 @@
   }
   $('start-agent').addEventListener('click', () => act('start', formParams($('start-form'))));
   $('send-message').addEventListener('click', () => act('send', formParams($('send-form'))));
+  // JADE's DummyAgent's habits: save the message as a file, load a saved one, reply to one received.
+  // The console's agent writes and reads FIPA's string form (its own codec), so a file is one JADE reads too.
+  function agentJson(action, params) {
+    return fetch(url('api/agents/' + action), { method: 'POST', body: new URLSearchParams(params), headers: { 'X-Concord-Console': '1' } })
+      .then((r) => r.text().then((t) => {
+        if (!r.ok) { $('agent-said').textContent = t; throw new Error(t); }
+        return JSON.parse(t).message;
+      }));
+  }
+  function fillSendForm(f) {
+    const form = $('send-form');
+    for (const k of ['performative', 'receivers', 'content', 'conversation', 'language', 'ontology', 'protocol', 'in-reply-to']) {
+      form.elements[k].value = f[k] || '';
+    }
+  }
+  $('save-message').addEventListener('click', () => agentJson('compose', formParams($('send-form'))).then((text) => {
+    const a = $('saved-message');
+    if (a.href) URL.revokeObjectURL(a.href);
+    a.href = URL.createObjectURL(new Blob([text + '\n'], { type: 'text/plain' }));
+    a.download = 'message.acl';
+    a.dataset.text = text;
+    a.click();
+    $('agent-said').textContent = 'saved as message.acl (' + text.length + ' characters, FIPA ACL string form)';
+  }).catch(() => {}));
+  $('load-message').addEventListener('change', (e) => {
+    const file = e.target.files[0];
+    if (!file) return;
+    file.text().then((text) => agentJson('parse', { text: text })).then((m) => {
+      fillSendForm(JSON.parse(m));
+      $('agent-said').textContent = 'loaded ' + file.name + ': edit it or press Send';
+    }).catch(() => {}).finally(() => { e.target.value = ''; });
+  });
+  function replyTo(message) {
+    agentJson('parse', { text: message }).then((m) => {
+      const f = JSON.parse(m);
+      // As JADE's createReply: to the sender, the same conversation, language, ontology and protocol, in reply to its reply-with.
+      fillSendForm({ performative: f.performative, receivers: f.sender, content: '', conversation: f.conversation,
+        language: f.language, ontology: f.ontology, protocol: f.protocol, 'in-reply-to': f['reply-with'] });
+      $('agent-said').textContent = 'a reply to ' + f.sender + ': choose its performative and content, then Send';
+      $('send-form').elements.content.focus();
+    }).catch(() => {});
+  }
   function drawMail(list) {
     const tbody = $('mail').tBodies[0];
     tbody.replaceChildren();
     if (!list.length) {
       const td = el('td', 'Nothing yet: send a message above, and its answers come here.', 'hint');
-      td.colSpan = 6;
+      td.colSpan = 7;
       tbody.appendChild(el('tr')).appendChild(td);
     }
     for (const m of list.slice().reverse()) {
@@ -217,6 +259,12 @@
       // The content as its sender meant it (escapes undone), cut to a line; the whole message in the row's title.
       const text = c ? c[1].replace(/\\(.)/g, '$1') : '';
       tr.appendChild(el('td', text.length > 120 ? text.slice(0, 117) + '…' : text, 'content'));
+      const act = tr.appendChild(el('td'));
+      if (m.dir === 'received') {
+        const b = act.appendChild(el('button', 'Reply', 'reply'));
+        b.type = 'button';
+        b.addEventListener('click', (e) => { e.stopPropagation(); replyTo(m.message); });
+      }
       tr.title = m.message;
       tbody.appendChild(tr);
     }
