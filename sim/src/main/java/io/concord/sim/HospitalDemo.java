@@ -68,17 +68,42 @@ public final class HospitalDemo {
      * @param unloadS  seconds to load and to unload
      */
     record TaskSpec(int from, int to, double priority, double unloadS) {
+        /** A task of node numbers only ({@code 3-9:3:60}). */
         static TaskSpec parse(String s) {
-            String[] p = s.trim().split("[-:]");
-            if (p.length < 2 || p.length > 4) {
-                throw new IllegalArgumentException("a task is from-to[:priority[:unload]], e.g. 3-9:3:60; got '" + s + "'");
+            return parse(s, null);
+        }
+
+        /**
+         * A task whose ends are node numbers or, with a map, rooms by name ({@code A2-B7:3:60},
+         * as {@link HospitalMap#nodeNamed} takes them), given as the rooms' nodes.
+         */
+        static TaskSpec parse(String s, java.util.function.Supplier<HospitalMap> map) {
+            String[] p = s.trim().split(":");
+            String[] ends = p[0].split("-");
+            if (ends.length != 2 || p.length > 3) {
+                throw new IllegalArgumentException("a task is from-to[:priority[:unload]], nodes or rooms, e.g. 3-9:3:60 or A2-B7:3:60; got '" + s + "'");
+            }
+            int[] node = new int[2];
+            for (int i = 0; i < 2; i++) {
+                String e = ends[i].trim();
+                if (e.matches("\\d{1,9}")) {
+                    node[i] = Integer.parseInt(e);
+                } else if (map == null) {
+                    throw new IllegalArgumentException("a task is from-to[:priority[:unload]] with node numbers, e.g. 3-9:3:60; got '" + s + "'");
+                } else {
+                    try {
+                        node[i] = map.get().nodeNamed(e);
+                    } catch (IllegalArgumentException x) {
+                        throw new IllegalArgumentException("task '" + s + "': " + x.getMessage());
+                    }
+                }
             }
             TaskSpec t;
             try {
-                t = new TaskSpec(Integer.parseInt(p[0]), Integer.parseInt(p[1]), p.length > 2 ? Double.parseDouble(p[2]) : 0,
-                        p.length > 3 ? Double.parseDouble(p[3]) : 60);
+                t = new TaskSpec(node[0], node[1], p.length > 1 ? Double.parseDouble(p[1]) : 0,
+                        p.length > 2 ? Double.parseDouble(p[2]) : 60);
             } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("a task is from-to[:priority[:unload]] with numbers, e.g. 3-9:3:60; got '" + s + "'");
+                throw new IllegalArgumentException("a task is from-to[:priority[:unload]], its priority and unload numbers, e.g. 3-9:3:60; got '" + s + "'");
             }
             if (!(t.priority() >= 0 && t.priority() <= 3)) {
                 throw new IllegalArgumentException("task '" + s + "': its priority is 0 to 3 (the dissertation's TP: 0, 1.5 or 3)");
@@ -133,7 +158,7 @@ public final class HospitalDemo {
     }
 
     static final String USAGE = "usage: java -jar concord-demo.jar [hospital] [--speed X] [--virtual] [--seed N] [--chairs N]"
-            + " [--tasks 3-9:3:60,...] [--map file.json] [--picture file.png] [--max-seconds S]"
+            + " [--tasks 3-9:3:60,A2-B7,...] [--map file.json] [--picture file.png] [--max-seconds S]"
             + " [--serial PORT [--augmented] [--pair-key FILE]] [--console [host:]port [--operator-key FILE]] [--record FILE.jsonl]\n"
             + "   or: java -jar concord-demo.jar platform   (the platform demo: three JVMs started with Boot, a book trade, a failover)\n"
             + "(each option with its default: README.md, \"The two commands\")";
@@ -207,6 +232,7 @@ public final class HospitalDemo {
         Path picture = Path.of("hospital.png");
         int chairs = 1;
         List<TaskSpec> tasks = new ArrayList<>(List.of(new TaskSpec(3, 9, 3, 60)));
+        String taskList = null;
         double max = 1800;
         String serial = null;
         boolean augmented = false;
@@ -242,12 +268,7 @@ public final class HospitalDemo {
                     case "--pair-key" -> pairKey = Path.of(value(a, v));
                     case "--record" -> record = Path.of(value(a, v));
                     case "--operator-key" -> operatorKey = Path.of(value(a, v));
-                    case "--tasks" -> {
-                        tasks = new ArrayList<>();
-                        for (String t : value(a, v).split(",")) {
-                            tasks.add(TaskSpec.parse(t));
-                        }
-                    }
+                    case "--tasks" -> taskList = value(a, v);
                     default -> throw new IllegalArgumentException(a.startsWith("-") ? "unknown option '" + a + "'"
                             : "unknown argument '" + a + "'");
                 }
@@ -307,6 +328,17 @@ public final class HospitalDemo {
             }
             if (Files.exists(record)) {
                 throw new IllegalArgumentException("--record: " + record + " exists already; give another file");
+            }
+        }
+        if (taskList != null) {
+            // Read once every option is: a room's name is looked up on the map --map names (wherever it came on the line).
+            Path mapFile = map;
+            HospitalMap[] loaded = new HospitalMap[1];
+            java.util.function.Supplier<HospitalMap> theMap = () -> loaded[0] != null ? loaded[0]
+                    : (loaded[0] = mapFile == null ? HospitalMap.defaultHospital() : HospitalMap.load(mapFile));
+            tasks = new ArrayList<>();
+            for (String t : taskList.split(",")) {
+                tasks.add(TaskSpec.parse(t, theMap));
             }
         }
         return new Options(seed, speed, virtual, map, picture, chairs, tasks, max, serial, augmented, console, pairKey, record, operatorKey);

@@ -100,6 +100,11 @@ class HospitalDemoTest {
                 assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "3-9:7"})).getMessage());
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "9-9"}))
                 .getMessage().contains("already at node 9"));
+        // Rooms by name, as the console's form takes them: A2 and B7 are nodes 3 and 9; an unknown room names the map's rooms.
+        assertEquals(java.util.List.of(new HospitalDemo.TaskSpec(3, 9, 3, 60), new HospitalDemo.TaskSpec(14, 9, 0, 60)),
+                HospitalDemo.parse(new String[] {"--tasks", "A2-Room B7:3:60,14-b7"}).tasks());
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "Z9-B7"}))
+                .getMessage().matches("task .Z9-B7.: no node or room .Z9. in .*; rooms: A1, A2, A3.*"));
         HospitalDemo.Options far = HospitalDemo.parse(new String[] {"--tasks", "3-99"});
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.check(HospitalMap.defaultHospital(), far))
                 .getMessage().startsWith("--tasks 3-99: the default hospital has no node 99; its nodes are [1, 2, 3,"));
