@@ -83,6 +83,8 @@ public class ControlAgent extends Agent implements ChairListener {
 
     private final ChairSupervisor supervisor;
     private final ChairDriver chair;
+    /** The stop and slow zones between the route follower and the supervisor: every drive command passes them. */
+    private final io.concord.agents.chair.ObstacleFilter obstacles;
     private final HospitalMap map;
     private final Consumer<String> log;
     private final TaskQueue tasks = new TaskQueue();
@@ -108,7 +110,8 @@ public class ControlAgent extends Agent implements ChairListener {
         this.chair = supervisor;
         this.map = map;
         this.log = log;
-        this.follower = new RouteFollower(this.chair, map);
+        this.obstacles = new io.concord.agents.chair.ObstacleFilter(supervisor);
+        this.follower = new RouteFollower(obstacles, map);
         this.authority = new ResumeAuthority(() -> runtime() == null ? System.currentTimeMillis() : runtime().clock().epochMillis());
         this.holds = new Holds(supervisor, this::getLocalName, () -> getAID() == null ? "" : getAID().platform(), ports, authority);
     }
@@ -312,6 +315,14 @@ public class ControlAgent extends Agent implements ChairListener {
     /** The safety supervisor the agent drives through. */
     public ChairSupervisor supervisor() {
         return supervisor;
+    }
+
+    /**
+     * The chair's obstacle filter (the stop and slow zones every drive command passes). A test may
+     * switch it off ({@code enabled(false)}) to show what it prevents; nothing else does.
+     */
+    public io.concord.agents.chair.ObstacleFilter obstacleFilter() {
+        return obstacles;
     }
 
     /** The agent as its parts see it: its loop, its yellow pages, its pending asks, its log. */

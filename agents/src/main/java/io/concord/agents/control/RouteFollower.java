@@ -1,6 +1,6 @@
 package io.concord.agents.control;
 
-import io.concord.agents.chair.ChairDriver;
+import io.concord.agents.chair.ObstacleFilter;
 import io.concord.agents.chair.ChairReadings;
 import io.concord.agents.chair.Localiser;
 import io.concord.agents.chair.Pose;
@@ -17,9 +17,9 @@ import java.util.Locale;
 /**
  * Drives a chair along a route of the map's nodes, reading by reading: on the graph's line from
  * node to node, over the {@link PoseController} and the {@link Localiser} (odometry corrected by
- * the floor markers). Whatever the route, it stops for anything closer than {@link #STOP_M} ahead
- * (the infrared sensors: {@link #STOP_IR_M}) and slows for anything closer than {@link #SLOW_M};
- * an edge blocked for {@link #BLOCKED_AFTER_MS} is reported. Before it moves it asks its
+ * the floor markers). Its commands go through an {@link ObstacleFilter}, which keeps the stop and
+ * slow zones whatever the route; stopped by it on an edge for {@link #BLOCKED_AFTER_MS}, the
+ * follower reports the edge blocked. Before it moves it asks its
  * {@link Way} (the traffic agent and the doors, in the agent), and tells it where it sets off to
  * and which node it reached.
  *
@@ -27,13 +27,6 @@ import java.util.Locale;
  * readings' time is the chair's clock).
  */
 final class RouteFollower {
-    /** Nearer than this ahead (front sonar), the chair stops. */
-    static final double STOP_M = 0.45;
-    /** Nearer than this ahead (either front infrared sensor), the chair stops. */
-    static final double STOP_IR_M = 0.3;
-    /** Nearer than this ahead, the chair drives at {@link #SLOW_SCALE} of its power. */
-    static final double SLOW_M = 1.2;
-    static final double SLOW_SCALE = 0.35;
     /** Within this of where a door's edge starts, the chair turns square to it on the spot before it drives. */
     static final double DOOR_SQUARE_M = 0.3;
     /** Stopped this long on an edge, the edge is reported blocked. */
@@ -75,7 +68,7 @@ final class RouteFollower {
         void say(String s);
     }
 
-    private final ChairDriver chair;
+    private final ObstacleFilter chair;
     private final HospitalMap map;
     private final PoseController control = new PoseController(60, 30, 0.12, Math.toRadians(5));
     private final Localiser localiser = new Localiser();
@@ -88,7 +81,7 @@ final class RouteFollower {
     private int edgeTo = -1;
     private long stoppedSinceMs = -1;
 
-    RouteFollower(ChairDriver chair, HospitalMap map) {
+    RouteFollower(ObstacleFilter chair, HospitalMap map) {
         this.chair = chair;
         this.map = map;
     }
@@ -188,6 +181,7 @@ final class RouteFollower {
 
     /** One step on reading {@code r}: drives the chair on, or stops it, and tells what happened. */
     void step(ChairReadings r, Pose pose, long now, Way way, Events events) {
+        chair.observe(r);
         if (route == null) {
             chair.stop();
             return;
@@ -251,9 +245,6 @@ final class RouteFollower {
             edgeTo = toId;
             way.setOff(standsOn()); // sets off along the edge: its body now takes both ends
         }
-        double ahead = r.range(chair.layout().sensorIndex("front"));
-        double irl = r.range(chair.layout().sensorIndex("ir-front-left"));
-        double irr = r.range(chair.layout().sensorIndex("ir-front-right"));
         PoseController.Powers p = control.toPoint(pose, target.x(), target.y());
         if (edge.door() != null && !p.stopped()) {
             // Into a doorway, square on: where the edge starts, the chair turns on the spot until it
@@ -269,13 +260,14 @@ final class RouteFollower {
                 }
             }
         }
-        // A turn on the spot moves nothing forward: the stop zone lets it turn away from what is ahead.
-        boolean spotTurn = Math.abs(p.left() + p.right()) < 1e-9 && p.left() != 0;
-        if (!spotTurn && (ahead < STOP_M || irl < STOP_IR_M || irr < STOP_IR_M)) {
-            chair.stop();
+        // The obstacle filter between here and the supervisor keeps the stop and slow zones (a turn on the
+        // spot passes: it lets the chair turn away from what is ahead); here only what a stop means for the route.
+        chair.drive(p.left(), p.right());
+        double blocked = chair.blockedAt();
+        if (!Double.isNaN(blocked)) {
             if (stoppedSinceMs < 0) {
                 stoppedSinceMs = now;
-                events.say(String.format(Locale.ROOT, "stops: something %.2f m ahead", Math.min(ahead, Math.min(irl, irr))));
+                events.say(String.format(Locale.ROOT, "stops: something %.2f m ahead", blocked));
             } else if (now - stoppedSinceMs > BLOCKED_AFTER_MS) {
                 stoppedSinceMs = -1;
                 events.blocked(fromId, toId);
@@ -283,7 +275,5 @@ final class RouteFollower {
             return;
         }
         stoppedSinceMs = -1;
-        double scale = ahead < SLOW_M && !spotTurn ? SLOW_SCALE : 1;
-        chair.drive(p.left() * scale, p.right() * scale);
     }
 }

@@ -23,7 +23,8 @@ class RouteFollowerTest {
     static final Pose AT_1_FACING_NORTH = new Pose(5, 2, Math.PI / 2);
 
     final Fakes.Chair chair = new Fakes.Chair();
-    final RouteFollower follower = new RouteFollower(chair, SMALL);
+    final io.concord.agents.chair.ObstacleFilter filter = new io.concord.agents.chair.ObstacleFilter(chair);
+    final RouteFollower follower = new RouteFollower(filter, SMALL);
     final List<String> told = new ArrayList<>();
     boolean trafficGrants = true;
     boolean doorOpen = true;
@@ -131,7 +132,7 @@ class RouteFollowerTest {
         step(0, AT_3_FACING_WEST, 3.0);
         double cruise = chair.lastPowers()[0];
         step(100, AT_3_FACING_WEST, 1.0);
-        assertEquals(cruise * RouteFollower.SLOW_SCALE, chair.lastPowers()[0], 1e-9, "slow zone");
+        assertEquals(cruise * io.concord.agents.chair.ObstacleFilter.SLOW_SCALE, chair.lastPowers()[0], 1e-9, "slow zone");
         step(200, AT_3_FACING_WEST, 0.4);
         assertEquals("stop", chair.last(), "stop zone");
         assertTrue(told.contains("says stops: something 0.40 m ahead"), told.toString());

@@ -48,6 +48,7 @@ public final class ObserverLayer extends Layer {
     public static final String ONTOLOGY = "concord-observe";
     public static final long LEASE_MS = 30_000;
     public static final int MAX_SNIFFERS = 8;
+    private int maxSniffers = MAX_SNIFFERS;
     public static final int EVENTS_PER_SECOND = 500;
     public static final int EVENT_BURST = 1_000;
     /** A sniffed message longer than this is cut in its event ({@code "cut": true}). */
@@ -128,6 +129,18 @@ public final class ObserverLayer extends Layer {
         return sniffers.size();
     }
 
+    /**
+     * The most subscribers at once, {@link #MAX_SNIFFERS} unless changed here; a test lifts it to
+     * show what the bound holds back (a flood of subscriptions kept whole). Loop only.
+     */
+    public ObserverLayer sniffLimit(int most) {
+        if (most < 0) {
+            throw new IllegalArgumentException("a sniffers' limit is 0 or more, got " + most);
+        }
+        this.maxSniffers = most;
+        return this;
+    }
+
     @Override
     public void onDown(LayerContext c, Envelope env) {
         AclMessage m = env.message();
@@ -182,9 +195,9 @@ public final class ObserverLayer extends Layer {
             sniffers.values().removeIf(s -> s.untilNs - now < 0);
             Sniffer s = sniffers.get(key);
             if (s == null) {
-                if (sniffers.size() >= MAX_SNIFFERS) {
-                    limit(m.getSender().name() + " asked to sniff " + self.name() + ", which has " + MAX_SNIFFERS + " sniffers already");
-                    answer(m, Performative.REFUSE, "{\"reason\":\"" + MAX_SNIFFERS + " sniffers already\"}");
+                if (sniffers.size() >= maxSniffers) {
+                    limit(m.getSender().name() + " asked to sniff " + self.name() + ", which has " + maxSniffers + " sniffers already");
+                    answer(m, Performative.REFUSE, "{\"reason\":\"" + maxSniffers + " sniffers already\"}");
                     return;
                 }
                 s = new Sniffer(m.getSender(), m.getConversationId());

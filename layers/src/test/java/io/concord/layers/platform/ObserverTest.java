@@ -173,4 +173,52 @@ class ObserverTest {
             assertEquals(1L, w.rt.drops(w.live.get("a")).get("sniff-limit"));
         }
     }
+
+    /**
+     * A flood of subscriptions, 30,000 from one sender (each in a conversation of its own) and
+     * 30,000 from 100 senders: the agent holds 8 sniffers, refuses and counts the rest, and what
+     * it keeps stays 8 whatever comes. With the bound lifted (a test's setting), it keeps them all.
+     */
+    @Test
+    void thirtyThousandSubscriptionsFromOneAndFromAHundredSendersHoldEightSniffers() {
+        assertEquals(ObserverLayer.MAX_SNIFFERS, flood(true));
+        assertEquals(60_000, flood(false), "without the bound every subscription is kept: the flood would grow the agent without end");
+    }
+
+    /** Floods agent a with 60,000 SUBSCRIBE sniff; the sniffers it holds at the end. */
+    private static int flood(boolean bounded) {
+        try (PlatformWorld w = world()) {
+            w.start("a");
+            if (!bounded) {
+                w.rt.layer(w.live.get("a"), ObserverLayer.class).sniffLimit(Integer.MAX_VALUE);
+            }
+            List<PlatformServicesTest.Inbox> senders = new java.util.ArrayList<>();
+            for (int i = 0; i <= 100; i++) {
+                PlatformServicesTest.Inbox s = new PlatformServicesTest.Inbox();
+                join(w, "s" + i, s);
+                senders.add(s);
+            }
+            int sent = 0;
+            for (int i = 0; i < 30_000; i++) {
+                w.rt.agent(w.live.get("s0")).send(ask(Performative.SUBSCRIBE, "a", "sniff", "one-" + i));
+                w.rt.agent(w.live.get("s" + (1 + i % 100))).send(ask(Performative.SUBSCRIBE, "a", "sniff", "many-" + i));
+                sent += 2;
+                if (sent % 2_000 == 0) {
+                    w.sim.runFor(50);   // the senders' loops and the agent's take what was sent
+                }
+            }
+            long answers = 60_000;
+            assertTrue(w.sim.runUntil(() -> senders.stream().mapToLong(s -> s.got.size()).sum() >= answers, 60_000),
+                    senders.stream().mapToLong(s -> s.got.size()).sum() + " answers");
+            long agreed = senders.stream().flatMap(s -> s.got.stream()).filter(m -> m.getPerformative() == Performative.AGREE).count();
+            long refused = senders.stream().flatMap(s -> s.got.stream()).filter(m -> m.getPerformative() == Performative.REFUSE).count();
+            assertEquals(answers, agreed + refused);
+            if (bounded) {
+                assertEquals(ObserverLayer.MAX_SNIFFERS, agreed);
+                assertEquals(answers - ObserverLayer.MAX_SNIFFERS, (long) w.rt.drops(w.live.get("a")).get("sniff-limit"),
+                        "every refusal counted with its reason");
+            }
+            return w.rt.layer(w.live.get("a"), ObserverLayer.class).sniffers();
+        }
+    }
 }

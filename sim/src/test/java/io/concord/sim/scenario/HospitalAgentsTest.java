@@ -355,6 +355,36 @@ class HospitalAgentsTest {
         }
     }
 
+    /**
+     * A trolley left across the chair's way out of the lobby: the obstacle filter between its route
+     * follower and its supervisor stops it short, and the edge is reported blocked; with the filter
+     * switched off (the test's switch), the same chair on the same seed drives into the trolley.
+     */
+    @Test
+    void theObstacleFilterStopsAChairShortOfATrolleyAndWithoutItTheChairHitsIt() {
+        assertEquals(0, trolleyRun(true), "with the filter: no contact");
+        assertTrue(trolleyRun(false) > 0, "without the filter the chair drives into the trolley");
+    }
+
+    /** Contacts of a chair sent from the lobby (node 19) to node 3 past a trolley on its way. */
+    private static long trolleyRun(boolean filter) {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(7, FaultPlan.NONE, 1)) {
+            r.world.addBox("trolley", new io.concord.agents.map.Point(24, 6.0), 1.6, 0.5, 0);
+            r.hospital.control("chair1").obstacleFilter().enabled(filter);
+            r.medical.transport(19, 3, 0, 1);
+            if (filter) {
+                assertTrue(r.sim.runUntil(() -> r.log.stream().anyMatch(l -> l.startsWith("control-chair1: stops: something")), 60_000),
+                        String.join("\n", ScenarioTest.tail(r.log, 20)));
+                assertTrue(r.sim.runUntil(() -> r.log.stream().anyMatch(l -> l.contains("blocked")), 30_000),
+                        "stopped 15 s on the edge, it is reported blocked: " + String.join("\n", ScenarioTest.tail(r.log, 20)));
+                assertTrue(r.hospital.control("chair1").obstacleFilter().counts().get("obstacle-stop") > 0);
+            } else {
+                r.sim.runUntil(() -> r.world.collisionCount() > 0, 60_000);
+            }
+            return r.world.collisionCount();
+        }
+    }
+
     @Test
     void aTaskWhoseChairCrashesIsAuctionedAgainAndDone() {
         try (ScenarioTest.Run r = new ScenarioTest.Run(11, FaultPlan.NONE, 2)) {
