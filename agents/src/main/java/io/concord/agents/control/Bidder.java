@@ -26,7 +26,8 @@ import java.util.function.Supplier;
  *
  * <p>The cost is the seconds until the patient is delivered: the work ahead in the queue, the
  * approach, loading, the path and unloading, at {@link #EST_SPEED_MPS} and {@link #EST_DOOR_S}
- * a door.
+ * a door, and the waits for other chairs the traffic agent expects on the way (its reservations
+ * now): the quote the Medical agent's deadline is set by.
  */
 final class Bidder {
     /** Metres a second the estimates assume (cruise power, turns and slowing included). */
@@ -46,6 +47,14 @@ final class Bidder {
 
         /** The same along {@code via} (its first node {@code from}, its last {@code to}) if not null: that way, its doors asked. */
         CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to, List<Integer> via);
+
+        /**
+         * The seconds the chair should expect to wait for other chairs along {@code path}, as the
+         * traffic agent estimates them from its reservations; 0 without a traffic agent or an answer.
+         */
+        default CompletableFuture<Double> waits(List<Integer> path) {
+            return CompletableFuture.completedFuture(0.0);
+        }
     }
 
     private final TaskQueue queue;
@@ -103,24 +112,28 @@ final class Bidder {
                     refuse(t, ControlAgent.reason(second, "no plan from node " + t.from + " to node " + t.to), false);
                     return;
                 }
-                propose(t, WheelchairMessage.decode(first, Plan.class), WheelchairMessage.decode(second, Plan.class));
+                Plan toPickup = WheelchairMessage.decode(first, Plan.class);
+                Plan toDropoff = WheelchairMessage.decode(second, Plan.class);
+                List<Integer> way = new java.util.ArrayList<>(toPickup.nodes());
+                way.addAll(toDropoff.nodes().isEmpty() ? List.of() : toDropoff.nodes().subList(1, toDropoff.nodes().size()));
+                planning.waits(way).thenAccept(waits -> propose(t, toPickup, toDropoff, waits));
             });
         });
     }
 
-    private void propose(Task t, Plan toPickup, Plan toDropoff) {
+    private void propose(Task t, Plan toPickup, Plan toDropoff, double waitsS) {
         t.toPickup = toPickup.nodes();
         t.toDropoff = toDropoff.nodes();
         double approach = toPickup.length() / EST_SPEED_MPS + EST_DOOR_S * toPickup.doors().size();
         t.pathS = toDropoff.length() / EST_SPEED_MPS + EST_DOOR_S * toDropoff.doors().size();
-        t.estimateS = approach + t.unloadS + t.pathS + t.unloadS;
+        t.estimateS = approach + t.unloadS + t.pathS + t.unloadS + waitsS;
         t.costS = queue.seconds() + t.estimateS;
         // The proposals still open that the cost counts, each with its seconds: the Medical agent
         // takes out those another chair has won.
         List<Proposal.Pending> pending = queue.pendingBesides(t);
         t.state = TaskView.State.PROPOSED;
         say.accept(String.format(Locale.ROOT, "proposes for %s: cost %.1f s, path %.1f s, unload %.0f s", t.id, t.costS,
-                t.pathS, t.unloadS));
+                t.pathS, t.unloadS) + (waitsS > 0 ? String.format(Locale.ROOT, ", waits %.1f s", waitsS) : ""));
         respond.accept(t.cfp, t.cfp.createReply().setPerformative(Performative.PROPOSE).setContent(
                 new Proposal(t.id, t.costS, t.pathS, t.unloadS, pending).encode()));
     }

@@ -387,6 +387,32 @@ public class ControlAgent extends Agent implements ChairListener {
                     : new AclMessage(Performative.FAILURE).setContent(new NoRoute(null, "the planner did not answer within 10 s").encode()));
         }
 
+        /** The traffic agent's estimate of the waits along {@code path} (QUERY-REF wait-estimate); 0 without one or an answer in 2 s. */
+        @Override
+        public CompletableFuture<Double> waits(List<Integer> path) {
+            AID traffic = trafficAgent();
+            if (traffic == null || path.size() < 2) {
+                return CompletableFuture.completedFuture(0.0);
+            }
+            AclMessage q = new AclMessage(Performative.QUERY_REF);
+            q.addReceiver(traffic);
+            q.setProtocol(FipaProtocols.QUERY);
+            q.setOntology(Services.ONTOLOGY);
+            q.setLanguage(Services.LANGUAGE);
+            q.setContent(new io.concord.agents.proto.WheelchairMessage.WaitEstimate(path, null).encode());
+            return asks.ask(q, 2_000, null).thenApply(a -> {
+                if (a == null || a.getPerformative() != Performative.INFORM_REF) {
+                    return 0.0;
+                }
+                try {
+                    Double s = io.concord.agents.proto.WheelchairMessage.decode(a, io.concord.agents.proto.WheelchairMessage.WaitEstimate.class).seconds();
+                    return s == null ? 0.0 : s;
+                } catch (IllegalArgumentException e) {
+                    return 0.0;
+                }
+            });
+        }
+
         @Override
         public AID trafficAgent() {
             for (AgentEntry e : Platform.of(ControlAgent.this).searchCopy(ServiceDescription.ofType(Services.TRAFFIC))) {

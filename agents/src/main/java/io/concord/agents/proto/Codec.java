@@ -68,6 +68,7 @@ final class Codec {
         under(Clear.class, INFORM);
         under(ReserveWaits.class, AGREE);
         under(Release.class, INFORM);
+        under(WaitEstimate.class, QUERY_REF, INFORM_REF);
         under(Idle.class, INFORM);
         under(MakeWay.class, INFORM);
         under(Stalled.class, INFORM);

@@ -87,6 +87,7 @@ public sealed interface WheelchairMessage {
         default void onHere(Here w, AclMessage m) { unknown(w.verb(), m); }
         default void onReserve(Reserve w, AclMessage m) { unknown(w.verb(), m); }
         default void onGranted(Granted w, AclMessage m) { unknown(w.verb(), m); }
+        default void onWaitEstimate(WaitEstimate w, AclMessage m) { unknown(w.verb(), m); }
 
         default void onClear(Clear w, AclMessage m) { unknown(w.verb(), m); }
         default void onReserveWaits(ReserveWaits w, AclMessage m) { unknown(w.verb(), m); }
@@ -538,6 +539,26 @@ public sealed interface WheelchairMessage {
 
         public void to(Handler h, AclMessage m) {
             h.onReserveWaits(this, m);
+        }
+    }
+
+    /**
+     * QUERY-REF {@code wait-estimate}, control -> traffic: how long a chair should expect to wait
+     * for the chairs ahead of it on {@code path}, from the reservations now; answered INFORM-REF
+     * with the same path and {@code seconds} (the traffic agent's estimate: each chair queued or
+     * standing on a node of the path, counted once, for as long as chairs have held that node).
+     */
+    @Element(name = "wait-estimate")
+    record WaitEstimate(List<Integer> path, Double seconds) implements WheelchairMessage, Concept {
+        public WaitEstimate {
+            path = Codec.list(path);
+            if (seconds != null && !(seconds >= 0)) {
+                throw new IllegalArgumentException("seconds: a wait is 0 or more, got " + seconds);
+            }
+        }
+
+        public void to(Handler h, AclMessage m) {
+            h.onWaitEstimate(this, m);
         }
     }
 

@@ -163,6 +163,12 @@ final class Reservations<T> {
     private final Map<String, List<Integer>> standing = new HashMap<>();
     /** chair -> its route granted in order, with its ticket and how far it may drive (index into the path). */
     private final Map<String, Route<T>> routes = new TreeMap<>();
+    /** key -> since when the first chair of its queue has held it (it stands on it, or drives to it next). */
+    private final Map<Long, Long> headSince = new HashMap<>();
+    /** node -> how long a chair at the head of its queue has held it, on average (ms, a moving mean). */
+    private final Map<Integer, Double> holdMs = new HashMap<>();
+    /** What a node's hold is taken to be before any chair has given it back: a chair passing it. */
+    public static final long PASS_MS = 5_000;
     private long grants;
     private long moves;
     private long deadlocks;
@@ -243,6 +249,32 @@ final class Reservations<T> {
         Map<String, List<Integer>> out = new TreeMap<>();
         routes.forEach((c, r) -> out.put(c, List.copyOf(r.path.subList(0, r.upto + 1))));
         return out;
+    }
+
+    /**
+     * How long {@code chair} should expect to wait for the chairs ahead of it on {@code path}, from
+     * the reservations now (seconds): every other chair that holds or is queued for what the path
+     * takes at one of its nodes, counted once, for as long as chairs have held the longest-held of
+     * those nodes on average ({@link #PASS_MS} at a node nobody has given back yet). A chair alone
+     * on its way waits 0. What a bid adds to its quote (docs/design.md, "Quotes that include waiting").
+     */
+    public double expectedWaitS(String chair, List<Integer> path) {
+        Map<String, Double> ahead = new TreeMap<>();
+        List<long[]> ks = keys(path);
+        for (int i = 0; i < path.size(); i++) {
+            double ms = holdMs.getOrDefault(path.get(i), (double) PASS_MS);
+            for (long k : ks.get(i)) {
+                Set<String> h = holders.get(k);
+                if (h != null) {
+                    for (String c : h) {
+                        if (!c.equals(chair)) {
+                            ahead.merge(c, ms, Math::max);
+                        }
+                    }
+                }
+            }
+        }
+        return ahead.values().stream().mapToDouble(Double::doubleValue).sum() / 1000.0;
     }
 
     /** Who waits for which route, and who is in the way. */
@@ -408,7 +440,14 @@ final class Reservations<T> {
             for (long n : mine) {
                 Set<String> h = holders.get(n);
                 if (h != null && !keep.contains(n)) {
+                    boolean head = !h.isEmpty() && h.iterator().next().equals(chair);
                     h.remove(chair);
+                    if (head) {
+                        headSince.remove(n);
+                        if (!h.isEmpty()) {
+                            headSince.put(n, clock);
+                        }
+                    }
                 }
             }
             if (!kept.isEmpty()) {
@@ -425,7 +464,11 @@ final class Reservations<T> {
             if (!mine.contains(n)) {
                 mine.add(n);
             }
-            holders.computeIfAbsent(n, k -> new LinkedHashSet<>()).add(chair);
+            Set<String> h = holders.computeIfAbsent(n, k -> new LinkedHashSet<>());
+            if (h.isEmpty()) {
+                headSince.put(n, clock);
+            }
+            h.add(chair);
         }
     }
 
@@ -445,7 +488,17 @@ final class Reservations<T> {
 
     private void giveBackKey(String chair, long key) {
         Set<String> h = holders.get(key);
-        if (h != null) {
+        if (h != null && !h.isEmpty() && h.iterator().next().equals(chair)) {
+            // The head leaves: how long it held the node (standing, loading, waiting on) teaches the estimate.
+            Long since = headSince.remove(key);
+            if (since != null) {
+                holdMs.merge(node(key), (double) Math.max(0, clock - since), (old, d) -> 0.8 * old + 0.2 * d);
+            }
+            h.remove(chair);
+            if (!h.isEmpty()) {
+                headSince.put(key, clock);
+            }
+        } else if (h != null) {
             h.remove(chair);
         }
         List<Long> mine = held.get(chair);

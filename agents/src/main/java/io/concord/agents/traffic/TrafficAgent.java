@@ -95,7 +95,8 @@ public class TrafficAgent extends Agent {
     protected void setup() {
         Platform.of(this).register(ServiceDescription.of(Services.TRAFFIC, getLocalName()));
         MessageTemplate mine = MessageTemplate.matchOntology(Services.ONTOLOGY).and(
-                MessageTemplate.matchPerformative(Performative.REQUEST).or(MessageTemplate.matchPerformative(Performative.INFORM)));
+                MessageTemplate.matchPerformative(Performative.REQUEST).or(MessageTemplate.matchPerformative(Performative.INFORM))
+                        .or(MessageTemplate.matchPerformative(Performative.QUERY_REF)));
         Inbox.each(this, mine, this::handle);
         addBehaviour(new TickerBehaviour(this, REVIEW_MS) {
             @Override
@@ -165,7 +166,7 @@ public class TrafficAgent extends Agent {
             WheelchairMessage.dispatch(m, handler, this::send);
         } catch (IllegalArgumentException e) {
             // a route off the map
-            if (m.getPerformative() == Performative.REQUEST) {
+            if (m.getPerformative() == Performative.REQUEST || m.getPerformative() == Performative.QUERY_REF) {
                 send(m.createReply().setPerformative(Performative.REFUSE).setContent(Refused.because(e.getMessage()).encode()));
             }
         }
@@ -179,6 +180,18 @@ public class TrafficAgent extends Agent {
             List<Integer> at = onMap("at", r.at());
             List<Integer> path = onMap("path", r.path());
             tell(timed(() -> rules.reserve(m.getSender().name(), m, at, path, r.aside(), now)));
+        }
+
+        @Override
+        public void onWaitEstimate(WheelchairMessage.WaitEstimate w, AclMessage m) {
+            if (m.getPerformative() != Performative.QUERY_REF) {
+                return;
+            }
+            heard(m);
+            List<Integer> path = onMap("path", w.path());
+            double s = rules.expectedWaitS(m.getSender().name(), path);
+            send(m.createReply().setPerformative(Performative.INFORM_REF)
+                    .setContent(new WheelchairMessage.WaitEstimate(path, Math.round(s * 10) / 10.0).encode()));
         }
 
         @Override

@@ -94,6 +94,8 @@ class WheelchairMessageTest {
             new Case(new Granted(List.of(7, 8, 10, 26), 8), INFORM, "((granted :path (sequence 7 8 10 26) :upto 8))"),
             new Case(new Clear(26), INFORM, "((clear :upto 26))"),
             new Case(new ReserveWaits(List.of("control-chair2")), AGREE, "((reserve-waits :held-by (sequence control-chair2)))"),
+            new Case(new WaitEstimate(List.of(7, 8, 10), null), QUERY_REF, "((wait-estimate :path (sequence 7 8 10)))"),
+            new Case(new WaitEstimate(List.of(7, 8, 10), 12.5), INFORM_REF, "((wait-estimate :path (sequence 7 8 10) :seconds 12.5))"),
             new Case(new Release(7), INFORM, "((release :node 7))"),
             new Case(new Idle(List.of(26)), INFORM, "((idle :at (sequence 26)))"),
             new Case(new MakeWay(26, 25, List.of(10, 25)), INFORM, "((make-way :from 26 :path (sequence 10 25) :to 25))"),

@@ -76,6 +76,28 @@ class ReservationsTest {
     }
 
     /**
+     * The wait a quote includes: none on a free way; with chairs holding or queued for nodes of the
+     * way, each counted once, for as long as chairs have held those nodes (the pass time before any
+     * node was given back, then what was measured: a chair that stood 60 s at node 3 makes node 3
+     * a long wait).
+     */
+    @Test
+    void aQuoteWithChairsAheadOnItsWayWaitsLongerAndLearnsHowLongANodeIsHeld() {
+        assertEquals(0, r.expectedWaitS("c", List.of(1, 2, 3, 4, 5)), 1e-9, "nobody on the way");
+        reserve("a", "ta", List.of(3), List.of(3, 4), 0);
+        reserve("b", "tb", List.of(4), List.of(4, 5), 0);
+        double two = r.expectedWaitS("c", List.of(1, 2, 3, 4, 5));
+        assertEquals(2 * Reservations.PASS_MS / 1000.0, two, 1e-9, "a and b ahead, a pass each, a counted once over 3 and 4");
+        assertEquals(0, r.expectedWaitS("a", List.of(2, 3)), 1e-9, "its own reservations are no wait");
+        assertEquals(Reservations.PASS_MS / 1000.0, r.expectedWaitS("c", List.of(1, 2, 3)), 1e-9, "only a on 1-2-3");
+        // a stands at 3 for 60 s before it leaves it: 3's hold is learnt, and the next quote through 3 is longer.
+        r.release("a", 3, 60_000);
+        reserve("d", "td", List.of(2), List.of(2, 3), 60_000);
+        double learnt = r.expectedWaitS("c", List.of(1, 2, 3));
+        assertTrue(learnt > Reservations.PASS_MS / 1000.0, "d ahead on 3, which was held 60 s (a moving mean): " + learnt);
+    }
+
+    /**
      * In order, a chair follows another down the corridor: granted at once behind it, up to the
      * node before the one the first still holds, and told to go on as the first leaves each node.
      */

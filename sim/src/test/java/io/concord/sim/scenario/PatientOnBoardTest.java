@@ -72,8 +72,8 @@ class PatientOnBoardTest {
     }
 
     /**
-     * Held up on its way to the patient (node 4 of its route is held) for 15 minutes, longer than
-     * its quote allows: its progress reports keep the task its own; no second auction, and it
+     * Held up on its way to the patient (node 4 of its route is held) for 20 minutes, longer than
+     * its quote allows (3 x its cost + 120 s, the cost with the wait for the chair on node 4 in it): its progress reports keep the task its own; no second auction, and it
      * fetches the patient once the way is free.
      */
     @Test
@@ -94,7 +94,7 @@ class PatientOnBoardTest {
             r.sim.runFor(1_000);
             CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 60);
             assertTrue(r.sim.runUntil(() -> logged(r, "to-pickup at node"), 60_000), "the chair set off; log:\n" + tail(r));
-            r.sim.runFor(900_000);
+            r.sim.runFor(1_200_000);
             assertEquals(kept, !logged(r, "(auction 2)"), "a second auction while the chair was held up; log:\n" + tail(r));
             if (!kept) {
                 return;
