@@ -53,6 +53,13 @@ public final class Demo {
             HospitalDemo.main(rest);
             return;
         }
+        if (args.length > 1) {
+            System.err.println("platform takes no options; got '" + String.join(" ", java.util.Arrays.copyOfRange(args, 1, args.length))
+                    + "' (the hospital's options go without 'platform')");
+            System.err.println(HospitalDemo.USAGE);
+            System.exit(2);
+            return;
+        }
         String platform = "demo";
         OUT.println("Concord platform demo: three JVMs, no main container, nothing configured but the agents.");
         OUT.println("Each agent binds the first free UDP port from 7001 on 127.0.0.1, finds the others by the ports");

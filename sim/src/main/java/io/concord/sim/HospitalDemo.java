@@ -78,9 +78,10 @@ public final class HospitalDemo {
          * as {@link HospitalMap#nodeNamed} takes them), given as the rooms' nodes.
          */
         static TaskSpec parse(String s, java.util.function.Supplier<HospitalMap> map) {
-            String[] p = s.trim().split(":");
-            String[] ends = p[0].split("-");
-            if (ends.length != 2 || p.length > 3) {
+            String[] p = s.trim().split(":", -1);
+            String[] ends = p[0].split("-", -1);
+            if (ends.length != 2 || p.length > 3 || java.util.Arrays.stream(p).anyMatch(String::isBlank)
+                    || java.util.Arrays.stream(ends).anyMatch(String::isBlank)) {
                 throw new IllegalArgumentException("a task is from-to[:priority[:unload]], nodes or rooms, e.g. 3-9:3:60 or A2-B7:3:60; got '" + s + "'");
             }
             int[] node = new int[2];
@@ -280,6 +281,18 @@ public final class HospitalDemo {
         if (!(speed > 0 && speed <= 1000)) {
             throw new IllegalArgumentException("--speed must be in (0, 1000], got " + speed);
         }
+        // The picture's directories are made when it is written; what cannot be made or written is refused now, not after the run.
+        Path existing = picture.toAbsolutePath().getParent();
+        while (existing != null && !Files.exists(existing)) {
+            existing = existing.getParent();
+        }
+        if (existing == null || !Files.isDirectory(existing)) {
+            throw new IllegalArgumentException("--picture " + picture + ": " + existing
+                    + " is a file, not a directory, so the picture cannot go there; name a file in a directory");
+        }
+        if (!Files.isWritable(existing) || Files.isDirectory(picture) || (Files.exists(picture) && !Files.isWritable(picture))) {
+            throw new IllegalArgumentException("--picture " + picture + ": it cannot be written there; name a file you may write");
+        }
         if (chairs < 1) {
             throw new IllegalArgumentException("--chairs must be 1 or more (up to the map's parking places), got " + chairs);
         }
@@ -356,7 +369,7 @@ public final class HospitalDemo {
                 if (!map.hasNode(n)) {
                     throw new IllegalArgumentException("--tasks " + t.from() + "-" + t.to() + ": " + which + " has no node " + n
                             + "; its nodes are " + map.nodes().stream().map(x -> x.id()).sorted().toList()
-                            + (o.map() == null ? " (rooms: docs/hospital-map.md)" : ""));
+                            + (map.roomNames().isEmpty() ? "" : "; its rooms " + String.join(", ", map.roomNames())));
                 }
             }
         }
@@ -502,11 +515,16 @@ public final class HospitalDemo {
         intro(map, o);
         OUT.printf(Locale.ROOT, "This launcher starts two JVMs on this machine: the ward (world, doors' and chairs' agents) and the "
                 + "staff's terminal (the Medical agent). No address is configured: they find each other by port binding on 127.0.0.1 "
-                + "(7001 and up) and elect a container. The world runs %s.%n%n", pace(o.speed()));
+                + "(7001 and up) and elect a container. The world runs %s. The ward's lines carry hospital time (t=...), "
+                + "the staff's the seconds since its JVM started.%n%n", pace(o.speed()));
         Process ward = spawn("ward", o);
         List<Process> children = new CopyOnWriteArrayList<>(List.of(ward));
+        List<Thread> pumps = new CopyOnWriteArrayList<>();
+        long launched = System.currentTimeMillis();
+        java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
         // Stopped (Ctrl-C, kill), the launcher stops its JVMs first: a ward left running would keep driving a real chair.
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            stopping.set(true);
             for (Process p : children) {
                 p.destroy();
             }
@@ -519,17 +537,20 @@ public final class HospitalDemo {
                     p.destroyForcibly();
                 }
             }
+            drain(pumps);
+            pictureLine(o, launched);
+            OUT.println("Stopped: the ward and the staff's terminal were stopped with the launcher.");
         }, "demo-stop-children"));
         CompletableFuture<String> wardStart = new CompletableFuture<>();
         AtomicReference<String> wardFailure = new AtomicReference<>();
-        pump(ward, "ward ", line -> {
+        pumps.add(pump(ward, "ward ", line -> {
             seen.accept("[ward ] " + line);
             if (line.contains("ward ready")) {
                 wardStart.complete(null);
             } else if (line.startsWith(WARD_FAILED)) {
                 wardFailure.set(line.substring(WARD_FAILED.length()).trim());
             }
-        });
+        }));
         ward.onExit().thenRun(() -> wardStart.complete(wardFailure.get() != null ? wardFailure.get()
                 : "its JVM ended (exit code " + ward.exitValue() + ")"));
         String failed;
@@ -548,12 +569,12 @@ public final class HospitalDemo {
         // With a console the staff's JVM stays after its transports (the Medical agent takes those
         // asked at the console); it says how its own went in one line.
         CompletableFuture<Boolean> batch = new CompletableFuture<>();
-        pump(staff, "staff", line -> {
+        pumps.add(pump(staff, "staff", line -> {
             seen.accept("[staff] " + line);
             if (line.startsWith(STAFF_DONE)) {
                 batch.complete(line.startsWith(STAFF_DONE + " every transport was done"));
             }
-        });
+        }));
         staff.onExit().thenRun(() -> batch.complete(staff.exitValue() == 0));
         // A ward that dies ends the demo: the staff's transports could only wait for it.
         ward.onExit().thenRun(() -> {
@@ -583,6 +604,11 @@ public final class HospitalDemo {
                 p.destroyForcibly();
             }
         }
+        drain(pumps);   // the JVMs' last lines (the ward's picture, its link's counts) before the launcher's own
+        if (stopping.get()) {
+            return false;   // stopped from outside: the hook says so, it is no failure of the ward
+        }
+        pictureLine(o, launched);
         if (wardFailure.get() != null) {
             OUT.println("The ward stopped: " + wardFailure.get());
             return false;
@@ -619,7 +645,30 @@ public final class HospitalDemo {
         return new ProcessBuilder(cmd).redirectErrorStream(true).start();
     }
 
-    private static void pump(Process p, String prefix, Consumer<String> watch) {
+    /** Where the ward's picture of this run went, if it wrote one. */
+    private static void pictureLine(Options o, long launched) {
+        try {
+            if (Files.exists(o.picture()) && Files.getLastModifiedTime(o.picture()).toMillis() >= launched - 1_000) {
+                OUT.println("The ward's picture of the run: " + o.picture().toAbsolutePath());
+            }
+        } catch (IOException e) {
+            // no picture to tell of
+        }
+    }
+
+    /** Waits a little for each pump to have printed its JVM's last lines. */
+    private static void drain(List<Thread> pumps) {
+        for (Thread t : pumps) {
+            try {
+                t.join(5_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+    }
+
+    private static Thread pump(Process p, String prefix, Consumer<String> watch) {
         Thread t = new Thread(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
                 String line;
@@ -635,6 +684,7 @@ public final class HospitalDemo {
         }, "demo-" + prefix.trim());
         t.setDaemon(true);
         t.start();
+        return t;
     }
 
     /** "10 times faster than real time", "in real time", "2.5 times faster than real time", "half as fast as real time". */

@@ -88,6 +88,11 @@ class HospitalDemoTest {
                 .getMessage().contains("needs a value"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", "3to9"}))
                 .getMessage().contains("from-to"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--picture", "pom.xml/x.png"}))
+                .getMessage().contains("is a file, not a directory"), "a picture nowhere to go is refused before the run, not lost after it");
+        HospitalDemo.parse(new String[] {"--picture", "target/no-such-dir-yet/x.png"}); // its directories are made when it is written
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--picture", "."}))
+                .getMessage().contains("cannot be written there"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--chairs", "0"}))
                 .getMessage().contains("1 or more"));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--record", "run.jsonl"}))
@@ -108,6 +113,13 @@ class HospitalDemoTest {
         HospitalDemo.Options far = HospitalDemo.parse(new String[] {"--tasks", "3-99"});
         assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.check(HospitalMap.defaultHospital(), far))
                 .getMessage().startsWith("--tasks 3-99: the default hospital has no node 99; its nodes are [1, 2, 3,"));
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.check(HospitalMap.defaultHospital(), far))
+                .getMessage().contains("; its rooms A1, A2, A3"), "a wrong node number names the rooms too");
+        // An empty field is refused, not read as its default: 3-9: and 3-9::60 and 3- say what a task is.
+        for (String empty : new String[] {"3-9:", "3-9::60", "3-", "-9", "3-9:3:"}) {
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> HospitalDemo.parse(new String[] {"--tasks", empty}))
+                    .getMessage().contains("from-to[:priority[:unload]]"), empty);
+        }
     }
 
     /** A chair starts at each of the map's parking places, in order; more chairs than places are refused, saying how many. */
@@ -192,8 +204,19 @@ class HospitalDemoTest {
             assertEquals(200, asked.statusCode(), asked.body());
             until(lines, all, l -> l.matches(".*medical: control-chair\\d+ reports T2 done.*"));
 
-            launcher.destroy(); // SIGTERM, as kill or a service manager sends it
+            // SIGTERM, as kill or a service manager sends it; through the handle, since Process.destroy()
+            // also closes our end of the launcher's output, and what it prints on the way out would be lost.
+            assertTrue(launcher.toHandle().destroy(), "SIGTERM sent");
             assertTrue(launcher.waitFor(120, java.util.concurrent.TimeUnit.SECONDS), "the launcher ended");
+            reader.join(10_000);
+            synchronized (all) {
+                // Stopped from outside, the launcher says so (not "the ward stopped: exit code 143"),
+                // and where the ward's picture went.
+                assertTrue(all.stream().anyMatch(l -> l.matches("The ward's picture of the run: .*hospital-console-demo\\.png")),
+                        "the ward's picture line: " + all.subList(Math.max(0, all.size() - 15), all.size()));
+                assertEquals("Stopped: the ward and the staff's terminal were stopped with the launcher.", all.get(all.size() - 1));
+                assertTrue(all.stream().noneMatch(l -> l.startsWith("The ward stopped")), "a stop from outside is no failure of the ward");
+            }
             for (ProcessHandle child : children) {
                 child.onExit().get(60, java.util.concurrent.TimeUnit.SECONDS);
                 assertTrue(!child.isAlive(), "a JVM of the demo was left running: " + child.info());
@@ -328,6 +351,14 @@ class HospitalDemoTest {
         }, "hospital", "--speed", "5", "--picture", "target/pictures/warddies.png");
         assertTrue(e.exit() != 0, "a non-zero exit: " + e.tail());
         assertTrue(e.out().stream().anyMatch(l -> l.startsWith("The ward stopped: ")), e.tail());
+    }
+
+    /** The platform demo takes no options: one that is given is refused in one line, with the usage, and exit code 2. */
+    @Test
+    void thePlatformDemoRefusesAnOption() throws Exception {
+        Ended e = launch(p -> { }, "platform", "--bogus");
+        assertEquals(2, e.exit(), e.tail());
+        assertEquals("platform takes no options; got '--bogus' (the hospital's options go without 'platform')", e.out().get(0));
     }
 
     /**

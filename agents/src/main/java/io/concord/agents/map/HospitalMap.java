@@ -426,13 +426,12 @@ public final class HospitalMap {
             }
             return id;
         }
-        List<String> rooms = new ArrayList<>();
+        List<String> rooms = roomNames();
         for (Area a : areas) {
             if (a.kind() != Area.Kind.ROOM) {
                 continue;
             }
-            String short_ = a.name().contains(" ") ? a.name().substring(a.name().indexOf(' ') + 1) : a.name();
-            rooms.add(short_);
+            String short_ = shortName(a);
             if (t.equalsIgnoreCase(a.name()) || t.equalsIgnoreCase(short_) || t.equalsIgnoreCase(a.id())) {
                 for (Node n : nodeList) {
                     if (a.id().equals(n.area())) {
@@ -444,6 +443,21 @@ public final class HospitalMap {
         }
         throw new IllegalArgumentException("no node or room '" + t + "' in " + name + (rooms.isEmpty() ? " (it has no rooms)"
                 : "; rooms: " + String.join(", ", rooms)) + "; or a node's number");
+    }
+
+    /** The patients' rooms by the short names {@link #nodeNamed} takes ({@code A2}, {@code B7}), in map order. */
+    public List<String> roomNames() {
+        List<String> rooms = new ArrayList<>();
+        for (Area a : areas) {
+            if (a.kind() == Area.Kind.ROOM) {
+                rooms.add(shortName(a));
+            }
+        }
+        return rooms;
+    }
+
+    private static String shortName(Area a) {
+        return a.name().contains(" ") ? a.name().substring(a.name().indexOf(' ') + 1) : a.name();
     }
 
     /** The node with this id. */
