@@ -521,10 +521,12 @@ public final class HospitalDemo {
         List<Process> children = new CopyOnWriteArrayList<>(List.of(ward));
         List<Thread> pumps = new CopyOnWriteArrayList<>();
         long launched = System.currentTimeMillis();
-        java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
+        // Whoever ends the run first says how it ended: the launcher's own end, or the hook when it was stopped from
+        // outside (the hook also runs at the launcher's own exit, and is then silent).
+        java.util.concurrent.atomic.AtomicBoolean settled = new java.util.concurrent.atomic.AtomicBoolean();
         // Stopped (Ctrl-C, kill), the launcher stops its JVMs first: a ward left running would keep driving a real chair.
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            stopping.set(true);
+            boolean fromOutside = settled.compareAndSet(false, true);
             for (Process p : children) {
                 p.destroy();
             }
@@ -536,6 +538,9 @@ public final class HospitalDemo {
                 } catch (InterruptedException e) {
                     p.destroyForcibly();
                 }
+            }
+            if (!fromOutside) {
+                return;
             }
             drain(pumps);
             pictureLine(o, launched);
@@ -561,6 +566,9 @@ public final class HospitalDemo {
         }
         if (failed != null) {
             ward.destroyForcibly().waitFor(20, TimeUnit.SECONDS);
+            if (!settled.compareAndSet(false, true)) {
+                return false;   // stopped from outside while the ward started: the hook says so
+            }
             OUT.println("The ward could not start: " + failed);
             return false;
         }
@@ -605,7 +613,7 @@ public final class HospitalDemo {
             }
         }
         drain(pumps);   // the JVMs' last lines (the ward's picture, its link's counts) before the launcher's own
-        if (stopping.get()) {
+        if (!settled.compareAndSet(false, true)) {
             return false;   // stopped from outside: the hook says so, it is no failure of the ward
         }
         pictureLine(o, launched);

@@ -315,6 +315,8 @@ class HospitalDemoTest {
         assertTrue(e.out().stream().anyMatch(l -> l.startsWith("The ward could not start: ") && l.contains("/dev/concord-no-such-port")),
                 e.tail());
         assertTrue(e.out().stream().noneMatch(l -> l.contains("ward ready") || l.contains("\tat ")), "no start, no stack trace: " + e.tail());
+        // The launcher's shutdown hook runs at its own exit too; it says "Stopped" only when stopped from outside.
+        assertTrue(e.out().stream().noneMatch(l -> l.startsWith("Stopped: ")), "an end of its own is no stop from outside: " + e.tail());
     }
 
     /** The console's port held by another program: the same. */
