@@ -241,7 +241,13 @@ public final class HospitalView implements ConsoleView {
                     // The Medical agent's own id for it, as its log says it (T2...), beside the desk's.
                     String task = w instanceof Done d ? d.task() : w instanceof Failed f ? f.task() : null;
                     String reason = w instanceof WheelchairMessage.Reasoned r ? r.reason() : null;
-                    detail = chair != null && !chair.isEmpty() ? "by " + chair : reason != null ? reason : detail;
+                    boolean byChair = chair != null && !chair.isEmpty();
+                    if (w instanceof Failed f && f.reason().startsWith("withdrawn")) {
+                        state = "withdrawn";   // called off (at this console or elsewhere), not a chair's failure
+                    }
+                    // Done: who did it. Failed or withdrawn: why, and whose it was.
+                    detail = w instanceof Done ? (byChair ? "by " + chair : detail)
+                            : reason != null ? reason + (byChair ? "; it was " + chair + "'s" : "") : byChair ? "by " + chair : detail;
                     if (task != null && !task.isEmpty()) {
                         detail = task + ": " + detail;
                     }
@@ -659,7 +665,7 @@ public final class HospitalView implements ConsoleView {
                     tasks.add(bidRow(c.name(), t));
                 }
             }
-            chairs.add(json.createArrayNode().add(c.name()).add(String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y()))
+            chairs.add(json.createArrayNode().add(c.name()).add(poseText(p))
                     .add(String.format(Locale.ROOT, "%.2f m/s", Math.abs(c.forwardSpeed()) < 0.005 ? 0.0 : c.forwardSpeed()))
                     .add(battery(ctl))
                     .add(current == null ? "idle" : current.id() + " " + current.state().name().toLowerCase(Locale.ROOT))
@@ -699,7 +705,7 @@ public final class HospitalView implements ConsoleView {
                 drawChair(shapes, name, p, ctl, true);
             }
             chairs.add(json.createArrayNode().add(name + " (serial)")
-                    .add(p == null ? "unknown" : String.format(Locale.ROOT, "(%.1f, %.1f)", p.x(), p.y())).add(speed)
+                    .add(p == null ? "unknown" : poseText(p)).add(speed)
                     .add(battery(ctl)).add(task).add(safety(ctl)));
         }
         ArrayNode tables = o.putArray("tables");
@@ -840,6 +846,12 @@ public final class HospitalView implements ConsoleView {
             return "";
         }
         return String.format(Locale.ROOT, "%.1f V", r.batteryVolts()) + (r.faults().contains(ChairFault.BATTERY_LOW) ? " low" : "");
+    }
+
+    /** A pose as the chairs' table shows it: metres on the map, and the heading in degrees (0 along x, 90 along y). */
+    static String poseText(Pose p) {
+        long deg = Math.round(Math.toDegrees(p.heading()));
+        return String.format(Locale.ROOT, "(%.1f, %.1f) %d°", p.x(), p.y(), deg == -180 ? 180 : deg);
     }
 
     /** A row of "The chairs' tasks and bids": the chair, the task, its way, its state, its cost, why it ended. */

@@ -92,11 +92,11 @@ class HospitalConsoleTest {
                 assertTrue(!HospitalView.colour("chair1").equals(HospitalView.colour("chair2")), "each chair a colour of its own");
                 assertTrue(browser.driver.findElement(By.id("chairs")).getText().lines().noneMatch(l -> l.contains("-0.00 m/s")),
                         "a chair standing still has no sign");
-                // Every chair's battery, as its last report gave it (the simulated chair's battery model).
+                // Every chair's pose with its heading, and its battery, as its last report gave it (the simulated chair's battery model).
                 try {
                     browser.until(d -> {
                         List<String> rows = d.findElement(By.id("chairs")).getText().lines().filter(l -> l.matches("chair[0-9]+ .*")).toList();
-                        return !rows.isEmpty() && rows.stream().allMatch(l -> l.matches(".* m/s [0-9]+\\.[0-9] V .*"));
+                        return !rows.isEmpty() && rows.stream().allMatch(l -> l.matches(".*\\(-?[0-9]+\\.[0-9], -?[0-9]+\\.[0-9]\\) -?[0-9]+° .* m/s [0-9]+\\.[0-9] V .*"));
                     });
                 } catch (org.openqa.selenium.TimeoutException e) {
                     throw new AssertionError("chairs: " + browser.driver.findElement(By.id("chairs")).getText(), e);
@@ -342,6 +342,9 @@ class HospitalConsoleTest {
                 browser.until(d -> d.findElement(By.id("view-said")).getText().equals("asked medical to withdraw T1 (cancel-1)"));
                 browser.until(d -> d.findElement(By.id("cancels")).getText().lines().anyMatch(l -> l.contains("cancel-1") && l.contains("withdrawn")));
                 browser.until(d -> d.findElement(By.id("bids")).getText().lines().anyMatch(l -> l.contains("T1") && l.contains("cancelled")));
+                // The transport asked here says it was withdrawn and why, not "failed ... by control-chair1".
+                browser.until(d -> d.findElement(By.id("transports")).getText().lines()
+                        .anyMatch(l -> l.startsWith("desk-1") && l.contains("withdrawn T1: withdrawn: the patient went home")));
                 browser.until(d -> {
                     String row = d.findElement(By.cssSelector("#audit tr[data-key='T1']")).getText();
                     return row.contains("desk@hospital-ops (desk-1), operator nurse Ada, console client 127.0.0.1:")
