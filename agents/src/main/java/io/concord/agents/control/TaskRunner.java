@@ -28,8 +28,11 @@ import java.util.concurrent.CompletableFuture;
 
 /**
  * The control agent's task manager: runs the accepted tasks one after another, each through its
- * phases (to the patient, loading, to the destination, unloading), reading by reading. It starts
- * the next task, has the {@link RouteFollower} drive each leg, asks for a new plan when a route
+ * phases ({@link ToPickup}, {@link Loading}, {@link ToDropoff}, {@link Unloading}: one class each,
+ * which knows what the chair does in it and what follows), reading by reading. It only sequences
+ * them: starts the next task, hands each reading and each arrival to the phase under way, has the
+ * {@link RouteFollower} drive each leg, and interrupts a phase to step aside or to replan (the
+ * phase goes on afterwards toward its goal). It asks for a new plan when a route
  * breaks (a door that does not open, an edge blocked, the traffic agent unable to grant it), steps
  * aside when the traffic agent orders it, drops a task its giver withdraws, and answers each
  * accepted task with INFORM {@code done} or FAILURE and why. Faults the chair reports stop it and
@@ -54,9 +57,8 @@ final class TaskRunner {
     private final TrafficClient traffic;
     private final Agent agent;
 
-    private Task active;
-    /** Until when (the chair's clock) the patient gets on or off, or -1. */
-    private long pauseUntilMs = -1;
+    /** The phase of the task under way, or null. */
+    private Phase phase;
     /** A plan asked for, not yet answered: the chair stands. */
     private boolean replanning;
     /** Why the chair reports it cannot drive (said once), or null. */
@@ -105,7 +107,30 @@ final class TaskRunner {
                 doors.reached(edge);
             }
             traffic.keepOnly(rest);
-            progress(active);
+            progress(active());
+        }
+    };
+
+    /** What a phase may do, through this runner. */
+    private final Phase.Context context = new Phase.Context() {
+        @Override
+        public void follow(List<Integer> nodes) {
+            TaskRunner.this.follow(nodes);
+        }
+
+        @Override
+        public void say(String s) {
+            TaskRunner.this.say(s);
+        }
+
+        @Override
+        public void progress(Task t) {
+            TaskRunner.this.progress(t);
+        }
+
+        @Override
+        public void finish(Task t, String failure) {
+            TaskRunner.this.finish(t, failure);
         }
     };
 
@@ -153,7 +178,12 @@ final class TaskRunner {
 
     /** The task under way, or null. */
     Task active() {
-        return active;
+        return phase == null ? null : phase.task;
+    }
+
+    /** The phase under way, or null. */
+    Phase phase() {
+        return phase;
     }
 
     private void say(String s) {
@@ -193,14 +223,14 @@ final class TaskRunner {
 
     /** The keep-alive: the task under way is reported, however long the chair has waited. */
     void keepAlive() {
-        progress(active);
+        progress(active());
     }
 
     /** One reading ({@code pose}: where the chair is believed to be; {@code now}: the chair's clock, in ms). */
     void reading(ChairReadings r, Pose pose, long now) {
-        if (active == null && asideTo < 0) {
+        if (phase == null && asideTo < 0) {
             startNext();
-            if (active == null) {
+            if (phase == null) {
                 chair.stop();
                 if (!replanning) {
                     traffic.idle(follower.here());
@@ -208,22 +238,18 @@ final class TaskRunner {
                 return;
             }
         }
-        if (now < pauseUntilMs) {
-            chair.stop();
-            return;
-        }
-        switch (active == null ? TaskView.State.QUEUED : active.state) {
-            case LOADING -> {
-                active.state = TaskView.State.TO_DROPOFF;
-                follow(active.toDropoff);
-                say("drives " + active.id + " to node " + active.to + " by " + active.toDropoff);
-                progress(active);
-            }
-            case UNLOADING -> {
-                finish(active, null);
+        if (phase != null) {
+            // The phase reads the time first: a patient getting on or off keeps the chair standing,
+            // then the next phase begins (to the drop-off), or the task ends (unloaded).
+            Phase next = phase.reading(now, context);
+            if (next == null) {
                 return;
             }
-            default -> { }
+            if (next == phase && !next.drives()) {
+                chair.stop();
+                return;
+            }
+            phase = next;
         }
         if (replanning) {
             chair.stop();
@@ -246,7 +272,7 @@ final class TaskRunner {
             doorsOn(follower.ahead(), ahead);
         }
         for (Task t : tasks.all()) {
-            if (t.state == TaskView.State.QUEUED || t == active) {
+            if (t.state == TaskView.State.QUEUED || t == active()) {
                 if (t.state.compareTo(TaskView.State.TO_PICKUP) <= 0 && t.toPickup != null) {
                     doorsOn(t.toPickup, ahead);
                 }
@@ -284,7 +310,7 @@ final class TaskRunner {
                 say("stops: " + stopReason);
             }
             if (faults.stream().anyMatch(f -> f != ChairFault.BATTERY_LOW)) {
-                finish(active, stopReason);
+                finish(active(), stopReason);
             }
             return false;
         }
@@ -297,8 +323,7 @@ final class TaskRunner {
         if (t == null) {
             return;
         }
-        active = t;
-        t.state = TaskView.State.TO_PICKUP;
+        phase = new ToPickup(t);
         waitsFor = null;
         progress(t);
         int here = follower.here();
@@ -341,7 +366,7 @@ final class TaskRunner {
         if (asideTo >= 0) {
             say("cannot make way to node " + asideTo + ": " + why);
             asideTo = -1;
-            if (active == null) {
+            if (active() == null) {
                 follower.clear();
                 return;
             }
@@ -351,7 +376,7 @@ final class TaskRunner {
             resumeTask(follower.here(), why);
             return;
         }
-        if (active == null) {
+        if (active() == null) {
             return;
         }
         int at = route.indexOf(node);
@@ -364,9 +389,8 @@ final class TaskRunner {
 
     /** Plans the active task on from {@code here} (after a step aside that ended anywhere but where it was to). */
     private void resumeTask(int here, String why) {
-        int goal = active.state == TaskView.State.TO_PICKUP ? active.from : active.to;
         follower.hold(List.of(here));
-        replanTo(here, goal, "the step aside did not happen (" + why + ")");
+        replanTo(here, phase.goal(), "the step aside did not happen (" + why + ")");
     }
 
     /** The traffic agent's order to step aside for another chair: a plan to the node it names, then on from there. */
@@ -429,7 +453,7 @@ final class TaskRunner {
                 say("cannot make way to node " + to + ": " + ControlAgent.reason(a, "no plan"));
                 asideTo = -1;
                 traffic.release(to);
-                if (active == null) {
+                if (active() == null) {
                     follower.clear();
                 }
                 return;
@@ -460,12 +484,11 @@ final class TaskRunner {
         say("task " + t.id + " withdrawn by " + m.getSender().localName());
         t.state = TaskView.State.CANCELLED;
         t.reason = "withdrawn by " + m.getSender().localName();
-        if (active == t) {
+        if (active() == t) {
             chair.stop();
-            active = null;
+            phase = null;
             follower.clear();
             asideTo = -1;
-            pauseUntilMs = -1;
             traffic.reset();
         }
     }
@@ -477,14 +500,14 @@ final class TaskRunner {
 
     /** Asks for a new plan from a node to {@code goal} for the active task; fails the task if none comes. */
     private void replanTo(int fromId, int goal, String why) {
-        if (replanning || active == null) {
+        if (replanning || active() == null) {
             return;
         }
         if (why != null) {
             say("replans: " + why);
         }
         AID planner = planner();
-        Task t = active;
+        Task t = active();
         if (planner == null) {
             finish(t, "no planner to replan with");
             return;
@@ -495,7 +518,7 @@ final class TaskRunner {
         plan(planner, t.id + "/replan", fromId, goal).thenAccept(a -> {
             replanning = false;
             waitsFor = null;
-            if (active != t) {
+            if (active() != t) {
                 return;
             }
             if (a.getPerformative() != Performative.INFORM_REF) {
@@ -518,29 +541,18 @@ final class TaskRunner {
             asideTo = -1;
             follower.clear();
             say("has made way at node " + here);
-            if (active == null) {
+            if (active() == null) {
                 return; // idle here: said on the next reading
             }
-            int goal = active.state == TaskView.State.TO_PICKUP ? active.from : active.to;
+            int goal = phase.goal();
             if (goal != here) {
                 follower.hold(List.of(here));
                 replanTo(here, goal, null);
                 return;
             }
         }
-        if (active == null) {
-            return;
-        }
-        if (active.state == TaskView.State.TO_PICKUP) {
-            active.state = TaskView.State.LOADING;
-            pauseUntilMs = now + (long) (active.unloadS * 1000);
-            say("at node " + active.from + ": the patient gets on (" + (long) active.unloadS + " s)");
-            progress(active);
-        } else if (active.state == TaskView.State.TO_DROPOFF) {
-            active.state = TaskView.State.UNLOADING;
-            pauseUntilMs = now + (long) (active.unloadS * 1000);
-            say("at node " + active.to + ": the patient gets off (" + (long) active.unloadS + " s)");
-            progress(active);
+        if (phase != null) {
+            phase = phase.arrived(now, context);
         }
     }
 
@@ -562,8 +574,8 @@ final class TaskRunner {
             }
             send(reply);
         }
-        if (active == t) {
-            active = null;
+        if (active() == t) {
+            phase = null;
             follower.clear();
             stopReason = null;
             asideTo = -1;
