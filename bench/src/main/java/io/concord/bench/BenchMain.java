@@ -1038,8 +1038,9 @@ public final class BenchMain {
                 + "default) and with whole routes (the rules before). Patients' wait: from the request to the chair at their "
                 + "door. Decision: one call of the traffic agent's rules (a request, a release, a review), wall time. Chair-hours "
                 + "waiting: a chair with a task under way standing still (for a route, its turn, a door), sampled each second. "
-                + "The medium map is run twice: as generated, and with a depot (`Shape.withDepot()`: its lobby's parking places "
-                + "behind one node, every chair starting there). Past estimate: a delivered ride's time from the award to the "
+                + "The medium map is run three times: as generated, with a depot (`Shape.withDepot()`: its lobby's parking places "
+                + "behind one node, every chair starting there), and single-lane (`Shape.withOneLane()`: one lane on every edge, "
+                + "so that chairs never pass each other, a chair coming the other way or a slower one ahead only waited for). Past estimate: a delivered ride's time from the award to the "
                 + "delivery less the cost its chair proposed (the seconds it said the patient would take to be delivered): the "
                 + "quote's error, median and p95. Stalls: a chair with a task and no progress for 120 s that raised no alarm.",
                 "Simulated time, wall-clock CPU"));
@@ -1049,7 +1050,8 @@ public final class BenchMain {
         md.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         List<FleetHarness.Outcome> all = new ArrayList<>();
         for (io.concord.sim.maps.Shape shape : List.of(io.concord.sim.maps.Shape.small(), io.concord.sim.maps.Shape.medium(),
-                io.concord.sim.maps.Shape.medium().withDepot(), io.concord.sim.maps.Shape.large())) {
+                io.concord.sim.maps.Shape.medium().withDepot(), io.concord.sim.maps.Shape.medium().withOneLane(),
+                io.concord.sim.maps.Shape.large())) {
             HospitalMap map = FleetHarness.map(shape);
             for (int chairs : List.of(1, 5, 10, 20)) {
                 if (chairs > map.parking().size()) {

@@ -193,7 +193,9 @@ public final class MapGenerator {
         }
         List<int[]> walls = walls(l);
         List<Integer> parking = parking(l);
-        lanes(l, walls, parking);
+        if (!shape.oneLane()) {
+            lanes(l, walls, parking);
+        }
         return json(l, walls, parking);
     }
 

@@ -18,8 +18,17 @@ package io.concord.sim.maps;
  * @param depot      whether the lobby (whose nodes are the first parking places) is a depot: its
  *                   grid joins the corridor at one node only, so that the chairs parked there all
  *                   leave through one exit (issue 47)
+ * @param oneLane    whether every edge is one lane: chairs never pass each other anywhere, however
+ *                   wide the corridor (without it the generator gives every corridor edge two lanes
+ *                   where the map checker finds them clear of walls, leaves and pivots)
  */
-public record Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking, boolean depot) {
+public record Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking, boolean depot,
+                    boolean oneLane) {
+
+    /** A shape with two lanes on its corridors where they fit. */
+    public Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking, boolean depot) {
+        this(name, nodes, wards, ring, wings, bottleneck, parking, depot, false);
+    }
 
     /** A shape whose lobby is open to its corridor at every column (no depot). */
     public Shape(String name, int nodes, int wards, boolean ring, int wings, boolean bottleneck, int parking) {
@@ -63,17 +72,17 @@ public record Shape(String name, int nodes, int wards, boolean ring, int wings, 
 
     /** The same shape with or without a ring ward. */
     public Shape withRing(boolean ring) {
-        return new Shape(name + (ring ? "+ring" : "-ring"), nodes, wards, ring, wings, bottleneck, parking, depot);
+        return new Shape(name + (ring ? "+ring" : "-ring"), nodes, wards, ring, wings, bottleneck, parking, depot, oneLane);
     }
 
     /** The same shape with another node count (and as many parking places, if they still fit). */
     public Shape withNodes(int nodes) {
-        return new Shape(name + "@" + nodes, nodes, wards, ring, wings, bottleneck, Math.min(parking, nodes / 3), depot);
+        return new Shape(name + "@" + nodes, nodes, wards, ring, wings, bottleneck, Math.min(parking, nodes / 3), depot, oneLane);
     }
 
     /** The same shape with another number of parking places. */
     public Shape withParking(int parking) {
-        return new Shape(name, nodes, wards, ring, wings, bottleneck, parking, depot);
+        return new Shape(name, nodes, wards, ring, wings, bottleneck, parking, depot, oneLane);
     }
 
     /**
@@ -81,6 +90,14 @@ public record Shape(String name, int nodes, int wards, boolean ring, int wings, 
      * at one node, the only way in or out for the chairs parked there.
      */
     public Shape withDepot() {
-        return new Shape(name + "+depot", nodes, wards, ring, wings, bottleneck, parking, true);
+        return new Shape(name + "+depot", nodes, wards, ring, wings, bottleneck, parking, true, oneLane);
+    }
+
+    /**
+     * The same shape with one lane on every edge: a single-lane hospital, where a chair coming the
+     * other way, or a slower one ahead, can only be waited for (issue 47: the corridor that saturates).
+     */
+    public Shape withOneLane() {
+        return new Shape(name + "+one-lane", nodes, wards, ring, wings, bottleneck, parking, depot, true);
     }
 }

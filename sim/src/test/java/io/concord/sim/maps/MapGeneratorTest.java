@@ -83,6 +83,20 @@ class MapGeneratorTest {
         }
     }
 
+    /** A single-lane hospital (issue 47): every edge one lane, the same layout otherwise; the map keeps every rule. */
+    @Test
+    void oneLaneMapsHaveNoEdgeOfTwoLanes() {
+        for (Shape s : List.of(Shape.medium().withOneLane(), Shape.medium().withDepot().withOneLane())) {
+            everySeed(s, Math.max(1, SEEDS / 10));
+            HospitalMap one = MapGenerator.map(FIRST, s);
+            assertTrue(one.edges().stream().noneMatch(io.concord.agents.map.Edge::twoLanes), s.name() + ": an edge of two lanes");
+            assertEquals(one.nodes().size(), MapGenerator.map(FIRST, s.name().contains("depot") ? Shape.medium().withDepot() : Shape.medium()).nodes().size(),
+                    "the same layout as the shape with lanes");
+        }
+        assertTrue(MapGenerator.map(FIRST, Shape.medium()).edges().stream().anyMatch(io.concord.agents.map.Edge::twoLanes),
+                "the shape with lanes has two-lane corridors (else this test shows nothing)");
+    }
+
     @Test
     void theSameSeedGivesTheSameTextAndOtherSeedsOtherMaps() {
         for (Shape s : List.of(Shape.small(), Shape.medium(), Shape.large())) {
