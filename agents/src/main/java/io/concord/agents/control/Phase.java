@@ -10,10 +10,11 @@ import java.util.List;
  * and each arrival to the phase under way, and interrupts a phase to step aside for another chair
  * or to wait for a new plan (the phase goes on afterwards, toward its {@link #goal()}).
  *
- * <p>The sequence is {@link ToPickup}, {@link Loading}, {@link ToDropoff}, {@link Unloading}; the
+ * <p>The sequence is {@link ToPickup}, {@link Loading}, {@link ToDropoff}, {@link Unloading} (the two
+ * {@link Standing} phases stand while the patient gets on or off); the
  * task ends with the last (done), or earlier when it fails or is withdrawn.
  */
-abstract sealed class Phase permits ToPickup, Loading, ToDropoff, Unloading {
+abstract sealed class Phase permits ToPickup, Standing, ToDropoff {
     /** What a phase may do: drive a leg, speak, report its task's progress, end its task. */
     interface Context {
         /** Drives the chair along {@code nodes} (the route follower's new leg). */
