@@ -57,14 +57,13 @@ final class TaskRunner {
     private final TrafficClient traffic;
     private final Agent agent;
 
-    /** The phase of the task under way, or null. */
+    /**
+     * The phase under way, or null (idle): the task's, or an {@link Interruption} of it (a step
+     * aside, a plan awaited), or an idle chair's way home.
+     */
     private Phase phase;
-    /** A plan asked for, not yet answered: the chair stands. */
-    private boolean replanning;
     /** Why the chair reports it cannot drive (said once), or null. */
     private String stopReason;
-    /** The node it steps aside to for another chair (the traffic agent's order), or -1. */
-    private int asideTo = -1;
     /** What the chair waits for, said in its progress reports, or null while it drives. */
     private String waitsFor;
 
@@ -76,7 +75,7 @@ final class TaskRunner {
     private final RouteFollower.Way way = new RouteFollower.Way() {
         @Override
         public boolean mayDrive(List<Integer> route, List<Integer> standsOn) {
-            boolean may = traffic.mayDrive(route, standsOn, asideTo >= 0);
+            boolean may = traffic.mayDrive(route, standsOn, makingWay() != null);
             waitsFor = may ? null : WAITS_FOR_ROUTE;
             return may;
         }
@@ -132,6 +131,28 @@ final class TaskRunner {
         public void finish(Task t, String failure) {
             TaskRunner.this.finish(t, failure);
         }
+
+        @Override
+        public void followBack(List<Integer> nodes) {
+            follower.followBack(nodes);
+            doors.newRoute();
+        }
+
+        @Override
+        public void standAt(int node) {
+            follower.hold(List.of(node));
+        }
+
+        @Override
+        public void clearRoute() {
+            follower.clear();
+        }
+
+        @Override
+        public Phase replan(Phase resume, int from, int goal, String why) {
+            replanTo(resume, from, goal, why);
+            return phase;
+        }
     };
 
     private final RouteFollower.Events events = new RouteFollower.Events() {
@@ -186,6 +207,21 @@ final class TaskRunner {
         return phase;
     }
 
+    /** The step aside or the way home under way (under a plan awaited, perhaps), or null. */
+    private MakingWay makingWay() {
+        for (Phase p = phase; p instanceof Interruption i; p = i.resume) {
+            if (i instanceof MakingWay m) {
+                return m;
+            }
+        }
+        return null;
+    }
+
+    /** True while the chair stands until a plan comes (a new route, or its way aside). */
+    private boolean awaitsPlan() {
+        return phase instanceof Interruption i && i.awaitsPlan();
+    }
+
     private void say(String s) {
         agent.say(s);
     }
@@ -228,33 +264,26 @@ final class TaskRunner {
 
     /** One reading ({@code pose}: where the chair is believed to be; {@code now}: the chair's clock, in ms). */
     void reading(ChairReadings r, Pose pose, long now) {
-        if (phase == null && asideTo < 0) {
+        if (phase == null) {
             startNext();
             if (phase == null) {
                 chair.stop();
-                if (!replanning) {
-                    traffic.idle(follower.here());
-                }
+                traffic.idle(follower.here());
                 return;
             }
         }
-        if (phase != null) {
-            // The phase reads the time first: a patient getting on or off keeps the chair standing,
-            // then the next phase begins (to the drop-off), or the task ends (unloaded).
-            Phase next = phase.reading(now, context);
-            if (next == null) {
-                return;
-            }
-            if (next == phase && !next.drives()) {
-                chair.stop();
-                return;
-            }
-            phase = next;
+        // The phase reads the time first: a patient getting on or off keeps the chair standing,
+        // then the next phase begins (to the drop-off), or the task ends (unloaded); a chair
+        // waiting for a plan stands.
+        Phase next = phase.reading(now, context);
+        if (next == null) {
+            return;
         }
-        if (replanning) {
+        if (next == phase && !next.drives()) {
             chair.stop();
             return;
         }
+        phase = next;
         if (!faultsAllowDriving(r)) {
             return;
         }
@@ -331,7 +360,7 @@ final class TaskRunner {
             // It was planned from where the queue was to end; the chair stands elsewhere.
             say("starts " + t.id + ": to node " + t.from + " from node " + here);
             follower.hold(List.of(here));
-            replanTo(here, t.from, null);
+            replanTo(phase, here, t.from, null);
             return;
         }
         follow(t.toPickup);
@@ -363,10 +392,11 @@ final class TaskRunner {
         if (route == null) {
             return;
         }
-        if (asideTo >= 0) {
-            say("cannot make way to node " + asideTo + ": " + why);
-            asideTo = -1;
-            if (active() == null) {
+        MakingWay aside = makingWay();
+        if (aside != null) {
+            say("cannot make way to node " + aside.to + ": " + why);
+            phase = aside.resume; // a plan awaited for the way aside is dropped with it
+            if (phase == null) {
                 follower.clear();
                 return;
             }
@@ -376,8 +406,8 @@ final class TaskRunner {
             resumeTask(follower.here(), why);
             return;
         }
-        if (active() == null) {
-            return;
+        if (active() == null || phase instanceof Standing) {
+            return; // idle, or the leg is driven and the patient gets on or off: nothing to plan
         }
         int at = route.indexOf(node);
         if (at > 0) {
@@ -390,7 +420,7 @@ final class TaskRunner {
     /** Plans the active task on from {@code here} (after a step aside that ended anywhere but where it was to). */
     private void resumeTask(int here, String why) {
         follower.hold(List.of(here));
-        replanTo(here, phase.goal(), "the step aside did not happen (" + why + ")");
+        replanTo(phase, here, phase.goal(), "the step aside did not happen (" + why + ")");
     }
 
     /** The traffic agent's order to step aside for another chair: a plan to the node it names, then on from there. */
@@ -416,21 +446,25 @@ final class TaskRunner {
         }
         int here = follower.here();
         boolean driving = follower.underWay() && traffic.mayDriveNow(follower.route());
+        MakingWay aside = makingWay();
+        boolean planning = awaitsPlan();
         // Already on its way aside but not yet granted that way: the new order replaces the old one
         // (refusing it, the chair asked again for the old way, and was ordered again: for ever).
-        boolean another = asideTo >= 0 && !driving && !replanning && here == from;
-        if (!another && (driving || replanning || asideTo >= 0 || here != from)) {
+        boolean another = aside != null && !driving && !planning && here == from;
+        if (!another && (driving || planning || aside != null || here != from || phase instanceof Standing)) {
             say("cannot make way from node " + from + " to node " + to + (here != from ? ": it is at node " + here
-                    : driving ? ": it is under way" : replanning ? ": it is waiting for a plan" : ": it is making way to node " + asideTo));
+                    : driving ? ": it is under way" : planning ? ": it is waiting for a plan"
+                    : aside != null ? ": it is making way to node " + aside.to
+                    : ": the patient " + (phase instanceof Loading ? "gets on" : "gets off") + " here"));
             traffic.release(to);
             if (!driving) {
                 traffic.reset(); // its wait was dropped for the order: asks again, or says again where it idles
             }
             return;
         }
-        if (another && asideTo != to) {
-            say("makes way to node " + to + " instead of node " + asideTo);
-            traffic.release(asideTo);
+        if (another && aside.to != to) {
+            say("makes way to node " + to + " instead of node " + aside.to);
+            traffic.release(aside.to);
         }
         AID planner = planner();
         if (planner == null) {
@@ -438,29 +472,27 @@ final class TaskRunner {
             return;
         }
         traffic.reset();
-        asideTo = to;
-        replanning = true;
+        Phase resume = another ? aside.resume : phase;
+        MakingWay mw = resume == null ? new GoingHome(to) : new StepAside(resume, to);
+        phase = mw;
         waitsFor = "a new plan";
         chair.stop();
         // The way the traffic agent chose, over nodes nobody held: another (the planner's shortest)
         // may cross a node another chair holds, and each then waits for the other.
         plan(planner, "make-way", way).thenAccept(a -> {
-            replanning = false;
-            if (asideTo != to) {
-                return;
+            if (phase != mw) {
+                return; // taken back meanwhile (another order, the task withdrawn or failed)
             }
             if (a.getPerformative() != Performative.INFORM_REF) {
                 say("cannot make way to node " + to + ": " + ControlAgent.reason(a, "no plan"));
-                asideTo = -1;
+                phase = mw.resume;
                 traffic.release(to);
-                if (active() == null) {
+                if (phase == null) {
                     follower.clear();
                 }
                 return;
             }
-            List<Integer> nodes = WheelchairMessage.decode(a, Plan.class).nodes();
-            say("makes way for another chair: to node " + to + " by " + nodes);
-            follow(nodes);
+            mw.planned(WheelchairMessage.decode(a, Plan.class).nodes(), context);
         });
     }
 
@@ -486,71 +518,55 @@ final class TaskRunner {
         t.reason = "withdrawn by " + m.getSender().localName();
         if (active() == t) {
             chair.stop();
-            phase = null;
+            phase = null; // and whatever interrupted it: a plan answered later is not followed
             follower.clear();
-            asideTo = -1;
             traffic.reset();
         }
     }
 
     /** Asks for a new plan from a node to the end of the current route; fails the task if none comes. */
     void replan(int fromId, String why) {
-        replanTo(fromId, follower.goal(), why);
+        if (follower.route() != null) {
+            replanTo(phase, fromId, follower.goal(), why);
+        }
     }
 
-    /** Asks for a new plan from a node to {@code goal} for the active task; fails the task if none comes. */
-    private void replanTo(int fromId, int goal, String why) {
-        if (replanning || active() == null) {
+    /**
+     * Asks for a new plan from a node to {@code goal} for the task of {@code resume}, which goes on
+     * along it ({@link Replanning} until the answer comes); fails the task if none comes. Nothing to
+     * ask for an idle chair, a chair already waiting for a plan, or one whose patient gets on or off.
+     */
+    private void replanTo(Phase resume, int fromId, int goal, String why) {
+        if (resume == null || resume.task == null || resume instanceof Standing
+                || resume instanceof Interruption i && i.awaitsPlan()) {
             return;
         }
         if (why != null) {
             say("replans: " + why);
         }
         AID planner = planner();
-        Task t = active();
+        Task t = resume.task;
         if (planner == null) {
             finish(t, "no planner to replan with");
             return;
         }
-        replanning = true;
+        Replanning r = new Replanning(resume, fromId, goal, why);
+        phase = r;
         waitsFor = "a new plan";
         chair.stop();
         plan(planner, t.id + "/replan", fromId, goal).thenAccept(a -> {
-            replanning = false;
             waitsFor = null;
-            if (active() != t) {
-                return;
+            if (phase != r) {
+                return; // the task was withdrawn or failed meanwhile, or its step aside taken back
             }
-            if (a.getPerformative() != Performative.INFORM_REF) {
-                finish(t, ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal) + (why == null ? "" : " (" + why + ")"));
-                return;
-            }
-            List<Integer> nodes = WheelchairMessage.decode(a, Plan.class).nodes();
-            // Back along the edge it was on to the node the new plan starts from (the last one it
-            // reached), then along the new plan: never across the floor off the graph.
-            follower.followBack(nodes);
-            doors.newRoute();
-            say("new plan " + nodes);
+            phase = a.getPerformative() == Performative.INFORM_REF
+                    ? r.answered(WheelchairMessage.decode(a, Plan.class).nodes(), null, context)
+                    : r.answered(null, ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal), context);
         });
     }
 
     private void arrived(long now) {
         chair.stop();
-        if (asideTo >= 0) {
-            int here = asideTo;
-            asideTo = -1;
-            follower.clear();
-            say("has made way at node " + here);
-            if (active() == null) {
-                return; // idle here: said on the next reading
-            }
-            int goal = phase.goal();
-            if (goal != here) {
-                follower.hold(List.of(here));
-                replanTo(here, goal, null);
-                return;
-            }
-        }
         if (phase != null) {
             phase = phase.arrived(now, context);
         }
@@ -578,7 +594,6 @@ final class TaskRunner {
             phase = null;
             follower.clear();
             stopReason = null;
-            asideTo = -1;
         }
     }
 }

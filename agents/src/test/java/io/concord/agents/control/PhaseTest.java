@@ -46,6 +46,29 @@ class PhaseTest {
         public void finish(Task t, String failure) {
             finished.add(t.id + ":" + failure);
         }
+
+        @Override
+        public void followBack(List<Integer> nodes) {
+            followed.add(nodes);
+        }
+
+        final List<Integer> stood = new ArrayList<>();
+        final List<String> replans = new ArrayList<>();
+
+        @Override
+        public void standAt(int node) {
+            stood.add(node);
+        }
+
+        @Override
+        public void clearRoute() {
+        }
+
+        @Override
+        public Phase replan(Phase resume, int from, int goal, String why) {
+            replans.add(from + "->" + goal);
+            return new Replanning(resume, from, goal, why);
+        }
     }
 
     private static Task task() {
@@ -119,5 +142,76 @@ class PhaseTest {
         t.toDropoff = List.of(3, 9);
         Phase p = new Loading(t, 10_000, c);
         assertInstanceOf(ToDropoff.class, p.reading(10_000, c));
+    }
+
+    @Test
+    void aStepAsideStandsUntilItsWayIsPlannedDrivesItAndThenThePhaseGoesOnWhereItsGoalIs() {
+        Recorder c = new Recorder();
+        Task t = task();
+        Phase toPickup = new ToPickup(t);
+        StepAside aside = new StepAside(toPickup, 3);
+        assertEquals(TaskView.State.TO_PICKUP, t.state, "an interruption leaves the task's state as it was");
+        assertSame(t, aside.task);
+        assertEquals(3, aside.goal(), "the goal is still the interrupted phase's");
+        assertTrue(aside.awaitsPlan());
+        assertFalse(aside.drives(), "it stands until the way aside is planned");
+
+        aside.planned(List.of(18, 3), c);
+        assertTrue(aside.drives());
+        assertEquals(List.of(List.of(18, 3)), c.followed);
+        assertEquals("makes way for another chair: to node 3 by [18, 3]", c.said.get(0));
+
+        Phase next = aside.arrived(20_000, c);
+        assertInstanceOf(Loading.class, next, "it made way to the pick-up itself: the patient gets on");
+        assertTrue(c.replans.isEmpty(), "nothing to plan");
+    }
+
+    @Test
+    void aStepAsideEndingAwayFromTheGoalStandsThereAndReplansToIt() {
+        Recorder c = new Recorder();
+        Task t = task();
+        Phase toPickup = new ToPickup(t);
+        StepAside aside = new StepAside(toPickup, 17);
+        aside.planned(List.of(18, 17), c);
+
+        Phase next = aside.arrived(20_000, c);
+        assertInstanceOf(Replanning.class, next);
+        assertSame(toPickup, ((Replanning) next).resume, "then the way to the pick-up goes on");
+        assertEquals(List.of(17), c.stood, "it holds the node it made way to while it waits");
+        assertEquals(List.of("17->3"), c.replans);
+        assertEquals("has made way at node 17", c.said.get(c.said.size() - 1));
+    }
+
+    @Test
+    void anIdleChairGoesHomeAndIsIdleThere() {
+        Recorder c = new Recorder();
+        GoingHome home = new GoingHome(21);
+        assertNull(home.task, "no task: it interrupts nothing");
+        assertFalse(home.drives());
+        home.planned(List.of(9, 20, 21), c);
+        assertEquals("goes home: to parking place 21 by [9, 20, 21]", c.said.get(0));
+        assertTrue(home.drives());
+        assertNull(home.arrived(30_000, c), "parked: idle");
+        assertTrue(c.replans.isEmpty());
+        assertEquals("GoingHome(idle)", home.toString());
+    }
+
+    @Test
+    void aReplanningStandsAndThenThePhaseGoesOnAlongTheNewPlanOrTheTaskFailsWithWhy() {
+        Recorder c = new Recorder();
+        Task t = task();
+        Phase toDropoff = new ToDropoff(t, c);
+        c.followed.clear();
+        Replanning r = new Replanning(toDropoff, 4, 9, "door D1 did not open");
+        assertFalse(r.drives(), "it stands until the plan comes");
+        assertSame(r, r.reading(1_000, c));
+        assertEquals(TaskView.State.TO_DROPOFF, t.state);
+
+        assertSame(toDropoff, r.answered(List.of(4, 5, 9), null, c));
+        assertEquals(List.of(List.of(4, 5, 9)), c.followed, "back to node 4, then on by the new plan");
+
+        Replanning again = new Replanning(toDropoff, 5, 9, "door D2 did not open");
+        assertNull(again.answered(null, "no route from 5 to 9", c));
+        assertEquals(List.of("T1:no route from 5 to 9 (door D2 did not open)"), c.finished);
     }
 }
