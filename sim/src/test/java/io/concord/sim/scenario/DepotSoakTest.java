@@ -26,7 +26,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * Depots (issue 47): generated hospitals whose lobby, where the first parking places are, joins
  * the corridor at one node ({@link Shape#withDepot()}), and every chair released at once: 5 and 10
  * chairs on the medium map, 20 on the large, as many transports as chairs asked for at the same
- * moment. Every task ends, done or failed with its reason; nothing touches anything; and there is
+ * moment; every even seed on the same shape single-lane ({@link Shape#withOneLane()}: one lane on
+ * every edge, the narrow passage and the dead-end wings as before). Every task ends, done or failed with its reason; nothing touches anything; and there is
  * no stall: a chair with a task that makes no progress (drives no 0.5 m, changes no phase) for 120 s
  * of hospital time has raised the fleet monitor's alarm (heard by the Medical agent). Each seed's
  * figures are printed with its trace hash. {@code -Dconcord.depot.seeds=N} runs N seeds (1 by
@@ -132,6 +133,9 @@ class DepotSoakTest {
         for (long seed = first; seed < first + seeds; seed++) {
             for (int chairs : counts) {
                 Shape shape = chairs <= Shape.medium().parking() / 2 ? Shape.medium() : Shape.large();
+                if (seed % 2 == 0) {
+                    shape = shape.withOneLane(); // every other seed single-lane: no chair passes another anywhere
+                }
                 Result r = run(seed, shape, chairs);
                 String line = String.format(Locale.ROOT, "depot seed %d: %s, %d chairs at once, %d/%d done, %d failed, %d contacts, %d stalls, "
                                 + "%d alarms, %.0f s, trace %016x", seed, r.shape(), chairs,
