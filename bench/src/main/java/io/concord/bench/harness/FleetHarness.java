@@ -295,8 +295,8 @@ public final class FleetHarness {
     public static Map<String, TreeMap<Integer, Double>> series(List<Outcome> outcomes, java.util.function.ToDoubleFunction<Outcome> value) {
         Map<String, TreeMap<Integer, Double>> out = new java.util.LinkedHashMap<>();
         for (Outcome o : outcomes) {
-            // One line a map: the depot variant of a shape has the same nodes as the shape.
-            String name = o.nodes() + (o.map().contains("+depot") ? " + depot" : " nodes") + ", "
+            // One line a map: the depot and single-lane variants of a shape have the same nodes as the shape.
+            String name = o.nodes() + (o.map().contains("+depot") ? " + depot" : o.map().contains("+one-lane") ? " one-lane" : " nodes") + ", "
                     + (o.rules() == TrafficRules.IN_ORDER ? "in order" : "whole routes");
             out.computeIfAbsent(name, k -> new TreeMap<>()).put(o.chairs(), value.applyAsDouble(o));
         }
