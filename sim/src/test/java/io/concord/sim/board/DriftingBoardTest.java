@@ -5,7 +5,6 @@ import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -48,7 +47,6 @@ class DriftingBoardTest {
             Pty.await(() -> host.said("drives T1 to node 3"), 60_000, "the host to drive: " + host.log);
             String third = "the 3rd link loss within 10 minutes: an operator must resume it";
             Pty.await(() -> host.said(third), WAIT_MS, "the third loss: " + host.log);
-            String slow = String.format(Locale.ROOT, "(%.1f %% slow, measured over", (1 - RATE) * 100);
             List<String> losses;
             synchronized (host.log) {
                 losses = host.log.stream().filter(l -> l.contains(LOST)).toList();
@@ -58,9 +56,14 @@ class DriftingBoardTest {
             // be a silence instead, the host's reader starved: it counts towards the three as well.)
             List<String> stale = losses.stream().filter(l -> l.contains("every frame stale")).toList();
             assertTrue(stale.size() >= 2, "the losses are the drift's: " + losses);
+            // The drift as measured over a few seconds of real time, on a loaded machine a little off
+            // the board's rate (9.9 % for 10 %): named, and within a point of it.
+            java.util.regex.Pattern named = java.util.regex.Pattern.compile(
+                    "every frame stale: the board's clock drifts more than 2 % \\(([0-9.]+) % slow, measured over");
             for (String l : stale) {
-                assertTrue(l.contains("every frame stale: the board's clock drifts more than 2 % " + slow),
-                        "the reason names the drift as measured: " + l);
+                java.util.regex.Matcher m = named.matcher(l);
+                assertTrue(m.find(), "the reason names the drift as measured: " + l);
+                assertEquals((1 - RATE) * 100, Double.parseDouble(m.group(1)), 1.0, "the drift named is the board's: " + l);
             }
             // The first two losses were the agent's to resume, and it did; after the third nobody resumes.
             assertTrue(count(host, RESUMED) >= 2, String.join("\n", host.log));

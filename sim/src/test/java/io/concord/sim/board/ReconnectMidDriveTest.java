@@ -231,15 +231,37 @@ class ReconnectMidDriveTest {
         });
     }
 
+    /** A run that cannot show the hazard: the board's own 200 ms watchdog disarmed it before the new session's first frame. */
+    private static final class Inconclusive extends Exception {
+        Inconclusive(String why) {
+            super(why);
+        }
+    }
+
     @Test
     void withoutItsDefenceTheLastDriveReachesTheBoardDuringTheHold(@TempDir Path dir) throws Exception {
-        reconnectMidDrive(dir, EnumSet.complementOf(EnumSet.of(SerialChair.Defence.NEUTRAL_UNTIL_RESUMED)), (board, sup, rt) -> {
-            List<HostFreezeTest.Rx> session = secondSession(board);
-            HostFreezeTest.Rx first = session.get(0);
-            assertEquals("DRIVE 600,600", first.what(), "the hazard: the last DRIVE is the new session's third frame: " + session);
-            assertTrue(first.armed(), "taken by a board that missed the SYNC: " + first);
-            assertEquals("600,600", first.motors(), "and driven on: " + first);
-            assertNotEquals(ChairSupervisor.State.ARMED, Loops.call(rt, sup::state), "while the supervisor holds");
-        });
+        // On a loaded machine the reconnect can take longer than the board's watchdog (200 ms), which
+        // then disarms the board itself: that run shows nothing about the host's defence, and is run
+        // again (at most three times in all).
+        List<String> inconclusive = new ArrayList<>();
+        for (int attempt = 1; attempt <= 3; attempt++) {
+            Path at = java.nio.file.Files.createDirectories(dir.resolve("attempt-" + attempt));
+            try {
+                reconnectMidDrive(at, EnumSet.complementOf(EnumSet.of(SerialChair.Defence.NEUTRAL_UNTIL_RESUMED)), (board, sup, rt) -> {
+                    List<HostFreezeTest.Rx> session = secondSession(board);
+                    HostFreezeTest.Rx first = session.get(0);
+                    assertEquals("DRIVE 600,600", first.what(), "the hazard: the last DRIVE is the new session's third frame: " + session);
+                    if (!first.armed()) {
+                        throw new Inconclusive("the board had disarmed itself before " + first);
+                    }
+                    assertEquals("600,600", first.motors(), "and driven on: " + first);
+                    assertNotEquals(ChairSupervisor.State.ARMED, Loops.call(rt, sup::state), "while the supervisor holds");
+                });
+                return;
+            } catch (Inconclusive e) {
+                inconclusive.add(e.getMessage());
+            }
+        }
+        org.junit.jupiter.api.Assertions.fail("taken by a board that missed the SYNC: in no run of three was the board still armed: " + inconclusive);
     }
 }
