@@ -29,12 +29,4 @@ abstract sealed class Interruption extends Phase permits MakingWay, Replanning {
     final int goal() {
         return resume == null ? -1 : resume.goal();
     }
-
-    /** The phase of the task under way, behind any interruptions: what goes on once they are over. */
-    static Phase underlying(Phase p) {
-        while (p instanceof Interruption i) {
-            p = i.resume;
-        }
-        return p;
-    }
 }

@@ -3,21 +3,17 @@ package io.concord.agents.control;
 import java.util.List;
 
 /**
- * The chair stands until a new plan comes, from {@link #from} to {@link #goal}: its route broke (a
+ * The chair stands until a new plan comes, to the interrupted phase's {@link #goal}: its route broke (a
  * door that did not open, an edge blocked, a route the traffic agent cannot grant), it made way
  * elsewhere than its goal, or its task starts away from where it was planned. The plan's answer
  * decides what follows: the phase it interrupted, along the new plan, or the task's failure and why.
  */
 final class Replanning extends Interruption {
-    /** From where, to where, and why (said with a failure; null: nothing went wrong). */
-    final int from;
-    final int to;
-    final String why;
+    /** Why it replans, said with a failure (null: nothing went wrong, it only starts elsewhere). */
+    private final String why;
 
-    Replanning(Phase resume, int from, int to, String why) {
+    Replanning(Phase resume, String why) {
         super(resume);
-        this.from = from;
-        this.to = to;
         this.why = why;
     }
 
@@ -27,7 +23,7 @@ final class Replanning extends Interruption {
     }
 
     /**
-     * The planner's answer: {@code nodes} (from {@link #from}), or null and {@code refusal}, why
+     * The planner's answer: {@code nodes} (from where it stands), or null and {@code refusal}, why
      * none came. The phase after it: the one it interrupted, driving the new plan; or null once the
      * task has failed.
      */

@@ -550,7 +550,7 @@ final class TaskRunner {
             finish(t, "no planner to replan with");
             return;
         }
-        Replanning r = new Replanning(resume, fromId, goal, why);
+        Replanning r = new Replanning(resume, why);
         phase = r;
         waitsFor = "a new plan";
         chair.stop();

@@ -67,7 +67,7 @@ class PhaseTest {
         @Override
         public Phase replan(Phase resume, int from, int goal, String why) {
             replans.add(from + "->" + goal);
-            return new Replanning(resume, from, goal, why);
+            return new Replanning(resume, why);
         }
     }
 
@@ -148,8 +148,7 @@ class PhaseTest {
     void aStepAsideStandsUntilItsWayIsPlannedDrivesItAndThenThePhaseGoesOnWhereItsGoalIs() {
         Recorder c = new Recorder();
         Task t = task();
-        Phase toPickup = new ToPickup(t);
-        StepAside aside = new StepAside(toPickup, 3);
+        StepAside aside = new StepAside(new ToPickup(t), 3);
         assertEquals(TaskView.State.TO_PICKUP, t.state, "an interruption leaves the task's state as it was");
         assertSame(t, aside.task);
         assertEquals(3, aside.goal(), "the goal is still the interrupted phase's");
@@ -169,8 +168,7 @@ class PhaseTest {
     @Test
     void aStepAsideEndingAwayFromTheGoalStandsThereAndReplansToIt() {
         Recorder c = new Recorder();
-        Task t = task();
-        Phase toPickup = new ToPickup(t);
+        Phase toPickup = new ToPickup(task());
         StepAside aside = new StepAside(toPickup, 17);
         aside.planned(List.of(18, 17), c);
 
@@ -202,7 +200,7 @@ class PhaseTest {
         Task t = task();
         Phase toDropoff = new ToDropoff(t, c);
         c.followed.clear();
-        Replanning r = new Replanning(toDropoff, 4, 9, "door D1 did not open");
+        Replanning r = new Replanning(toDropoff, "door D1 did not open");
         assertFalse(r.drives(), "it stands until the plan comes");
         assertSame(r, r.reading(1_000, c));
         assertEquals(TaskView.State.TO_DROPOFF, t.state);
@@ -210,7 +208,7 @@ class PhaseTest {
         assertSame(toDropoff, r.answered(List.of(4, 5, 9), null, c));
         assertEquals(List.of(List.of(4, 5, 9)), c.followed, "back to node 4, then on by the new plan");
 
-        Replanning again = new Replanning(toDropoff, 5, 9, "door D2 did not open");
+        Replanning again = new Replanning(toDropoff, "door D2 did not open");
         assertNull(again.answered(null, "no route from 5 to 9", c));
         assertEquals(List.of("T1:no route from 5 to 9 (door D2 did not open)"), c.finished);
     }
