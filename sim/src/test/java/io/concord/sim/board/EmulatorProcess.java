@@ -20,6 +20,13 @@ final class EmulatorProcess implements AutoCloseable {
     private final LinkedBlockingQueue<String> lines = new LinkedBlockingQueue<>();
     final List<String> log = java.util.Collections.synchronizedList(new ArrayList<>());
 
+    /** True once a line the emulator printed contains {@code text} (read under the log's lock: its reader thread appends to it). */
+    boolean said(String text) {
+        synchronized (log) {
+            return log.stream().anyMatch(l -> l.contains(text));
+        }
+    }
+
     EmulatorProcess(Path port, String... options) throws IOException {
         process = JavaProcess.start(BoardEmulator.class, concat(new String[] {"--port", port.toString()}, options));
         in = new OutputStreamWriter(process.getOutputStream(), StandardCharsets.UTF_8);

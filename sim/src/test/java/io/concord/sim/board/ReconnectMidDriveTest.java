@@ -195,7 +195,7 @@ class ReconnectMidDriveTest {
                 board.command("trace on");
                 board.command("drop-sync");
                 board.command("mute 700");
-                Pty.await(() -> board.log.stream().anyMatch(l -> l.contains("SYNC PING was lost")), 10_000,
+                Pty.await(() -> board.said("SYNC PING was lost"), 10_000,
                         "the new session's SYNC lost on the wire: " + board.log);
                 // Over socat's pty pair a port closed and opened again at once carries a few frames
                 // only (socat stops forwarding the end that was closed), so the link does not come
