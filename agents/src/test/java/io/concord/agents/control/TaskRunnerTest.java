@@ -1,0 +1,189 @@
+package io.concord.agents.control;
+
+import io.concord.agents.chair.ChairSupervisor;
+import io.concord.agents.chair.ObstacleFilter;
+import io.concord.agents.chair.Pose;
+import io.concord.agents.proto.WheelchairMessage.MakeWay;
+import io.concord.agents.proto.WheelchairMessage.Plan;
+import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
+import io.concord.core.acl.Performative;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+
+import static io.concord.agents.control.Fakes.SMALL;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The runner's own rules, on the small map of docs/hospital-map.md (corridor nodes 1 and 3, the
+ * room's node 2 behind door D1), a recorded chair and a planner the test answers for: what it does
+ * with answers that come after what they answered is over, and with orders it cannot follow. The
+ * phases alone are {@link PhaseTest}'s; the whole, the scenario tests'.
+ */
+class TaskRunnerTest {
+    static final AID MEDICAL = new AID("medical@test");
+    static final AID PLANNER = new AID("planner@test");
+    static final AID TRAFFIC = new AID("traffic@test");
+
+    final Fakes.Chair chair = new Fakes.Chair();
+    final ChairSupervisor supervisor = new ChairSupervisor(chair);
+    final TaskQueue queue = new TaskQueue();
+    final RouteFollower follower = new RouteFollower(new ObstacleFilter(supervisor), SMALL);
+    final List<String> said = new ArrayList<>();
+    /** The plans asked for ("from->to"), each answered by the test through its future. */
+    final List<String> asked = new ArrayList<>();
+    final List<CompletableFuture<AclMessage>> plans = new ArrayList<>();
+    final Port port = new Port();
+    final DoorClient doors = new DoorClient(port, SMALL, "chair1", (from, why) -> runner().replan(from, why), said::add);
+    final TrafficClient traffic = new TrafficClient(port, (node, why) -> runner().refusedByTraffic(node, why));
+    final TaskRunner runner = new TaskRunner(supervisor, SMALL, queue, follower, doors, traffic, port);
+    long ms;
+
+    private TaskRunner runner() {
+        return runner;
+    }
+
+    /** The control agent's ports, recorded: no door agents, a traffic agent that has not answered yet. */
+    final class Port extends Fakes.Recording implements TaskRunner.Agent, DoorClient.Doors, TrafficClient.Port {
+        @Override
+        public AID agentOf(String id) {
+            return null;
+        }
+
+        @Override
+        public AID trafficAgent() {
+            return TRAFFIC;
+        }
+
+        @Override
+        public AID planner() {
+            return PLANNER;
+        }
+
+        @Override
+        public CompletableFuture<AclMessage> plan(AID planner, String task, int from, int to, List<Integer> via) {
+            asked.add(from + "->" + to);
+            CompletableFuture<AclMessage> f = new CompletableFuture<>();
+            plans.add(f);
+            return f;
+        }
+
+        @Override
+        public void say(String s) {
+            said.add(s);
+        }
+    }
+
+    /** The chair armed, standing at node 1. */
+    @BeforeEach
+    void armed() {
+        supervisor.resume("the test");
+        for (int i = 0; i < 3; i++) {
+            ms += 50;
+            chair.report(Fakes.clear(ms, at(1)));
+        }
+        assertTrue(supervisor.armed(), supervisor.state().toString());
+    }
+
+    private static Pose at(int node) {
+        var p = SMALL.node(node).at();
+        return new Pose(p.x(), p.y(), 0);
+    }
+
+    /** A reading of the chair standing at {@code node}, handed to the runner. */
+    private void reading(int node) {
+        ms += 50;
+        var r = Fakes.clear(ms, at(node));
+        chair.report(r);
+        runner.reading(r, follower.locate(r), ms);
+    }
+
+    /** A transport from node {@code from} to node 2, given by the Medical agent and queued. */
+    private Task given(int from, List<Integer> toPickup) {
+        AclMessage cfp = new AclMessage(Performative.CFP);
+        cfp.setConversationId("cfp-T1");
+        Task t = new Task("T1", from, 2, 0, 30, cfp);
+        t.accept = new AclMessage(Performative.ACCEPT_PROPOSAL).setSender(MEDICAL);
+        t.accept.setConversationId("cfp-T1");
+        t.toPickup = toPickup;
+        t.toDropoff = List.of(from, 2);
+        t.state = TaskView.State.QUEUED;
+        queue.add(t);
+        return t;
+    }
+
+    private void withdraw(Task t) {
+        AclMessage cancel = new AclMessage(Performative.CANCEL).setSender(MEDICAL);
+        cancel.setConversationId("cfp-T1");
+        runner.cancelled(cancel);
+    }
+
+    private static AclMessage plan(Integer... nodes) {
+        return new AclMessage(Performative.INFORM_REF).setContent(new Plan("T1", List.of(nodes), List.of(), 3).encode());
+    }
+
+    private AclMessage makeWay(int from, int to) {
+        AclMessage m = new AclMessage(Performative.INFORM).setSender(TRAFFIC);
+        m.setContent(new MakeWay(from, to, List.of(to)).encode());
+        return m;
+    }
+
+    @Test
+    void aPlanAnsweredAfterItsTaskWasWithdrawnIsNotFollowed() {
+        // Planned from node 3, the chair stands at node 1: it asks for a plan from where it is.
+        Task t = given(3, List.of(3));
+        reading(1);
+        assertEquals(List.of("1->3"), asked);
+        assertInstanceOf(Replanning.class, runner.phase());
+        withdraw(t);
+        assertNull(runner.phase());
+        assertEquals(TaskView.State.CANCELLED, t.state);
+
+        plans.get(0).complete(plan(1, 3));
+        assertNull(runner.phase(), "the plan for a withdrawn task brings back no phase");
+        assertNull(follower.route(), "nor a route to drive");
+        reading(1);
+        assertEquals("stop", chair.last());
+        assertEquals(TaskView.State.CANCELLED, t.state);
+    }
+
+    @Test
+    void aWayAsideAnsweredAfterItsTaskWasWithdrawnIsNotDriven() {
+        Task t = given(3, List.of(1, 3));
+        reading(1);
+        assertInstanceOf(ToPickup.class, runner.phase());
+        runner.makeWay(makeWay(1, 3));
+        assertInstanceOf(StepAside.class, runner.phase(), String.join("\n", said));
+        withdraw(t);
+        assertNull(runner.phase());
+
+        plans.get(0).complete(plan(1, 3));
+        assertNull(runner.phase(), "the way aside of a withdrawn task brings back no phase");
+        assertNull(follower.route());
+        assertFalse(said.stream().anyMatch(s -> s.contains("has made way")), String.join("\n", said));
+    }
+
+    @Test
+    void anOrderToMakeWayWhileThePatientGetsOnIsRefused() {
+        // The chair is at the pick-up already: its first reading ends the leg, and the patient gets on.
+        Task t = given(1, List.of(1));
+        reading(1);
+        reading(1);
+        assertInstanceOf(Loading.class, runner.phase(), String.join("\n", said));
+
+        runner.makeWay(makeWay(1, 3));
+        assertInstanceOf(Loading.class, runner.phase(), "the patient getting on is not left for a way aside");
+        assertTrue(asked.isEmpty(), "no way aside asked for: " + asked);
+        assertTrue(said.stream().anyMatch(s -> s.equals("cannot make way from node 1 to node 3: the patient gets on here")),
+                String.join("\n", said));
+        assertEquals(TaskView.State.LOADING, t.state);
+    }
+}
