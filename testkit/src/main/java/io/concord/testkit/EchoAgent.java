@@ -29,11 +29,25 @@ public class EchoAgent extends Agent {
         this.seen = seen;
     }
 
+    private volatile boolean deaf;
+
+    /**
+     * From now on it takes nothing from its mailbox: a receiver that has fallen behind, whose
+     * mailbox fills and whose sequence layer then shuts its window to its senders. Any thread.
+     */
+    public void stopTaking() {
+        deaf = true;
+    }
+
     @Override
     protected void setup() {
         addBehaviour(new CyclicBehaviour() {
             @Override
             public void action() {
+                if (deaf) {
+                    block();
+                    return;
+                }
                 AclMessage m = myAgent.receive();
                 if (m == null) {
                     block();

@@ -88,7 +88,7 @@ final class AgentNode implements StackHost {
                 continue;
             }
             sentCount++;
-            stack.sendDown(Envelope.outgoing(msg, receiver, dst));
+            stack.sendDown(Envelope.outgoing(msg, receiver, dst).markSentByAgent());
         }
     }
 

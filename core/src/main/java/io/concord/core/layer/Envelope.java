@@ -24,6 +24,8 @@ public final class Envelope {
     private long peerId;
     private Object[] headers;
     private int lane;
+    private boolean report;
+    private boolean byAgent;
 
     /** An envelope going down: a message for one of its receivers. */
     public static Envelope outgoing(AclMessage message, AID receiver, Address destination) {
@@ -190,6 +192,36 @@ public final class Envelope {
     /** Sets the lane (see {@link #lane()}). */
     public void lane(int lane) {
         this.lane = lane;
+    }
+
+    /**
+     * True for a report the platform makes on its own (a sniffer's event): when its receiver
+     * cannot take it now, the sending layer refuses it ({@link SendRejectedException}) rather than
+     * holding it, so that an observer that is behind holds the observed agent back in nothing.
+     */
+    public boolean isReport() {
+        return report;
+    }
+
+    /** Marks this envelope as a report (see {@link #isReport()}); returns it. */
+    public Envelope report() {
+        this.report = true;
+        return this;
+    }
+
+    /**
+     * True for a message the agent itself sent (its behaviours, through {@code send}), false for
+     * what the layers send on their own (the platform's lists and heartbeats, a sniffer's events,
+     * acknowledgements): flow control pauses an agent only for its own messages.
+     */
+    public boolean sentByAgent() {
+        return byAgent;
+    }
+
+    /** Marks this envelope as the agent's own message (see {@link #sentByAgent()}); returns it. */
+    public Envelope markSentByAgent() {
+        this.byAgent = true;
+        return this;
     }
 
     /** A layer's header, or {@code null}. */

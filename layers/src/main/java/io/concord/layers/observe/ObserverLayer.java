@@ -300,14 +300,15 @@ public final class ObserverLayer extends Layer {
             inform.setOntology(ONTOLOGY);
             inform.setConversationId(s.conversation);
             inform.setContent(s.missed == 0 ? json : json.substring(0, json.length() - 1) + ",\"missed\":" + s.missed + "}");
+            long missed = s.missed;
             s.missed = 0;
             try {
-                ctx.passDown(Envelope.outgoing(inform, s.who, null));
-            } catch (io.concord.core.layer.SendRejectedException full) {
-                // The sniffer takes no more (stopped, gone): its subscription ends here, and the
-                // agent's own message, whose event this was, goes on.
-                limit("the sniffer " + s.who.name() + " takes no more events (" + full.getMessage() + "); its subscription ends");
-                (gone == null ? gone = new ArrayList<>() : gone).add(e.getKey());
+                ctx.passDown(Envelope.outgoing(inform, s.who, null).report());
+            } catch (io.concord.core.layer.SendRejectedException behind) {
+                // The sniffer is behind (slow, stopped, gone): the event is counted where it was
+                // refused and reported as missed in the next one that goes; the agent's own message,
+                // whose event this was, goes on, and nothing waits for the sniffer.
+                s.missed = missed + 1;
             }
         }
         if (gone != null) {

@@ -356,7 +356,8 @@ public final class ContainerLayer extends Layer {
         AID via = env.header(Frames.ENVELOPE_VIA);
         if (relay != null && relay.present() && r != null && via != null && env.message() != null
                 && !Protocol.ONTOLOGY.equals(env.message().getOntology()) && !platform.equals(r.platform())) {
-            ctx.passDown(Envelope.outgoing(relay.wrap(env.message(), r, via), via, env.destination()));
+            Envelope wrapped = Envelope.outgoing(relay.wrap(env.message(), r, via), via, env.destination());
+            ctx.passDown(env.sentByAgent() ? wrapped.markSentByAgent() : wrapped);
             return;
         }
         ctx.passDown(env);

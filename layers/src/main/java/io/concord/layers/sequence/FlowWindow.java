@@ -7,9 +7,11 @@ import io.concord.core.layer.SendRejectedException;
 /**
  * The sequence layer's flow control (JGroups' UFC does this part, on credits): a sender keeps at
  * most the receiver's window of frames unacknowledged and holds the rest, pausing its agent while
- * it holds any; a receiver announces in each acknowledgement the window it takes, 0 while its
- * agent's mailbox is full, and the whole window again once the agent has taken the mailbox down.
- * It lives in the sequence layer because only that layer knows what is unacknowledged; the
+ * it holds any of the agent's own messages (what the layers send on their own, the platform's
+ * lists and heartbeats, waits in order but pauses nobody: a receiver that is behind must not stall
+ * every member that speaks to it); a receiver announces in each acknowledgement the window it
+ * takes, 0 while its agent's mailbox is full, and the whole window again once the agent has
+ * taken the mailbox down. It lives in the sequence layer because only that layer knows what is unacknowledged; the
  * {@link Retransmission} part sends what this part lets go. One per agent, called on its loop.
  */
 final class FlowWindow {
@@ -21,7 +23,7 @@ final class FlowWindow {
     static final long SILENT_MS = 1_000;
     private final int reorderWindow;
     private final boolean on;
-    /** Receivers with frames held for them: while any, the agent is paused. */
+    /** Receivers with the agent's own messages held for them: while any, the agent is paused. */
     private int congested;
 
     /**
@@ -57,6 +59,10 @@ final class FlowWindow {
         }
         env.detachData();
         o.held.add(env);
+        if (!env.sentByAgent()) {
+            return;   // the platform's own (its lists, heartbeats): waits in order, pauses nobody
+        }
+        o.heldOfAgent++;
         if (!o.holding && !o.silent) {
             o.holding = true;
             if (congested++ == 0) {
@@ -88,7 +94,7 @@ final class FlowWindow {
             return;
         }
         o.silent = false;
-        if (!o.held.isEmpty() && !o.holding && on) {
+        if (o.heldOfAgent > 0 && !o.holding && on) {
             o.holding = true;
             if (congested++ == 0) {
                 ctx.host().backpressure(true);
@@ -101,12 +107,16 @@ final class FlowWindow {
         o.credit = Math.max(0, announced);
     }
 
-    /** Sends what is held for a receiver as far as its window allows; the agent goes on once nothing is held. */
+    /** Sends what is held for a receiver as far as its window allows; the agent goes on once none of its own is held. */
     void release(LayerContext ctx, SenderState o, Retransmission sender) {
         while (!o.held.isEmpty() && (windowOpen(o) || !on)) {
-            sender.transmit(ctx, o.held.poll(), o);
+            Envelope env = o.held.poll();
+            if (env.sentByAgent()) {
+                o.heldOfAgent--;
+            }
+            sender.transmit(ctx, env, o);
         }
-        if (o.held.isEmpty() && o.holding) {
+        if (o.heldOfAgent == 0 && o.holding) {
             o.holding = false;
             if (--congested == 0) {
                 ctx.host().backpressure(false);

@@ -119,8 +119,13 @@ final class Retransmission {
             o.progressNs = now;
         }
         if (shut) {
-            // A receiver that keeps its window shut is slow, not gone: it answers each probe.
+            // A receiver that keeps its window shut is slow, not gone, while it answers each probe;
+            // one that stops answering (its mailbox was full, then it closed or was stopped) holds
+            // the agent back no longer (before, the agent stayed paused for good).
             o.probes = Math.min(o.probes + 1, 4);
+            if (now - Math.max(o.progressNs, o.heardNs) >= FlowWindow.SILENT_MS * 1_000_000L) {
+                flow.silent(ctx, o);
+            }
         } else {
             if (!o.held.isEmpty() && now - o.progressNs >= FlowWindow.SILENT_MS * 1_000_000L) {
                 // Stopped or gone: the frames for it wait, the agent's other conversations go on.
@@ -191,6 +196,10 @@ final class Retransmission {
             return;
         }
         if (out != null && streamId == control.stream()) {
+            out.heardNs = ctx.nowNs();
+            if (seq >= out.acked && out.acked >= out.nextSeq - 1) {
+                flow.heard(ctx, out);   // it answers with all taken: there, if slow
+            }
             if (seq > out.acked) {
                 long was = out.acked;
                 out.acked = Math.min(seq, out.nextSeq - 1);

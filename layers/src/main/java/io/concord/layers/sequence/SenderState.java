@@ -26,8 +26,10 @@ final class SenderState {
     int probes;
     /** Frames past the acknowledged ones the receiver takes (its window); -1 until it says. */
     int credit = -1;
-    /** Frames the agent sent that wait for the receiver's window to open, in order. */
+    /** Frames that wait for the receiver's window to open, in order: the agent's own and the layers'. */
     final ArrayDeque<Envelope> held = new ArrayDeque<>();
+    /** Of {@link #held}, the agent's own messages (the rest the layers sent): only these hold the agent back. */
+    int heldOfAgent;
     /** Counted among the receivers that hold the agent back. */
     boolean holding;
     /**
@@ -38,6 +40,12 @@ final class SenderState {
     boolean silent;
     /** When this receiver last acknowledged something new, or when frames began to wait for it unacknowledged. */
     long progressNs = Long.MIN_VALUE;
+    /**
+     * When this receiver last answered at all (an acknowledgement of nothing new, a shut window's
+     * answer to a probe included): a receiver that has taken everything and shut its window is
+     * slow while it answers, silent once it stops.
+     */
+    long heardNs = Long.MIN_VALUE;
 
     SenderState(int size) {
         ring = new byte[size][];

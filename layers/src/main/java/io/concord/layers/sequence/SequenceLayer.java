@@ -1,6 +1,7 @@
 package io.concord.layers.sequence;
 
 import io.concord.core.layer.Envelope;
+import io.concord.core.layer.SendRejectedException;
 import io.concord.core.layer.Layer;
 import io.concord.core.layer.LayerContext;
 import io.concord.core.layer.StackEvent;
@@ -154,6 +155,12 @@ public final class SequenceLayer extends Layer {
         }
         SenderState o = sending.sender(env.peerId(), env.destination());
         if (flow.mustHold(o)) {
+            if (env.isReport()) {
+                // An observer behind on its events (slow, stopped, gone): refused, never held, so
+                // that the observed agent's own conversations go on (the observer counts it missed).
+                throw new SendRejectedException("receiver-behind", "an event for " + o.address
+                        + ", which has not taken the ones before (its window is full): not sent");
+            }
             flow.hold(ctx, env, o);
             // A window that opens again is announced; if that announcement is lost, a probe asks.
             sending.probeLater(ctx, env.peerId(), o);

@@ -32,7 +32,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * No head-of-line stall: a ping-pong of two agents of this JVM, the ping sniffed by an observer in
  * another JVM (as the console sniffs), on real UDP, class 7. The observer is then stopped (SIGSTOP:
  * a frozen console, a laptop's lid shut) or killed: the frames to it wait, or are dropped and
- * counted, but the ping and the pong go on with their own conversation.
+ * counted, but the ping and the pong go on with their own conversation. So do they with an
+ * observer that falls behind (its mailbox full, its window shut) and is then killed.
  */
 class GoneObserverTest {
     static final String RANGE = "7461-7480";
@@ -93,8 +94,8 @@ class GoneObserverTest {
         assertTrue(ping.rounds.get() >= atLeast, what + ": " + ping.rounds.get() + " rounds of " + atLeast);
     }
 
-    private void observedThenGone(String signal) throws Exception {
-        String name = "gone" + ProcessHandle.current().pid() + signal.toLowerCase();
+    private void observedThenGone(String signal, boolean behindFirst) throws Exception {
+        String name = "gone" + ProcessHandle.current().pid() + signal.toLowerCase() + (behindFirst ? "behind" : "");
         System.setProperty("concord.home", home.toString());
         platform = Platform.builder().name(name).ports(PortRange.parse(RANGE)).profile(Profile.CLASS_7).build();
         Ping ping = new Ping();
@@ -103,7 +104,9 @@ class GoneObserverTest {
         AID pingAid = platform.startAgent("ping", ping);
 
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        child = new ProcessBuilder(java, "-Dconcord.home=" + home, "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"),
+        // An observer that falls behind has a small mailbox (64): it fills, and the window to it shuts, at once.
+        child = new ProcessBuilder(java, "-Dconcord.home=" + home, "-Dconcord.test.mailbox=" + (behindFirst ? 64 : 100_000),
+                "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"),
                 PlatformChild.class.getName(), name, RANGE, "observer").redirectError(ProcessBuilder.Redirect.INHERIT).start();
         LinkedBlockingQueue<String> lines = new LinkedBlockingQueue<>();
         Thread reader = new Thread(() -> {
@@ -143,6 +146,24 @@ class GoneObserverTest {
         assertEquals(1, sniffers.get(10, TimeUnit.SECONDS));
         awaitRounds(ping, 200, "the ping-pong runs while sniffed");
 
+        if (behindFirst) {
+            // The observer takes nothing more from its mailbox (a console whose browser stopped
+            // reading, a JVM in a long pause that still acknowledges): it answers, its window shut.
+            in.println("deaf");
+            String deaf = null;
+            while ((l = lines.poll(20, TimeUnit.SECONDS)) != null) {
+                if (l.equals("DEAF")) {
+                    deaf = l;
+                    break;
+                }
+            }
+            assertNotNull(deaf, "the observer stops taking its mailbox");
+            long before = ping.rounds.get();
+            awaitRounds(ping, before + ROUNDS, "the ping-pong goes on with its observer behind");
+            CompletableFuture<Long> refused = new CompletableFuture<>();
+            platform.runtime().execute(() -> refused.complete(platform.runtime().drops(pingAid).getOrDefault("receiver-behind", 0L)));
+            assertTrue(refused.get(10, TimeUnit.SECONDS) > 0, "the events the observer could not take are refused and counted");
+        }
         new ProcessBuilder("kill", "-" + signal, Long.toString(child.pid())).start().waitFor();
         long at = ping.rounds.get();
         // Far more rounds than the flow window (256) and the frames held for one receiver (4,096):
@@ -152,11 +173,20 @@ class GoneObserverTest {
 
     @Test
     void aStoppedObserverHoldsBackOnlyItsOwnFrames() throws Exception {
-        observedThenGone("STOP");
+        observedThenGone("STOP", false);
     }
 
     @Test
     void aKilledObserverHoldsBackNothing() throws Exception {
-        observedThenGone("KILL");
+        observedThenGone("KILL", false);
+    }
+
+    /**
+     * The console's case: its mailbox full, it answers with its window shut, then it closes.
+     * Before, the sniffed agent was paused as long as the observer answered, and for good after.
+     */
+    @Test
+    void anObserverBehindAndThenKilledHoldsBackNothing() throws Exception {
+        observedThenGone("KILL", true);
     }
 }

@@ -17,7 +17,8 @@ import java.nio.charset.StandardCharsets;
  * One agent in a JVM of its own, for the multi-process tests: it prints its view of the platform
  * on every change ({@code STATE role=.. container=.. term=.. agents=..}) and every message it gets
  * ({@code GOT ..}); it answers REQUESTs with an INFORM; the parent writes {@code send <name> <text>}
- * on its standard input to make it send a REQUEST by name.
+ * on its standard input to make it send a REQUEST by name, {@code sniff <name>} to subscribe to an
+ * agent's events, {@code deaf} to stop taking its mailbox.
  *
  * <p>Arguments: platform name, port range, agent name. The platform key comes from
  * {@code -Dconcord.home}.
@@ -30,7 +31,17 @@ public final class PlatformChild {
         if (args.length > 3) {
             b.host(args[3]);
         }
+        // A small mailbox (-Dconcord.test.mailbox=N), for a receiver that falls behind soon.
+        Integer mailbox = Integer.getInteger("concord.test.mailbox");
+        io.concord.core.agent.AgentRuntime own = null;
+        if (mailbox != null) {
+            own = io.concord.core.agent.AgentRuntime.builder().platformName(args[0]).mailboxCapacity(mailbox).build();
+            b.runtime(own);
+        }
         Platform p = b.build();
+        if (own != null) {
+            own.start();
+        }
         EchoAgent echo = new EchoAgent("echo:", m -> System.out.println("GOT " + m.getPerformative().wireName() + " from "
                 + m.getSender().localName() + " " + m.getContent()));
         AID aid = p.startAgent(args[2], echo);
@@ -61,6 +72,10 @@ public final class PlatformChild {
                 m.setConversationId("sniff-" + w[1]);
                 m.setContent("sniff");
                 echo.send(m);
+            } else if (w.length == 1 && w[0].equals("deaf")) {
+                // Falls behind: takes nothing more from its mailbox, which fills; its window shuts.
+                echo.stopTaking();
+                System.out.println("DEAF");
             } else if (w.length == 2 && w[0].equals("register")) {
                 p.runtime().execute(() -> Platform.of(echo).register(ServiceDescription.ofType(w[1]))
                         .whenComplete((ok, e) -> System.out.println(e == null ? "REGISTERED " + w[1] : "REGISTER-FAILED " + e)));

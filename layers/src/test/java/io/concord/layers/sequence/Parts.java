@@ -50,7 +50,16 @@ final class Parts {
         return probe.ctx;
     }
 
+    /** A payload the agent itself sent. */
     static Envelope payload(String text) {
+        byte[] b = text.getBytes(StandardCharsets.UTF_8);
+        byte[] buf = new byte[Frames.HEADROOM + b.length];
+        System.arraycopy(b, 0, buf, Frames.HEADROOM, b.length);
+        return Envelope.control(PEER, PEER_AT, buf, Frames.HEADROOM, b.length).markSentByAgent();
+    }
+
+    /** The same as a frame a layer sends on its own (the platform's lists, a heartbeat). */
+    static Envelope platformFrame(String text) {
         byte[] b = text.getBytes(StandardCharsets.UTF_8);
         byte[] buf = new byte[Frames.HEADROOM + b.length];
         System.arraycopy(b, 0, buf, Frames.HEADROOM, b.length);
