@@ -775,7 +775,8 @@ final class Reservations<T> {
                     String why = "it is idle in the way of " + local(chair);
                     // A room only if nothing else is free: it stands where the other must go (its destination, say).
                     moved |= makeWay(h, why, false, out) || makeWay(h, why, true, out)
-                            || (anyCycle() && (makeWay(h, why, false, out, Set.of(chair)) || makeWay(h, why, true, out, Set.of(chair))));
+                            || (anyCycle() && (makeWay(h, why, false, out, Set.of(chair)) || makeWay(h, why, true, out, Set.of(chair))))
+                            || push(h, chair, out);
                 }
             }
             if (moved) {
@@ -1128,25 +1129,7 @@ final class Reservations<T> {
             return false;
         }
         int from = node(mine.get(0));
-        Set<Integer> needed = new HashSet<>();
-        for (Wait<T> w : waiting.values()) {
-            if (!w.chair().equals(chair) && (onlyFor == null || onlyFor.contains(w.chair()))) {
-                needed.addAll(w.path());
-            }
-        }
-        if (onlyFor != null) {
-            // The cycle's granted chairs: what is left of their routes.
-            routes.forEach((c, r) -> {
-                if (onlyFor.contains(c) && !c.equals(chair)) {
-                    needed.addAll(r.path);
-                }
-            });
-        }
-        goals.forEach((c, g) -> {
-            if (!c.equals(chair)) {
-                needed.add(g);
-            }
-        });
+        Set<Integer> needed = needed(chair, onlyFor);
         Map<Integer, Integer> hops = new HashMap<>();
         Map<Integer, Integer> prev = new HashMap<>();
         ArrayDeque<Integer> q = new ArrayDeque<>(List.of(from));
@@ -1191,6 +1174,83 @@ final class Reservations<T> {
         out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
         out.add(new Note<>(local(chair) + " makes way from node " + from + " to node " + best + " (" + why + ")"));
         return true;
+    }
+
+    /**
+     * The nodes a chair sent aside must not end on: the waiting routes of the others (of those in
+     * {@code onlyFor} only, and what is left of their granted routes, if not null), and every other
+     * chair's destination.
+     */
+    private Set<Integer> needed(String chair, Set<String> onlyFor) {
+        Set<Integer> needed = new HashSet<>();
+        for (Wait<T> w : waiting.values()) {
+            if (!w.chair().equals(chair) && (onlyFor == null || onlyFor.contains(w.chair()))) {
+                needed.addAll(w.path());
+            }
+        }
+        if (onlyFor != null) {
+            // The cycle's granted chairs: what is left of their routes.
+            routes.forEach((c, r) -> {
+                if (onlyFor.contains(c) && !c.equals(chair)) {
+                    needed.addAll(r.path);
+                }
+            });
+        }
+        goals.forEach((c, g) -> {
+            if (!c.equals(chair)) {
+                needed.add(g);
+            }
+        });
+        return needed;
+    }
+
+    /**
+     * Push ({@link TrafficSettings.Rule#PUSH}): {@code blocker}, idle in the way of
+     * {@code forChair}, cannot make way: the free nodes it can reach are all needed, and the others
+     * around them are held by idle chairs. The nearest of those (breadth first, the map's edges in order) whose node is not
+     * needed and that can make way itself is sent aside; {@code blocker} takes that node at a later
+     * review. False if none can.
+     */
+    private boolean push(String blocker, String forChair, List<Outcome<T>> out) {
+        List<Long> mine = held.get(blocker);
+        if (!settings.on(TrafficSettings.Rule.PUSH) || mine == null || mine.isEmpty() || rules != TrafficRules.IN_ORDER) {
+            return false;
+        }
+        int from = node(mine.get(0));
+        Set<Integer> needed = needed(blocker, null);
+        Set<Integer> seen = new HashSet<>(List.of(from));
+        ArrayDeque<Integer> q = new ArrayDeque<>(List.of(from));
+        while (!q.isEmpty()) {
+            int u = q.poll();
+            for (Edge e : map.edgesAt(u)) {
+                int v = e.other(u);
+                if (!seen.add(v)) {
+                    continue;
+                }
+                String h = otherHolder(blocker, v);
+                if (h == null) {
+                    q.add(v);   // free: the blocker can drive through it
+                } else if (!needed.contains(v) && idle.contains(h) && !aside.containsKey(h) && !silent.contains(h)) {
+                    String because = "it is idle in the way of " + local(blocker) + ", which is idle in the way of " + local(forChair);
+                    if (makeWay(h, because, false, out) || makeWay(h, because, true, out)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
+    /** A chair other than {@code chair} that holds {@code node}, the first by name, or null. */
+    private String otherHolder(String chair, int node) {
+        for (long k : whole(node)) {
+            for (String h : new java.util.TreeSet<>(holders.getOrDefault(k, Set.of()))) {
+                if (!h.equals(chair)) {
+                    return h;
+                }
+            }
+        }
+        return null;
     }
 
     private boolean freeFor(String chair, int node) {

@@ -35,7 +35,13 @@ public record TrafficSettings(TrafficRules rules, long stallMs, Set<Rule> off) {
         /** An idle chair off the map's parking places is sent to the nearest free one (hops, then the map's order). */
         HOME,
         /** The fleet monitor's alarm: a chair with work and no progress for {@link #stallMs()} is reported. */
-        ALARM
+        ALARM,
+        /**
+         * Push: an idle chair in the way that cannot make way, every free node around it needed or
+         * walled in by other idle chairs, is cleared for by sending aside one of those whose node it
+         * can then take (a depot of parked chairs, one of them on the exit).
+         */
+        PUSH
     }
 
     public TrafficSettings {

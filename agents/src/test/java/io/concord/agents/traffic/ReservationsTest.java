@@ -283,6 +283,72 @@ class ReservationsTest {
         assertTrue(moved.stream().anyMatch(o -> o instanceof Failed<String> f && f.chair().equals("a") && f.reason().contains("called off")), moved.toString());
     }
 
+    /**
+     * A lane (1-2-3) to a patient's room (4) off its end, and a bay (5, then 6) off node 3: b, deep
+     * in the lane at 1, must reach 4; a is idle on 3, c idle on 5. The only free node a could step
+     * to is 2, on b's way: a cannot make way (the depot's seed 6, where a chair at the depot's exit
+     * stood idle in the way for good and its neighbour idle beside it).
+     */
+    static final HospitalMap BAY = HospitalMap.parse("""
+            {
+              "format": "concord-hospital-map/1",
+              "name": "bay",
+              "walls": [
+                {"id": "outer", "path": [[0, 0], [30, 0], [30, 12], [0, 12], [0, 0]]}
+              ],
+              "areas": [
+                {"id": "ward", "kind": "ward", "name": "Ward", "polygon": [[0, 0], [30, 0], [30, 12], [0, 12]]}
+              ],
+              "nodes": [
+                {"id": 1, "at": [3, 4]}, {"id": 2, "at": [8, 4]}, {"id": 3, "at": [13, 4]},
+                {"id": 4, "at": [13, 9], "name": "the patient's room"}, {"id": 5, "at": [18, 4]}, {"id": 6, "at": [23, 4]}
+              ],
+              "edges": [
+                {"from": 1, "to": 2}, {"from": 2, "to": 3}, {"from": 3, "to": 4}, {"from": 3, "to": 5}, {"from": 5, "to": 6}
+              ]
+            }
+            """, "test");
+
+    private static List<Outcome<String>> walledIn(Reservations<String> rules) {
+        rules.heard("a", 0);
+        rules.idle("a", List.of(3), 0);
+        rules.heard("c", 0);
+        rules.idle("c", List.of(5), 0);
+        return reserve(rules, "b", "tb", List.of(1), List.of(1, 2, 3, 4), 0);
+    }
+
+    @Test
+    void anIdleChairWalledInByAnotherIsClearedForByPushingThatOneFirst() {
+        Reservations<String> rules = new Reservations<>(BAY, TrafficSettings.standard());
+        List<Outcome<String>> out = walledIn(rules);
+        assertEquals(List.of(new MakeWay<>("c", 5, 6, List.of(6))), only(out, MakeWay.class), out.toString());
+        // c drives into the bay's end and leaves 5: a takes it, and b's way is clear.
+        rules.heard("c", 10);
+        rules.reserve("c", "tc", List.of(5), List.of(5, 6), true, 10);
+        List<Outcome<String>> next = rules.release("c", 5, 20);
+        assertEquals(List.of(new MakeWay<>("a", 3, 5, List.of(5))), only(next, MakeWay.class), next.toString());
+        rules.heard("a", 30);
+        rules.reserve("a", "ta", List.of(3), List.of(3, 5), true, 30);
+        List<Granted> granted = only(rules.release("a", 3, 40), Granted.class);
+        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4), 4)), granted, "b goes once a has left 3");
+    }
+
+    /** The same with the rule off: a cannot make way, c is in nobody's way, and b waits for good. */
+    @Test
+    void withoutPushAnIdleChairWalledInStaysInTheWayForGood() {
+        Reservations<String> off = new Reservations<>(BAY, TrafficSettings.standard().without(TrafficSettings.Rule.PUSH));
+        List<Outcome<String>> out = walledIn(off);
+        assertEquals(List.of(), only(out, MakeWay.class), out.toString());
+        for (long t = 1_000; t <= 600_000; t += 1_000) {
+            off.heard("a", t);
+            off.heard("b", t);
+            off.heard("c", t);
+            out = off.review(t);
+            assertEquals(List.of(), only(out, MakeWay.class), "at " + t + " ms: " + out);
+        }
+        assertTrue(off.waits().stream().anyMatch(w -> w.startsWith("b")), off.waits().toString());
+    }
+
     /** The same with the rule off (a cycle with a chair sent aside is left alone, as before): nobody moves, ever. */
     @Test
     void withoutTheRuleACycleThroughAChairSentAsideIsNeverBroken() {
