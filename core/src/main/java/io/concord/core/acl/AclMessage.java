@@ -32,7 +32,8 @@ public final class AclMessage {
     private AID sender;
     private List<AID> receivers;
     private Supplier<List<AID>> lazyReceivers;
-    private final List<AID> replyTo = new ArrayList<>(0);
+    /** Null until asked for or added to: most messages have none, and each message is allocated on every hand-over. */
+    private List<AID> replyTo;
     private String content;
     private byte[] byteContent;
     private String language;
@@ -105,12 +106,19 @@ public final class AclMessage {
 
     /** The reply-to agents, in order; a live, modifiable list. */
     public List<AID> getReplyTo() {
+        if (replyTo == null) {
+            replyTo = new ArrayList<>(1);
+        }
         return replyTo;
     }
 
     public AclMessage addReplyTo(AID aid) {
-        replyTo.add(Objects.requireNonNull(aid, "reply-to"));
+        getReplyTo().add(Objects.requireNonNull(aid, "reply-to"));
         return this;
+    }
+
+    private boolean hasReplyTo() {
+        return replyTo != null && !replyTo.isEmpty();
     }
 
     /** The content as text (byte content is decoded as UTF-8), or {@code null} if there is none. */
@@ -301,7 +309,7 @@ public final class AclMessage {
      */
     public AclMessage createReply() {
         AclMessage reply = new AclMessage(performative);
-        if (!replyTo.isEmpty()) {
+        if (hasReplyTo()) {
             reply.receivers().addAll(replyTo);
         } else if (sender != null) {
             reply.receivers().add(sender);
@@ -321,8 +329,16 @@ public final class AclMessage {
     public AclMessage copy() {
         AclMessage m = new AclMessage(performative);
         m.sender = sender;
-        m.receivers().addAll(receivers());
-        m.replyTo.addAll(replyTo);
+        List<AID> to = receivers();
+        if (to.size() == 1) {
+            m.receivers = new ArrayList<>(1);
+            m.receivers.add(to.get(0));
+        } else {
+            m.receivers = new ArrayList<>(to);
+        }
+        if (hasReplyTo()) {
+            m.replyTo = new ArrayList<>(replyTo);
+        }
         m.content = content;
         m.byteContent = byteContent == null ? null : byteContent.clone();
         m.language = language;
@@ -344,7 +360,7 @@ public final class AclMessage {
      */
     public boolean sameAs(AclMessage o) {
         return o != null && performative == o.performative && aidEq(sender, o.sender)
-                && aidsEq(receivers(), o.receivers()) && aidsEq(replyTo, o.replyTo)
+                && aidsEq(receivers(), o.receivers()) && aidsEq(hasReplyTo() ? replyTo : List.of(), o.hasReplyTo() ? o.replyTo : List.of())
                 && Objects.equals(content, o.content) && Arrays.equals(byteContent, o.byteContent)
                 && Objects.equals(language, o.language) && Objects.equals(encoding, o.encoding)
                 && Objects.equals(ontology, o.ontology) && Objects.equals(protocol, o.protocol)
