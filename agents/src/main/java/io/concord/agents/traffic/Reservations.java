@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.TreeSet;
 
 /**
  * The traffic rules, with no transport and no clock of their own: who holds which node of the
@@ -1244,7 +1245,7 @@ final class Reservations<T> {
     /** A chair other than {@code chair} that holds {@code node}, the first by name, or null. */
     private String otherHolder(String chair, int node) {
         for (long k : whole(node)) {
-            for (String h : new java.util.TreeSet<>(holders.getOrDefault(k, Set.of()))) {
+            for (String h : new TreeSet<>(holders.getOrDefault(k, Set.of()))) {
                 if (!h.equals(chair)) {
                     return h;
                 }

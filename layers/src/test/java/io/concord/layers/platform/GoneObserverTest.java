@@ -94,6 +94,17 @@ class GoneObserverTest {
         assertTrue(ping.rounds.get() >= atLeast, what + ": " + ping.rounds.get() + " rounds of " + atLeast);
     }
 
+    /** The observer's next line that starts so, or null if none comes within 20 s of the one before. */
+    private static String lineStarting(LinkedBlockingQueue<String> lines, String start) throws InterruptedException {
+        String l;
+        while ((l = lines.poll(20, TimeUnit.SECONDS)) != null) {
+            if (l.startsWith(start)) {
+                return l;
+            }
+        }
+        return null;
+    }
+
     private void observedThenGone(String signal, boolean behindFirst) throws Exception {
         String name = "gone" + ProcessHandle.current().pid() + signal.toLowerCase() + (behindFirst ? "behind" : "");
         System.setProperty("concord.home", home.toString());
@@ -130,14 +141,7 @@ class GoneObserverTest {
             }
         }
         in.println("sniff ping");
-        String agreed = null;
-        while ((l = lines.poll(20, TimeUnit.SECONDS)) != null) {
-            if (l.startsWith("GOT AGREE")) {
-                agreed = l;
-                break;
-            }
-        }
-        assertNotNull(agreed, "the observer sniffs the ping");
+        assertNotNull(lineStarting(lines, "GOT AGREE"), "the observer sniffs the ping");
         CompletableFuture<Integer> sniffers = new CompletableFuture<>();
         platform.runtime().execute(() -> {
             ping.next();
@@ -150,14 +154,7 @@ class GoneObserverTest {
             // The observer takes nothing more from its mailbox (a console whose browser stopped
             // reading, a JVM in a long pause that still acknowledges): it answers, its window shut.
             in.println("deaf");
-            String deaf = null;
-            while ((l = lines.poll(20, TimeUnit.SECONDS)) != null) {
-                if (l.equals("DEAF")) {
-                    deaf = l;
-                    break;
-                }
-            }
-            assertNotNull(deaf, "the observer stops taking its mailbox");
+            assertNotNull(lineStarting(lines, "DEAF"), "the observer stops taking its mailbox");
             long before = ping.rounds.get();
             awaitRounds(ping, before + ROUNDS, "the ping-pong goes on with its observer behind");
             CompletableFuture<Long> refused = new CompletableFuture<>();
