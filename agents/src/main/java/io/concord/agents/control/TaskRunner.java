@@ -473,7 +473,7 @@ final class TaskRunner {
         }
         traffic.reset();
         Phase resume = another ? aside.resume : phase;
-        MakingWay mw = resume == null ? new GoingHome(to) : new StepAside(resume, to);
+        MakingWay mw = resume == null ? new GoingHome(to, map.parking().contains(to)) : new StepAside(resume, to);
         phase = mw;
         waitsFor = "a new plan";
         chair.stop();

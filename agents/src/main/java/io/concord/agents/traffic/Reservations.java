@@ -155,6 +155,8 @@ final class Reservations<T> {
     private final Set<String> calledOff = new HashSet<>();
     /** Idle chairs already sent home, until they ask for a route again. */
     private final Set<String> sentHome = new HashSet<>();
+    /** Idle chairs off the parking places told to have no free place to go to (said once; tried again every review). */
+    private final Set<String> homeless = new HashSet<>();
     /** chair -> since when it is idle. */
     private final Map<String, Long> idleSince = new HashMap<>();
     /** The time of the call being answered. */
@@ -348,6 +350,7 @@ final class Reservations<T> {
         clock = nowMs;
         progressAt.putIfAbsent(chair, nowMs);
         sentHome.remove(chair);
+        homeless.remove(chair);
         idleSince.remove(chair);
         Integer target = aside.get(chair);
         List<Long> keep = wholes(at);
@@ -901,13 +904,15 @@ final class Reservations<T> {
     /**
      * Idle chairs go home: one idle for {@link #HOME_AFTER_MS} off the map's parking places (in a patient's room, say) is sent to
      * the nearest parking place nobody holds or needs, by hops over free nodes, ties in the map's
-     * order of places; once until it asks for a route again.
+     * order of places; once until it asks for a route again. While no place is free it is said
+     * once, and tried again at every review (a chair stayed in a patient's room for good when the
+     * one try found the depot's places held for a moment).
      */
     private void home(List<Outcome<T>> out) {
         if (!settings.on(TrafficSettings.Rule.HOME) || parking.isEmpty() || rules != TrafficRules.IN_ORDER) {
             return;
         }
-        for (String chair : new ArrayList<>(new java.util.TreeSet<>(idle))) {
+        for (String chair : new ArrayList<>(new TreeSet<>(idle))) {
             List<Long> mine = held.get(chair);
             if (sentHome.contains(chair) || aside.containsKey(chair) || mine == null || mine.isEmpty() || silent.contains(chair)) {
                 continue;
@@ -916,16 +921,22 @@ final class Reservations<T> {
             if (parking.contains(at) || clock - idleSince.getOrDefault(chair, clock) < HOME_AFTER_MS) {
                 continue;
             }
-            sentHome.add(chair);
-            goHome(chair, at, out);
+            if (goHome(chair, at, out)) {
+                sentHome.add(chair);
+                homeless.remove(chair);
+            } else if (homeless.add(chair)) {
+                out.add(new Note<>(local(chair) + " is idle at node " + at + ", off the parking places, and none is free to go to;"
+                        + " it goes when one is"));
+            }
         }
     }
 
-    private void goHome(String chair, int from, List<Outcome<T>> out) {
+    /** Sends the chair to the nearest free parking place; false if there is none it can reach now. */
+    private boolean goHome(String chair, int from, List<Outcome<T>> out) {
         Map<Integer, Integer> prev = new HashMap<>();
         ArrayDeque<Integer> q = new ArrayDeque<>(List.of(from));
         prev.put(from, from);
-        Set<Integer> needed = needed(chair);
+        Set<Integer> needed = needed(chair, null);
         List<Integer> order = map.parking();
         int best = -1;
         while (!q.isEmpty() && best < 0) {
@@ -953,8 +964,7 @@ final class Reservations<T> {
             q.addAll(next);
         }
         if (best < 0) {
-            out.add(new Note<>(local(chair) + " is idle at node " + from + ", off the parking places, and none is free to go to"));
-            return;
+            return false;
         }
         List<Integer> path = new ArrayList<>();
         for (int v = best; v != from; v = prev.get(v)) {
@@ -966,22 +976,7 @@ final class Reservations<T> {
         asideSince.put(chair, clock);
         out.add(new MakeWay<>(chair, from, best, List.copyOf(path)));
         out.add(new Note<>(local(chair) + " goes home from node " + from + " to parking place " + best + " (it is idle)"));
-    }
-
-    /** The nodes other chairs need: every waiting route's, every granted route's end. */
-    private Set<Integer> needed(String chair) {
-        Set<Integer> needed = new HashSet<>();
-        for (Wait<T> w : waiting.values()) {
-            if (!w.chair().equals(chair)) {
-                needed.addAll(w.path());
-            }
-        }
-        goals.forEach((c, g) -> {
-            if (!c.equals(chair)) {
-                needed.add(g);
-            }
-        });
-        return needed;
+        return true;
     }
 
     /**

@@ -192,6 +192,10 @@ class PhaseTest {
         assertNull(home.arrived(30_000, c), "parked: idle");
         assertTrue(c.replans.isEmpty());
         assertEquals("GoingHome(idle)", home.toString());
+        // Out of another's way, to a node that is no parking place: it says so, not "home".
+        Recorder aside = new Recorder();
+        new GoingHome(5, false).planned(List.of(7, 4, 5), aside);
+        assertEquals("makes way for another chair (it is idle): to node 5 by [7, 4, 5]", aside.said.get(0));
     }
 
     @Test

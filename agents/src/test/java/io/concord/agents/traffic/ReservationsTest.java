@@ -433,6 +433,34 @@ class ReservationsTest {
         assertEquals(List.of(new MakeWay<>("b", 6, 1, List.of(3, 2, 1))), only(rules.review(120_000), MakeWay.class));
     }
 
+    /**
+     * No parking place it can reach when the chair's 30 s are up (b stands on 3, the room's only
+     * way out): it is said once, and the chair goes home as soon as the way is free (before, the
+     * one try was all, and the chair stayed in the patient's room for good: a newcomer's run on
+     * the default hospital).
+     */
+    @Test
+    void anIdleChairWithNoPlaceToReachGoesHomeOnceTheWayIsFree() {
+        Reservations<String> rules = new Reservations<>(PARKED, TrafficSettings.standard());
+        reserve(rules, "b", "tb", List.of(3), List.of(3), 0);   // b stands on 3 with its task
+        rules.heard("a", 0);
+        rules.idle("a", List.of(6), 0);
+        List<Outcome<String>> out = new java.util.ArrayList<>();
+        for (long t = 1_000; t <= 60_000; t += 1_000) {
+            rules.heard("a", t);
+            rules.heard("b", t);
+            out.addAll(rules.review(t));
+        }
+        assertEquals(List.of(), only(out, MakeWay.class), "nowhere to go yet");
+        assertEquals(1, out.stream().filter(o -> o.toString().contains("none is free to go to")).count(), out.toString());
+        // b drives on to 2 and leaves 3.
+        reserve(rules, "b", "tb2", List.of(3), List.of(3, 2), 61_000);
+        out = new java.util.ArrayList<>(rules.release("b", 3, 62_000));
+        rules.heard("a", 63_000);
+        out.addAll(rules.review(63_000));
+        assertEquals(List.of(new MakeWay<>("a", 6, 5, List.of(3, 4, 5))), only(out, MakeWay.class), out.toString());
+    }
+
     /** The same with the rule off: the chair stays in the patient's room. */
     @Test
     void withoutTheRuleAnIdleChairStaysInThePatientsRoom() {
