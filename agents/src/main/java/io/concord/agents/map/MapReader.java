@@ -24,6 +24,11 @@ final class MapReader {
     static final String FORMAT = "concord-hospital-map/1";
     /** Two nodes closer than this are one place written twice. */
     static final double MIN_NODE_SPACING_M = 0.25;
+    /**
+     * An edge passes at least this far from every node but its ends: a chair standing at a node
+     * (0.7 m wide) and one driving by (0.7 m wide) keep clear of each other only past it.
+     */
+    static final double EDGE_NODE_CLEARANCE_M = 0.7;
     /** How far a jamb may be from the end of its wall, and how far off the door's line. */
     static final double JAMB_TOLERANCE_M = 0.02;
     private static final int MAX_PROBLEMS = 50;
@@ -410,6 +415,17 @@ final class MapReader {
             for (Wall w : walls) {
                 if (Geometry.segmentToSegment(a.at(), b.at(), w.from(), w.to()) < w.thicknessM() / 2) {
                     problem(what + ": runs through wall '" + w.id() + "' (" + w.from() + " to " + w.to() + ")");
+                }
+            }
+            for (Node n : nodes) {
+                double off = n == a || n == b ? Double.MAX_VALUE : Geometry.pointToSegment(n.at(), a.at(), b.at());
+                if (off < EDGE_NODE_CLEARANCE_M) {
+                    // A chair standing at the node stands in the way of every chair on the edge, and
+                    // the traffic agent, which reserves nodes, does not know: the fleet froze there.
+                    problem(what + ": passes " + Point.trim(off) + " m from node " + n.id() + " at " + n.at()
+                            + ", which is not one of its ends; a chair standing at node " + n.id() + " would block it."
+                            + " Join the edge through the node (" + e.a() + "-" + n.id() + " and " + n.id() + "-" + e.b()
+                            + ") or keep it " + EDGE_NODE_CLEARANCE_M + " m from the node");
                 }
             }
         }

@@ -548,10 +548,15 @@ public class MedicalAgent extends Agent {
                     if (r.getPerformative() == Performative.PROPOSE) {
                         try {
                             Proposal p = WheelchairMessage.decode(r, Proposal.class);
-                            double cost = p.cost() - lostElsewhere(p, r.getSender().localName());
+                            double lost = lostElsewhere(p, r.getSender().localName());
+                            double cost = p.cost() - lost;
                             double u = utility(cost, p.path(), p.unload(), tp);
-                            log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f, path %.1f for %s: U = %.3f",
-                                    getLocalName(), r.getSender().localName(), cost, p.path(), id, u));
+                            // The chair's own log says the cost it bid; counted here without the
+                            // tasks it bid for meanwhile that went to other chairs.
+                            log.accept(String.format(Locale.ROOT, "%s: %s proposes cost %.1f%s, path %.1f for %s: U = %.3f",
+                                    getLocalName(), r.getSender().localName(), cost,
+                                    lost > 0 ? String.format(Locale.ROOT, " (%.1f bid, less %.1f for tasks since given to others)", p.cost(), lost) : "",
+                                    p.path(), id, u));
                             if (u > best) {
                                 best = u;
                                 winner = r;

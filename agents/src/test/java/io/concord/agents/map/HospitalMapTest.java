@@ -165,6 +165,17 @@ class HospitalMapTest {
         assertProblem(e, "edge 1-42", "no node 42");
     }
 
+    /** A newcomer's map: an edge drawn straight over a node it does not stop at; a chair parked there froze the fleet. */
+    @Test
+    void anEdgeOverANodeItDoesNotStopAtIsRefused() {
+        MapException e = refused(SMALL.replace("{\"id\": 3, \"at\": [8, 2]}", "{\"id\": 3, \"at\": [8, 2]}, {\"id\": 4, \"at\": [2, 2.3]}")
+                .replace("{\"from\": 1, \"to\": 3}", "{\"from\": 1, \"to\": 3}, {\"from\": 4, \"to\": 3}"));
+        assertProblem(e, "edge 4-3", "from node 1", "would block it", "4-1 and 1-3");
+        // Joined through the node instead, it loads.
+        HospitalMap.parse(SMALL.replace("{\"id\": 3, \"at\": [8, 2]}", "{\"id\": 3, \"at\": [8, 2]}, {\"id\": 4, \"at\": [2, 2.3]}")
+                .replace("{\"from\": 1, \"to\": 3}", "{\"from\": 1, \"to\": 3}, {\"from\": 4, \"to\": 1}"), "test");
+    }
+
     @Test
     void aDoorNotOnAWallGapIsRefused() {
         MapException e = refused(SMALL.replace("\"from\": [4.4, 4], \"to\": [5.6, 4], \"hinge\"",
