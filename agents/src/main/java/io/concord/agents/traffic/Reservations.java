@@ -1203,9 +1203,9 @@ final class Reservations<T> {
     /**
      * Push ({@link TrafficSettings.Rule#PUSH}): {@code blocker}, idle in the way of
      * {@code forChair}, cannot make way: the free nodes it can reach are all needed, and the others
-     * around them are held by idle chairs. The nearest of those (breadth first, the map's edges in order) whose node is not
-     * needed and that can make way itself is sent aside; {@code blocker} takes that node at a later
-     * review. False if none can.
+     * around them are held by idle chairs. The nearest of those (breadth first, the map's edges in
+     * order) whose node is not needed and that can make way itself is sent aside; {@code blocker}
+     * takes that node at a later review. False if none can.
      */
     private boolean push(String blocker, String forChair, List<Outcome<T>> out) {
         List<Long> mine = held.get(blocker);
@@ -1239,25 +1239,19 @@ final class Reservations<T> {
 
     /** A chair other than {@code chair} that holds {@code node}, the first by name, or null. */
     private String otherHolder(String chair, int node) {
+        String first = null;
         for (long k : whole(node)) {
-            for (String h : new TreeSet<>(holders.getOrDefault(k, Set.of()))) {
-                if (!h.equals(chair)) {
-                    return h;
+            for (String h : holders.getOrDefault(k, Set.of())) {
+                if (!h.equals(chair) && (first == null || h.compareTo(first) < 0)) {
+                    first = h;
                 }
             }
         }
-        return null;
+        return first;
     }
 
     private boolean freeFor(String chair, int node) {
-        for (long k : whole(node)) {
-            for (String h : holders.getOrDefault(k, Set.of())) {
-                if (!h.equals(chair)) {
-                    return false;
-                }
-            }
-        }
-        return true;
+        return otherHolder(chair, node) == null;
     }
 
     static String local(String name) {
