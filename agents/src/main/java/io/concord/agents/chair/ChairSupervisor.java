@@ -347,7 +347,11 @@ public final class ChairSupervisor implements ChairDriver {
             recent.remove(hold.cause()); // an operator decided: the count of that fault starts again
         }
         decidedBy = who;
-        LOG.info("{}: resumes after {}: decided by {}", chair.name(), hold, who);
+        if (hold.cause() == Cause.START) {
+            LOG.info("{}: arms for the first time: decided by {}", chair.name(), who); // the normal start, not a fault
+        } else {
+            LOG.info("{}: resumes after {}: decided by {}", chair.name(), hold, who);
+        }
         state = State.ARMING;
         armedReadings = 0;
         chair.stop();

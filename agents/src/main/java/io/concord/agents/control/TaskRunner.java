@@ -456,7 +456,10 @@ final class TaskRunner {
                     : driving ? ": it is under way" : planning ? ": it is waiting for a plan"
                     : aside != null ? ": it is making way to node " + aside.to
                     : ": the patient " + (phase instanceof Loading ? "gets on" : "gets off") + " here"));
-            traffic.release(to);
+            if (!traffic.onRoute(to)) {
+                // Not a node its own route takes: the traffic agent held it for the step aside.
+                traffic.release(to);
+            }
             if (!driving) {
                 traffic.reset(); // its wait was dropped for the order: asks again, or says again where it idles
             }

@@ -48,6 +48,14 @@ final class TrafficClient {
     /** The conversation of the granted reservation (a {@code clear} or a late FAILURE comes in it). */
     private String grantedIn;
     private List<Integer> asked;
+    /** The request of {@link #asked} (its conversation is the grant's to come). */
+    private AclMessage askedBy;
+    /**
+     * A {@code clear} in the conversation asked that came before its grant (both come at once, and
+     * the clear may be read first), or null: applied when the grant comes. Dropped, the chair would
+     * wait for ever at the grant's {@code upto} for a clear it had already been sent.
+     */
+    private Integer earlyClear;
     private long seq;
     private int idleAt = -1;
 
@@ -87,11 +95,16 @@ final class TrafficClient {
         req.setOntology(Services.ONTOLOGY);
         req.setLanguage(Services.LANGUAGE);
         req.setContent(new Reserve(at, route, aside).encode());
+        askedBy = req;
+        earlyClear = null;
         port.ask(req, WAIT_MS).thenAccept(a -> {
             if (seq != mine) {
                 return;
             }
             asked = null;
+            askedBy = null;
+            Integer early = earlyClear;
+            earlyClear = null;
             if (a == null) {
                 return; // asked again on the next reading
             }
@@ -100,6 +113,9 @@ final class TrafficClient {
                 grantedIn = a.getConversationId();
                 Integer upto = WheelchairMessage.tryDecode(a).map(w -> w instanceof Granted g ? g.upto() : null).orElse(null);
                 clearTo = upto == null ? route.size() - 1 : Math.max(0, route.indexOf(upto));
+                if (early != null && route.indexOf(early) > clearTo) {
+                    clearTo = route.indexOf(early);
+                }
                 held.addAll(route);
                 return;
             }
@@ -139,6 +155,14 @@ final class TrafficClient {
      */
     void aboutGrant(AclMessage m) {
         if (!isAboutGrant(m)) {
+            if (askedBy != null && m.getConversationId() != null && m.getConversationId().equals(askedBy.getConversationId())
+                    && m.getPerformative() == Performative.INFORM) {
+                WheelchairMessage.tryDecode(m).ifPresent(w -> {
+                    if (w instanceof Clear c && asked != null && (earlyClear == null || asked.indexOf(c.upto()) > asked.indexOf(earlyClear))) {
+                        earlyClear = c.upto();
+                    }
+                });
+            }
             return;
         }
         if (m.getPerformative() == Performative.INFORM) {
@@ -175,6 +199,8 @@ final class TrafficClient {
         granted = null;
         grantedIn = null;
         asked = null;
+        askedBy = null;
+        earlyClear = null;
         idleAt = -1;
     }
 
@@ -189,6 +215,11 @@ final class TrafficClient {
                 }
             }
         }
+    }
+
+    /** Whether the route asked for or granted last takes {@code node} (the chair will drive into it). */
+    boolean onRoute(int node) {
+        return (granted != null && granted.contains(node)) || (asked != null && asked.contains(node));
     }
 
     /** Gives back one node the chair was given and will not use. */

@@ -84,7 +84,8 @@ public class MedicalAgent extends Agent {
      * @param progressMs     how much longer a chair at work on a task gets, from each progress report
      *                       (0: its quote alone sets the deadline)
      */
-    public record Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs, long progressMs) {
+    public record Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs, long progressMs,
+                           boolean dwellKnown) {
         /**
          * Two seconds to propose, three auctions, two minutes' wait for a chair asked every 5 s, 2
          * minutes from each pause notice and from each progress report.
@@ -93,9 +94,22 @@ public class MedicalAgent extends Agent {
             return new Settings(2_000, 3, 120_000, 5_000, 120_000, 120_000);
         }
 
+        /**
+         * As the record, with {@code dwellKnown}: a fleet monitor's alarm for a chair standing no
+         * longer than asked while its patient gets on or off is logged as no alarm (tests switch it off).
+         */
+        public Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs, long progressMs) {
+            this(auctionMs, maxAuctions, waitForChairMs, retryMs, pausedMs, progressMs, true);
+        }
+
         /** These settings with another {@code progressMs}. */
         public Settings withProgressMs(long ms) {
-            return new Settings(auctionMs, maxAuctions, waitForChairMs, retryMs, pausedMs, ms);
+            return new Settings(auctionMs, maxAuctions, waitForChairMs, retryMs, pausedMs, ms, dwellKnown);
+        }
+
+        /** For tests: every alarm taken as one, a chair standing as asked for its patient included. */
+        public Settings withoutDwellKnown() {
+            return new Settings(auctionMs, maxAuctions, waitForChairMs, retryMs, pausedMs, progressMs, false);
         }
     }
 
@@ -133,6 +147,10 @@ public class MedicalAgent extends Agent {
 
     /** task -> the last progress report of the chair it was given to. */
     private final Map<String, Progress> progress = new LinkedHashMap<>();
+    /** task -> since when (this agent's clock) its chair has been in the phase it last reported. */
+    private final Map<String, Long> phaseSince = new LinkedHashMap<>();
+    /** task -> how long its patient takes to get on, and to get off (seconds, as asked). */
+    private final Map<String, Double> dwellS = new LinkedHashMap<>();
     /** Tasks whose chair went silent with the patient on board: its result is still awaited, from that chair alone. */
     private final Map<String, Consumer<AclMessage>> awaitedAboard = new LinkedHashMap<>();
     /** task -> who asked for it (an agent's full name): a member cancels only its own. */
@@ -258,6 +276,7 @@ public class MedicalAgent extends Agent {
         open.put(id, f);
         audit.asked(id, askedBy, conversation, currentTimeMillis(), from, to, priority);
         askers.put(id, askedBy);
+        dwellS.put(id, unloadS);
         f.whenComplete((o, e) -> {
             if (o != null) {
                 audit.ended(id, o.done(), o.chair(), o.reason(), currentTimeMillis());
@@ -266,6 +285,8 @@ public class MedicalAgent extends Agent {
             awarded.remove(id);
             running.remove(id);
             progress.remove(id);
+            phaseSince.remove(id);
+            dwellS.remove(id);
             awaitedAboard.remove(id);
             auctionsHeld.remove(id);
             lastFailure.remove(id);
@@ -336,6 +357,7 @@ public class MedicalAgent extends Agent {
             });
         }
         if (before == null || !before.phase().equals(p.phase())) {
+            phaseSince.put(p.task(), currentTimeMillis());
             log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
                     + (p.patientOnBoard() ? " (the patient is on board)" : ""));
         } else if (before.node() != p.node() || !java.util.Objects.equals(before.waits(), p.waits())) {
@@ -370,6 +392,14 @@ public class MedicalAgent extends Agent {
             }
         }
         String chair = st.chair().contains("@") ? st.chair().substring(0, st.chair().indexOf('@')) : st.chair();
+        String dwell = task == null || !settings.dwellKnown() ? null : plannedDwell(task);
+        if (dwell != null) {
+            // Standing as asked while the patient gets on or off is no stall; the monitor raises
+            // its alarm again later (at twice the limit, ...), and one past the plan is heard then.
+            log.accept(getLocalName() + ": " + chair + " (" + task + ") has made no progress for " + st.seconds() + " s: " + dwell
+                    + ", not an alarm");
+            return;
+        }
         alarms.add(new Alarm(currentTimeMillis(), chair, st.seconds(), st.waits(), task, urgent));
         log.accept(getLocalName() + ": " + (urgent ? "URGENT ALARM: " + task + "'s patient is on board " + chair + ", which"
                 : "ALARM: " + chair + (task == null ? "" : " (" + task + ")")) + " has made no progress for " + st.seconds()
@@ -378,6 +408,26 @@ public class MedicalAgent extends Agent {
             audit.logged(getLocalName() + ": " + (urgent ? "urgent " : "") + "alarm for " + chair + ": no progress for " + st.seconds()
                     + " s, waiting for " + st.waits(), currentTimeMillis());
         }
+    }
+
+    /**
+     * If the chair given this task stands where it said, as long as the task asked, while the
+     * patient gets on or off: in words ("the patient gets off at node 12, 130 s of the 400 s
+     * asked"); else null.
+     */
+    private String plannedDwell(String task) {
+        Progress p = progress.get(task);
+        Long since = phaseSince.get(task);
+        Double s = dwellS.get(task);
+        if (p == null || since == null || s == null || !(p.phase().equals("loading") || p.phase().equals("unloading"))) {
+            return null;
+        }
+        long stood = (currentTimeMillis() - since) / 1000;
+        if (stood > s) {
+            return null;
+        }
+        return String.format(Locale.ROOT, "the patient gets %s at node %d, %d s of the %.0f s asked",
+                p.phase().equals("loading") ? "on" : "off", p.node(), stood, s);
     }
 
     /** True if the chair given this task has said it has the patient on board. */

@@ -147,8 +147,12 @@ final class Reservations<T> {
     private final Map<String, Long> heard = new HashMap<>();
     /** chair -> when it last made progress, for every chair with work (not idle): the fleet monitor. */
     private final Map<String, Long> progressAt = new TreeMap<>();
-    /** Chairs the monitor has raised its alarm for, until they make progress again. */
-    private final Set<String> alarmed = new HashSet<>();
+    /**
+     * Chairs the monitor has raised its alarm for, until they make progress again: chair -> how long
+     * without progress its next alarm is due at (the limit, then twice, four times it: the alarm
+     * is raised again as the wait goes on, less often the longer it lasts).
+     */
+    private final Map<String, Long> alarmed = new HashMap<>();
     /** chair -> when it was sent aside (its order shields a cycle it is in for {@link #ASIDE_GRACE_MS}). */
     private final Map<String, Long> asideSince = new HashMap<>();
     /** Chairs whose step aside was called off (not there within the grace), until they make progress: not sent aside again first. */
@@ -176,6 +180,7 @@ final class Reservations<T> {
     private long moves;
     private long deadlocks;
     private long unbroken;
+    private long staleReleases;
 
     /**
      * @param map   the route graph it reserves
@@ -212,7 +217,7 @@ final class Reservations<T> {
             progressAt.put(chair, clock);
         }
         calledOff.remove(chair);
-        if (alarmed.remove(chair)) {
+        if (alarmed.remove(chair) != null) {
             out.add(new Note<>(local(chair) + " makes progress again"));
         }
     }
@@ -296,6 +301,11 @@ final class Reservations<T> {
         return out;
     }
 
+    /** Releases of a node ahead of the chair on its granted route, kept for it ({@link #release}). */
+    public long staleReleases() {
+        return staleReleases;
+    }
+
     /** Routes granted so far. */
     public long grants() {
         return grants;
@@ -377,10 +387,21 @@ final class Reservations<T> {
         return out;
     }
 
-    /** A chair has left a node. */
+    /**
+     * A chair has left a node. A node still ahead of it on its granted route is not given back (it
+     * cannot have left a node it has not reached): such a release is a late answer, sent before the
+     * chair's route was granted (a refused order to make way to a node the chair's own route then
+     * took), and obeying it would clear another chair into the node this one will drive into.
+     */
     public List<Outcome<T>> release(String chair, int node, long nowMs) {
         List<Outcome<T>> out = new ArrayList<>();
         clock = nowMs;
+        if (settings.on(TrafficSettings.Rule.RELEASE_BEHIND) && ahead(chair, node)) {
+            staleReleases++;
+            out.add(new Note<>(local(chair) + " gave back node " + node + ", ahead of it on its route: kept for it"
+                    + " (a late answer; " + staleReleases + " so far)"));
+            return out;
+        }
         if (holds(chair, node)) {
             progressed(chair, out);
         }
@@ -402,7 +423,7 @@ final class Reservations<T> {
         clock = nowMs;
         progressAt.remove(chair);
         calledOff.remove(chair);
-        if (alarmed.remove(chair)) {
+        if (alarmed.remove(chair) != null) {
             out.add(new Note<>(local(chair) + " is idle now"));
         }
         review(nowMs, out);
@@ -864,7 +885,8 @@ final class Reservations<T> {
 
     /**
      * The fleet monitor: every chair with work that has made no progress for the limit raises an
-     * alarm, once until it makes progress again, naming what it waits for.
+     * alarm naming what it waits for, and again at twice the limit, four times, and so on, until it
+     * makes progress (a wait nobody ends is not reported once and then forgotten).
      */
     private void monitor(long now, List<Outcome<T>> out) {
         if (!settings.on(TrafficSettings.Rule.ALARM)) {
@@ -872,9 +894,12 @@ final class Reservations<T> {
         }
         for (Map.Entry<String, Long> e : progressAt.entrySet()) {
             String chair = e.getKey();
-            if (now - e.getValue() >= settings.stallMs() && !idle.contains(chair) && alarmed.add(chair)) {
+            long without = now - e.getValue();
+            long due = alarmed.getOrDefault(chair, settings.stallMs());
+            if (without >= due && !idle.contains(chair)) {
+                alarmed.put(chair, 2 * due);
                 alarms++;
-                out.add(new Stalled<>(chair, e.getValue(), now - e.getValue(), waitDescription(chair)));
+                out.add(new Stalled<>(chair, e.getValue(), without, waitDescription(chair)));
             }
         }
     }
@@ -896,6 +921,10 @@ final class Reservations<T> {
             }
             return "nothing the traffic agent holds back: it may drive to node " + r.path.get(r.upto) + " of " + r.path
                     + " (a door, its sensors, the chair itself)";
+        }
+        if (r != null) {
+            return "nothing the traffic agent holds back: all of its route " + r.path + " is cleared, it stands at "
+                    + standing.getOrDefault(chair, List.of()) + " (its patient, a plan, a door, its sensors, a hold)";
         }
         return "nothing the traffic agent holds back: it stands at " + standing.getOrDefault(chair, List.of())
                 + " with no route asked (a plan, a door, its patient, a hold)";
@@ -1020,6 +1049,24 @@ final class Reservations<T> {
         moves++;
         out.add(new Failed<>(chair, r.ticket, why + ": the route is given back, ask again", null));
         out.add(new Note<>(local(chair) + " gives its route back, keeping " + body + " (" + why + ")"));
+    }
+
+    /** Whether {@code node} is on the chair's granted route past the first node of it the chair still holds (where it is). */
+    private boolean ahead(String chair, int node) {
+        Route<T> r = routes.get(chair);
+        if (r == null || !holds(chair, node)) {
+            return false;
+        }
+        int at = -1;
+        for (int i = 0; i < r.path.size(); i++) {
+            if (at < 0 && holds(chair, r.path.get(i))) {
+                at = i;
+            }
+            if (r.path.get(i) == node) {
+                return at >= 0 && i > at;
+            }
+        }
+        return false;
     }
 
     private int firstHeldBy(List<Integer> path, String chair) {
@@ -1205,7 +1252,10 @@ final class Reservations<T> {
      * {@code forChair}, cannot make way: the free nodes it can reach are all needed, and the others
      * around them are held by idle chairs. The nearest of those (breadth first, the map's edges in
      * order) whose node is not needed and that can make way itself is sent aside; {@code blocker}
-     * takes that node at a later review. False if none can.
+     * takes that node at a later review. With {@link TrafficSettings.Rule#PUSH_CHAIN} the search
+     * goes on past idle chairs that cannot move either (a full depot: a row of parked chairs, the
+     * free node beyond the last): the nearest that can is sent aside, and at each later review the
+     * next one nearer the blocker takes the node freed, until the blocker can. False if none can.
      */
     private boolean push(String blocker, String forChair, List<Outcome<T>> out) {
         List<Long> mine = held.get(blocker);
@@ -1226,10 +1276,13 @@ final class Reservations<T> {
                 String h = otherHolder(blocker, v);
                 if (h == null) {
                     q.add(v);   // free: the blocker can drive through it
-                } else if (!needed.contains(v) && idle.contains(h) && !aside.containsKey(h) && !silent.contains(h)) {
+                } else if (idle.contains(h) && !aside.containsKey(h) && !silent.contains(h)) {
                     String because = "it is idle in the way of " + local(blocker) + ", which is idle in the way of " + local(forChair);
-                    if (makeWay(h, because, false, out) || makeWay(h, because, true, out)) {
+                    if (!needed.contains(v) && (makeWay(h, because, false, out) || makeWay(h, because, true, out))) {
                         return true;
+                    }
+                    if (settings.on(TrafficSettings.Rule.PUSH_CHAIN)) {
+                        q.add(v);   // walled in too: one farther on may move, and this one takes its node later
                     }
                 }
             }

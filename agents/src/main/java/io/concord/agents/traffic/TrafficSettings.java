@@ -41,7 +41,20 @@ public record TrafficSettings(TrafficRules rules, long stallMs, Set<Rule> off) {
          * walled in by other idle chairs, is cleared for by sending aside one of those whose node it
          * can then take (a depot of parked chairs, one of them on the exit).
          */
-        PUSH
+        PUSH,
+        /**
+         * Push goes on past idle chairs that are walled in too, to the nearest that can move (a full
+         * depot: the chair on the exit leaves, and each one nearer the blocker takes the node freed).
+         * Off: only the blocker's own walled-in neighbours are tried.
+         */
+        PUSH_CHAIN,
+        /**
+         * A chair gives back only nodes it has left: a node ahead of it on its granted route that it
+         * gives back (a refusal of an order to make way there, sent before its own route through
+         * that node was granted) stays its. Off: the node is given back, and the next chair in its
+         * queue is cleared into it head-on.
+         */
+        RELEASE_BEHIND
     }
 
     public TrafficSettings {

@@ -3,8 +3,10 @@ package io.concord.agents.control;
 import io.concord.agents.chair.ChairSupervisor;
 import io.concord.agents.chair.ObstacleFilter;
 import io.concord.agents.chair.Pose;
+import io.concord.agents.proto.WheelchairMessage.Granted;
 import io.concord.agents.proto.WheelchairMessage.MakeWay;
 import io.concord.agents.proto.WheelchairMessage.Plan;
+import io.concord.agents.proto.WheelchairMessage.Release;
 import io.concord.core.acl.AID;
 import io.concord.core.acl.AclMessage;
 import io.concord.core.acl.Performative;
@@ -185,5 +187,29 @@ class TaskRunnerTest {
         assertTrue(said.stream().anyMatch(s -> s.equals("cannot make way from node 1 to node 3: the patient gets on here")),
                 String.join("\n", said));
         assertEquals(TaskView.State.LOADING, t.state);
+    }
+
+    /**
+     * An order to make way to a node the chair's own route, granted meanwhile, drives into (the
+     * traffic agent sent it while the chair was idle): refused, and that node is not given back,
+     * for the chair will drive into it (the depot soak's seed 12: given back, it let another chair
+     * in head-on).
+     */
+    @Test
+    void anOrderToMakeWayToANodeOfTheRouteUnderWayIsRefusedWithoutGivingThatNodeBack() {
+        given(3, List.of(1, 3));
+        reading(1);
+        assertInstanceOf(ToPickup.class, runner.phase());
+        AclMessage grant = new AclMessage(Performative.INFORM).setSender(TRAFFIC);
+        grant.setContent(new Granted(List.of(1, 3), 3).encode());
+        port.answers.get(0).complete(grant);
+        reading(1);
+        assertTrue(follower.underWay() && traffic.mayDriveNow(follower.route()), "driving its granted route");
+
+        runner.makeWay(makeWay(1, 3));
+        assertTrue(said.contains("cannot make way from node 1 to node 3: it is under way"), String.join("\n", said));
+        String release = new Release(3).encode();
+        assertFalse(port.sent.stream().anyMatch(m -> release.equals(m.getContent())), "node 3 is not given back");
+        assertInstanceOf(ToPickup.class, runner.phase());
     }
 }

@@ -95,6 +95,36 @@ class TrafficClientTest {
         assertFalse(client.mayDriveNow(route), "the grant is over");
     }
 
+    /**
+     * The traffic agent grants up to node 1 and, in the same instant, clears the way to node 3; the
+     * chair's mailbox hands the clear over before the grant (the depot soak's seed 153: the clear
+     * was dropped as stale, and the chair waited for good at its grant's end, 13 chairs behind it).
+     * Kept, it counts once the grant comes.
+     */
+    @Test
+    void aClearReadBeforeItsGrantCountsWhenTheGrantComes() {
+        List<Integer> route = new ArrayList<>(List.of(1, 2, 3));
+        client.mayDrive(route, List.of(1), false);
+        sent.get(0).setConversationId("c1"); // as the agent's asks name the request's conversation
+        client.aboutGrant(answer(Performative.INFORM, new Clear(3)).setConversationId("c1"));
+        answers.get(0).complete(answer(Performative.INFORM, new Granted(List.of(1, 2, 3), 1)).setConversationId("c1"));
+        assertTrue(client.mayDrive(route, List.of(1), false));
+        assertTrue(client.mayGoOn(route, 2), "cleared to node 3 by the clear read first");
+        assertEquals(-1, client.waitsAt());
+    }
+
+    /** A clear of another conversation read before a grant is not kept for it. */
+    @Test
+    void aClearOfAnotherConversationBeforeTheGrantIsNotKept() {
+        List<Integer> route = new ArrayList<>(List.of(1, 2, 3));
+        client.mayDrive(route, List.of(1), false);
+        sent.get(0).setConversationId("c1");
+        client.aboutGrant(answer(Performative.INFORM, new Clear(3)).setConversationId("c0"));
+        answers.get(0).complete(answer(Performative.INFORM, new Granted(List.of(1, 2, 3), 1)).setConversationId("c1"));
+        assertFalse(client.mayGoOn(route, 2));
+        assertEquals(2, client.waitsAt());
+    }
+
     @Test
     void aStepAsideIsAskedWithPriority() {
         client.mayDrive(List.of(4, 5), List.of(4), true);

@@ -289,7 +289,7 @@ class ReservationsTest {
      * to is 2, on b's way: a cannot make way (the depot's seed 6, where a chair at the depot's exit
      * stood idle in the way for good and its neighbour idle beside it).
      */
-    static final HospitalMap BAY = HospitalMap.parse("""
+    static final String BAY_JSON = """
             {
               "format": "concord-hospital-map/1",
               "name": "bay",
@@ -307,7 +307,8 @@ class ReservationsTest {
                 {"from": 1, "to": 2}, {"from": 2, "to": 3}, {"from": 3, "to": 4}, {"from": 3, "to": 5}, {"from": 5, "to": 6}
               ]
             }
-            """, "test");
+            """;
+    static final HospitalMap BAY = HospitalMap.parse(BAY_JSON, "test");
 
     private static List<Outcome<String>> walledIn(Reservations<String> rules) {
         rules.heard("a", 0);
@@ -331,6 +332,85 @@ class ReservationsTest {
         rules.reserve("a", "ta", List.of(3), List.of(3, 5), true, 30);
         List<Granted> granted = only(rules.release("a", 3, 40), Granted.class);
         assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4), 4)), granted, "b goes once a has left 3");
+    }
+
+    /**
+     * A late release (the depot soak's seed 12): a was ordered aside to node 3 while its own route
+     * through node 3 was on its way to the traffic agent; its refusal of the order, giving node 3
+     * back, comes after that route was granted. d, in the room, is granted its way out behind a.
+     */
+    private static List<Outcome<String>> lateRelease(Reservations<String> rules) {
+        reserve(rules, "a", "ta", List.of(1), List.of(1, 2, 3, 4), 0);
+        List<Outcome<String>> d = reserve(rules, "d", "td", List.of(6), List.of(6, 3, 2, 1), 0);
+        assertEquals(List.of(new Granted<>("d", "td", List.of(6, 3, 2, 1), 6)), only(d, Granted.class), "behind a: d stays in the room");
+        rules.heard("a", 10);
+        return rules.release("a", 3, 10);
+    }
+
+    /** The node stays a's: d is not cleared into it (it would meet a head-on between 2 and 3), until a has left it. */
+    @Test
+    void aNodeGivenBackAheadOfTheChairOnItsRouteStaysItsAndNobodyIsClearedIntoIt() {
+        List<Outcome<String>> out = lateRelease(r);
+        assertEquals(List.of(), only(out, Clear.class), out.toString());
+        assertEquals(List.of("a", "d"), r.holders().get(3), "a first at node 3 still");
+        assertEquals(1, r.staleReleases());
+        // a drives on: it leaves 1, 2 and then 3, and d goes once a is at 4.
+        r.release("a", 1, 20);
+        r.release("a", 2, 30);
+        assertEquals(List.of(new Clear<>("d", "td", 1)), only(r.release("a", 3, 40), Clear.class));
+    }
+
+    /** With the rule off the late release is obeyed: d is cleared into node 3, which a is granted to drive through. */
+    @Test
+    void withoutTheRuleALateReleaseClearsAnotherChairIntoTheNodeHeadOn() {
+        Reservations<String> off = new Reservations<>(MAP, TrafficSettings.standard().without(TrafficSettings.Rule.RELEASE_BEHIND));
+        List<Outcome<String>> out = lateRelease(off);
+        assertTrue(out.stream().anyMatch(o -> o instanceof Clear<String> c && c.chair().equals("d")), out.toString());
+        assertTrue(off.cleared().get("a").contains(3), "a still cleared through 3: " + off.cleared());
+    }
+
+    /**
+     * The bay one node deeper (5, 6, then 7): c idle on 5 is walled in by e idle on 6 (the depot's
+     * seed 49: a full lobby, a chair on the store room's door in the way of the chair sent there).
+     */
+    static final HospitalMap DEEP_BAY = HospitalMap.parse(BAY_JSON.replace(
+            "{\"id\": 6, \"at\": [23, 4]}", "{\"id\": 6, \"at\": [23, 4]}, {\"id\": 7, \"at\": [27, 4]}").replace(
+            "{\"from\": 5, \"to\": 6}", "{\"from\": 5, \"to\": 6}, {\"from\": 6, \"to\": 7}"), "test");
+
+    /** e, the one that can move, goes first; c and then a each take the node freed; b goes. */
+    @Test
+    void aChainOfIdleChairsWalledInIsClearedFromItsFarEnd() {
+        Reservations<String> rules = new Reservations<>(DEEP_BAY, TrafficSettings.standard());
+        rules.heard("e", 0);
+        rules.idle("e", List.of(6), 0);
+        List<Outcome<String>> out = walledIn(rules);
+        assertEquals(List.of(new MakeWay<>("e", 6, 7, List.of(7))), only(out, MakeWay.class), out.toString());
+        rules.reserve("e", "te", List.of(6), List.of(6, 7), true, 10);
+        List<Outcome<String>> next = rules.release("e", 6, 20);
+        assertEquals(List.of(new MakeWay<>("c", 5, 6, List.of(6))), only(next, MakeWay.class), next.toString());
+        rules.reserve("c", "tc", List.of(5), List.of(5, 6), true, 30);
+        next = rules.release("c", 5, 40);
+        assertEquals(List.of(new MakeWay<>("a", 3, 5, List.of(5))), only(next, MakeWay.class), next.toString());
+        rules.reserve("a", "ta", List.of(3), List.of(3, 5), true, 50);
+        List<Granted> granted = only(rules.release("a", 3, 60), Granted.class);
+        assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4), 4)), granted, "b goes once a has left 3");
+    }
+
+    /** The same with the chain off: only a's own neighbour c is tried, it cannot move, and b waits for good. */
+    @Test
+    void withoutTheChainAPushStopsAtTheFirstWalledInChair() {
+        Reservations<String> off = new Reservations<>(DEEP_BAY, TrafficSettings.standard().without(TrafficSettings.Rule.PUSH_CHAIN));
+        off.heard("e", 0);
+        off.idle("e", List.of(6), 0);
+        List<Outcome<String>> out = walledIn(off);
+        for (long t = 1_000; t <= 600_000; t += 1_000) {
+            for (String c : List.of("a", "b", "c", "e")) {
+                off.heard(c, t);
+            }
+            out.addAll(off.review(t));
+        }
+        assertEquals(List.of(), only(out, MakeWay.class), out.toString());
+        assertTrue(off.waits().stream().anyMatch(w -> w.startsWith("b")), off.waits().toString());
     }
 
     /** The same with the rule off: a cannot make way, c is in nobody's way, and b waits for good. */
@@ -475,29 +555,31 @@ class ReservationsTest {
     }
 
     /**
-     * The fleet monitor: a chair with work that makes no progress for the limit is reported once,
-     * naming what it waits for (here its turn behind b, who stands where it must go); it makes
-     * progress (b leaves) and the alarm ends; idle chairs are never reported.
+     * The fleet monitor: a chair with work that makes no progress for the limit is reported, naming
+     * what it waits for (here its turn behind b, who stands where it must go), and reported again at
+     * twice and four times the limit while the wait goes on; idle chairs are never reported.
      */
     @Test
-    void aChairWithWorkAndNoProgressForTheLimitRaisesOneAlarmNamingWhatItWaitsFor() {
+    void aChairWithWorkAndNoProgressForTheLimitRaisesAnAlarmNamingWhatItWaitsForAndRaisesItAgain() {
         Reservations<String> rules = new Reservations<>(MAP, TrafficSettings.standard());
         reserve(rules, "b", "tb", List.of(3), List.of(3), 0); // b stands on 3, with work (loading, say)
         reserve(rules, "a", "ta", List.of(1), List.of(1, 2, 3, 4), 0);
         rules.heard("c", 0);
         rules.idle("c", List.of(5), 0);
         List<Reservations.Stalled<String>> alarms = new java.util.ArrayList<>();
-        for (long t = 1_000; t <= 300_000; t += 1_000) {
+        for (long t = 1_000; t <= 500_000; t += 1_000) {
             for (String c : List.of("a", "b", "c")) {
                 rules.heard(c, t);
             }
             alarms.addAll(only(rules.review(t), Reservations.Stalled.class).stream().map(x -> (Reservations.Stalled<String>) x).toList());
         }
-        assertEquals(List.of("a", "b"), alarms.stream().map(Reservations.Stalled::chair).sorted().toList(), "once each, never the idle c: " + alarms);
+        assertEquals(List.of("a", "a", "a", "b", "b", "b"), alarms.stream().map(Reservations.Stalled::chair).sorted().toList(),
+                "at 120, 240 and 480 s each, never the idle c: " + alarms);
+        List<Long> aFor = alarms.stream().filter(x -> x.chair().equals("a")).map(Reservations.Stalled::forMs).toList();
+        assertEquals(List.of(120_000L, 240_000L, 480_000L), aFor, "raised again, less often the longer the wait");
         Reservations.Stalled<String> a = alarms.stream().filter(x -> x.chair().equals("a")).findFirst().orElseThrow();
-        assertEquals(120_000, a.forMs());
         assertEquals("its route [1, 2, 3, 4] (in the way: [b])", a.waitsFor());
-        assertEquals(2, rules.alarms());
+        assertEquals(6, rules.alarms());
     }
 
     /** With the alarm off, the same wait is never reported. */

@@ -179,4 +179,37 @@ class PatientOnBoardTest {
             return alarms;
         }
     }
+
+    /**
+     * A transport asked with 400 s to get the patient on and off (a newcomer's planned long
+     * loading): the chair stands 400 s at the pick-up with no progress, and the monitor's alarms at
+     * 120 and 240 s are logged by the Medical agent as what was asked, not as alarms; the transport
+     * ends with no alarm kept.
+     */
+    @Test
+    void aChairStandingAsAskedWhileThePatientGetsOnRaisesNoAlarm() {
+        List<MedicalAgent.Alarm> alarms = standingAsAsked(MedicalAgent.Settings.standard());
+        assertEquals(List.of(), alarms, "no alarm for a loading as long as asked");
+    }
+
+    /** The same with the planned dwell not known (the rule off): an urgent alarm while the patient gets on. */
+    @Test
+    void withoutThePlannedDwellTheLongLoadingIsAnUrgentAlarm() {
+        List<MedicalAgent.Alarm> alarms = standingAsAsked(MedicalAgent.Settings.standard().withoutDwellKnown());
+        assertTrue(alarms.stream().anyMatch(a -> "T1".equals(a.task()) && a.urgent()), alarms.toString());
+    }
+
+    private static List<MedicalAgent.Alarm> standingAsAsked(MedicalAgent.Settings settings) {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(ScenarioTest.MAP, 2010, FaultPlan.NONE, 2, TrafficSettings.standard(), settings)) {
+            r.sim.runFor(1_000);
+            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 400);
+            assertTrue(r.sim.runUntil(f::isDone, 3_600_000), "the transport ended; log:\n" + tail(r));
+            assertTrue(f.join().done(), f.join().toString());
+            assertTrue(logged(r, "traffic: ALARM"), "the monitor saw the chair stand; log:\n" + tail(r));
+            if (settings.dwellKnown()) {
+                assertTrue(logged(r, "s of the 400 s asked, not an alarm"), "and the Medical agent said why it is none; log:\n" + tail(r));
+            }
+            return r.medical.alarms();
+        }
+    }
 }
