@@ -162,7 +162,7 @@ public class ControlAgent extends Agent implements ChairListener {
         runner = new TaskRunner(supervisor, map, tasks, follower, doors, traffic, ports);
         MessageTemplate ours = MessageTemplate.matchOntology(Services.ONTOLOGY);
         Inbox.each(this, ours.and(WheelchairMessage.matching(MakeWay.class)), m -> runner.makeWay(m));
-        // Every clear (a stale one too, which it ignores: none stays in the mailbox) and a FAILURE of the granted route.
+        // Every clear (one read before its grant is kept for it, a stale one ignored: none stays in the mailbox) and a FAILURE of the granted route.
         Inbox.each(this, ours.and(WheelchairMessage.matching(Clear.class).or(traffic::isAboutGrant)), traffic::aboutGrant);
         Inbox.each(this, MessageTemplate.matchPerformative(Performative.CANCEL), m -> runner.cancelled(m));
         MessageTemplate resume = WheelchairMessage.matching(ResumeRequest.class);

@@ -151,7 +151,8 @@ final class TrafficClient {
     /**
      * A message in the granted reservation's conversation: {@code clear} lets the chair drive
      * farther; a FAILURE (the chair ahead fell silent, or a deadlock took the grant back) ends the
-     * grant, and the chair plans again.
+     * grant, and the chair plans again. A {@code clear} in the conversation of the route asked,
+     * read before its grant, is kept for that grant.
      */
     void aboutGrant(AclMessage m) {
         if (!isAboutGrant(m)) {
@@ -217,7 +218,7 @@ final class TrafficClient {
         }
     }
 
-    /** Whether the route asked for or granted last takes {@code node} (the chair will drive into it). */
+    /** Whether the route asked for or granted last takes {@code node} (a node the chair drives into, or drove through). */
     boolean onRoute(int node) {
         return (granted != null && granted.contains(node)) || (asked != null && asked.contains(node));
     }

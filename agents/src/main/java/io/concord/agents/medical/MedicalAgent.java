@@ -31,10 +31,12 @@ import io.concord.layers.platform.AgentEntry;
 import io.concord.layers.platform.ServiceDescription;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.CompletableFuture;
 import java.util.function.Consumer;
 
@@ -83,6 +85,8 @@ public class MedicalAgent extends Agent {
      * @param pausedMs       how much longer a chair that paused a task gets, from each notice
      * @param progressMs     how much longer a chair at work on a task gets, from each progress report
      *                       (0: its quote alone sets the deadline)
+     * @param dwellKnown     whether an alarm for a chair in loading or unloading no longer than the
+     *                       task asked is taken as the planned wait it is (false only in tests)
      */
     public record Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs, long progressMs,
                            boolean dwellKnown) {
@@ -95,8 +99,8 @@ public class MedicalAgent extends Agent {
         }
 
         /**
-         * As the record, with {@code dwellKnown}: a fleet monitor's alarm for a chair standing no
-         * longer than asked while its patient gets on or off is logged as no alarm (tests switch it off).
+         * The same with {@code dwellKnown} true: a fleet monitor's alarm for a chair in loading or
+         * unloading no longer than the task asked is logged as no alarm (tests switch it off).
          */
         public Settings(long auctionMs, int maxAuctions, long waitForChairMs, long retryMs, long pausedMs, long progressMs) {
             this(auctionMs, maxAuctions, waitForChairMs, retryMs, pausedMs, progressMs, true);
@@ -149,6 +153,8 @@ public class MedicalAgent extends Agent {
     private final Map<String, Progress> progress = new LinkedHashMap<>();
     /** task -> since when (this agent's clock) its chair has been in the phase it last reported. */
     private final Map<String, Long> phaseSince = new LinkedHashMap<>();
+    /** "task@phase start" of the dwells whose end is watched ({@link #recheckAfterDwell}). */
+    private final Set<String> rechecks = new HashSet<>();
     /** task -> how long its patient takes to get on, and to get off (seconds, as asked). */
     private final Map<String, Double> dwellS = new LinkedHashMap<>();
     /** Tasks whose chair went silent with the patient on board: its result is still awaited, from that chair alone. */
@@ -398,6 +404,7 @@ public class MedicalAgent extends Agent {
             // its alarm again later (at twice the limit, ...), and one past the plan is heard then.
             log.accept(getLocalName() + ": " + chair + " (" + task + ") has made no progress for " + st.seconds() + " s: " + dwell
                     + ", not an alarm");
+            recheckAfterDwell(task, chair, st);
             return;
         }
         alarms.add(new Alarm(currentTimeMillis(), chair, st.seconds(), st.waits(), task, urgent));
@@ -411,8 +418,43 @@ public class MedicalAgent extends Agent {
     }
 
     /**
-     * If the chair given this task stands where it said, as long as the task asked, while the
-     * patient gets on or off: in words ("the patient gets off at node 12, 130 s of the 400 s
+     * After an alarm taken for a planned dwell: once the time asked is over and the monitor's limit
+     * ({@code st}'s seconds) has passed again, a chair that has reported no other node since is
+     * an alarm of this agent's own (the monitor's next one may be long after, its alarms doubling
+     * from the chair's arrival). Once per dwell.
+     */
+    private void recheckAfterDwell(String task, String chair, WheelchairMessage.Stalled st) {
+        Progress at = progress.get(task);
+        Long since = phaseSince.get(task);
+        if (at == null || since == null || !rechecks.add(task + "@" + since)) {
+            return;
+        }
+        long dwellEnd = since + (long) (dwellS.get(task) * 1000);
+        long limitMs = st.seconds() * 1000;
+        addBehaviour(new WakerBehaviour(this, Math.max(0, dwellEnd - currentTimeMillis()) + limitMs) {
+            @Override
+            protected void onWake() {
+                rechecks.remove(task + "@" + since);
+                Progress now = progress.get(task);
+                if (now == null || !open.containsKey(task) || now.node() != at.node() || !now.chair().equals(at.chair())) {
+                    return; // ended, or it drove on
+                }
+                boolean urgent = patientOnBoard(task);
+                long past = (currentTimeMillis() - dwellEnd) / 1000;
+                String waits = "nothing it said: it has stood at node " + at.node() + " " + past + " s past the time asked for its patient";
+                alarms.add(new Alarm(currentTimeMillis(), chair, (currentTimeMillis() - since) / 1000, waits, task, urgent));
+                log.accept(getLocalName() + ": " + (urgent ? "URGENT ALARM: " + task + "'s patient is on board " + chair + ", which"
+                        : "ALARM: " + chair + " (" + task + ")") + " has stood at node " + at.node() + " " + past
+                        + " s past the time asked for its patient");
+                audit.logged(getLocalName() + ": " + (urgent ? "urgent " : "") + "alarm for " + chair + ": " + past
+                        + " s past the time asked at node " + at.node(), currentTimeMillis());
+            }
+        });
+    }
+
+    /**
+     * If the chair given this task has been in loading or unloading no longer than the task's
+     * time for it ({@code unload}): in words ("the patient gets off at node 12, 120 s of the 400 s
      * asked"); else null.
      */
     private String plannedDwell(String task) {

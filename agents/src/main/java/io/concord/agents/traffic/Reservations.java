@@ -94,6 +94,9 @@ final class Reservations<T> {
     /** How long a chair is idle off the parking places before it is sent home (a next task usually comes sooner). */
     public static final long HOME_AFTER_MS = 30_000;
 
+    /** How long a chair waits for idle chairs that none can move before its wait is refused ({@link #walledIn}). */
+    public static final long WALLED_MS = 60_000;
+
     /** How long a chair sent aside shields a cycle it is in before the cycle is broken by the other rules. */
     public static final long ASIDE_GRACE_MS = 30_000;
 
@@ -157,6 +160,8 @@ final class Reservations<T> {
     private final Map<String, Long> asideSince = new HashMap<>();
     /** Chairs whose step aside was called off (not there within the grace), until they make progress: not sent aside again first. */
     private final Set<String> calledOff = new HashSet<>();
+    /** chair -> since when its wait has been walled in ({@link #walledIn}). */
+    private final Map<String, Long> walledSince = new HashMap<>();
     /** Idle chairs already sent home, until they ask for a route again. */
     private final Set<String> sentHome = new HashSet<>();
     /** Idle chairs off the parking places told to have no free place to go to (said once; tried again every review). */
@@ -359,6 +364,7 @@ final class Reservations<T> {
         List<Outcome<T>> out = new ArrayList<>();
         clock = nowMs;
         progressAt.putIfAbsent(chair, nowMs);
+        walledSince.remove(chair);
         sentHome.remove(chair);
         homeless.remove(chair);
         idleSince.remove(chair);
@@ -389,9 +395,10 @@ final class Reservations<T> {
 
     /**
      * A chair has left a node. A node still ahead of it on its granted route is not given back (it
-     * cannot have left a node it has not reached): such a release is a late answer, sent before the
-     * chair's route was granted (a refused order to make way to a node the chair's own route then
-     * took), and obeying it would clear another chair into the node this one will drive into.
+     * cannot have left a node it has not reached): such a release is a late answer to an order to
+     * make way there, sent before this agent had the chair's request for a route through that node
+     * (the chair, granted it meanwhile, refused the order); obeying it would clear another chair
+     * into the node this one will drive into.
      */
     public List<Outcome<T>> release(String chair, int node, long nowMs) {
         List<Outcome<T>> out = new ArrayList<>();
@@ -805,6 +812,10 @@ final class Reservations<T> {
                 }
             }
             if (moved) {
+                walledSince.remove(chair);
+                continue;
+            }
+            if (w != null && walledIn(chair, w, in, now, out)) {
                 continue;
             }
             List<String> cycle = cycle(chair);
@@ -1051,7 +1062,35 @@ final class Reservations<T> {
         out.add(new Note<>(local(chair) + " gives its route back, keeping " + body + " (" + why + ")"));
     }
 
-    /** Whether {@code node} is on the chair's granted route past the first node of it the chair still holds (where it is). */
+    /**
+     * Walled in ({@link TrafficSettings.Rule#WALLED_IN}): a waiting chair whose way only idle
+     * chairs block, none of which can be moved (every node they could go to is on its way, or held;
+     * a full depot whose one way out the waiting chair stands on itself). After {@link #WALLED_MS}
+     * its wait is answered FAILURE, naming the node in the way: the chair plans around it, and a
+     * task it cannot reach so goes back to the Medical agent, which gives it to another chair (one
+     * of those in the way, typically, which stands beside it). True if it was answered.
+     */
+    private boolean walledIn(String chair, Wait<T> w, List<String> in, long now, List<Outcome<T>> out) {
+        if (!settings.on(TrafficSettings.Rule.WALLED_IN) || !in.stream().allMatch(h -> idle.contains(h) && !aside.containsKey(h))) {
+            walledSince.remove(chair);
+            return false;
+        }
+        long since = walledSince.computeIfAbsent(chair, c -> now);
+        if (now - since < WALLED_MS) {
+            return false;
+        }
+        walledSince.remove(chair);
+        waiting.remove(chair);
+        List<String> names = in.stream().map(Reservations::local).toList();
+        int at = firstHeldBy(w.path(), in.get(0));
+        Integer node = at < 0 ? null : at;
+        out.add(new Failed<>(chair, w.ticket(), "walled in: " + names + " stand idle in the way and none can be moved", node));
+        out.add(new Note<>(local(chair) + " is walled in at node " + (node == null ? "?" : node) + " by idle " + names
+                + " that none can move; its route " + w.path() + " is refused, for it to plan around"));
+        return true;
+    }
+
+    /** Whether the chair still holds {@code node} and it is on its granted route past the first node of it the chair holds (where it is). */
     private boolean ahead(String chair, int node) {
         Route<T> r = routes.get(chair);
         if (r == null || !holds(chair, node)) {
@@ -1275,7 +1314,7 @@ final class Reservations<T> {
                 }
                 String h = otherHolder(blocker, v);
                 if (h == null) {
-                    q.add(v);   // free: the blocker can drive through it
+                    q.add(v);   // free: the blocker (or, past a walled-in chair, that chair) can drive through it
                 } else if (idle.contains(h) && !aside.containsKey(h) && !silent.contains(h)) {
                     String because = "it is idle in the way of " + local(blocker) + ", which is idle in the way of " + local(forChair);
                     if (!needed.contains(v) && (makeWay(h, because, false, out) || makeWay(h, because, true, out))) {

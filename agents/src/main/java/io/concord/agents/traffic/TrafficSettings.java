@@ -10,7 +10,7 @@ import java.util.Set;
  *
  * @param rules   how routes are reserved ({@link TrafficRules#IN_ORDER} by default)
  * @param stallMs how long a chair with work may make no progress (leave no node) before the
- *                monitor raises its alarm, in platform milliseconds
+ *                monitor raises its alarm (and again at twice, four times it), in platform milliseconds
  * @param off     the liveness rules switched off (tests only; empty in every production path)
  */
 public record TrafficSettings(TrafficRules rules, long stallMs, Set<Rule> off) {
@@ -34,7 +34,7 @@ public record TrafficSettings(TrafficRules rules, long stallMs, Set<Rule> off) {
         ADMISSION,
         /** An idle chair off the map's parking places is sent to the nearest free one (hops, then the map's order). */
         HOME,
-        /** The fleet monitor's alarm: a chair with work and no progress for {@link #stallMs()} is reported. */
+        /** The fleet monitor's alarm: a chair with work and no progress for {@link #stallMs()} is reported, and again at twice, four times it. */
         ALARM,
         /**
          * Push: an idle chair in the way that cannot make way, every free node around it needed or
@@ -45,16 +45,24 @@ public record TrafficSettings(TrafficRules rules, long stallMs, Set<Rule> off) {
         /**
          * Push goes on past idle chairs that are walled in too, to the nearest that can move (a full
          * depot: the chair on the exit leaves, and each one nearer the blocker takes the node freed).
-         * Off: only the blocker's own walled-in neighbours are tried.
+         * Off: the search stops at the first idle chair on each way from the blocker.
          */
         PUSH_CHAIN,
         /**
          * A chair gives back only nodes it has left: a node ahead of it on its granted route that it
-         * gives back (a refusal of an order to make way there, sent before its own route through
-         * that node was granted) stays its. Off: the node is given back, and the next chair in its
-         * queue is cleared into it head-on.
+         * gives back stays its (a late answer to an order to make way there, which the traffic agent
+         * sent before it had the chair's request for a route through that node; the chair, granted
+         * that route meanwhile, refused the order). Off: the node is given back, and the next chair
+         * in its queue may be cleared into it (head-on, if it comes the other way).
          */
-        RELEASE_BEHIND
+        RELEASE_BEHIND,
+        /**
+         * A chair waiting for idle chairs that none can move (a full depot whose one way out it
+         * stands on itself) has its wait refused after {@link Reservations#WALLED_MS}, naming the
+         * node in the way: it plans around it, and a task it cannot reach goes to another chair.
+         * Off: it waits for good.
+         */
+        WALLED_IN
     }
 
     public TrafficSettings {

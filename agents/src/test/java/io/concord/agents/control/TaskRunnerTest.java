@@ -3,6 +3,7 @@ package io.concord.agents.control;
 import io.concord.agents.chair.ChairSupervisor;
 import io.concord.agents.chair.ObstacleFilter;
 import io.concord.agents.chair.Pose;
+import io.concord.agents.proto.WheelchairMessage.Failure;
 import io.concord.agents.proto.WheelchairMessage.Granted;
 import io.concord.agents.proto.WheelchairMessage.MakeWay;
 import io.concord.agents.proto.WheelchairMessage.Plan;
@@ -211,5 +212,23 @@ class TaskRunnerTest {
         String release = new Release(3).encode();
         assertFalse(port.sent.stream().anyMatch(m -> release.equals(m.getContent())), "node 3 is not given back");
         assertInstanceOf(ToPickup.class, runner.phase());
+    }
+
+    /**
+     * On its way to the patient, the chair's route is refused as walled in (idle chairs nobody can
+     * move stand between it and the patient): the task is given back, failed with that reason, for
+     * the Medical agent to give to another chair, not planned round for ever (the depot soak's seed
+     * 59: two ways round the lobby, each refused in turn, for two hours).
+     */
+    @Test
+    void aWayToThePatientWalledInGivesTheTaskBack() {
+        Task t = given(3, List.of(1, 3));
+        reading(1);
+        AclMessage no = new AclMessage(Performative.FAILURE).setSender(TRAFFIC);
+        no.setContent(new Failure(null, 3, "walled in: [control-chair5] stand idle in the way and none can be moved").encode());
+        port.answers.get(0).complete(no);
+        assertEquals(TaskView.State.FAILED, t.state, String.join("\n", said));
+        assertTrue(t.reason.startsWith("cannot reach the patient at node 3: FAILURE: walled in: [control-chair5]"), t.reason);
+        assertTrue(asked.isEmpty(), "no plan round it: " + asked);
     }
 }

@@ -249,12 +249,14 @@ class DepotTest {
      * a node no waiting route needs): the fleet freezes for good, two chairs standing each in the
      * room the other must go to, others behind them, and the legs are never done; only the
      * monitor's alarms say so. Push is off too: it frees the same depot another way (an idle chair
-     * beside the one in the way goes first), so the cycle rule's own effect shows only without it.
+     * beside the one in the way goes first), and so is the walled-in refusal (it gives the waiting
+     * chair's leg up, and the depot drains that way too): the cycle rule's own effect shows only
+     * without them.
      */
     @Test
     void withoutTheCycleRuleTheDepotFreezesForGood() {
         for (boolean back : new boolean[] {false, true}) {
-            Run r = run(TrafficSettings.standard().without(TrafficSettings.Rule.ANY_CYCLE, TrafficSettings.Rule.PUSH), 20_000, back);
+            Run r = run(TrafficSettings.standard().without(TrafficSettings.Rule.ANY_CYCLE, TrafficSettings.Rule.PUSH, TrafficSettings.Rule.WALLED_IN), 20_000, back);
             assertTrue(r.done() < r.asked(), r.toString());
             assertTrue(!r.left().isEmpty() && r.alarms() > 0, r.toString());
         }

@@ -396,10 +396,13 @@ class ReservationsTest {
         assertEquals(List.of(new Granted<>("b", "tb", List.of(1, 2, 3, 4), 4)), granted, "b goes once a has left 3");
     }
 
-    /** The same with the chain off: only a's own neighbour c is tried, it cannot move, and b waits for good. */
+    /**
+     * The same with the chain off (and the walled-in refusal, which would answer b's wait instead):
+     * only a's own neighbour c is tried, it cannot move, and b waits for good.
+     */
     @Test
     void withoutTheChainAPushStopsAtTheFirstWalledInChair() {
-        Reservations<String> off = new Reservations<>(DEEP_BAY, TrafficSettings.standard().without(TrafficSettings.Rule.PUSH_CHAIN));
+        Reservations<String> off = new Reservations<>(DEEP_BAY, TrafficSettings.standard().without(TrafficSettings.Rule.PUSH_CHAIN, TrafficSettings.Rule.WALLED_IN));
         off.heard("e", 0);
         off.idle("e", List.of(6), 0);
         List<Outcome<String>> out = walledIn(off);
@@ -413,10 +416,53 @@ class ReservationsTest {
         assertTrue(off.waits().stream().anyMatch(w -> w.startsWith("b")), off.waits().toString());
     }
 
-    /** The same with the rule off: a cannot make way, c is in nobody's way, and b waits for good. */
+    /**
+     * Walled in: b at 2 must reach the room (6, off 3); a idle on 3, c on 4 and d on 5 (a dead
+     * end) fill the rest, so no idle chair can go anywhere but b's way (the depot soak's seed 59: a
+     * full lobby whose one way out the waiting chair stood on).
+     */
+    private static List<Outcome<String>> walledInFull(Reservations<String> rules) {
+        for (String[] c : new String[][] {{"a", "3"}, {"c", "4"}, {"d", "5"}}) {
+            rules.heard(c[0], 0);
+            rules.idle(c[0], List.of(Integer.parseInt(c[1])), 0);
+        }
+        List<Outcome<String>> out = new java.util.ArrayList<>(reserve(rules, "b", "tb", List.of(2), List.of(2, 3, 6), 0));
+        for (long t = 1_000; t <= 300_000; t += 1_000) {
+            for (String c : List.of("a", "b", "c", "d")) {
+                rules.heard(c, t);
+            }
+            out.addAll(rules.review(t));
+        }
+        return out;
+    }
+
+    /** After a minute b's wait is refused, naming node 3, where a stands: b plans around it (its task goes to another chair). */
+    @Test
+    void aChairWalledInByIdleChairsNoneCanMoveIsRefusedNamingTheNodeInTheWay() {
+        Reservations<String> rules = new Reservations<>(MAP, TrafficSettings.standard());
+        List<Outcome<String>> out = walledInFull(rules);
+        assertEquals(List.of(), only(out, MakeWay.class), "nobody can move: " + out);
+        List<Failed> failed = only(out, Failed.class);
+        assertEquals(1, failed.size(), out.toString());
+        assertEquals("b", failed.get(0).chair());
+        assertEquals(3, failed.get(0).node());
+        assertTrue(failed.get(0).reason().startsWith("walled in: [a]"), failed.get(0).reason());
+        assertTrue(rules.waits().stream().noneMatch(w -> w.startsWith("b")), rules.waits().toString());
+    }
+
+    /** With the rule off b waits for good. */
+    @Test
+    void withoutTheRuleAChairWalledInWaitsForGood() {
+        Reservations<String> off = new Reservations<>(MAP, TrafficSettings.standard().without(TrafficSettings.Rule.WALLED_IN));
+        List<Outcome<String>> out = walledInFull(off);
+        assertEquals(List.of(), only(out, Failed.class), out.toString());
+        assertTrue(off.waits().stream().anyMatch(w -> w.startsWith("b")), off.waits().toString());
+    }
+
+    /** The same with the rule off (and the walled-in refusal): a cannot make way, c is in nobody's way, and b waits for good. */
     @Test
     void withoutPushAnIdleChairWalledInStaysInTheWayForGood() {
-        Reservations<String> off = new Reservations<>(BAY, TrafficSettings.standard().without(TrafficSettings.Rule.PUSH));
+        Reservations<String> off = new Reservations<>(BAY, TrafficSettings.standard().without(TrafficSettings.Rule.PUSH, TrafficSettings.Rule.WALLED_IN));
         List<Outcome<String>> out = walledIn(off);
         assertEquals(List.of(), only(out, MakeWay.class), out.toString());
         for (long t = 1_000; t <= 600_000; t += 1_000) {

@@ -212,4 +212,28 @@ class PatientOnBoardTest {
             return r.medical.alarms();
         }
     }
+
+    /**
+     * The same long loading, and then the way on held (node 4, the first of its way to the
+     * drop-off, taken once the patient is on board): the chair never leaves the pick-up. The
+     * alarms taken for the loading are not the last word: once the time asked is over and the
+     * limit has passed again, the Medical agent raises an urgent alarm of its own.
+     */
+    @Test
+    void aChairThatStaysPastItsLongLoadingRaisesAnUrgentAlarmSoonAfter() {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(ScenarioTest.MAP, 2010, FaultPlan.NONE, 2, TrafficSettings.standard(),
+                MedicalAgent.Settings.standard())) {
+            r.sim.runFor(1_000);
+            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 400);
+            assertTrue(r.sim.runUntil(() -> logged(r, "(the patient is on board)"), 600_000), "the patient got on; log:\n" + tail(r));
+            Blocker blocker = new Blocker(4);
+            r.platform.startAgent("blocker", blocker);
+            r.sim.runFor(400_000 + 150_000);
+            List<MedicalAgent.Alarm> alarms = r.medical.alarms();
+            assertTrue(alarms.stream().anyMatch(a -> "T1".equals(a.task()) && a.urgent() && a.waits().contains("past the time asked")),
+                    alarms + "\n" + tail(r));
+            blocker.leave();
+            assertTrue(r.sim.runUntil(f::isDone, 900_000), "the transport ended; log:\n" + tail(r));
+        }
+    }
 }
