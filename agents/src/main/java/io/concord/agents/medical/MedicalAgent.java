@@ -153,7 +153,9 @@ public class MedicalAgent extends Agent {
     private final Map<String, Progress> progress = new LinkedHashMap<>();
     /** task -> since when (this agent's clock) its chair has been in the phase it last reported. */
     private final Map<String, Long> phaseSince = new LinkedHashMap<>();
-    /** "task@phase start" of the dwells whose end is watched ({@link #recheckAfterDwell}). */
+    /** task -> when its chair last left loading or unloading (its patient on, or off). */
+    private final Map<String, Long> dwellEnded = new LinkedHashMap<>();
+    /** "task@time" of the dwells whose end is watched ({@link #recheckAfterDwell}). */
     private final Set<String> rechecks = new HashSet<>();
     /** task -> how long its patient takes to get on, and to get off (seconds, as asked). */
     private final Map<String, Double> dwellS = new LinkedHashMap<>();
@@ -292,6 +294,7 @@ public class MedicalAgent extends Agent {
             running.remove(id);
             progress.remove(id);
             phaseSince.remove(id);
+            dwellEnded.remove(id);
             dwellS.remove(id);
             awaitedAboard.remove(id);
             auctionsHeld.remove(id);
@@ -364,6 +367,9 @@ public class MedicalAgent extends Agent {
         }
         if (before == null || !before.phase().equals(p.phase())) {
             phaseSince.put(p.task(), currentTimeMillis());
+            if (before != null && (before.phase().equals("loading") || before.phase().equals("unloading"))) {
+                dwellEnded.put(p.task(), currentTimeMillis());
+            }
             log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
                     + (p.patientOnBoard() ? " (the patient is on board)" : ""));
         } else if (before.node() != p.node() || !java.util.Objects.equals(before.waits(), p.waits())) {
@@ -404,7 +410,19 @@ public class MedicalAgent extends Agent {
             // its alarm again later (at twice the limit, ...), and one past the plan is heard then.
             log.accept(getLocalName() + ": " + chair + " (" + task + ") has made no progress for " + st.seconds() + " s: " + dwell
                     + ", not an alarm");
-            recheckAfterDwell(task, chair, st);
+            Long since = phaseSince.get(task);
+            recheckAfterDwell(task, chair, st.seconds() * 1000, since + (long) (dwellS.get(task) * 1000), since, st.waits());
+            return;
+        }
+        Long ended = task == null || !settings.dwellKnown() ? null : dwellEnded.get(task);
+        long quietSince = currentTimeMillis() - st.seconds() * 1000;
+        if (ended != null && quietSince < ended && currentTimeMillis() - ended < st.seconds() * 1000 && progress.get(task) != null) {
+            // The monitor counts from the chair's arrival (it has not driven on since): most of this
+            // wait was the patient getting on or off.
+            log.accept(getLocalName() + ": " + chair + " (" + task + ") has made no progress for " + st.seconds() + " s: its patient"
+                    + " was " + (patientOnBoard(task) ? "on board" : "off") + " " + (currentTimeMillis() - ended) / 1000
+                    + " s ago, as asked; not an alarm yet");
+            recheckAfterDwell(task, chair, st.seconds() * 1000, ended, ended, st.waits());
             return;
         }
         alarms.add(new Alarm(currentTimeMillis(), chair, st.seconds(), st.waits(), task, urgent));
@@ -418,31 +436,30 @@ public class MedicalAgent extends Agent {
     }
 
     /**
-     * After an alarm taken for a planned dwell: once the time asked is over and the monitor's limit
-     * ({@code st}'s seconds) has passed again, a chair that has reported no other node since is
-     * an alarm of this agent's own (the monitor's next one may be long after, its alarms doubling
-     * from the chair's arrival). Once per dwell.
+     * After an alarm taken for a planned dwell (or one that came just after it, counted from the
+     * chair's arrival): once the dwell is over ({@code dwellEnd}) and the monitor's limit has passed
+     * again, a chair that has reported no other node since is an alarm of this agent's own (the
+     * monitor's next one may be long after, its alarms doubling from the chair's arrival). Once per
+     * dwell ({@code key}); the alarm says what the monitor said the chair waited for ({@code lastWaits}).
      */
-    private void recheckAfterDwell(String task, String chair, WheelchairMessage.Stalled st) {
+    private void recheckAfterDwell(String task, String chair, long limitMs, long dwellEnd, long key, String lastWaits) {
         Progress at = progress.get(task);
-        Long since = phaseSince.get(task);
-        if (at == null || since == null || !rechecks.add(task + "@" + since)) {
+        String since = task + "@" + key;
+        if (at == null || !rechecks.add(since)) {
             return;
         }
-        long dwellEnd = since + (long) (dwellS.get(task) * 1000);
-        long limitMs = st.seconds() * 1000;
-        addBehaviour(new WakerBehaviour(this, Math.max(0, dwellEnd - currentTimeMillis()) + limitMs) {
+        addBehaviour(new WakerBehaviour(this, Math.max(0, dwellEnd + limitMs - currentTimeMillis())) {
             @Override
             protected void onWake() {
-                rechecks.remove(task + "@" + since);
+                rechecks.remove(since);
                 Progress now = progress.get(task);
                 if (now == null || !open.containsKey(task) || now.node() != at.node() || !now.chair().equals(at.chair())) {
                     return; // ended, or it drove on
                 }
                 boolean urgent = patientOnBoard(task);
                 long past = (currentTimeMillis() - dwellEnd) / 1000;
-                String waits = "nothing it said: it has stood at node " + at.node() + " " + past + " s past the time asked for its patient";
-                alarms.add(new Alarm(currentTimeMillis(), chair, (currentTimeMillis() - since) / 1000, waits, task, urgent));
+                String waits = lastWaits + "; it has stood at node " + at.node() + " " + past + " s past the time asked for its patient";
+                alarms.add(new Alarm(currentTimeMillis(), chair, (currentTimeMillis() - dwellEnd) / 1000, waits, task, urgent));
                 log.accept(getLocalName() + ": " + (urgent ? "URGENT ALARM: " + task + "'s patient is on board " + chair + ", which"
                         : "ALARM: " + chair + " (" + task + ")") + " has stood at node " + at.node() + " " + past
                         + " s past the time asked for its patient");

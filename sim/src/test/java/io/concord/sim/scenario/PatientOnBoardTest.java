@@ -221,19 +221,43 @@ class PatientOnBoardTest {
      */
     @Test
     void aChairThatStaysPastItsLongLoadingRaisesAnUrgentAlarmSoonAfter() {
-        try (ScenarioTest.Run r = new ScenarioTest.Run(ScenarioTest.MAP, 2010, FaultPlan.NONE, 2, TrafficSettings.standard(),
-                MedicalAgent.Settings.standard())) {
+        List<MedicalAgent.Alarm> alarms = heldAfterLoading(400, MedicalAgent.Settings.standard());
+        assertTrue(alarms.stream().anyMatch(a -> "T1".equals(a.task()) && a.urgent() && a.waits().contains("past the time asked")),
+                alarms.toString());
+    }
+
+    /**
+     * A 100 s loading, then the way on held: the monitor's first alarm, 120 s from the chair's
+     * arrival, comes 20 s after the patient got on, and is not taken as one; the first alarm kept is
+     * the Medical agent's own, the limit after the loading ended.
+     */
+    @Test
+    void anAlarmJustAfterALoadingWaitsForTheLimitFromItsEnd() {
+        List<MedicalAgent.Alarm> t1 = heldAfterLoading(100, MedicalAgent.Settings.standard()).stream()
+                .filter(a -> "T1".equals(a.task())).toList();
+        assertTrue(!t1.isEmpty() && t1.get(0).waits().contains("past the time asked") && t1.get(0).seconds() >= 120, t1.toString());
+    }
+
+    /** The same with the planned dwell not known: the first alarm kept is the monitor's, 20 s after the patient got on. */
+    @Test
+    void withoutThePlannedDwellTheAlarmJustAfterALoadingIsKept() {
+        List<MedicalAgent.Alarm> t1 = heldAfterLoading(100, MedicalAgent.Settings.standard().withoutDwellKnown()).stream()
+                .filter(a -> "T1".equals(a.task())).toList();
+        assertTrue(!t1.isEmpty() && !t1.get(0).waits().contains("past the time asked"), t1.toString());
+    }
+
+    private static List<MedicalAgent.Alarm> heldAfterLoading(int loadingS, MedicalAgent.Settings settings) {
+        try (ScenarioTest.Run r = new ScenarioTest.Run(ScenarioTest.MAP, 2010, FaultPlan.NONE, 2, TrafficSettings.standard(), settings)) {
             r.sim.runFor(1_000);
-            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, 400);
+            CompletableFuture<MedicalAgent.Outcome> f = r.medical.transport(3, 9, 3, loadingS);
             assertTrue(r.sim.runUntil(() -> logged(r, "(the patient is on board)"), 600_000), "the patient got on; log:\n" + tail(r));
             Blocker blocker = new Blocker(4);
             r.platform.startAgent("blocker", blocker);
-            r.sim.runFor(400_000 + 150_000);
+            r.sim.runFor(loadingS * 1000L + 150_000);
             List<MedicalAgent.Alarm> alarms = r.medical.alarms();
-            assertTrue(alarms.stream().anyMatch(a -> "T1".equals(a.task()) && a.urgent() && a.waits().contains("past the time asked")),
-                    alarms + "\n" + tail(r));
             blocker.leave();
             assertTrue(r.sim.runUntil(f::isDone, 900_000), "the transport ended; log:\n" + tail(r));
+            return alarms;
         }
     }
 }
