@@ -412,10 +412,14 @@ final class TaskRunner {
         if (active() == null || phase instanceof Standing) {
             return; // idle, or the leg is driven and the patient gets on or off: nothing to plan
         }
-        if (why.contains(WALLED_IN) && phase instanceof ToPickup) {
-            // Idle chairs nobody can move stand between it and the patient (one of them, beside the
-            // patient, can do the task): given back for another chair, not planned round for ever.
-            finish(active(), "cannot reach the patient at node " + active().from + ": " + why);
+        if (why.contains(WALLED_IN)) {
+            if (phase instanceof ToPickup) {
+                // Idle chairs nobody can move stand between it and the patient (one of them, beside the
+                // patient, can do the task): given back for another chair, not planned round for ever.
+                finish(active(), "cannot reach the patient at node " + active().from + ": " + why);
+            }
+            // With the patient on board (or making way) it keeps its way and asks for it again on the
+            // next reading: planned round, it could fail the patient; the monitor's alarms go on.
             return;
         }
         int at = route.indexOf(node);

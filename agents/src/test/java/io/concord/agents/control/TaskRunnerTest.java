@@ -231,4 +231,30 @@ class TaskRunnerTest {
         assertTrue(t.reason.startsWith("cannot reach the patient at node 3: FAILURE: walled in: [control-chair5]"), t.reason);
         assertTrue(asked.isEmpty(), "no plan round it: " + asked);
     }
+
+    /**
+     * With the patient on board a walled-in refusal is not planned round (that could fail the
+     * patient: the 20-chair soak's T17 failed so, "no route ... blocked edges"): the chair keeps its
+     * way to the drop-off and asks for it again.
+     */
+    @Test
+    void aWayToTheDropOffWalledInIsAskedAgainNotPlannedRound() {
+        Task t = given(1, List.of(1));
+        reading(1);
+        reading(1);
+        assertInstanceOf(Loading.class, runner.phase());
+        ms += 31_000;
+        reading(1);
+        assertInstanceOf(ToDropoff.class, runner.phase(), String.join("\n", said));
+        int asks = port.answers.size();
+        assertTrue(asks >= 1, "the way to the drop-off asked for");
+        AclMessage no = new AclMessage(Performative.FAILURE).setSender(TRAFFIC);
+        no.setContent(new Failure(null, 2, "walled in: [control-chair5] stand idle in the way and none can be moved").encode());
+        port.answers.get(asks - 1).complete(no);
+        assertInstanceOf(ToDropoff.class, runner.phase(), String.join("\n", said));
+        assertTrue(asked.isEmpty(), "no plan round it: " + asked);
+        reading(1);
+        assertEquals(asks + 1, port.answers.size(), "asked again");
+        assertEquals(TaskView.State.TO_DROPOFF, t.state);
+    }
 }

@@ -105,7 +105,11 @@ class ChairSafetyTest {
         /** A transport from the lobby (node 19, where the chair waits) to node 3, once the chair has set off. */
         CompletableFuture<MedicalAgent.Outcome> transportUnderWay() throws Exception {
             CompletableFuture<MedicalAgent.Outcome> f = medical.transport(19, 3, 0, 1);
-            board.awaitStatus(st -> moved(st) > 0.3, 60_000, "the chair to set off: " + tail());
+            try {
+                board.awaitStatus(st -> moved(st) > 0.3, 60_000, "the chair to set off");
+            } catch (AssertionError e) {
+                throw new AssertionError(e.getMessage() + "; the log's tail then:\n" + tail(), e); // the tail at the end, not the start
+            }
             return f;
         }
 

@@ -98,7 +98,11 @@ class GeneratedMapSoakTest {
             for (var f : fs) {
                 MedicalAgent.Outcome o = f.join();
                 assertTrue(o.done(), o.toString());
-                assertEquals(1, o.auctions(), "awarded at its first auction: " + o);
+                // Awarded at its first auction, unless its chair found the way to the patient walled
+                // in by idle chairs and gave it back: then once more (the idle chair beside the patient takes it).
+                boolean walled = r.log.stream().anyMatch(l -> l.startsWith("medical: ") && l.contains(" failed " + o.task() + ": cannot reach the patient")
+                        && l.contains("walled in"));
+                assertEquals(walled ? 2 : 1, o.auctions(), "awarded at its first auction (or its second, walled in): " + o);
                 perChair.merge(o.chair(), 1, Integer::sum);
             }
             assertEquals(20, perChair.size(), "no chair left idle while transports wait: " + perChair);
