@@ -386,9 +386,6 @@ final class TaskRunner {
 
     // ---- traffic --------------------------------------------------------------------------------
 
-    /** The traffic agent's reason for a way that idle chairs block and none can be moved (Reservations' walled-in rule). */
-    static final String WALLED_IN = "walled in:";
-
     /** The traffic agent cannot grant the route (a silent chair stands on it): plan around that node. */
     void refusedByTraffic(int node, String why) {
         List<Integer> route = follower.route();
@@ -412,7 +409,7 @@ final class TaskRunner {
         if (active() == null || phase instanceof Standing) {
             return; // idle, or the leg is driven and the patient gets on or off: nothing to plan
         }
-        if (why.contains(WALLED_IN)) {
+        if (WheelchairMessage.Failure.isWalledIn(why)) {
             if (phase instanceof ToPickup) {
                 // Idle chairs nobody can move stand between it and the patient (one of them, beside the
                 // patient, can do the task): given back for another chair, not planned round for ever.

@@ -151,14 +151,24 @@ public class MedicalAgent extends Agent {
 
     /** task -> the last progress report of the chair it was given to. */
     private final Map<String, Progress> progress = new LinkedHashMap<>();
-    /** task -> since when (this agent's clock) its chair has been in the phase it last reported. */
-    private final Map<String, Long> phaseSince = new LinkedHashMap<>();
-    /** task -> when its chair last left loading or unloading (its patient on, or off). */
-    private final Map<String, Long> dwellEnded = new LinkedHashMap<>();
-    /** "task@time" of the dwells whose end is watched ({@link #recheckAfterDwell}). */
-    private final Set<String> rechecks = new HashSet<>();
-    /** task -> how long its patient takes to get on, and to get off (seconds, as asked). */
-    private final Map<String, Double> dwellS = new LinkedHashMap<>();
+    /** What this agent keeps of an open task's phases, to tell a planned dwell from a stall. */
+    private static final class Phases {
+        /** How long its patient takes to get on, and to get off (seconds, as asked). */
+        final double dwellS;
+        /** Since when (this agent's clock) its chair has been in the phase it last reported; null before the first. */
+        Long since;
+        /** When its chair last left loading or unloading (its patient on, or off); null before. */
+        Long dwellEnded;
+        /** The dwells (by the time they are counted from) whose end is watched ({@link #recheckAfterDwell}). */
+        final Set<Long> rechecks = new HashSet<>();
+
+        Phases(double dwellS) {
+            this.dwellS = dwellS;
+        }
+    }
+
+    /** task -> its phases, while it is open. */
+    private final Map<String, Phases> phases = new LinkedHashMap<>();
     /** Tasks whose chair went silent with the patient on board: its result is still awaited, from that chair alone. */
     private final Map<String, Consumer<AclMessage>> awaitedAboard = new LinkedHashMap<>();
     /** task -> who asked for it (an agent's full name): a member cancels only its own. */
@@ -284,7 +294,7 @@ public class MedicalAgent extends Agent {
         open.put(id, f);
         audit.asked(id, askedBy, conversation, currentTimeMillis(), from, to, priority);
         askers.put(id, askedBy);
-        dwellS.put(id, unloadS);
+        phases.put(id, new Phases(unloadS));
         f.whenComplete((o, e) -> {
             if (o != null) {
                 audit.ended(id, o.done(), o.chair(), o.reason(), currentTimeMillis());
@@ -293,9 +303,7 @@ public class MedicalAgent extends Agent {
             awarded.remove(id);
             running.remove(id);
             progress.remove(id);
-            phaseSince.remove(id);
-            dwellEnded.remove(id);
-            dwellS.remove(id);
+            phases.remove(id);
             awaitedAboard.remove(id);
             auctionsHeld.remove(id);
             lastFailure.remove(id);
@@ -366,9 +374,12 @@ public class MedicalAgent extends Agent {
             });
         }
         if (before == null || !before.phase().equals(p.phase())) {
-            phaseSince.put(p.task(), currentTimeMillis());
-            if (before != null && (before.phase().equals("loading") || before.phase().equals("unloading"))) {
-                dwellEnded.put(p.task(), currentTimeMillis());
+            Phases ph = phases.get(p.task());
+            if (ph != null) {
+                ph.since = currentTimeMillis();
+                if (before != null && Progress.DWELLS.contains(before.phase())) {
+                    ph.dwellEnded = currentTimeMillis();
+                }
             }
             log.accept(getLocalName() + ": " + p.task() + " on " + m.getSender().localName() + ": " + p.phase() + " at node " + p.node()
                     + (p.patientOnBoard() ? " (the patient is on board)" : ""));
@@ -410,11 +421,11 @@ public class MedicalAgent extends Agent {
             // its alarm again later (at twice the limit, ...), and one past the plan is heard then.
             log.accept(getLocalName() + ": " + chair + " (" + task + ") has made no progress for " + st.seconds() + " s: " + dwell
                     + ", not an alarm");
-            Long since = phaseSince.get(task);
-            recheckAfterDwell(task, chair, st.seconds() * 1000, since + (long) (dwellS.get(task) * 1000), since, st.waits());
+            Phases ph = phases.get(task);
+            recheckAfterDwell(task, chair, st.seconds() * 1000, ph.since + (long) (ph.dwellS * 1000), ph.since, st.waits());
             return;
         }
-        Long ended = task == null || !settings.dwellKnown() ? null : dwellEnded.get(task);
+        Long ended = task == null || !settings.dwellKnown() || !phases.containsKey(task) ? null : phases.get(task).dwellEnded;
         long quietSince = currentTimeMillis() - st.seconds() * 1000;
         if (ended != null && quietSince < ended && currentTimeMillis() - ended < st.seconds() * 1000 && progress.get(task) != null) {
             // The monitor counts from the chair's arrival (it has not driven on since): most of this
@@ -425,13 +436,20 @@ public class MedicalAgent extends Agent {
             recheckAfterDwell(task, chair, st.seconds() * 1000, ended, ended, st.waits());
             return;
         }
-        alarms.add(new Alarm(currentTimeMillis(), chair, st.seconds(), st.waits(), task, urgent));
+        raise(task, chair, st.seconds(), st.waits(), urgent, "has made no progress for " + st.seconds() + " s; it waits for " + st.waits(),
+                "no progress for " + st.seconds() + " s, waiting for " + st.waits());
+    }
+
+    /**
+     * An alarm: kept ({@link #alarms()}), in the log ({@code what} the chair has done, urgent if its
+     * patient is on board), and in the task's audit trail ({@code audited}) if it is one of this agent's.
+     */
+    private void raise(String task, String chair, long seconds, String waits, boolean urgent, String what, String audited) {
+        alarms.add(new Alarm(currentTimeMillis(), chair, seconds, waits, task, urgent));
         log.accept(getLocalName() + ": " + (urgent ? "URGENT ALARM: " + task + "'s patient is on board " + chair + ", which"
-                : "ALARM: " + chair + (task == null ? "" : " (" + task + ")")) + " has made no progress for " + st.seconds()
-                + " s; it waits for " + st.waits());
+                : "ALARM: " + chair + (task == null ? "" : " (" + task + ")")) + " " + what);
         if (task != null) {
-            audit.logged(getLocalName() + ": " + (urgent ? "urgent " : "") + "alarm for " + chair + ": no progress for " + st.seconds()
-                    + " s, waiting for " + st.waits(), currentTimeMillis());
+            audit.logged(getLocalName() + ": " + (urgent ? "urgent " : "") + "alarm for " + chair + ": " + audited, currentTimeMillis());
         }
     }
 
@@ -444,14 +462,14 @@ public class MedicalAgent extends Agent {
      */
     private void recheckAfterDwell(String task, String chair, long limitMs, long dwellEnd, long key, String lastWaits) {
         Progress at = progress.get(task);
-        String since = task + "@" + key;
-        if (at == null || !rechecks.add(since)) {
+        Phases ph = phases.get(task);
+        if (at == null || ph == null || !ph.rechecks.add(key)) {
             return;
         }
         addBehaviour(new WakerBehaviour(this, Math.max(0, dwellEnd + limitMs - currentTimeMillis())) {
             @Override
             protected void onWake() {
-                rechecks.remove(since);
+                ph.rechecks.remove(key);
                 Progress now = progress.get(task);
                 if (now == null || !open.containsKey(task) || now.node() != at.node() || !now.chair().equals(at.chair())) {
                     return; // ended, or it drove on
@@ -459,12 +477,8 @@ public class MedicalAgent extends Agent {
                 boolean urgent = patientOnBoard(task);
                 long past = (currentTimeMillis() - dwellEnd) / 1000;
                 String waits = lastWaits + "; it has stood at node " + at.node() + " " + past + " s past the time asked for its patient";
-                alarms.add(new Alarm(currentTimeMillis(), chair, (currentTimeMillis() - dwellEnd) / 1000, waits, task, urgent));
-                log.accept(getLocalName() + ": " + (urgent ? "URGENT ALARM: " + task + "'s patient is on board " + chair + ", which"
-                        : "ALARM: " + chair + " (" + task + ")") + " has stood at node " + at.node() + " " + past
-                        + " s past the time asked for its patient");
-                audit.logged(getLocalName() + ": " + (urgent ? "urgent " : "") + "alarm for " + chair + ": " + past
-                        + " s past the time asked at node " + at.node(), currentTimeMillis());
+                raise(task, chair, past, waits, urgent, "has stood at node " + at.node() + " " + past + " s past the time asked for its patient",
+                        past + " s past the time asked at node " + at.node());
             }
         });
     }
@@ -476,12 +490,12 @@ public class MedicalAgent extends Agent {
      */
     private String plannedDwell(String task) {
         Progress p = progress.get(task);
-        Long since = phaseSince.get(task);
-        Double s = dwellS.get(task);
-        if (p == null || since == null || s == null || !(p.phase().equals("loading") || p.phase().equals("unloading"))) {
+        Phases ph = phases.get(task);
+        if (p == null || ph == null || ph.since == null || !Progress.DWELLS.contains(p.phase())) {
             return null;
         }
-        long stood = (currentTimeMillis() - since) / 1000;
+        double s = ph.dwellS;
+        long stood = (currentTimeMillis() - ph.since) / 1000;
         if (stood > s) {
             return null;
         }

@@ -259,6 +259,8 @@ public sealed interface WheelchairMessage {
             implements WheelchairMessage, Concept {
         /** The phases in which the patient is on board: from the moment the chair is at the pick-up. */
         public static final Set<String> ON_BOARD = Set.of("loading", "to-dropoff", "unloading");
+        /** The phases in which the chair stands while its patient gets on or off, for the time the task asked. */
+        public static final Set<String> DWELLS = Set.of("loading", "unloading");
 
         public Progress {
             if (!ON_BOARD.contains(phase) && !phase.equals("to-pickup")) {
@@ -452,6 +454,22 @@ public sealed interface WheelchairMessage {
      */
     @Element(name = "failure")
     record Failure(String door, Integer node, @Slot(mandatory = true) String reason) implements WheelchairMessage, Concept, Reasoned {
+        /**
+         * How the traffic agent's reason begins when idle chairs nobody can move stand in the way
+         * (its walled-in rule): the chair on its way to a patient gives the task back, not plan round.
+         */
+        public static final String WALLED_IN = "walled in: ";
+
+        /** The traffic agent's refusal of a way walled in by {@code idle} chairs (their local names). */
+        public static String walledIn(List<String> idle) {
+            return WALLED_IN + idle + " stand idle in the way and none can be moved";
+        }
+
+        /** True if {@code reason} is a walled-in refusal ({@link #walledIn}), as it reaches a chair (maybe quoted within another). */
+        public static boolean isWalledIn(String reason) {
+            return reason != null && reason.contains(WALLED_IN);
+        }
+
         public void to(Handler h, AclMessage m) {
             h.onFailure(this, m);
         }

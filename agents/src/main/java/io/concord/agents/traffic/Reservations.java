@@ -2,6 +2,7 @@ package io.concord.agents.traffic;
 
 import io.concord.agents.map.Edge;
 import io.concord.agents.map.HospitalMap;
+import io.concord.agents.proto.WheelchairMessage.Failure;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -1084,7 +1085,7 @@ final class Reservations<T> {
         List<String> names = in.stream().map(Reservations::local).toList();
         int at = firstHeldBy(w.path(), in.get(0));
         Integer node = at < 0 ? null : at;
-        out.add(new Failed<>(chair, w.ticket(), "walled in: " + names + " stand idle in the way and none can be moved", node));
+        out.add(new Failed<>(chair, w.ticket(), Failure.walledIn(names), node));
         out.add(new Note<>(local(chair) + " is walled in at node " + (node == null ? "?" : node) + " by idle " + names
                 + " that none can move; its route " + w.path() + " is refused, for it to plan around"));
         return true;
