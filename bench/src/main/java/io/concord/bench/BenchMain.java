@@ -724,18 +724,20 @@ public final class BenchMain {
         md.append("In one JVM Concord runs twice: on one loop, and on " + cores + " loops (" + cores + " runtimes of one platform in "
                 + "the JVM, as `Platform.Builder.loops(" + cores + ")` makes them). Each sender sits on its receiver's loop, pair i on "
                 + "loop i mod " + cores + ", so its messages are handed over in memory: `16pairs` spreads over the loops, while "
-                + "`1to1` and `16to1` have one receiver and so one loop's work.\n\n");
+                + "`1to1` and `16to1` have one receiver and so one loop's work. `across`: the same " + cores + " loops with every "
+                + "sender on the loop after its receiver's, so that every message is handed from one loop to another (a copy "
+                + "gathered per cycle into the receiver's loop's queue, no stack, no kernel).\n\n");
         md.append("Apache Pekko 1.7 (typed actors on its default dispatcher, one JVM only: the bench has no Pekko remoting) runs the "
                 + "one-JVM shapes with JADE's window of 2,048 (its mailboxes are unbounded); `Concord / Pekko` takes Concord's better "
                 + "of one and " + cores + " loops.\n\n");
-        md.append("| shape | JVMs | bytes | Concord msg/s | Concord, " + cores + " loops | Pekko msg/s | JADE msg/s | UDP msg/s | Concord / JADE | "
-                        + "Concord / Pekko | " + cores + " loops / 1 loop | Concord / UDP | lost (Concord / JADE) | Concord senders paused |\n")
-                .append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        md.append("| shape | JVMs | bytes | Concord msg/s | Concord, " + cores + " loops | across | Pekko msg/s | JADE msg/s | UDP msg/s | Concord / JADE | "
+                        + "Concord / Pekko | " + cores + " loops / 1 loop | across / 1 loop | Concord / UDP | lost (Concord / JADE) | Concord senders paused |\n")
+                .append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (String mode : List.of("onejvm", "processes")) {
             for (String shape : List.of("1to1", "16to1", "16pairs")) {
                 for (int bytes : List.of(100, 1000)) {
                     Map<String, ThroughputHarness.Result> r = new TreeMap<>();
-                    List<String> peers = mode.equals("onejvm") ? List.of("concord", "concord-loops", "pekko", "jade", "udp") : List.of("concord", "jade", "udp");
+                    List<String> peers = mode.equals("onejvm") ? List.of("concord", "concord-loops", "concord-across", "pekko", "jade", "udp") : List.of("concord", "jade", "udp");
                     for (String platform : peers) {
                         try {
                             r.put(platform, ThroughputHarness.run(platform, shape, mode.equals("processes"),
@@ -749,18 +751,23 @@ public final class BenchMain {
                     double u = r.get("udp").msgsPerS();
                     double cl = r.containsKey("concord-loops") ? r.get("concord-loops").msgsPerS() : Double.NaN;
                     double pk = r.containsKey("pekko") ? r.get("pekko").msgsPerS() : Double.NaN;
+                    double ca = r.containsKey("concord-across") ? r.get("concord-across").msgsPerS() : Double.NaN;
                     double best = Double.isNaN(cl) ? c : Math.max(c, cl);
                     System.out.printf(Locale.ROOT, "RESULT throughput %s %s %d concord_msgs_s=%.0f jade_msgs_s=%.0f udp_msgs_s=%.0f ratio=%.2f udp_ratio=%.2f concord_lost=%d%s%n",
                             shape, mode, bytes, c, j, u, c / j, c / u, r.get("concord").lost(),
                             Double.isNaN(cl) ? "" : String.format(Locale.ROOT, " concord_loops=%d concord_loops_msgs_s=%.0f loops_ratio=%.2f loops_lost=%d",
                                     cores, cl, cl / c, r.get("concord-loops").lost())
+                            + (Double.isNaN(ca) ? "" : String.format(Locale.ROOT, " across_msgs_s=%.0f across_ratio=%.2f across_lost=%d",
+                                    ca, ca / c, r.get("concord-across").lost()))
                             + (Double.isNaN(pk) ? "" : String.format(Locale.ROOT, " pekko_msgs_s=%.0f pekko_ratio=%.2f pekko_lost=%d",
                                     pk, best / pk, r.get("pekko").lost())));
-                    md.append(String.format(Locale.ROOT, "| %s | %s | %d | %.0f | %s | %s | %.0f | %.0f | %.2f | %s | %s | %.2f | %d / %d | %d |%n", shape,
+                    md.append(String.format(Locale.ROOT, "| %s | %s | %d | %.0f | %s | %s | %s | %.0f | %.0f | %.2f | %s | %s | %s | %.2f | %d / %d | %d |%n", shape,
                             mode, bytes, c, Double.isNaN(cl) ? "" : String.format(Locale.ROOT, "%.0f", cl),
+                            Double.isNaN(ca) ? "" : String.format(Locale.ROOT, "%.0f", ca),
                             Double.isNaN(pk) ? "" : String.format(Locale.ROOT, "%.0f", pk), j, u, c / j,
                             Double.isNaN(pk) ? "" : String.format(Locale.ROOT, "%.2f", best / pk),
-                            Double.isNaN(cl) ? "" : String.format(Locale.ROOT, "%.2f", cl / c), c / u, r.get("concord").lost(), r.get("jade").lost(),
+                            Double.isNaN(cl) ? "" : String.format(Locale.ROOT, "%.2f", cl / c),
+                            Double.isNaN(ca) ? "" : String.format(Locale.ROOT, "%.2f", ca / c), c / u, r.get("concord").lost(), r.get("jade").lost(),
                             r.get("concord").pauses()));
                     String group = shape + " " + bytes + "B";
                     if (!groups.contains(group)) {

@@ -41,9 +41,11 @@ import java.util.function.Supplier;
  * <p><b>Loops.</b> A platform runs its agents on one event loop (one thread) unless
  * {@link Builder#loops(int)} asks for more: then each agent is owned by one loop for life (its
  * behaviours, timers and stack run only there), placed round-robin or where
- * {@link #startAgentOn} puts it. Agents of one loop hand messages over in memory; agents of two
- * loops reach each other as agents of two JVMs do, through their stacks and the loopback, in
- * parallel. {@link #runtime()} is the first loop's; an agent's own is {@code agent.runtime()}.
+ * {@link #startAgentOn} puts it. An agent's application messages to an agent of this JVM are
+ * handed over in memory, on one loop with no thread switch, across two loops through the
+ * receiver's loop's queue (a {@link io.concord.core.agent.LoopGroup}); platform, service and
+ * observed messages take the stacks, as they do on one loop. {@link #runtime()} is the first
+ * loop's; an agent's own is {@code agent.runtime()}.
  */
 public final class Platform implements AutoCloseable {
     private final AgentRuntime runtime;
@@ -278,8 +280,9 @@ public final class Platform implements AutoCloseable {
                 p = new Platform(this, List.of(runtime), false);
             } else {
                 List<AgentRuntime> made = new ArrayList<>();
+                io.concord.core.agent.LoopGroup group = loops > 1 ? new io.concord.core.agent.LoopGroup() : null;
                 for (int i = 0; i < loops; i++) {
-                    made.add(AgentRuntime.builder().platformName(name).host(host).transport(transport).build());
+                    made.add(AgentRuntime.builder().platformName(name).host(host).transport(transport).group(group).build());
                 }
                 p = new Platform(this, made, true);
                 made.forEach(AgentRuntime::start);

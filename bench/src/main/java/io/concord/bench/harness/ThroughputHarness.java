@@ -82,21 +82,25 @@ public final class ThroughputHarness {
                                 pauses.get(10, TimeUnit.SECONDS), rt.drops());
                     }
                 }
-                case "concord-loops" -> {
-                    // One JVM on as many loops as cores: pair i (sender and receiver) on loop i % N, so
-                    // a pair's messages are handed over in memory on its own loop, the pairs in parallel.
+                case "concord-loops", "concord-across" -> {
+                    // One JVM on as many loops as cores, one loop group (as Platform.Builder.loops makes
+                    // them). concord-loops: pair i (sender and receiver) on loop i % N, so a pair's
+                    // messages are handed over on its own loop, the pairs in parallel. concord-across:
+                    // every sender on the loop after its receiver's, so every message crosses loops.
                     int n = Math.max(2, Runtime.getRuntime().availableProcessors());
+                    int shift = platform.equals("concord-across") ? 1 : 0;
+                    io.concord.core.agent.LoopGroup group = new io.concord.core.agent.LoopGroup();
                     List<AgentRuntime> loops = new ArrayList<>();
                     try {
                         for (int i = 0; i < n; i++) {
-                            loops.add(Platforms.concord(Platforms.CONCORD_CLASS7));
+                            loops.add(Platforms.concord(Platforms.CONCORD_CLASS7, group));
                         }
                         List<AID> to = new ArrayList<>();
                         for (int i = 0; i < r; i++) {
                             to.add(loops.get(i % n).startAgent("r" + i, new ConcordReceiver()));
                         }
                         for (int i = 0; i < s; i++) {
-                            loops.get((i % r) % n).startAgent("s" + i, new ConcordSender(to.get(i % r), bytes));
+                            loops.get((i % r + shift) % n).startAgent("s" + i, new ConcordSender(to.get(i % r), bytes));
                         }
                         double rate = measure(received, warmS, measureS);
                         long got = drain(received);

@@ -22,9 +22,15 @@ public final class Platforms {
 
     /** A started Concord runtime for the named variant. */
     public static AgentRuntime concord(String platform) {
+        return concord(platform, null);
+    }
+
+    /** As {@link #concord(String)}, one of the loops of {@code group} (null: a runtime alone). */
+    public static AgentRuntime concord(String platform, io.concord.core.agent.LoopGroup group) {
         Profile profile = platform.equals(CONCORD_CLOSED) ? Profile.CLOSED : Profile.CLASS_7;
         AgentRuntime.Builder b = AgentRuntime.builder().platformName("bench")
-                .stack(SafetyStack.builder().profile(profile).platformKey(KEY).identities(IdentityStore.ephemeral()).build());
+                .stack(SafetyStack.builder().profile(profile).platformKey(KEY).identities(IdentityStore.ephemeral()).build())
+                .group(group);
         if (platform.equals(CONCORD_CLASS7_SOCKETS)) {
             b.network(new SocketNetwork(1 << 20, false));
         }

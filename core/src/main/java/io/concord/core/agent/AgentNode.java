@@ -71,6 +71,9 @@ final class AgentNode implements StackHost {
             // An agent of this runtime by name; else, unless a layer finds receivers by name (the
             // container layer, from the platform's lists), the first address of the AID.
             Address dst = runtime.resolveLocal(receiver, transport);
+            if (dst == null) {
+                dst = runtime.resolveInGroup(receiver, transport); // an agent of another loop of this JVM
+            }
             if (dst == null && !byName) {
                 dst = runtime.resolveByAddress(receiver, transport);
                 if (dst == null) {
@@ -83,7 +86,7 @@ final class AgentNode implements StackHost {
                 tracer.trace(runtime.nowNs(), aid.name(), "send", Tracer.describe(msg) + " to " + receiver.name());
             }
             AgentNode peer = runtime.handOverTarget(this, dst);
-            if (peer != null && handOver(msg, peer)) {
+            if (peer != null && (peer.runtime == runtime ? handOver(msg, peer) : handOverAcross(msg, peer))) {
                 sentCount++;
                 continue;
             }
@@ -117,6 +120,60 @@ final class AgentNode implements StackHost {
             runtime.waitFor(this, peer);
         }
         return true;
+    }
+
+    /** Senders of other loops waiting for this agent to take its mailbox down (any thread adds; this loop releases). */
+    final Set<AgentNode> heldAcross = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /** Messages handed to this agent by other loops and not yet in its mailbox. */
+    private final java.util.concurrent.atomic.AtomicInteger queuedAcross = new java.util.concurrent.atomic.AtomicInteger();
+
+    /**
+     * True if this agent's mailbox is over half full (until it is down to a quarter, as on one loop),
+     * or other loops have queued more than half its capacity for it. Any thread, without a lock.
+     */
+    boolean overHalfAcross() {
+        return agent.inboxFull() || queuedAcross.get() > runtime.mailboxCapacity() / 2;
+    }
+
+    /**
+     * As {@link #handOver}, to an agent of another loop of this JVM ({@link LoopGroup}): a copy is
+     * gathered with what this loop's cycle hands that loop, and that loop posts it into the
+     * mailbox ({@link AgentRuntime#handAcross}). On this agent's loop.
+     *
+     * @throws io.concord.core.layer.SendRejectedException if the receiver's mailbox, with what is
+     *                                                     queued for it, is full
+     */
+    private boolean handOverAcross(AclMessage msg, AgentNode peer) {
+        if (!aid.name().equals(msg.getSender().name()) || !stack.mayHandOver(msg) || !peer.stack.mayHandOver(msg)) {
+            return false;
+        }
+        int capacity = peer.runtime.mailboxCapacity();
+        int queued = peer.queuedAcross.incrementAndGet();
+        if ((queued > capacity / 2 || peer.agent.inboxFull()) && peer.agent.mailboxSize() + queued > capacity) {
+            peer.queuedAcross.decrementAndGet();
+            String why = peer.aid.name() + "'s mailbox holds " + capacity + " messages; "
+                    + "send again when it has taken some (this agent was paused from half of it)";
+            drops.record(aid.name(), "flow-control", why);
+            throw new SendRejectedException("flow-control", why);
+        }
+        runtime.handAcross(peer, msg.copy(), this);
+        runtime.countHandOver();
+        if (peer.overHalfAcross()) {
+            runtime.waitAcross(this, peer);
+        }
+        return true;
+    }
+
+    /** A message another loop's agent handed over ({@link #handOverAcross}): into the mailbox. On this agent's loop. */
+    void receiveAcross(AclMessage msg, AgentNode from) {
+        queuedAcross.decrementAndGet();
+        if (crashed || agent.getState() == Agent.State.DELETED) {
+            from.drops.record(from.aid.name(), "receiver-gone", aid.name() + " left before its loop took the message");
+            return;
+        }
+        if (!post(msg)) {
+            dropOutgoing(msg, "mailbox-full", "the mailbox holds " + runtime.mailboxCapacity() + " messages");
+        }
     }
 
     private void dropOutgoing(AclMessage msg, String reason, String detail) {
@@ -207,6 +264,7 @@ final class AgentNode implements StackHost {
     /** The agent took its full mailbox down: the stack lets its senders go on. On the loop. */
     void inboxDrained() {
         runtime.releaseSenders(this);
+        runtime.releaseAcross(this, false);
         if (!crashed && endpoint.isOpen()) {
             stack.fireEvent(new StackEvent(INBOX_DRAINED, null, false));
         }

@@ -1,6 +1,7 @@
 package io.concord.core.agent;
 
 import io.concord.core.acl.AID;
+import io.concord.core.acl.AclMessage;
 import io.concord.core.agent.internal.CoLocated;
 import io.concord.core.layer.CodecLayer;
 import io.concord.core.layer.Layer;
@@ -63,6 +64,8 @@ public final class AgentRuntime implements AutoCloseable {
     private final Supplier<List<Layer>> stackFactory;
     private final int mailboxCapacity;
     private final boolean handOver;
+    /** The other loops of this platform in this JVM, or null: messages to their agents go through the stacks. */
+    private final LoopGroup group;
     /** Written by the loop only; read anywhere. */
     private volatile long handedOver;
     private final int idleSpinIterations;
@@ -98,6 +101,7 @@ public final class AgentRuntime implements AutoCloseable {
         this.stackFactory = b.stackFactory != null ? b.stackFactory : defaultStack();
         this.mailboxCapacity = b.mailboxCapacity;
         this.handOver = b.handOver;
+        this.group = b.group;
         this.idleSpinIterations = b.idleSpinIterations;
         this.idleYieldIterations = b.idleYieldIterations;
         this.transport = b.transport;
@@ -131,6 +135,7 @@ public final class AgentRuntime implements AutoCloseable {
         private Supplier<List<Layer>> stackFactory;
         private int mailboxCapacity = 100_000;
         private boolean handOver = !Boolean.getBoolean("concord.handover.off");
+        private LoopGroup group;
         private int idleSpinIterations = Integer.getInteger("concord.idle.spin", 0);
         private int idleYieldIterations = Integer.getInteger("concord.idle.yield", 200);
         private Transport transport = Transport.UDP;
@@ -214,6 +219,19 @@ public final class AgentRuntime implements AutoCloseable {
          */
         public Builder handOver(boolean on) {
             this.handOver = on;
+            return this;
+        }
+
+        /**
+         * The loops of one platform in this JVM that this runtime is one of (see {@link LoopGroup}):
+         * an application message between agents of two of them is handed over in memory, under the
+         * same conditions as within one ({@link #handOver}, which both runtimes must have on), and
+         * is counted in {@link AgentRuntime#handedOver()} of the sender's runtime. Null (the default):
+         * agents of other runtimes are reached through the stacks and the network, as other JVMs'.
+         * {@code Platform.Builder.loops(n)} makes one group of its n loops.
+         */
+        public Builder group(LoopGroup group) {
+            this.group = group;
             return this;
         }
 
@@ -361,6 +379,9 @@ public final class AgentRuntime implements AutoCloseable {
         }
         directory.put(aid, node);
         byAddress.put(ep.localAddress(), node);
+        if (group != null) {
+            group.add(node);
+        }
         agent.bind(this, node, aid, args);
         if (tracer.enabled()) {
             tracer.trace(nowNs, aid.name(), "start", ep.localAddress().toString());
@@ -436,8 +457,26 @@ public final class AgentRuntime implements AutoCloseable {
             return null;
         }
         AgentNode peer = byAddress.get(to);
+        if (peer == null && group != null) {
+            // Another loop's: its crashed flag and state are read here as a hint; its loop checks
+            // them again when it takes the message.
+            peer = group.at(to);
+            return peer != null && peer.runtime != this && peer.runtime.handOver && peer.transport == from.transport
+                    && peer.runtime.platformName.equals(platformName)
+                    && !peer.crashed && peer.agent.getState() != Agent.State.DELETED ? peer : null;
+        }
         return peer != null && peer.transport == from.transport && !peer.crashed && peer.agent.getState() != Agent.State.DELETED
                 && from.endpoint.inMemoryTo(to) ? peer : null;
+    }
+
+    /** The address of an agent of another loop of this platform in this JVM, by name; null if none (or no group). */
+    Address resolveInGroup(AID aid, Transport t) {
+        if (group == null || !handOver) {
+            return null;
+        }
+        AgentNode n = group.named(aid.name());
+        return n != null && n.runtime != this && n.transport == t && n.runtime.platformName.equals(platformName)
+                ? n.endpoint.localAddress() : null;
     }
 
     /** Messages handed over in memory between agents of this runtime, since start. Any thread. */
@@ -564,9 +603,17 @@ public final class AgentRuntime implements AutoCloseable {
         node.endpoint.close();
         Address at = node.endpoint.localAddress();
         byAddress.remove(at, node);
+        if (group != null) {
+            group.remove(node, at);
+        }
         releaseSenders(node);
+        releaseAcross(node, true);
         for (AgentNode r : node.waitingOn) {
-            r.heldSenders.remove(node);
+            if (r.runtime == this) {
+                r.heldSenders.remove(node);
+            } else {
+                r.heldAcross.remove(node);
+            }
         }
         node.waitingOn.clear();
         List<Runnable> watchers = goneWatchers.remove(at);
@@ -605,6 +652,7 @@ public final class AgentRuntime implements AutoCloseable {
         arrived = work > 0;
         work += wheel.poll(nowNs, this::onTimer);
         work += runReady();
+        flushAcross();   // what this cycle handed to agents of other loops
         network.flush(); // what this cycle sent, gathered into as few datagrams as it takes
         return work;
     }
@@ -625,6 +673,7 @@ public final class AgentRuntime implements AutoCloseable {
                 continue; // made ready again when its stack lets its frames go
             }
             boolean more = !agent.deleteRequested() && agent.runRound();
+            releaseAcross(node, false);
             if (agent.deleteRequested()) {
                 removeAgent(node, true);
             } else if (more) {
@@ -652,6 +701,79 @@ public final class AgentRuntime implements AutoCloseable {
             }
         }
         receiver.heldSenders.clear();
+    }
+
+    /**
+     * A node of another loop handed a message to {@code receiver} (of this one) and found its
+     * mailbox over half full: it waits for it. On the sender's loop. The receiver's loop may have
+     * taken its mailbox down meanwhile, unseen: looked at again once the sender is in its list.
+     */
+    void waitAcross(AgentNode sender, AgentNode receiver) {
+        boolean first = sender.waitingOn.isEmpty() && !sender.backpressured;
+        if (!sender.waitingOn.add(receiver)) {
+            return; // waits for it already
+        }
+        receiver.heldAcross.add(sender);
+        if (!receiver.overHalfAcross()) {
+            receiver.heldAcross.remove(sender);
+            sender.waitingOn.remove(receiver);
+        } else if (first) {
+            pauses++;
+        }
+    }
+
+    /**
+     * The senders of other loops that wait for this loop's {@code receiver} go on (on their own
+     * loops) if its mailbox, queued across included, is down to half, or if it left ({@code gone}).
+     * On the receiver's loop.
+     */
+    void releaseAcross(AgentNode receiver, boolean gone) {
+        if (receiver.heldAcross.isEmpty() || (!gone && receiver.overHalfAcross())) {
+            return;
+        }
+        for (AgentNode s : receiver.heldAcross) {
+            if (receiver.heldAcross.remove(s)) {
+                s.runtime.execute(() -> s.runtime.stopWaiting(s, receiver));
+            }
+        }
+    }
+
+    /** Messages this loop's agents handed to agents of other loops in this cycle, by their loop. Loop only. */
+    private final Map<AgentRuntime, List<Handed>> handing = new HashMap<>();
+
+    private record Handed(AgentNode to, AclMessage message, AgentNode from) {
+    }
+
+    /**
+     * Hands a message (the receiver's copy) to an agent of another loop: gathered with the rest of
+     * this cycle's for that loop, which gets them at the cycle's end in one task, in order.
+     */
+    void handAcross(AgentNode to, AclMessage message, AgentNode from) {
+        handing.computeIfAbsent(to.runtime, k -> new ArrayList<>()).add(new Handed(to, message, from));
+    }
+
+    /** What this cycle handed to other loops goes to them: one task and at most one wake-up each. */
+    private void flushAcross() {
+        if (handing.isEmpty()) {
+            return;
+        }
+        for (Map.Entry<AgentRuntime, List<Handed>> e : handing.entrySet()) {
+            List<Handed> batch = e.getValue();
+            e.getKey().execute(() -> {
+                for (int i = 0, n = batch.size(); i < n; i++) {
+                    Handed h = batch.get(i);
+                    h.to().receiveAcross(h.message(), h.from());
+                }
+            });
+        }
+        handing.clear();
+    }
+
+    /** On the sender's loop: it no longer waits for that receiver of another loop. */
+    private void stopWaiting(AgentNode sender, AgentNode receiver) {
+        if (sender.waitingOn.remove(receiver) && sender.waitingOn.isEmpty()) {
+            makeReady(sender);
+        }
     }
 
     /**
@@ -869,6 +991,7 @@ public final class AgentRuntime implements AutoCloseable {
             removeAgent(n, true);
         }
         ready.clear();
+        flushAcross(); // what their takeDowns said to agents of other loops
     }
 
     // ---- services ---------------------------------------------------------------------------------

@@ -7,6 +7,7 @@ import io.concord.core.acl.Performative;
 import io.concord.core.agent.Agent;
 import io.concord.core.agent.AgentRuntime;
 import io.concord.core.agent.CyclicBehaviour;
+import io.concord.core.agent.LoopGroup;
 import io.concord.layers.FlowControlTest.FastSender;
 import io.concord.core.agent.PortRange;
 import io.concord.layers.Profile;
@@ -41,12 +42,36 @@ class HandOverTest {
                         .identities(IdentityStore.ephemeral()).build()).build();
     }
 
+    /**
+     * Two loops of one platform in this JVM, as {@code Platform.Builder.loops(2)} makes them but with
+     * a mailbox of {@code mailbox}: two runtimes of one {@link LoopGroup}, a platform on each.
+     */
+    private static Platform[] twoLoops(int first, int mailbox) {
+        String name = "hx" + first + "x" + ProcessHandle.current().pid();
+        LoopGroup group = new LoopGroup();
+        java.util.function.Supplier<List<io.concord.core.layer.Layer>> stack = SafetyStack.builder().profile(Profile.CLASS_7)
+                .platformKey(PlatformKey.random()).identities(IdentityStore.ephemeral()).build();
+        Platform[] loops = new Platform[2];
+        for (int i = 0; i < 2; i++) {
+            AgentRuntime rt = AgentRuntime.builder().platformName(name).group(group).mailboxCapacity(mailbox).build().start();
+            loops[i] = Platform.builder().name(name).runtime(rt).ports(PortRange.of(first, first + 9)).safetyStack(stack).build();
+        }
+        return loops;
+    }
+
+    private static void closeAll(Platform[] ps) {
+        for (int i = ps.length - 1; i >= 0; i--) {
+            ps[i].close();
+        }
+    }
+
     /** Takes at most {@code perAction} messages an action; completes when it has {@code expected}. */
     private static final class Receiver extends Agent {
         final List<String> got = new ArrayList<>();
         final CompletableFuture<List<String>> done = new CompletableFuture<>();
         final int expected;
         final int perAction;
+        final java.util.Set<Thread> threads = java.util.concurrent.ConcurrentHashMap.newKeySet();
         int maxQueued;
 
         Receiver(int expected, int perAction) {
@@ -59,6 +84,7 @@ class HandOverTest {
             addBehaviour(new CyclicBehaviour() {
                 @Override
                 public void action() {
+                    threads.add(Thread.currentThread());
                     maxQueued = Math.max(maxQueued, getCurQueueSize());
                     for (int i = 0; i < perAction; i++) {
                         AclMessage m = receive();
@@ -153,6 +179,87 @@ class HandOverTest {
             assertEquals(io.concord.layers.observe.ObserverLayer.ONTOLOGY, answer.getOntology());
             assertEquals(before, p.runtime().handedOver(), "neither was handed over");
             assertTrue(r.got.isEmpty(), "the message in another's name did not reach the receiver");
+        }
+    }
+
+    @Test
+    void messagesToAnAgentOfAnotherLoopAreHandedOverOnceAndInOrder() throws Exception {
+        Platform[] loops = twoLoops(7611, 100_000);
+        try {
+            Receiver r = new Receiver(5_000, Integer.MAX_VALUE);
+            AID ra = loops[0].startAgent("receiver", r);
+            loops[1].startAgent("sender", new FastSender(AID.local("receiver", ra.platform()), 5_000, 100));
+            assertEquals(numbers(5_000), r.done.get(WAIT_S, TimeUnit.SECONDS));
+            assertEquals(5_000, loops[1].runtime().handedOver(), "every one handed over across the loops, none through the stacks");
+            CompletableFuture<Thread> senderLoop = new CompletableFuture<>();
+            loops[1].runtime().execute(() -> senderLoop.complete(Thread.currentThread()));
+            assertEquals(1, r.threads.size(), "the receiver ran on one thread: " + r.threads);
+            assertTrue(!r.threads.contains(senderLoop.get(WAIT_S, TimeUnit.SECONDS)), "its own loop's, not the sender's");
+        } finally {
+            closeAll(loops);
+        }
+    }
+
+    @Test
+    void aReceiverOnAnotherLoopSlowerThanItsSenderPausesItAndLosesNothing() throws Exception {
+        // A mailbox of 1,000; the sender puts 200 an action, the receiver on the other loop takes 1.
+        Platform[] loops = twoLoops(7621, 1_000);
+        try {
+            Receiver r = new Receiver(20_000, 1);
+            AID ra = loops[0].startAgent("receiver", r);
+            AID sa = loops[1].startAgent("sender", new FastSender(AID.local("receiver", ra.platform()), 20_000, 200));
+            assertEquals(numbers(20_000), r.done.get(WAIT_S * 3, TimeUnit.SECONDS), "all, once, in order");
+            assertTrue(r.maxQueued <= 1_000, "the mailbox within its capacity: " + r.maxQueued);
+            assertTrue(loops[1].runtime().pauses() > 0, "the sender was paused");
+            assertEquals(20_000, loops[1].runtime().handedOver(), "all across in memory");
+            // (The two platforms' own frames may count a "copy": a retransmission the busy receiver's loop acked late.)
+            for (String reason : List.of("mailbox-full", "flow-control", "receiver-gone")) {
+                assertEquals(null, loops[0].runtime().drops(ra).get(reason), reason + " at the receiver: " + loops[0].runtime().drops(ra));
+                assertEquals(null, loops[1].runtime().drops(sa).get(reason), reason + " at the sender: " + loops[1].runtime().drops(sa));
+            }
+        } finally {
+            closeAll(loops);
+        }
+    }
+
+    @Test
+    void aSenderPausedForAReceiverOfAnotherLoopGoesOnWhenThatReceiverDies() throws Exception {
+        Platform[] loops = twoLoops(7631, 1_000);
+        try {
+            Receiver r = new Receiver(Integer.MAX_VALUE, 0); // takes nothing
+            AID ra = loops[0].startAgent("receiver", r);
+            CompletableFuture<Void> resumed = new CompletableFuture<>();
+            loops[1].startAgent("sender", new Agent() {
+                int actions;
+
+                @Override
+                protected void setup() {
+                    addBehaviour(new CyclicBehaviour() {
+                        @Override
+                        public void action() {
+                            if (actions++ == 0) {
+                                for (int i = 0; i < 600; i++) { // over half the receiver's mailbox: paused after
+                                    send(new AclMessage(Performative.INFORM).addReceiver(AID.local("receiver", ra.platform()))
+                                            .setContent("m" + i));
+                                }
+                            } else {
+                                resumed.complete(null);
+                                myAgent.removeBehaviour(this);
+                            }
+                        }
+                    });
+                }
+            });
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(WAIT_S);
+            while (loops[1].runtime().pauses() == 0 && System.nanoTime() < end) {
+                Thread.sleep(5); // a poll with a deadline
+            }
+            assertEquals(1, loops[1].runtime().pauses(), "the sender paused for the receiver of the other loop");
+            assertTrue(!resumed.isDone(), "and waits while the receiver holds its messages");
+            loops[0].runtime().execute(() -> loops[0].runtime().crashAgent(ra));
+            resumed.get(WAIT_S, TimeUnit.SECONDS); // let go when it died
+        } finally {
+            closeAll(loops);
         }
     }
 }
