@@ -68,6 +68,19 @@ final class TaskRunner {
     private String waitsFor;
 
     private static final String WAITS_FOR_ROUTE = "its route (the traffic agent)";
+
+    /**
+     * With its patient on board, how long a chair whose way to the drop-off nobody could plan (an
+     * edge blocked, no way round) keeps its route before it asks the planner again (ms, the chair's clock).
+     */
+    static final long REPLAN_AGAIN_MS = 20_000;
+    /** The phase that asks for its plan again at {@link #replanAgainAt}, its goal and where it stood; null if none. */
+    private Phase replanAgainFor;
+    private long replanAgainAt;
+    private int replanAgainGoal;
+    private int replanAgainFrom;
+    /** The chair's clock at its last reading. */
+    private long lastReadingMs;
     /** What it says it waits for, made once a door or node (asked at every reading while it waits). */
     private final Map<String, String> doorWaits = new HashMap<>();
     private final Map<Integer, String> turnWaits = new HashMap<>();
@@ -264,6 +277,16 @@ final class TaskRunner {
 
     /** One reading ({@code pose}: where the chair is believed to be; {@code now}: the chair's clock, in ms). */
     void reading(ChairReadings r, Pose pose, long now) {
+        lastReadingMs = now;
+        if (replanAgainFor != null && now >= replanAgainAt) {
+            Phase again = replanAgainFor;
+            replanAgainFor = null;
+            if (phase == again && follower.here() == replanAgainFrom) {
+                // Nothing else happened meanwhile, and it has not driven on along the route it kept.
+                replanTo(again, replanAgainFrom, replanAgainGoal, "it asks again for a way to node " + replanAgainGoal
+                        + " for the patient on board");
+            }
+        }
         if (phase == null) {
             startNext();
             if (phase == null) {
@@ -537,7 +560,7 @@ final class TaskRunner {
         }
     }
 
-    /** Asks for a new plan from a node to the end of the current route; fails the task if none comes. */
+    /** Asks for a new plan from a node to the end of the current route ({@link #replanTo}). */
     void replan(int fromId, String why) {
         if (follower.route() != null) {
             replanTo(phase, fromId, follower.goal(), why);
@@ -546,8 +569,10 @@ final class TaskRunner {
 
     /**
      * Asks for a new plan from a node to {@code goal} for the task of {@code resume}, which goes on
-     * along it ({@link Replanning} until the answer comes); fails the task if none comes. Nothing to
-     * ask for an idle chair, a chair already waiting for a plan, or one whose patient gets on or off.
+     * along it ({@link Replanning} until the answer comes); fails the task if none comes, unless the
+     * patient is on board: then the chair keeps the route it had and asks again after
+     * {@link #REPLAN_AGAIN_MS} if it has not driven on meanwhile. Nothing to ask for an idle chair,
+     * a chair already waiting for a plan, or one whose patient gets on or off.
      */
     private void replanTo(Phase resume, int fromId, int goal, String why) {
         if (resume == null || resume.task == null || resume instanceof Standing
@@ -571,6 +596,23 @@ final class TaskRunner {
             waitsFor = null;
             if (phase != r) {
                 return; // the task was withdrawn or failed meanwhile, or its step aside taken back
+            }
+            if (a.getPerformative() != Performative.INFORM_REF && t.patientOnBoard() && resume instanceof ToDropoff) {
+                // Nobody else can take the patient (depot seed 190: an edge blocked 15 s on a one-lane
+                // map, no way round, and the chair failed the task with its patient on board and took
+                // its next one). It keeps its route, drives on if the way clears, and asks again; the
+                // fleet monitor's alarm tells the ward if it lasts.
+                String refusal = ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal);
+                say("keeps " + t.id + ": " + refusal + (why == null ? "" : " (" + why + ")") + "; the patient is on board, so it keeps"
+                        + " its route and asks again in " + REPLAN_AGAIN_MS / 1000 + " s");
+                phase = resume;
+                replanAgainFor = resume;
+                replanAgainAt = lastReadingMs + REPLAN_AGAIN_MS;
+                replanAgainGoal = goal;
+                replanAgainFrom = fromId;
+                waitsFor = "a way to node " + goal + " (" + refusal + ")";
+                progress(t);
+                return;
             }
             phase = a.getPerformative() == Performative.INFORM_REF
                     ? r.answered(WheelchairMessage.decode(a, Plan.class).nodes(), null, context)

@@ -153,6 +153,32 @@ class RouteFollowerTest {
         assertEquals(1, told.stream().filter(s -> s.equals("blocked 3-1")).count(), "counted again from the report: " + told);
     }
 
+    /**
+     * Stopped 15 s with its heading 15 degrees off its way (depot seed 190: its front infrared on a
+     * corridor's wall, and the small steering of a drive forward never came): it turns on the spot
+     * to face its way first, and calls the edge blocked only if it is still stopped 15 s after that.
+     */
+    @Test
+    void stoppedLongWithItsHeadingOffItTurnsToFaceItsWayBeforeItCallsTheEdgeBlocked() {
+        Pose off = new Pose(8, 2, Math.PI - Math.toRadians(15));
+        follower.follow(List.of(3, 1));
+        for (long ms = 0; ms <= RouteFollower.BLOCKED_AFTER_MS; ms += 1_000) {
+            step(ms, off, 0.3);
+        }
+        step(RouteFollower.BLOCKED_AFTER_MS + 1, off, 0.3);
+        assertTrue(told.contains("says turns on the spot to face node 1 (15 degrees off its way, stopped 15 s)"), told.toString());
+        assertTrue(told.stream().noneMatch(s -> s.startsWith("blocked")), "not blocked yet: " + told);
+        step(RouteFollower.BLOCKED_AFTER_MS + 100, off, 0.3);
+        double[] p = chair.lastPowers();
+        assertTrue(p[0] != 0 && Math.abs(p[0] + p[1]) < 1e-9, "a turn on the spot, which the filter lets through: " + chair.last());
+        // Facing its way, still stopped: blocked 15 s later.
+        long t = RouteFollower.BLOCKED_AFTER_MS + 200;
+        for (long ms = t; ms <= t + RouteFollower.BLOCKED_AFTER_MS + 1_000; ms += 1_000) {
+            step(ms, AT_3_FACING_WEST, 0.3);
+        }
+        assertEquals(1, told.stream().filter(s -> s.equals("blocked 3-1")).count(), told.toString());
+    }
+
     @Test
     void aStopThatClearsStartsTheBlockedCountAgain() {
         follower.follow(List.of(3, 1));

@@ -257,4 +257,35 @@ class TaskRunnerTest {
         assertEquals(asks + 1, port.answers.size(), "asked again");
         assertEquals(TaskView.State.TO_DROPOFF, t.state);
     }
+
+    /**
+     * With the patient on board, an edge blocked and no way round it (the depot soak's seed 190: the
+     * chair failed its task with the patient on board and started its next one): the task is kept,
+     * the chair keeps its route and asks again after a while, and follows the plan that comes then.
+     */
+    @Test
+    void noWayRoundWithThePatientOnBoardKeepsTheTaskAndAsksAgain() {
+        Task t = given(1, List.of(1));
+        reading(1);
+        reading(1);
+        ms += 31_000;
+        reading(1);
+        assertInstanceOf(ToDropoff.class, runner.phase(), String.join("\n", said));
+        runner.replan(1, null); // as the route follower's "edge blocked for 15 s" asks it
+        assertInstanceOf(Replanning.class, runner.phase());
+        assertEquals(List.of("1->2"), asked);
+        plans.get(0).complete(new AclMessage(Performative.FAILURE)
+                .setContent(new Failure(null, null, "no route from 1 to 2 and blocked edges [1-2]").encode()));
+        assertEquals(TaskView.State.TO_DROPOFF, t.state, "not failed with its patient on board: " + t.reason);
+        assertInstanceOf(ToDropoff.class, runner.phase(), String.join("\n", said));
+        assertTrue(said.stream().anyMatch(s -> s.startsWith("keeps T1: ") && s.endsWith("asks again in 20 s")), String.join("\n", said));
+        reading(1);
+        assertEquals(1, asked.size(), "not at once");
+        ms += TaskRunner.REPLAN_AGAIN_MS;
+        reading(1);
+        assertEquals(List.of("1->2", "1->2"), asked, "asked again");
+        plans.get(1).complete(plan(1, 2));
+        assertInstanceOf(ToDropoff.class, runner.phase(), String.join("\n", said));
+        assertEquals(List.of(1, 2), follower.route());
+    }
 }
