@@ -23,7 +23,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * Several chairs and a stream of tasks, seed after seed: 3 to 5 chairs (3 + seed mod 3), 10
  * transports between random rooms with mixed priorities, one every 15 s. Every task ends done or
  * failed with a reason, nothing touches anything (chairs, doors, walls), and at the end every chair
- * is idle and nobody waits for a route. {@code -Dconcord.fleet.seeds=200} runs 200 seeds (8 by
+ * is idle and nobody waits for a route. {@code -Dconcord.fleet.seeds=200} runs 200 seeds (4 by
  * default, for CI), {@code -Dconcord.fleet.first=N} starts elsewhere. With the traffic agent's
  * reservations off, chairs meet (seed 1 has two contacts between chairs).
  */
@@ -88,7 +88,7 @@ class FleetSoakTest {
     @Test
     void chairsDoTheirTasksWithoutTouchingAnythingSeedAfterSeed() {
         long first = Long.getLong("concord.fleet.first", 1);
-        int seeds = Integer.getInteger("concord.fleet.seeds", 8);
+        int seeds = Integer.getInteger("concord.fleet.seeds", 4);
         List<String> report = new ArrayList<>();
         long done = 0;
         long worldMs = 0;
