@@ -41,8 +41,8 @@ import java.util.function.Supplier;
  * <p><b>Loops.</b> A platform runs its agents on one event loop (one thread) unless
  * {@link Builder#loops(int)} asks for more: then each agent is owned by one loop for life (its
  * behaviours, timers and stack run only there), placed round-robin or where
- * {@link #startAgentOn} puts it. An agent's application messages to an agent of this JVM are
- * handed over in memory, on one loop with no thread switch, across two loops through the
+ * {@link #startAgentOn} puts it. An agent's application messages to another agent of this
+ * platform on this JVM's loops are handed over in memory, on one loop with no thread switch, across two loops through the
  * receiver's loop's queue (a {@link io.concord.core.agent.LoopGroup}); platform, service and
  * observed messages take the stacks, as they do on one loop. {@link #runtime()} is the first
  * loop's; an agent's own is {@code agent.runtime()}.

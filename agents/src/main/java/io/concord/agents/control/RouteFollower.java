@@ -89,8 +89,9 @@ final class RouteFollower {
      * steering of a drive forward never came, for ever).
      */
     static final double FACE_AFTER_STOP_RAD = Math.toRadians(5);
-    /** Turning on the spot to face where it drives, after a long stop ({@link #FACE_AFTER_STOP_RAD}). */
+    /** Turning on the spot to face where it drives, after a long stop ({@link #FACE_AFTER_STOP_RAD}), since then (ms); it stops turning after {@link #BLOCKED_AFTER_MS}. */
     private boolean facing;
+    private long facingSinceMs;
     /** It has turned to face its way on this edge once: the next long stop is the edge blocked. */
     private boolean faced;
 
@@ -128,16 +129,27 @@ final class RouteFollower {
     /** Holds {@code nodes} as its route without driving them (it waits there, a new plan to come). */
     void hold(List<Integer> nodes) {
         route = nodes;
+        facing = false;
+        faced = false;
     }
 
     /** Keeps only the part of the route not yet driven (the edge it is on included). */
     void trim() {
-        route = new ArrayList<>(route.subList(Math.max(0, index - 1), route.size()));
+        int cut = Math.max(0, index - 1);
+        route = new ArrayList<>(route.subList(cut, route.size()));
+        index -= cut; // still on the same edge (or driving back to the same first node)
+    }
+
+    /** True if it has a route still to drive that ends at {@code goal} (not one held to wait on). */
+    boolean leadsTo(int goal) {
+        return route != null && route.size() >= 2 && route.get(route.size() - 1) == goal && index < route.size();
     }
 
     /** Drops the route; the next steps stop the chair. */
     void clear() {
         route = null;
+        facing = false;
+        faced = false;
     }
 
     /** The route, or null. */
@@ -280,11 +292,11 @@ final class RouteFollower {
         double bearing = Math.atan2(target.y() - pose.y(), target.x() - pose.x());
         if (facing) {
             PoseController.Powers face = control.toHeading(pose, bearing);
-            if (!face.stopped()) {
+            if (!face.stopped() && now - facingSinceMs <= BLOCKED_AFTER_MS) {
                 chair.drive(face.left(), face.right());
                 return;
             }
-            facing = false; // it faces its way: drives on
+            facing = false; // it faces its way (or has turned as long as it may): drives on, or is blocked
         }
         // The obstacle filter between here and the supervisor keeps the stop and slow zones (a turn on the
         // spot passes: it lets the chair turn away from what is ahead); here only what a stop means for the route.
@@ -300,6 +312,7 @@ final class RouteFollower {
                 if (!faced && off > FACE_AFTER_STOP_RAD) {
                     faced = true;
                     facing = true;
+                    facingSinceMs = now;
                     events.say(String.format(Locale.ROOT, "turns on the spot to face node %d (%.0f degrees off its way, stopped %d s)",
                             toId, Math.toDegrees(off), BLOCKED_AFTER_MS / 1000));
                     return;

@@ -283,7 +283,10 @@ final class TaskRunner {
             replanAgainFor = null;
             if (phase == again && follower.here() == replanAgainFrom) {
                 // Nothing else happened meanwhile, and it has not driven on along the route it kept.
-                replanTo(again, replanAgainFrom, replanAgainGoal, "it asks again for a way to node " + replanAgainGoal
+                if (again instanceof Replanning standing) {
+                    phase = standing.resume; // it stood: asks for the phase it interrupted
+                }
+                replanTo(phase, replanAgainFrom, replanAgainGoal, "it asks again for a way to node " + replanAgainGoal
                         + " for the patient on board");
             }
         }
@@ -584,8 +587,13 @@ final class TaskRunner {
         }
         AID planner = planner();
         Task t = resume.task;
+        replanAgainFor = null; // this plan is the one asked
         if (planner == null) {
-            finish(t, "no planner to replan with");
+            if (t.patientOnBoard()) {
+                keepForThePatient(new Replanning(resume, why), fromId, goal, "no planner to replan with", why);
+            } else {
+                finish(t, "no planner to replan with");
+            }
             return;
         }
         Replanning r = new Replanning(resume, why);
@@ -597,27 +605,38 @@ final class TaskRunner {
             if (phase != r) {
                 return; // the task was withdrawn or failed meanwhile, or its step aside taken back
             }
-            if (a.getPerformative() != Performative.INFORM_REF && t.patientOnBoard() && resume instanceof ToDropoff) {
+            if (a.getPerformative() != Performative.INFORM_REF && t.patientOnBoard()) {
                 // Nobody else can take the patient (depot seed 190: an edge blocked 15 s on a one-lane
                 // map, no way round, and the chair failed the task with its patient on board and took
-                // its next one). It keeps its route, drives on if the way clears, and asks again; the
-                // fleet monitor's alarm tells the ward if it lasts.
-                String refusal = ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal);
-                say("keeps " + t.id + ": " + refusal + (why == null ? "" : " (" + why + ")") + "; the patient is on board, so it keeps"
-                        + " its route and asks again in " + REPLAN_AGAIN_MS / 1000 + " s");
-                phase = resume;
-                replanAgainFor = resume;
-                replanAgainAt = lastReadingMs + REPLAN_AGAIN_MS;
-                replanAgainGoal = goal;
-                replanAgainFrom = fromId;
-                waitsFor = "a way to node " + goal + " (" + refusal + ")";
-                progress(t);
+                // its next one).
+                keepForThePatient(r, fromId, goal, ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal), why);
                 return;
             }
             phase = a.getPerformative() == Performative.INFORM_REF
                     ? r.answered(WheelchairMessage.decode(a, Plan.class).nodes(), null, context)
                     : r.answered(null, ControlAgent.reason(a, "no new plan from " + fromId + " to " + goal), context);
         });
+    }
+
+    /**
+     * With its patient on board and no plan to be had ({@code r}, the replanning that got none): the
+     * chair keeps its task. If the route it had still leads to the goal, it goes back to the phase
+     * it was in along it (it drives on if the way clears); if not (a route held to wait on), it
+     * stands. Either way it asks again after {@link #REPLAN_AGAIN_MS} if it has not driven on by
+     * then; the fleet monitor's alarm tells the ward if it lasts.
+     */
+    private void keepForThePatient(Replanning r, int fromId, int goal, String refusal, String why) {
+        Task t = r.task;
+        boolean drive = follower.leadsTo(goal);
+        say("keeps " + t.id + ": " + refusal + (why == null ? "" : " (" + why + ")") + "; the patient is on board, so it "
+                + (drive ? "keeps its route" : "stands") + " and asks again in " + REPLAN_AGAIN_MS / 1000 + " s");
+        phase = drive ? r.resume : r;
+        replanAgainFor = phase;
+        replanAgainAt = lastReadingMs + REPLAN_AGAIN_MS;
+        replanAgainGoal = goal;
+        replanAgainFrom = fromId;
+        waitsFor = "a way to node " + goal + " (" + refusal + ")";
+        progress(t);
     }
 
     private void arrived(long now) {
@@ -632,6 +651,9 @@ final class TaskRunner {
             return;
         }
         chair.stop();
+        if (replanAgainFor != null && replanAgainFor.task == t) {
+            replanAgainFor = null;
+        }
         t.state = failure == null ? TaskView.State.DONE : TaskView.State.FAILED;
         t.reason = failure;
         if (t.accept != null) {

@@ -202,6 +202,26 @@ class RouteFollowerTest {
         assertEquals(List.of("may I drive [3, 1, 2] from [1]", "reached 2 by 1-2, ahead [2]", "arrived at 9000"), told);
     }
 
+    /**
+     * The part of the route not yet driven is kept, and driven on from where the chair is: not taken
+     * for arrived (a chair that kept its route with its patient on board would have let the patient
+     * off at the wrong node).
+     */
+    @Test
+    void aTrimmedRouteIsDrivenOnFromWhereTheChairIsNotTakenForArrived() {
+        follower.follow(List.of(3, 1, 2));
+        step(0, AT_3_FACING_WEST, 3.0);
+        step(5_000, new Pose(5, 2, Math.PI), 3.0);
+        assertEquals(1, follower.here());
+        follower.trim();
+        assertEquals(List.of(1, 2), follower.route());
+        assertTrue(follower.leadsTo(2), "still to drive to node 2");
+        told.clear();
+        step(5_100, AT_1_FACING_NORTH, 3.0);
+        assertTrue(told.stream().noneMatch(s -> s.startsWith("arrived")), "not arrived at node 1: " + told);
+        assertTrue(chair.lastPowers()[0] > 0, "drives on to node 2: " + chair.last());
+    }
+
     @Test
     void waitsAtADoorItMayNotPass() {
         doorOpen = false;

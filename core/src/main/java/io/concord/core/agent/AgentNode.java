@@ -41,6 +41,8 @@ final class AgentNode implements StackHost {
     boolean queued;
     /** Set when the agent crashes: from then on nothing leaves or enters its stack. */
     boolean crashed;
+    /** Set (on its loop) when the agent has left, before its senders of other loops are let go: they read it. */
+    volatile boolean gone;
     LongSupplier platformTime;
     List<Address> neighbours = List.of();
 
@@ -129,10 +131,13 @@ final class AgentNode implements StackHost {
 
     /**
      * True if this agent's mailbox is over half full (until it is down to a quarter, as on one loop),
-     * or other loops have queued more than half its capacity for it. Any thread, without a lock.
+     * or its mailbox and what other loops have queued for it hold more than half its capacity. Any
+     * thread; the mailbox's size is read (under its lock) only once a quarter is queued.
      */
     boolean overHalfAcross() {
-        return agent.inboxFull() || queuedAcross.get() > runtime.mailboxCapacity() / 2;
+        int capacity = runtime.mailboxCapacity();
+        int queued = queuedAcross.get();
+        return agent.inboxFull() || queued > capacity / 4 && agent.mailboxSize() + queued > capacity / 2;
     }
 
     /**
@@ -141,7 +146,8 @@ final class AgentNode implements StackHost {
      * mailbox ({@link AgentRuntime#handAcross}). On this agent's loop.
      *
      * @throws io.concord.core.layer.SendRejectedException if the receiver's mailbox, with what is
-     *                                                     queued for it, is full
+     *                                                     queued for it, is full (looked at under the
+     *                                                     mailbox's lock only once it is over half)
      */
     private boolean handOverAcross(AclMessage msg, AgentNode peer) {
         if (!aid.name().equals(msg.getSender().name()) || !stack.mayHandOver(msg) || !peer.stack.mayHandOver(msg)) {
@@ -166,13 +172,17 @@ final class AgentNode implements StackHost {
 
     /** A message another loop's agent handed over ({@link #handOverAcross}): into the mailbox. On this agent's loop. */
     void receiveAcross(AclMessage msg, AgentNode from) {
-        queuedAcross.decrementAndGet();
-        if (crashed || agent.getState() == Agent.State.DELETED) {
-            from.drops.record(from.aid.name(), "receiver-gone", aid.name() + " left before its loop took the message");
-            return;
-        }
-        if (!post(msg)) {
-            dropOutgoing(msg, "mailbox-full", "the mailbox holds " + runtime.mailboxCapacity() + " messages");
+        try {
+            if (crashed || agent.getState() == Agent.State.DELETED) {
+                from.drops.record(from.aid.name(), "receiver-gone", aid.name() + " left before its loop took the message");
+                return;
+            }
+            if (!post(msg)) {
+                // Agents of this loop filled the mailbox meanwhile (they post straight into it).
+                dropOutgoing(msg, "mailbox-full", "the mailbox holds " + runtime.mailboxCapacity() + " messages");
+            }
+        } finally {
+            queuedAcross.decrementAndGet(); // once it is in the mailbox (or dropped): a sender never sees it in neither
         }
     }
 

@@ -224,9 +224,11 @@ public final class AgentRuntime implements AutoCloseable {
 
         /**
          * The loops of one platform in this JVM that this runtime is one of (see {@link LoopGroup}):
-         * an application message between agents of two of them is handed over in memory, under the
-         * same conditions as within one ({@link #handOver}, which both runtimes must have on), and
-         * is counted in {@link AgentRuntime#handedOver()} of the sender's runtime. Null (the default):
+         * an application message between agents of two of them (of one platform name, on one
+         * transport) is handed over in memory, under the same conditions as within one
+         * ({@link #handOver}, which both runtimes must have on; only where both networks deliver in
+         * memory, so never on the test kit's), and is counted in {@link AgentRuntime#handedOver()} of
+         * the sender's runtime. Null (the default):
          * agents of other runtimes are reached through the stacks and the network, as other JVMs'.
          * {@code Platform.Builder.loops(n)} makes one group of its n loops.
          */
@@ -379,8 +381,8 @@ public final class AgentRuntime implements AutoCloseable {
         }
         directory.put(aid, node);
         byAddress.put(ep.localAddress(), node);
-        if (group != null) {
-            group.add(node);
+        if (group != null && ep.inMemoryTo(ep.localAddress())) {
+            group.add(node); // only where its network hands frames over in memory (never the test kit's)
         }
         agent.bind(this, node, aid, args);
         if (tracer.enabled()) {
@@ -457,7 +459,7 @@ public final class AgentRuntime implements AutoCloseable {
             return null;
         }
         AgentNode peer = byAddress.get(to);
-        if (peer == null && group != null) {
+        if (peer == null && group != null && from.endpoint.inMemoryTo(from.endpoint.localAddress())) {
             // Another loop's: its crashed flag and state are read here as a hint; its loop checks
             // them again when it takes the message.
             peer = group.at(to);
@@ -479,7 +481,10 @@ public final class AgentRuntime implements AutoCloseable {
                 ? n.endpoint.localAddress() : null;
     }
 
-    /** Messages handed over in memory between agents of this runtime, since start. Any thread. */
+    /**
+     * Messages this runtime's agents handed over in memory, since start: to agents of this runtime,
+     * and to agents of the other loops of its {@link LoopGroup}. Any thread.
+     */
     public long handedOver() {
         return handedOver;
     }
@@ -607,6 +612,7 @@ public final class AgentRuntime implements AutoCloseable {
             group.remove(node, at);
         }
         releaseSenders(node);
+        node.gone = true; // before the senders of other loops are let go: one that comes after sees it
         releaseAcross(node, true);
         for (AgentNode r : node.waitingOn) {
             if (r.runtime == this) {
@@ -710,11 +716,10 @@ public final class AgentRuntime implements AutoCloseable {
      */
     void waitAcross(AgentNode sender, AgentNode receiver) {
         boolean first = sender.waitingOn.isEmpty() && !sender.backpressured;
-        if (!sender.waitingOn.add(receiver)) {
-            return; // waits for it already
-        }
-        receiver.heldAcross.add(sender);
-        if (!receiver.overHalfAcross()) {
+        sender.waitingOn.add(receiver);
+        receiver.heldAcross.add(sender); // again if it was let go meanwhile, its release still on its way
+        if (receiver.gone || !receiver.overHalfAcross()) {
+            // Left, or taken down, before it could see this sender in its list.
             receiver.heldAcross.remove(sender);
             sender.waitingOn.remove(receiver);
         } else if (first) {
@@ -724,8 +729,9 @@ public final class AgentRuntime implements AutoCloseable {
 
     /**
      * The senders of other loops that wait for this loop's {@code receiver} go on (on their own
-     * loops) if its mailbox, queued across included, is down to half, or if it left ({@code gone}).
-     * On the receiver's loop.
+     * loops) once it is no longer {@link AgentNode#overHalfAcross() over half} (its mailbox down to
+     * a quarter, and it with what is queued for it at most half its capacity), or if it left ({@code gone}). On the
+     * receiver's loop.
      */
     void releaseAcross(AgentNode receiver, boolean gone) {
         if (receiver.heldAcross.isEmpty() || (!gone && receiver.overHalfAcross())) {
@@ -759,6 +765,12 @@ public final class AgentRuntime implements AutoCloseable {
         }
         for (Map.Entry<AgentRuntime, List<Handed>> e : handing.entrySet()) {
             List<Handed> batch = e.getValue();
+            if (!e.getKey().running && e.getKey().loopThread != null) {
+                for (Handed h : batch) { // its loop has stopped: nobody would take them
+                    h.from().drops.record(h.from().aid.name(), "receiver-gone", h.to().aid.name() + "'s loop has stopped");
+                }
+                continue;
+            }
             e.getKey().execute(() -> {
                 for (int i = 0, n = batch.size(); i < n; i++) {
                     Handed h = batch.get(i);

@@ -38,11 +38,16 @@ class FleetSoakTest {
     }
 
     static Result run(long seed, boolean traffic) {
-        return run(ScenarioTest.MAP, ROOMS, seed, 3 + (int) (seed % 3), traffic);
+        return run(ScenarioTest.MAP, ROOMS, seed, 3 + (int) (seed % 3), traffic, false);
     }
 
     /** A seed on {@code map}: {@code chairs} chairs, 10 transports between random nodes of {@code rooms}. */
     static Result run(HospitalMap map, int[] rooms, long seed, int chairs, boolean traffic) {
+        return run(map, rooms, seed, chairs, traffic, false);
+    }
+
+    /** ... and, if {@code untilChairsMeet}, the run stops at the first contact between two chairs. */
+    static Result run(HospitalMap map, int[] rooms, long seed, int chairs, boolean traffic, boolean untilChairsMeet) {
         try (ScenarioTest.Run r = new ScenarioTest.Run(map, seed, FaultPlan.NONE, chairs, traffic, MedicalAgent.Settings.standard())) {
             SplittableRandom rnd = new SplittableRandom(seed);
             List<CompletableFuture<MedicalAgent.Outcome>> fs = new ArrayList<>();
@@ -55,7 +60,9 @@ class FleetSoakTest {
                 fs.add(r.medical.transport(from, to, MedicalAgent.PRIORITIES[rnd.nextInt(3)], 20));
                 r.sim.runFor(15_000);
             }
-            r.sim.runUntil(() -> fs.stream().allMatch(CompletableFuture::isDone), LIMIT_MS);
+            java.util.function.BooleanSupplier met = () -> untilChairsMeet
+                    && r.world.collisions().stream().anyMatch(c -> c.other().startsWith("chair"));
+            r.sim.runUntil(() -> met.getAsBoolean() || fs.stream().allMatch(CompletableFuture::isDone), LIMIT_MS);
             // Let the last chair say it is idle, and the idle ones drive home (issue 47).
             r.sim.runFor(5_000);
             if (r.hospital.traffic() != null) {
@@ -129,7 +136,7 @@ class FleetSoakTest {
         // sensors alone, until two meet (seed 1 did before the ward corridors had two lanes).
         List<String> met = new ArrayList<>();
         for (long seed = 1; seed <= 10 && met.isEmpty(); seed++) {
-            Result r = run(seed, false);
+            Result r = run(ScenarioTest.MAP, ROOMS, seed, 3 + (int) (seed % 3), false, true); // up to the first meeting
             r.collisions().stream().filter(c -> c.other().startsWith("chair")).forEach(c -> met.add(c.toString()));
         }
         assertTrue(!met.isEmpty(), "chairs met in one of seeds 1 to 10 without the traffic agent");
